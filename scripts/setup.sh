@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs every Debian package coremodal needs, if any is missing. Idempotent:
+# a machine that has them all is left alone (no apt-get update).
+set -euo pipefail
+packages=(build-essential cmake pkg-config
+          petsc-dev slepc-dev libopenblas0-pthread
+          libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
+          catch2 libtomlplusplus-dev libcli11-dev
+          python3 python3-h5py python3-numpy python3-matplotlib python3-pytest)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

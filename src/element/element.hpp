@@ -1,0 +1,36 @@
+// Element kernels: coordinates and material in, element matrices out.
+// Plain Eigen; no PETSc, gmsh or MPI here.
+//
+// Weak form (linear elasticity, small strain):
+//   K_e = int_Ve B^T C(x) B dV,   M_e = int_Ve rho N^T N dV  (consistent mass),
+// with C(x) the cylindrical stiffness rotated to global axes at each
+// integration point (polar angle of that point about the z axis).
+// Node ordering is gmsh's for each cell type; DOF order is node-major:
+// dof 3a + c is component c (x, y, z) of node a.
+#pragma once
+
+#include "material/material.hpp"
+
+#include <Eigen/Dense>
+
+namespace coremodal {
+
+enum class CellType { hex20, hex27, tet10 };
+
+int nodes_per_cell(CellType type);
+const char* cell_type_name(CellType type);  // "hex20", "hex27", "tet10"
+
+// coords: nodes_per_cell rows x 3 columns, metres.
+using CellCoords = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// Fills K and M (resized to 3n x 3n). Full integration: 3x3x3 Gauss for hex,
+// a degree-4-exact rule for tet10 (mass is degree 4). Throws
+// std::runtime_error naming the cell if the Jacobian is not positive at an
+// integration point (inverted or badly distorted cell).
+void element_matrices(CellType type, const CellCoords& coords, const Matrix6& C_cylindrical,
+                      double density, Eigen::MatrixXd& K, Eigen::MatrixXd& M);
+
+// Volume of the cell (m^3), by the same quadrature.
+double element_volume(CellType type, const CellCoords& coords);
+
+}  // namespace coremodal

@@ -1,0 +1,29 @@
+// The mesh as the rest of the pipeline sees it: plain arrays, no gmsh.
+#pragma once
+
+#include "element/element.hpp"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+struct Mesh {
+    CellType cell_type = CellType::hex20;
+    std::vector<std::array<double, 3>> nodes;  // metres
+    std::vector<int> cells;                    // n_cells x nodes_per_cell, gmsh order, 0-based
+    std::vector<int> cell_part;                // per cell: index into part_names
+    std::vector<std::string> part_names;       // physical volume names: "core", "rest_paper"
+    // Physical surface groups as node sets (sorted, unique): "core_inner",
+    // "core_outer", "clamp_left", "clamp_right", ...
+    std::map<std::string, std::vector<int>> node_groups;
+
+    int n_nodes() const { return static_cast<int>(nodes.size()); }
+    int n_cells() const { return static_cast<int>(cell_part.size()); }
+    int nodes_per_cell() const { return coremodal::nodes_per_cell(cell_type); }
+    const int* cell(int c) const { return cells.data() + static_cast<size_t>(c) * nodes_per_cell(); }
+};
+
+}  // namespace coremodal

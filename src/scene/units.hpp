@@ -1,0 +1,22 @@
+// Quantities with units in case files: "76 mm", "6.5 GPa", "920 kg/m^3",
+// "1200 rpm", or plain numbers taken as SI.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace coremodal {
+
+enum class Dimension { length, pressure, density, frequency, dimensionless,
+                       stiffness_per_area, angle, speed, mass };
+
+const char* dimension_name(Dimension d);  // "length", "pressure (modulus)", ...
+const char* si_unit(Dimension d);         // "m", "Pa", "kg/m^3", ...
+
+// Converts "76 mm" to 0.076 for Dimension::length. Returns the SI value, or
+// throws std::invalid_argument with a message such as
+//   "unit 'kg' is a mass, expected a length (m, mm, cm, in)".
+double parse_quantity(std::string_view text, Dimension expected);
+
+}  // namespace coremodal

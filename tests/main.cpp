@@ -1,0 +1,16 @@
+// Test runner: SLEPc (and so PETSc and MPI) is initialised once for all tests,
+// so tests that assemble or solve can use PETSc objects directly.
+#define CATCH_CONFIG_RUNNER
+#include <catch2/catch.hpp>
+#include <slepcsys.h>
+
+int main(int argc, char** argv) {
+    // PETSc must not see Catch's options; give it none.
+    int petsc_argc = 1;
+    char** petsc_argv = argv;
+    SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr);
+    PetscPopSignalHandler();  // let Catch report crashes
+    const int result = Catch::Session().run(argc, argv);
+    SlepcFinalize();
+    return result;
+}
