@@ -1,1 +1,106 @@
-int main() { return 0; }
+// coremodal: natural modes of paper-roll cores, rest rolls and their chucks.
+//
+//   coremodal run CASE.toml [--output DIR] [PETSc/SLEPc options]
+//
+// PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
+// mumps, -eps_view) may follow anywhere; they are applied after coremodal's
+// defaults, so an expert can override any solver setting.
+#include "app/run_case.hpp"
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
+
+#include <CLI/CLI.hpp>
+#include <slepcsys.h>
+
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+// A PETSc option is a single dash followed by a word with an underscore or a
+// known prefix ("-eps_view", "-log_view", "-malloc_debug"); its value, if any,
+// is the next argument unless that looks like an option or a case file.
+bool is_petsc_option(const std::string& a) {
+    return a.size() > 2 && a[0] == '-' && a[1] != '-' && a.find('_') != std::string::npos;
+}
+bool is_option_value(const std::string& a) {
+    return !a.empty() && a[0] != '-' && a.find(".toml") == std::string::npos;
+}
+
+struct SplitArgs {
+    std::vector<std::string> ours;   // argv[0] and coremodal's own arguments
+    std::vector<std::string> petsc;  // argv[0] and PETSc's
+};
+
+SplitArgs split_arguments(int argc, char** argv) {
+    SplitArgs s;
+    s.ours.push_back(argv[0]);
+    s.petsc.push_back(argv[0]);
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (is_petsc_option(a)) {
+            s.petsc.push_back(a);
+            if (i + 1 < argc && is_option_value(argv[i + 1])) s.petsc.push_back(argv[++i]);
+        } else {
+            s.ours.push_back(a);
+        }
+    }
+    return s;
+}
+
+std::vector<char*> c_strings(std::vector<std::string>& v) {
+    std::vector<char*> out;
+    for (auto& s : v) out.push_back(s.data());
+    out.push_back(nullptr);
+    return out;
+}
+
+int report_error(const char* kind, const std::exception& e) {
+    if (coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << e.what() << std::endl;
+    return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    SplitArgs args = split_arguments(argc, argv);
+
+    CLI::App app{"coremodal " COREMODAL_VERSION
+                 ": natural modes of paper-roll cores, rest rolls and chucks (gmsh, PETSc, SLEPc)"};
+    app.require_subcommand(1);
+    coremodal::RunOptions run;
+    std::string output;
+    auto* run_cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
+    run_cmd->add_option("case", run.case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
+    run_cmd->add_option("-o,--output", output, "results folder (default results/<case name>)");
+    run_cmd->add_flag("-q,--quiet", run.quiet, "no progress lines or tables");
+    run_cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
+                    "they override coremodal's solver defaults.");
+
+    auto ours = c_strings(args.ours);
+    try {
+        app.parse(static_cast<int>(args.ours.size()), ours.data());
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    auto petsc = c_strings(args.petsc);
+    int petsc_argc = static_cast<int>(args.petsc.size());
+    char** petsc_argv = petsc.data();
+    if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
+    int status = 0;
+    try {
+        if (!output.empty()) run.output_dir = output;
+        if (*run_cmd) coremodal::run_case(run);
+    } catch (const coremodal::InputError& e) {
+        status = report_error("error: ", e);
+    } catch (const coremodal::SolveError& e) {
+        status = report_error("solve failed: ", e);
+    } catch (const std::exception& e) {
+        status = report_error("", e);
+    }
+    SlepcFinalize();
+    return status;
+}

@@ -1,0 +1,222 @@
+// run_case reads like the method section of a paper: numbered steps, each one
+// stage of the pipeline (DESIGN.md).
+#include "app/run_case.hpp"
+
+#include "assembly/petsc_system.hpp"
+#include "beam/beam_theory.hpp"
+#include "common/error.hpp"
+#include "common/stopwatch.hpp"
+#include "eigensolve/modal_solver.hpp"
+#include "geometry/tube_model.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "modes/classify.hpp"
+#include "modes/mode_shapes.hpp"
+#include "output/modes_h5.hpp"
+#include "output/results_folder.hpp"
+#include "output/summary.hpp"
+#include "output/xdmf.hpp"
+#include "scene/case_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+namespace coremodal {
+namespace {
+
+struct Printer {
+    bool on;
+    void operator()(const std::string& line) const {
+        if (on) std::cout << "  " << line << std::endl;
+    }
+};
+
+std::vector<std::string> clamp_group_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& c : scene.supports.clamps) names.push_back("clamp_" + c.name);
+    return names;
+}
+
+// Step 2: the mesh, generated from the scene's section or read from the user's file.
+Mesh make_mesh(const Scene& scene) {
+    GmshSession gmsh;
+    if (scene.mesh.file) {
+        Mesh mesh = read_msh_file(*scene.mesh.file);
+        std::vector<std::string> parts = {"core"};
+        if (scene.rest_paper) parts.push_back("rest_paper");
+        require_groups(mesh, parts, clamp_group_names(scene), *scene.mesh.file,
+                       scene.supports.kind == SupportKind::clamped ? "[supports] type = \"clamped\"" : "the scene");
+        return mesh;
+    }
+    build_tube_model(make_tube_section(scene), scene.supports.clamps, scene.mesh.element);
+    Mesh mesh = read_current_gmsh_mesh("generated mesh");
+    require_groups(mesh, {"core"}, clamp_group_names(scene), "generated mesh", "the clamps");
+    return mesh;
+}
+
+std::vector<PartMaterial> part_materials(const Scene& scene, const Mesh& mesh, const std::string& source) {
+    std::vector<PartMaterial> materials;
+    for (const auto& part : mesh.part_names) {
+        const OrthotropicMaterial* m = nullptr;
+        if (part == "core") m = &scene.core.material;
+        if (part == "rest_paper" && scene.rest_paper) m = &scene.rest_paper->material;
+        if (!m)
+            throw InputError(source + ": mesh part '" + part + "' has no material in the case file; parts are "
+                             "'core' and (with a [rest_paper] table) 'rest_paper'");
+        materials.push_back({stiffness_cylindrical(*m), m->density});
+    }
+    return materials;
+}
+
+std::vector<int> clamped_nodes(const Scene& scene, const Mesh& mesh) {
+    std::set<int> nodes;
+    for (const auto& name : clamp_group_names(scene))
+        for (int n : mesh.node_groups.at(name)) nodes.insert(n);
+    return {nodes.begin(), nodes.end()};
+}
+
+double expected_mass(const Scene& s) {
+    auto ring = [](double d_out, double d_in) { return M_PI / 4 * (d_out * d_out - d_in * d_in); };
+    double m = s.core.material.density * ring(s.core.outer_diameter, s.core.inner_diameter) * s.core.length;
+    if (s.rest_paper)
+        m += s.rest_paper->material.density * ring(s.rest_paper->outer_diameter, s.core.outer_diameter) *
+             s.core.length;
+    return m;
+}
+
+BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
+    BeamComparison b;
+    const BeamSection section = beam_section(scene);
+    const bool free = scene.supports.kind == SupportKind::free;
+    b.span_m = beam_span(scene);
+    b.ends = free ? "free-free" : "clamped-clamped";
+    b.euler_bernoulli_hz = euler_bernoulli_first_bending_hz(section, b.span_m);
+    b.timoshenko_hz =
+        timoshenko_bending_hz(section, b.span_m, free ? BeamEnds::free_free : BeamEnds::clamped_clamped, 1).at(0);
+    for (const auto& m : modes)
+        if (m.label.type == "bending") {
+            b.fe_first_bending_hz = m.frequency_hz;
+            b.fe_mode_index = m.index;
+            b.fe_over_timoshenko = m.frequency_hz / b.timoshenko_hz;
+            b.fe_over_euler_bernoulli = m.frequency_hz / b.euler_bernoulli_hz;
+            break;
+        }
+    return b;
+}
+
+void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir) {
+    ResultsFolder folder(dir);
+    write_summary_json(folder.file("summary.json"), report);
+    write_modes_csv(folder.file("modes.csv"), report);
+    write_modes_h5(folder.file("modes.h5"), mesh, report.modes.modes, scene_json(report.scene),
+                   "coremodal " COREMODAL_VERSION);
+    write_modes_xdmf(folder.file("modes.xdmf"), "modes.h5", mesh, report.modes.modes);
+    folder.commit();
+}
+
+}  // namespace
+
+RunReport run_case(const RunOptions& options) {
+    const bool root = mpi_rank() == 0;
+    const Printer say{root && !options.quiet};
+    Stopwatch total, stage;
+    RunReport report;
+    report.mpi_ranks = mpi_size();
+
+    // 1. Read and check the case file: every input error surfaces here.
+    say("[1/7] reading " + options.case_file);
+    report.scene = parse_case_file(options.case_file);
+    const Scene& scene = report.scene;
+    const std::filesystem::path out_dir =
+        options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / scene.name;
+
+    // 2. Mesh: the r–z section revolved into quadratic hexahedra (or the user's mesh).
+    say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
+    const Mesh mesh = make_mesh(scene);
+    const std::string mesh_source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
+    report.timing_s.mesh = stage.lap();
+
+    // 3. Degrees of freedom: clamped nodes are eliminated.
+    const std::vector<int> eliminated = clamped_nodes(scene, mesh);
+    const DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated);
+    report.model = {"solid3d",
+                    cell_type_name(mesh.cell_type),
+                    dofs.n_dofs,
+                    mesh.n_nodes(),
+                    mesh.n_cells(),
+                    static_cast<long>(eliminated.size()),
+                    0,
+                    expected_mass(scene),
+                    mesh_source};
+    say("      " + std::to_string(mesh.n_cells()) + " " + report.model.element + " cells, " +
+        std::to_string(mesh.n_nodes()) + " nodes, " + std::to_string(dofs.n_dofs) + " DOFs (" +
+        std::to_string(eliminated.size()) + " clamped nodes eliminated)");
+
+    // 4. Assemble K and M.
+    say("[3/7] assembling stiffness and mass");
+    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh, mesh_source), dofs);
+    report.model.mass_kg = system.model_mass;
+    report.timing_s.assemble = stage.lap();
+
+    // 5. Solve, verify, prove complete. The beam estimate of the first bending
+    //    mode sets the shift's scale (and what counts as rigid).
+    say("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert, MUMPS)");
+    const BeamSection section = beam_section(scene);
+    const double f_scale = euler_bernoulli_first_bending_hz(section, beam_span(scene));
+    SolveRequest request;
+    request.n_modes = scene.analysis.n_modes;
+    if (scene.analysis.f_max_hz) {
+        request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
+        request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
+    }
+    request.lambda_scale = std::pow(2 * M_PI * f_scale, 2);
+    request.tolerance = scene.analysis.tolerance;
+    request.max_iterations = scene.analysis.max_iterations;
+    SolvedModes solved = solve_modes(system.K, system.M, request, say);
+    report.modes.verification = solved.verification;
+    report.timing_s.factor_and_solve = stage.lap();
+
+    // 6. Name every mode and compute its effective masses.
+    say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
+    const ModeClassifier classifier(mesh);
+    const EffectiveMassCalculator effective_mass(system.M, mesh, dofs);
+    const double lambda_band_min = request.lambda_min.value_or(-1e300);
+    for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
+        const double lambda = solved.eigenvalues[i];
+        // Modes of a free scene at lambda ~ 0 may come out slightly negative.
+        if (lambda < lambda_band_min && std::abs(lambda) > kRigidEigenvalueFraction * request.lambda_scale) continue;
+        Mode mode;
+        mode.index = static_cast<int>(report.modes.modes.size()) + 1;
+        mode.eigenvalue = lambda;
+        mode.frequency_hz = std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI);
+        mode.relative_residual = solved.relative_residuals[i];
+        mode.effective_mass = effective_mass(solved.vectors[i]);
+        mode.shape = gather_node_displacements(solved.vectors[i], mesh, dofs);
+        if (root) mode.label = classifier.classify(mode.shape, lambda, request.lambda_scale);
+        report.modes.modes.push_back(std::move(mode));
+    }
+    report.timing_s.classify = stage.lap();
+
+    // 7. Compare with beam theory.
+    say("[6/7] comparing with beam theory");
+    report.beam = compare_with_beam(scene, report.modes.modes);
+
+    double peak = peak_memory_mb();
+    MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    report.timing_s.total = total.seconds();
+
+    // 8. Write: console table, then the results folder (complete or not at all).
+    if (root && !options.quiet) {
+        print_mode_table(std::cout, report);
+        print_verification_and_beam(std::cout, report);
+    }
+    if (root && options.write_results) {
+        say("[7/7] writing " + out_dir.string());
+        write_results(report, mesh, out_dir);
+    }
+    return report;
+}
+
+}  // namespace coremodal

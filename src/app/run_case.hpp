@@ -1,0 +1,22 @@
+// The main analysis: one case file in, one verified and named mode set out.
+#pragma once
+
+#include "output/run_report.hpp"
+
+#include <optional>
+#include <string>
+
+namespace coremodal {
+
+struct RunOptions {
+    std::string case_file;
+    std::optional<std::string> output_dir;  // default results/<case name>
+    bool quiet = false;                     // no progress lines (tests)
+    bool write_results = true;
+};
+
+// Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws
+// InputError / SolveError with a message for the user.
+RunReport run_case(const RunOptions& options);
+
+}  // namespace coremodal

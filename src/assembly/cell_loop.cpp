@@ -1,0 +1,36 @@
+#include "assembly/cell_loop.hpp"
+
+#include "common/error.hpp"
+
+namespace coremodal {
+
+double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
+                      const std::function<bool(int)>& take, const CellInsert& insert) {
+    const int npc = mesh.nodes_per_cell();
+    CellCoords coords(npc, 3);
+    Eigen::MatrixXd K, M;
+    std::vector<int> cell_dofs(3 * npc);
+    double mass = 0;
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        if (!take(c)) continue;
+        const int* nodes = mesh.cell(c);
+        for (int a = 0; a < npc; ++a) {
+            for (int d = 0; d < 3; ++d) {
+                coords(a, d) = mesh.nodes[nodes[a]][d];
+                cell_dofs[3 * a + d] = dofs.dof(nodes[a], d);
+            }
+        }
+        const PartMaterial& material = materials.at(mesh.cell_part[c]);
+        try {
+            element_matrices(mesh.cell_type, coords, material.C_cylindrical, material.density, K, M);
+        } catch (const std::runtime_error& e) {
+            throw InputError("mesh cell " + std::to_string(c) + " (part '" +
+                             mesh.part_names[mesh.cell_part[c]] + "'): " + e.what());
+        }
+        mass += M.sum() / 3;  // each of the three component blocks sums to rho * V
+        insert(cell_dofs, K, M);
+    }
+    return mass;
+}
+
+}  // namespace coremodal

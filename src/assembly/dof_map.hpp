@@ -1,0 +1,26 @@
+// Degrees of freedom: three displacement components per node; nodes of a
+// rigid clamp are eliminated (no penalty numbers in the matrices: they would
+// create spurious eigenvalues and ruin the conditioning, deal.II step-36).
+#pragma once
+
+#include "mesh/mesh.hpp"
+
+#include <vector>
+
+namespace coremodal {
+
+struct DofMap {
+    std::vector<int> node_first_dof;  // 3 * (free node number), or -1 if eliminated
+    int n_dofs = 0;
+    int n_free_nodes = 0;
+
+    // Global dof of component c of node, or -1 (ignored by PETSc's MatSetValues).
+    int dof(int node, int c) const { return node_first_dof[node] < 0 ? -1 : node_first_dof[node] + c; }
+};
+
+DofMap make_dof_map(int n_nodes, const std::vector<int>& eliminated_nodes);
+
+// Free nodes [first, last) owned by `rank` of `size`: contiguous, balanced blocks.
+std::pair<int, int> owned_free_nodes(int n_free_nodes, int rank, int size);
+
+}  // namespace coremodal

@@ -1,0 +1,231 @@
+#include "eigensolve/modal_solver.hpp"
+
+#include "common/error.hpp"
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+// The shift sits this far below zero, in units of the first elastic
+// eigenvalue: rigid-body modes (lambda = 0) then make K - sigma M definite
+// instead of singular, and the wanted low modes stay well separated in the
+// shift-and-invert spectrum 1 / (lambda - sigma).
+constexpr double kShiftFraction = 0.5;
+// Extra modes computed beyond those reported: they locate the gap where the
+// inertia check is placed and catch a degenerate partner of the last mode.
+constexpr int kMinExtraModes = 4;
+// Two eigenvalues closer than this (relative to max(|lambda|, lambda_scale))
+// belong to one cluster (degenerate bending pairs split by ~1e-10 here).
+constexpr double kClusterTolerance = 1e-6;
+
+PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
+    PetscHandle<EPS, EPSDestroy> eps;
+    COREMODAL_PETSC(EPSCreate(PetscObjectComm((PetscObject)K), eps.out()));
+    COREMODAL_PETSC(EPSSetOperators(eps, K, M));
+    COREMODAL_PETSC(EPSSetProblemType(eps, EPS_GHEP));
+    COREMODAL_PETSC(EPSSetType(eps, EPSKRYLOVSCHUR));
+    COREMODAL_PETSC(EPSSetTarget(eps, sigma));
+    COREMODAL_PETSC(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
+    COREMODAL_PETSC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    COREMODAL_PETSC(EPSSetTolerances(eps, request.tolerance, request.max_iterations));
+    ST st;
+    KSP ksp;
+    PC pc;
+    COREMODAL_PETSC(EPSGetST(eps, &st));
+    COREMODAL_PETSC(STSetType(st, STSINVERT));
+    COREMODAL_PETSC(STGetKSP(st, &ksp));
+    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    // Experts override any of the above from the command line (-eps_*, -st_*).
+    COREMODAL_PETSC(EPSSetFromOptions(eps));
+    return eps;
+}
+
+double vector_norm(Vec x) {
+    PetscReal n;
+    COREMODAL_PETSC(VecNorm(x, NORM_2, &n));
+    return n;
+}
+
+// Relative residual ||K x - lambda M x|| / (||K||_1 ||x||); ||K||_1 bounds the
+// spectral norm of the symmetric K from above and is cheap to compute.
+double relative_residual(Mat K, Mat M, double K_norm, Vec x, double lambda) {
+    PetscVector Kx, Mx;
+    COREMODAL_PETSC(VecDuplicate(x, Kx.out()));
+    COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
+    COREMODAL_PETSC(MatMult(K, x, Kx));
+    COREMODAL_PETSC(MatMult(M, x, Mx));
+    COREMODAL_PETSC(VecAXPY(Kx, -lambda, Mx));
+    return vector_norm(Kx) / (K_norm * vector_norm(x));
+}
+
+void m_normalise(Mat M, Vec x) {
+    PetscVector Mx;
+    COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
+    COREMODAL_PETSC(MatMult(M, x, Mx));
+    PetscScalar xMx;
+    COREMODAL_PETSC(VecDot(x, Mx, &xMx));
+    COREMODAL_PETSC(VecScale(x, 1.0 / std::sqrt(xMx)));
+}
+
+double max_orthonormality_error(Mat M, const std::vector<PetscVector>& X) {
+    double worst = 0;
+    PetscVector Mx;
+    for (size_t j = 0; j < X.size(); ++j) {
+        if (j == 0) COREMODAL_PETSC(VecDuplicate(X[0], Mx.out()));
+        COREMODAL_PETSC(MatMult(M, X[j], Mx));
+        for (size_t i = 0; i <= j; ++i) {
+            PetscScalar d;
+            COREMODAL_PETSC(VecDot(X[i], Mx, &d));
+            worst = std::max(worst, std::abs(d - (i == j ? 1.0 : 0.0)));
+        }
+    }
+    return worst;
+}
+
+struct Attempt {
+    std::vector<double> lambdas;  // all converged, ascending
+    std::vector<PetscVector> vectors;
+    int n_converged = 0;
+};
+
+Attempt run_eps(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
+    auto eps = configure(K, M, sigma, nev, request);
+    COREMODAL_PETSC(EPSSolve(eps));
+    PetscInt nconv;
+    COREMODAL_PETSC(EPSGetConverged(eps, &nconv));
+    Attempt a;
+    a.n_converged = static_cast<int>(nconv);
+    std::vector<std::pair<double, int>> order;
+    for (PetscInt i = 0; i < nconv; ++i) {
+        PetscScalar kr;
+        COREMODAL_PETSC(EPSGetEigenvalue(eps, i, &kr, nullptr));
+        order.emplace_back(PetscRealPart(kr), int(i));
+    }
+    std::sort(order.begin(), order.end());
+    for (auto [lambda, i] : order) {
+        PetscVector x;
+        COREMODAL_PETSC(MatCreateVecs(K, x.out(), nullptr));
+        COREMODAL_PETSC(EPSGetEigenvector(eps, i, x, nullptr));
+        a.lambdas.push_back(lambda);
+        a.vectors.push_back(std::move(x));
+    }
+    return a;
+}
+
+// How many of the converged modes to report: the wanted count, extended so
+// that every member of the last mode's cluster is included.
+int reported_count(const std::vector<double>& lambdas, int wanted, double scale) {
+    int n = std::min<int>(wanted, lambdas.size());
+    while (n > 0 && n < int(lambdas.size()) &&
+           lambdas[n] - lambdas[n - 1] <= kClusterTolerance * std::max(std::abs(lambdas[n - 1]), scale))
+        ++n;
+    return n;
+}
+
+std::string format_count_mismatch(long pivots, long found, double sigma) {
+    std::ostringstream s;
+    s << "the shifted factor K - sigma M at sigma = " << sigma << " rad^2/s^2 ("
+      << std::sqrt(std::max(sigma, 0.0)) / (2 * M_PI) << " Hz) has " << pivots
+      << " negative pivots, but " << found << " modes were found below it: " << pivots - found
+      << " mode(s) were missed; raise [analysis] max_iterations or the number of modes";
+    return s.str();
+}
+
+}  // namespace
+
+long count_eigenvalues_below(Mat K, Mat M, double sigma) {
+    PetscMatrix A, F;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
+    // ICNTL(13) = 1 keeps the root front off ScaLAPACK, so MUMPS can count
+    // negative pivots in parallel too.
+    COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
+    PetscIndexSet row_perm, col_perm;
+    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
+    MatFactorInfo info;
+    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
+    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
+    COREMODAL_PETSC(MatCholeskyFactorNumeric(F, A, &info));
+    PetscInt n_negative, n_zero, n_positive;
+    COREMODAL_PETSC(MatGetInertia(F, &n_negative, &n_zero, &n_positive));
+    return n_negative;
+}
+
+SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {
+    PetscInt n_dofs;
+    COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
+    const double scale = request.lambda_scale;
+    const double sigma = -kShiftFraction * scale;
+
+    int wanted = request.n_modes;
+    if (request.lambda_max) {
+        progress("counting modes below the band's upper edge (inertia of K - sigma M)");
+        wanted = static_cast<int>(count_eigenvalues_below(K, M, *request.lambda_max));
+    }
+    if (wanted > n_dofs)
+        throw InputError("[analysis] modes = " + std::to_string(wanted) + " asks for more modes than the model has "
+                         "degrees of freedom (" + std::to_string(n_dofs) + "); ask for at most " +
+                         std::to_string(n_dofs) + " or refine the mesh");
+    SolvedModes out;
+    if (wanted == 0) return out;
+
+    PetscReal K_norm;
+    COREMODAL_PETSC(MatNorm(K, NORM_1, &K_norm));
+    int nev = std::min<int>(n_dofs, wanted + std::max(kMinExtraModes, wanted / 4));
+    for (int attempt = 0;; ++attempt) {
+        progress("factorising K - sigma M (sigma = " + std::to_string(sigma) + ") and solving for " +
+                 std::to_string(nev) + " modes");
+        Attempt a = run_eps(K, M, sigma, nev, request);
+        const int n_report = reported_count(a.lambdas, wanted, scale);
+        if (n_report < wanted) {
+            std::ostringstream s;
+            s << "converged " << a.n_converged << " of " << wanted << " requested modes (tolerance "
+              << request.tolerance << "); raise [analysis] max_iterations (now " << request.max_iterations
+              << ") or loosen [analysis] tolerance";
+            throw SolveError(s.str());
+        }
+        // The inertia check sits in the gap after the last reported mode.
+        const double last = a.lambdas[n_report - 1];
+        const double check = n_report < int(a.lambdas.size())
+                                 ? 0.5 * (last + a.lambdas[n_report])
+                                 : last + kClusterTolerance * std::max(std::abs(last), scale);
+        progress("checking completeness: inertia of K - sigma M at the band edge");
+        const long pivots = count_eigenvalues_below(K, M, check);
+        if (pivots != n_report) {
+            if (attempt == 0 && pivots > n_report && pivots < n_dofs) {
+                progress("inertia count says " + std::to_string(pivots) + " modes lie below the edge, " +
+                         std::to_string(n_report) + " found: solving again with a larger subspace");
+                nev = std::min<int>(n_dofs, int(pivots) + std::max(kMinExtraModes, int(pivots) / 4));
+                continue;
+            }
+            throw SolveError(format_count_mismatch(pivots, n_report, check));
+        }
+        for (int i = 0; i < n_report; ++i) {
+            m_normalise(M, a.vectors[i]);
+            out.relative_residuals.push_back(relative_residual(K, M, K_norm, a.vectors[i], a.lambdas[i]));
+            out.eigenvalues.push_back(a.lambdas[i]);
+            out.vectors.push_back(std::move(a.vectors[i]));
+        }
+        auto& v = out.verification;
+        v.max_relative_residual = *std::max_element(out.relative_residuals.begin(), out.relative_residuals.end());
+        v.max_orthonormality_error = max_orthonormality_error(M, out.vectors);
+        v.check_shift = check;
+        v.negative_pivots_at_shift = pivots;
+        v.modes_below_shift = n_report;
+        v.complete = true;
+        return out;
+    }
+}
+
+}  // namespace coremodal

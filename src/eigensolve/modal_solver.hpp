@@ -1,0 +1,46 @@
+// The generalized Hermitian eigenproblem K x = lambda M x with SLEPc:
+// Krylov–Schur, shift-and-invert with a MUMPS LDL^T factor of K - sigma M.
+// Four acts (SLEPc ex13): configure, solve, extract and verify, prove complete.
+#pragma once
+
+#include "common/petsc_handle.hpp"
+#include "modes/mode_set.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+struct SolveRequest {
+    int n_modes = 20;                   // lowest modes wanted (if no band)
+    std::optional<double> lambda_min;   // band request, rad^2/s^2 (both set, or neither)
+    std::optional<double> lambda_max;
+    // Typical eigenvalue of the first elastic mode (from beam theory), rad^2/s^2.
+    // Sets the negative shift and the scale below which a mode counts as rigid.
+    double lambda_scale = 1.0;
+    double tolerance = 1e-10;
+    int max_iterations = 500;
+};
+
+struct SolvedModes {
+    std::vector<double> eigenvalues;  // ascending
+    std::vector<PetscVector> vectors; // M-normalised
+    std::vector<double> relative_residuals;
+    Verification verification;
+};
+
+using Progress = std::function<void(const std::string&)>;
+
+// Solves, verifies every pair, and proves by the inertia of K - sigma M that no
+// mode below the highest reported one was missed (one automatic retry with a
+// larger subspace; then SolveError). Degenerate partners of the last requested
+// mode are always included, so a pair is never cut in half.
+SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progress& progress);
+
+// Number of eigenvalues of K x = lambda M x below sigma (Sylvester's law of
+// inertia: negative pivots of the LDL^T factor of K - sigma M).
+long count_eigenvalues_below(Mat K, Mat M, double sigma);
+
+}  // namespace coremodal

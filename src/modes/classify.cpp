@@ -1,0 +1,143 @@
+#include "modes/classify.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+namespace {
+
+// Stations along z. Fine enough to resolve ~10 axial half-waves, coarse
+// enough that each holds a ring of nodes (a generated mesh has node layers at
+// every half element; bins that catch no node are skipped).
+constexpr int kStations = 64;
+// Ignore stations whose amplitude is below this share of the largest when
+// counting sign changes: near a node the projected amplitude is noise.
+constexpr double kProfileNoiseShare = 0.05;
+constexpr int kComponents = 3;  // r, theta, z
+constexpr int kHarmonics = kMaxWaveNumber + 1;
+
+// Fourier coefficients a_n (cos), b_n (sin) per station, component, harmonic.
+struct StationFit {
+    std::array<std::array<std::complex<double>, kHarmonics>, kComponents> c{};
+};
+
+}  // namespace
+
+ModeClassifier::ModeClassifier(const Mesh& mesh) {
+    double z_min = 1e300, z_max = -1e300;
+    for (const auto& x : mesh.nodes) {
+        z_min = std::min(z_min, x[2]);
+        z_max = std::max(z_max, x[2]);
+    }
+    const double width = std::max(z_max - z_min, 1e-12) / kStations;
+    stations_.assign(kStations, {});
+    theta_.resize(mesh.n_nodes());
+    for (int n = 0; n < mesh.n_nodes(); ++n) {
+        const auto& x = mesh.nodes[n];
+        theta_[n] = std::atan2(x[1], x[0]);
+        stations_[std::min(kStations - 1, int((x[2] - z_min) / width))].push_back(n);
+    }
+    std::erase_if(stations_, [](const auto& s) { return s.empty(); });
+}
+
+ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lambda, double lambda_scale) const {
+    ModeLabel label;
+    std::array<std::array<double, kHarmonics>, kComponents> energy{};
+    double total = 0;
+    std::vector<StationFit> fits(stations_.size());
+    for (size_t s = 0; s < stations_.size(); ++s) {
+        const auto& nodes = stations_[s];
+        // Basis: 1, cos t, sin t, ..., limited to what the station can resolve.
+        const int n_max = std::min<int>(kMaxWaveNumber, (int(nodes.size()) - 1) / 2);
+        const int n_basis = 1 + 2 * n_max;
+        Eigen::MatrixXd A(nodes.size(), n_basis);
+        Eigen::MatrixXd U(nodes.size(), kComponents);
+        for (size_t k = 0; k < nodes.size(); ++k) {
+            const int node = nodes[k];
+            const double t = theta_[node], c = std::cos(t), sn = std::sin(t);
+            const double ux = shape[3 * node], uy = shape[3 * node + 1], uz = shape[3 * node + 2];
+            U(k, 0) = c * ux + sn * uy;
+            U(k, 1) = -sn * ux + c * uy;
+            U(k, 2) = uz;
+            total += ux * ux + uy * uy + uz * uz;
+            A(k, 0) = 1;
+            for (int h = 1; h <= n_max; ++h) {
+                A(k, 2 * h - 1) = std::cos(h * t);
+                A(k, 2 * h) = std::sin(h * t);
+            }
+        }
+        const Eigen::MatrixXd coef = A.colPivHouseholderQr().solve(U);
+        const double count = double(nodes.size());
+        for (int comp = 0; comp < kComponents; ++comp) {
+            fits[s].c[comp][0] = coef(0, comp);
+            energy[comp][0] += count * coef(0, comp) * coef(0, comp);
+            for (int h = 1; h <= n_max; ++h) {
+                const double a = coef(2 * h - 1, comp), b = coef(2 * h, comp);
+                fits[s].c[comp][h] = {a, b};
+                energy[comp][h] += count * 0.5 * (a * a + b * b);  // mean of (a cos + b sin)^2
+            }
+        }
+    }
+    if (total <= 0) return label;
+
+    // Dominant family: harmonic n summed over components.
+    int best_n = 0;
+    double best_family = -1;
+    for (int h = 0; h < kHarmonics; ++h) {
+        const double e = energy[0][h] + energy[1][h] + energy[2][h];
+        if (e > best_family) best_family = e, best_n = h;
+    }
+    int best_comp = 0;
+    for (int comp = 1; comp < kComponents; ++comp)
+        if (energy[comp][best_n] > energy[best_comp][best_n]) best_comp = comp;
+
+    label.n = best_n;
+    // For n = 0 the three components are three different families.
+    label.dominant_share = (best_n == 0 ? energy[best_comp][0] : best_family) / total;
+
+    // Principal phase of the dominant harmonic along z, then sign changes.
+    std::vector<double> profile;
+    if (best_n == 0) {
+        for (const auto& f : fits) profile.push_back(f.c[best_comp][0].real());
+    } else {
+        double sxx = 0, syy = 0, sxy = 0;
+        for (const auto& f : fits) {
+            const auto v = f.c[best_comp][best_n];
+            sxx += v.real() * v.real(), syy += v.imag() * v.imag(), sxy += v.real() * v.imag();
+        }
+        const double phi = 0.5 * std::atan2(2 * sxy, sxx - syy);
+        for (const auto& f : fits) {
+            const auto v = f.c[best_comp][best_n];
+            profile.push_back(v.real() * std::cos(phi) + v.imag() * std::sin(phi));
+        }
+    }
+    double peak = 0;
+    for (double p : profile) peak = std::max(peak, std::abs(p));
+    int sign = 0;
+    for (double p : profile) {
+        if (std::abs(p) < kProfileNoiseShare * peak) continue;
+        const int s = p > 0 ? 1 : -1;
+        if (sign != 0 && s != sign) ++label.m;
+        sign = s;
+    }
+
+    if (std::abs(lambda) < kRigidEigenvalueFraction * lambda_scale) {
+        label.type = "rigid";
+    } else if (label.dominant_share < kMinDominantShare) {
+        label.type = "mixed";
+    } else if (best_n == 1) {
+        label.type = "bending";
+    } else if (best_n >= 2) {
+        label.type = "ovalling";
+    } else {
+        static const char* kZeroFamilies[kComponents] = {"breathing", "torsion", "axial"};
+        label.type = kZeroFamilies[best_comp];
+    }
+    return label;
+}
+
+}  // namespace coremodal

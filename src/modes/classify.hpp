@@ -1,0 +1,43 @@
+// Naming a mode: circumferential wave number n, axial nodes m, and a type.
+//
+// Method: the nodes are cut into axial stations (bins in z). In each station
+// every cylindrical displacement component (u_r, u_theta, u_z) is fitted by
+// least squares with a Fourier series in theta up to kMaxWaveNumber. The
+// energy of harmonic n, summed over stations and components, gives the family
+// shares; the dominant n and component give the type:
+//   n = 0: breathing (u_r), torsion (u_theta), axial (u_z);
+//   n = 1: bending; n >= 2: ovalling;
+//   rigid when lambda is negligible against the first elastic eigenvalue;
+//   mixed when no family holds at least kMinDominantShare of the energy.
+// m counts the sign changes along z of the dominant harmonic's amplitude,
+// projected on its principal circumferential phase (so both members of a
+// degenerate pair, arbitrarily rotated, get the same m).
+#pragma once
+
+#include "mesh/mesh.hpp"
+#include "modes/mode_set.hpp"
+
+#include <vector>
+
+namespace coremodal {
+
+constexpr int kMaxWaveNumber = 8;
+constexpr double kMinDominantShare = 0.5;
+// lambda below this fraction of the first elastic eigenvalue's scale: rigid.
+// Rigid modes come out at |lambda| ~ 1e-9 of it; the first elastic mode is
+// never below ~1e-2 of a beam estimate.
+constexpr double kRigidEigenvalueFraction = 1e-6;
+
+// Geometric data of the nodes reused for every mode of a mesh.
+struct ModeClassifier {
+    explicit ModeClassifier(const Mesh& mesh);
+    // shape: n_nodes x 3 (node-major); lambda_scale as in SolveRequest.
+    ModeLabel classify(const std::vector<double>& shape, double lambda, double lambda_scale) const;
+
+private:
+    std::vector<double> theta_;
+    std::vector<int> station_of_node_;
+    std::vector<std::vector<int>> stations_;  // nodes of each station, in z order
+};
+
+}  // namespace coremodal

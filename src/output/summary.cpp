@@ -1,0 +1,184 @@
+#include "output/summary.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace coremodal {
+namespace {
+
+// JSON has no NaN or infinity; a value that is not finite becomes 0 and is
+// never expected (every writer input is checked upstream).
+double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+
+toml::table material_table(const OrthotropicMaterial& m) {
+    return toml::table{{"name", m.name},           {"E_r", m.E_r},           {"E_theta", m.E_theta},
+                       {"E_z", m.E_z},             {"G_rtheta", m.G_rtheta}, {"G_rz", m.G_rz},
+                       {"G_thetaz", m.G_thetaz},   {"nu_rtheta", m.nu_rtheta}, {"nu_rz", m.nu_rz},
+                       {"nu_thetaz", m.nu_thetaz}, {"density", m.density},   {"source", m.source}};
+}
+
+toml::table scene_table(const Scene& s) {
+    toml::table core{{"inner_diameter", s.core.inner_diameter},
+                     {"outer_diameter", s.core.outer_diameter},
+                     {"length", s.core.length},
+                     {"material", material_table(s.core.material)}};
+    toml::table t{{"name", s.name}, {"source_file", s.source_file}, {"core", core}};
+    if (s.rest_paper)
+        t.insert("rest_paper", toml::table{{"outer_diameter", s.rest_paper->outer_diameter},
+                                           {"material", material_table(s.rest_paper->material)}});
+    toml::array clamps;
+    for (const auto& c : s.supports.clamps)
+        clamps.push_back(toml::table{{"name", c.name}, {"z_start", c.z_start}, {"z_end", c.z_end}});
+    t.insert("supports", toml::table{{"type", s.supports.kind == SupportKind::free ? "free" : "clamped"},
+                                     {"clamps", clamps}});
+    toml::table mesh{{"level", s.mesh.level},         {"through_wall", s.mesh.n_wall},
+                     {"through_rest_paper", s.mesh.n_rest_paper}, {"around", s.mesh.n_around},
+                     {"along", s.mesh.n_along},       {"element", s.mesh.element}};
+    if (s.mesh.file) mesh.insert("file", *s.mesh.file);
+    t.insert("mesh", mesh);
+    toml::table analysis{{"modes", s.analysis.n_modes},
+                         {"tolerance", s.analysis.tolerance},
+                         {"max_iterations", s.analysis.max_iterations}};
+    if (s.analysis.f_max_hz)
+        analysis.insert("band_hz", toml::array{s.analysis.f_min_hz.value_or(0.0), *s.analysis.f_max_hz});
+    t.insert("analysis", analysis);
+    toml::array assumptions;
+    for (const auto& a : s.assumptions) assumptions.push_back(a);
+    t.insert("assumptions", assumptions);
+    return t;
+}
+
+std::string to_json(const toml::table& t) {
+    std::ostringstream s;
+    s << toml::json_formatter{t};
+    return s.str();
+}
+
+toml::table mode_table(const Mode& m) {
+    const auto& e = m.effective_mass;
+    return toml::table{{"index", m.index},
+                       {"frequency_hz", finite(m.frequency_hz)},
+                       {"eigenvalue", finite(m.eigenvalue)},
+                       {"type", m.label.type},
+                       {"n", m.label.n},
+                       {"m", m.label.m},
+                       {"dominant_share", finite(m.label.dominant_share)},
+                       {"relative_residual", finite(m.relative_residual)},
+                       {"effective_mass", toml::table{{"x_kg", e.x}, {"y_kg", e.y}, {"z_kg", e.z}, {"rz_kgm2", e.rz}}}};
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+    std::ofstream f(path);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+std::string scene_json(const Scene& scene) { return to_json(scene_table(scene)); }
+
+void write_summary_json(const std::string& path, const RunReport& r) {
+    toml::array effects;
+    for (const auto& e : r.scene.effects()) effects.push_back(e);
+    toml::array modes;
+    for (const auto& m : r.modes.modes) modes.push_back(mode_table(m));
+    const auto& v = r.modes.verification;
+    const auto& b = r.beam;
+    const auto& t = r.timing_s;
+    toml::table summary{
+        {"schema_version", kSummarySchemaVersion},
+        {"program", "coremodal " COREMODAL_VERSION},
+        {"case", scene_table(r.scene)},
+        {"effects", effects},
+        {"model", toml::table{{"level", r.model.level},
+                              {"element", r.model.element},
+                              {"n_dofs", r.model.n_dofs},
+                              {"n_nodes", r.model.n_nodes},
+                              {"n_elements", r.model.n_elements},
+                              {"n_eliminated_nodes", r.model.n_eliminated_nodes},
+                              {"mass_kg", r.model.mass_kg},
+                              {"expected_mass_kg", r.model.expected_mass_kg},
+                              {"mesh_source", r.model.mesh_source}}},
+        {"modes", modes},
+        {"verification", toml::table{{"max_relative_residual", v.max_relative_residual},
+                                     {"max_orthonormality_error", v.max_orthonormality_error},
+                                     {"check_shift", v.check_shift},
+                                     {"negative_pivots_at_shift", v.negative_pivots_at_shift},
+                                     {"modes_below_shift", v.modes_below_shift},
+                                     {"complete", v.complete}}},
+        {"beam", toml::table{{"span_m", b.span_m},
+                             {"ends", b.ends},
+                             {"euler_bernoulli_hz", b.euler_bernoulli_hz},
+                             {"timoshenko_hz", b.timoshenko_hz},
+                             {"fe_first_bending_hz", b.fe_first_bending_hz},
+                             {"fe_mode_index", b.fe_mode_index},
+                             {"fe_over_timoshenko", finite(b.fe_over_timoshenko)},
+                             {"fe_over_euler_bernoulli", finite(b.fe_over_euler_bernoulli)}}},
+        {"timing_s", toml::table{{"mesh", t.mesh},
+                                 {"assemble", t.assemble},
+                                 {"factor_and_solve", t.factor_and_solve},
+                                 {"verify", t.verify},
+                                 {"classify", t.classify},
+                                 {"total", t.total}}},
+        {"peak_memory_mb", r.peak_memory_mb},
+        {"mpi_ranks", r.mpi_ranks}};
+    write_text_file(path, to_json(summary) + "\n");
+}
+
+void write_modes_csv(const std::string& path, const RunReport& r) {
+    std::ostringstream s;
+    s << "index,frequency_hz,type,n,m,dominant_share,relative_residual,eff_mass_x_kg,eff_mass_y_kg,"
+         "eff_mass_z_kg,eff_mass_rz_kgm2\n";
+    s << std::setprecision(10);
+    for (const auto& m : r.modes.modes) {
+        const auto& e = m.effective_mass;
+        s << m.index << ',' << m.frequency_hz << ',' << m.label.type << ',' << m.label.n << ',' << m.label.m << ','
+          << m.label.dominant_share << ',' << m.relative_residual << ',' << e.x << ',' << e.y << ',' << e.z << ','
+          << e.rz << '\n';
+    }
+    write_text_file(path, s.str());
+}
+
+void print_mode_table(std::ostream& out, const RunReport& r) {
+    char line[256];
+    out << "\n mode   f [Hz]       type       n   m   share   eff. mass x/y/z [kg]        residual\n";
+    out << " ----  -----------  ---------  --  --  -----  --------------------------  --------\n";
+    for (const auto& m : r.modes.modes) {
+        const auto& e = m.effective_mass;
+        std::snprintf(line, sizeof line, " %4d  %11.4f  %-9s  %2d  %2d  %5.2f  %8.3g %8.3g %8.3g  %8.1e\n", m.index,
+                      m.frequency_hz, m.label.type.c_str(), m.label.n, m.label.m, m.label.dominant_share, e.x, e.y,
+                      e.z, m.relative_residual);
+        out << line;
+    }
+}
+
+void print_verification_and_beam(std::ostream& out, const RunReport& r) {
+    const auto& v = r.modes.verification;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots below %.4g Hz "
+                  "for %ld modes found: %s\n",
+                  v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift,
+                  std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI), v.modes_below_shift,
+                  v.complete ? "complete" : "INCOMPLETE");
+    out << line;
+    std::snprintf(line, sizeof line, "mass: model %.6g kg, from dimensions %.6g kg\n", r.model.mass_kg,
+                  r.model.expected_mass_kg);
+    out << line;
+    const auto& b = r.beam;
+    std::snprintf(line, sizeof line,
+                  "beam (%s, span %.4g m): Euler-Bernoulli %.4f Hz, Timoshenko %.4f Hz; FE first bending "
+                  "(mode %d) %.4f Hz = %.4f x Timoshenko\n",
+                  b.ends.c_str(), b.span_m, b.euler_bernoulli_hz, b.timoshenko_hz, b.fe_mode_index,
+                  b.fe_first_bending_hz, b.fe_over_timoshenko);
+    out << line;
+}
+
+}  // namespace coremodal
