@@ -90,6 +90,8 @@ int main(int argc, char** argv) {
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
+    // PETSc errors become exceptions with coremodal's message; no tracebacks.
+    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
     int status = 0;
     try {
         if (!output.empty()) run.output_dir = output;

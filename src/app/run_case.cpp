@@ -119,15 +119,18 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
 }  // namespace
 
 RunReport run_case(const RunOptions& options) {
+    // 1. Read and check the case file: every input error surfaces here.
+    if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
+    return run_scene(parse_case_file(options.case_file), options);
+}
+
+RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;
     RunReport report;
     report.mpi_ranks = mpi_size();
-
-    // 1. Read and check the case file: every input error surfaces here.
-    say("[1/7] reading " + options.case_file);
-    report.scene = parse_case_file(options.case_file);
+    report.scene = std::move(scene_in);
     const Scene& scene = report.scene;
     const std::filesystem::path out_dir =
         options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / scene.name;

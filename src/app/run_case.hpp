@@ -19,4 +19,7 @@ struct RunOptions {
 // InputError / SolveError with a message for the user.
 RunReport run_case(const RunOptions& options);
 
+// Steps 2 onwards for a scene already in memory (options.case_file unused).
+RunReport run_scene(Scene scene, const RunOptions& options);
+
 }  // namespace coremodal

@@ -27,6 +27,20 @@ struct StationFit {
 
 }  // namespace
 
+int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
+    // Angles closer than this (radians) are one ring position: mesh nodes on a
+    // ring are at least 2 pi / (2 * 512) apart even on the finest meshes.
+    constexpr double kAngleTolerance = 1e-6;
+    std::vector<double> t;
+    for (int n : nodes) t.push_back(theta_[n]);
+    std::sort(t.begin(), t.end());
+    int count = 0;
+    for (size_t i = 0; i < t.size(); ++i)
+        if (i == 0 || t[i] - t[i - 1] > kAngleTolerance) ++count;
+    if (count > 1 && t.back() - t.front() > 2 * M_PI - kAngleTolerance) --count;  // -pi and pi coincide
+    return count;
+}
+
 ModeClassifier::ModeClassifier(const Mesh& mesh) {
     double z_min = 1e300, z_max = -1e300;
     for (const auto& x : mesh.nodes) {
@@ -51,8 +65,9 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
     std::vector<StationFit> fits(stations_.size());
     for (size_t s = 0; s < stations_.size(); ++s) {
         const auto& nodes = stations_[s];
-        // Basis: 1, cos t, sin t, ..., limited to what the station can resolve.
-        const int n_max = std::min<int>(kMaxWaveNumber, (int(nodes.size()) - 1) / 2);
+        // Basis: 1, cos t, sin t, ..., limited to what the station's distinct
+        // angles can resolve (a harmonic at the Nyquist limit would alias).
+        const int n_max = std::min<int>(kMaxWaveNumber, (distinct_angles(nodes) - 1) / 2);
         const int n_basis = 1 + 2 * n_max;
         Eigen::MatrixXd A(nodes.size(), n_basis);
         Eigen::MatrixXd U(nodes.size(), kComponents);

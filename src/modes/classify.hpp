@@ -35,6 +35,7 @@ struct ModeClassifier {
     ModeLabel classify(const std::vector<double>& shape, double lambda, double lambda_scale) const;
 
 private:
+    int distinct_angles(const std::vector<int>& nodes) const;
     std::vector<double> theta_;
     std::vector<int> station_of_node_;
     std::vector<std::vector<int>> stations_;  // nodes of each station, in z order

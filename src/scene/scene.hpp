@@ -58,6 +58,7 @@ struct AnalysisSpec {
 struct Scene {
     std::string name;         // case name (file stem unless given)
     std::string source_file;  // path of the case file, as given
+    std::string description;  // free text from the case file, "" when not given
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;
     SupportSpec supports;

@@ -1,0 +1,75 @@
+"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``.
+
+    python3 -m coremodal table results/modes.h5
+    python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
+
+Exit status: 0 on success, 1 if the file cannot be read or the mode does not
+exist (with a one-line message on stderr), 2 for a usage error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .results import ResultsFormatError, load
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        width, height = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, got {text!r}")
+    if width <= 0 or height <= 0:
+        raise argparse.ArgumentTypeError(f"picture size must be positive, got {text!r}")
+    return width, height
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="python3 -m coremodal", description="Read coremodal results (modes.h5)."
+    )
+    commands = parser.add_subparsers(dest="command", required=True)
+
+    table = commands.add_parser("table", help="print every mode as a table")
+    table.add_argument("results", type=Path, help="modes.h5 written by coremodal")
+
+    plot = commands.add_parser("plot", help="draw one mode shape into a PNG")
+    plot.add_argument("results", type=Path, help="modes.h5 written by coremodal")
+    plot.add_argument("--mode", type=int, required=True, help="mode number, 1-based as in the table")
+    plot.add_argument("--out", type=Path, help="PNG to write (default: mode_NN.png)")
+    plot.add_argument("--scale", type=float, help="displacement scale (default: largest "
+                      "displacement = 10%% of the model's largest extent, at most 25%% "
+                      "of its smallest)")
+    plot.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
+                      help="picture size in pixels (default 1200x900)")
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        if not args.results.is_file():
+            raise ResultsFormatError(f"{args.results}: no such file")
+        results = load(args.results)
+        if args.command == "table":
+            output = results.table()
+        else:
+            from . import plot  # matplotlib only when drawing
+
+            out = args.out or Path(f"mode_{args.mode:02d}.png")
+            scale = plot.draw_mode(results, args.mode, out, args.scale, size_px=args.size)
+            output = f"{out}: {results.label(args.mode)} (scale x{scale:.3g})"
+    except (ResultsFormatError, IndexError, OSError) as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    try:
+        print(output)
+    except BrokenPipeError:  # e.g. piped into head: not an error
+        sys.stderr.close()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,250 @@
+"""The python reader and pictures, on a real modes.h5 of a free-free steel
+tube (see conftest.py) — plus a copy of it edited to a future schema."""
+
+from __future__ import annotations
+
+import shutil
+import struct
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+import coremodal
+from coremodal.plot import (AUTO_SCALE_CAP_FRACTION, AUTO_SCALE_FRACTION, boundary_polygons,
+                            draw_mode)
+
+N_MODES_ASKED = 10  # [analysis] modes in data/tiny.toml
+
+
+def png_size(path: Path) -> tuple[int, int]:
+    """(width, height) from a PNG's IHDR chunk."""
+    header = path.read_bytes()[:24]
+    assert header[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
+    return struct.unpack(">II", header[16:24])
+
+
+def run_cli(env: dict[str, str], *args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "coremodal", *args], capture_output=True,
+                          text=True, env=env, timeout=300)
+
+
+# ------------------------------------------------------------------ loading
+
+
+def test_counts_and_shapes_are_consistent(results: coremodal.Results) -> None:
+    k = results.n_modes
+    assert k == N_MODES_ASKED
+    for per_mode in (results.frequencies_hz, results.eigenvalues, results.relative_residuals,
+                     results.n, results.m, results.dominant_share):
+        assert per_mode.shape == (k,)
+    assert len(results.types) == k
+    assert results.effective_mass.shape == (k, 4)
+
+    assert results.schema_version == 1
+    assert results.program.startswith("coremodal")
+    assert isinstance(results.case, dict) and results.case
+    assert results.cell_type in ("hex20", "hex27", "tet10")
+
+    n_nodes, n_cells = results.n_nodes, results.n_cells
+    assert results.nodes.shape == (n_nodes, 3) and n_nodes > 0
+    assert results.cells.shape == (n_cells, coremodal.results.NODES_PER_CELL[results.cell_type])
+    assert 0 <= results.cells.min() and results.cells.max() < n_nodes
+    assert results.cell_part.shape == (n_cells,)
+    assert 0 <= results.cell_part.min() and results.cell_part.max() < len(results.part_names)
+    for name, group in results.node_groups.items():
+        assert group.ndim == 1 and (group.size == 0 or group.max() < n_nodes), name
+
+    for index in (1, k):
+        shape = results.shape(index)
+        assert shape.shape == (n_nodes, 3)
+        assert np.all(np.isfinite(shape)) and np.any(shape != 0)
+    for bad in (0, k + 1):
+        with pytest.raises(IndexError, match=f"mode {bad} does not exist"):
+            results.shape(bad)
+
+
+def test_tube_dimensions_match_the_case(results: coremodal.Results) -> None:
+    # Inner diameter 76 mm, wall 3 mm, length 0.5 m (data/tiny.toml).
+    radius = np.hypot(results.nodes[:, 0], results.nodes[:, 1])
+    assert radius.min() == pytest.approx(0.038, rel=1e-6)
+    assert radius.max() == pytest.approx(0.041, rel=1e-6)
+    assert np.ptp(results.nodes[:, 2]) == pytest.approx(0.5, rel=1e-9)
+
+
+def test_frequencies_ascend_and_elastic_ones_are_positive(results: coremodal.Results) -> None:
+    f = results.frequencies_hz
+    tolerance = 1e-6 * float(np.abs(f).max())
+    assert np.all(np.diff(f) >= -tolerance), f
+    elastic = np.array([t != "rigid" for t in results.types])
+    assert np.all(f[elastic] > 0), f
+
+
+def test_free_free_tube_has_six_rigid_modes_first(results: coremodal.Results) -> None:
+    assert results.types[:6] == ["rigid"] * 6
+    assert "rigid" not in results.types[6:]
+    # Rigid modes sit at (numerically) zero, far below the first elastic mode.
+    first_elastic = results.frequencies_hz[6]
+    assert np.all(np.abs(results.frequencies_hz[:6]) < 1e-2 * first_elastic)
+
+
+def test_vtk_cells_hold_the_same_nodes_as_the_cells(results: coremodal.Results) -> None:
+    vtk = results.vtk_cells
+    corners = 4 if results.cell_type == "tet10" else 8
+    assert vtk.shape == (results.n_cells, 10 if results.cell_type == "tet10" else 20)
+    np.testing.assert_array_equal(vtk[:, :corners], results.cells[:, :corners])
+    np.testing.assert_array_equal(np.sort(vtk, axis=1),
+                                  np.sort(results.cells[:, : vtk.shape[1]], axis=1))
+
+
+# ------------------------------------------------------------------ XDMF
+
+
+def test_xdmf_is_well_formed_and_points_at_existing_datasets(modes_h5: Path,
+                                                             results: coremodal.Results) -> None:
+    xdmf = modes_h5.with_name("modes.xdmf")
+    assert xdmf.is_file(), f"no {xdmf} beside {modes_h5}"
+    root = ET.parse(xdmf).getroot()
+    grid = root.find("./Domain/Grid")
+    assert grid is not None
+    topology = grid.find("Topology")
+    expected_topology = "Tetrahedron_10" if results.cell_type == "tet10" else "Hexahedron_20"
+    assert topology.get("TopologyType") == expected_topology
+    assert int(topology.get("NumberOfElements")) == results.n_cells
+
+    attributes = grid.findall("Attribute")
+    names = [a.get("Name") for a in attributes]
+    assert names[0] == "part"
+    assert len(names) == 1 + results.n_modes
+    first = names[1]
+    assert first.startswith("mode_01_") and f"_{results.types[0]}_n{results.n[0]}_" in first
+
+    with h5py.File(modes_h5, "r") as f:
+        for item in root.iter("DataItem"):
+            filename, dataset = item.text.strip().split(":", 1)
+            assert filename == modes_h5.name
+            assert dataset in f, dataset
+            dims = tuple(int(d) for d in item.get("Dimensions").split())
+            assert f[dataset].shape == dims, dataset
+
+
+# ------------------------------------------------------------------ pictures
+
+
+def test_draw_mode_writes_a_png_of_the_requested_size(results: coremodal.Results,
+                                                      tmp_path: Path) -> None:
+    default = tmp_path / "mode7.png"
+    draw_mode(results, 7, default)
+    assert default.stat().st_size > 10_000  # a picture, not an empty canvas
+    assert png_size(default) == (1200, 900)
+
+    small = tmp_path / "small.png"
+    draw_mode(results, 7, small, size_px=(640, 480))
+    assert png_size(small) == (640, 480)
+
+
+def test_auto_scale_shows_a_tenth_of_the_length_within_a_quarter_of_the_diameter(
+        results: coremodal.Results, tmp_path: Path) -> None:
+    scale = draw_mode(results, 7, tmp_path / "m.png", size_px=(320, 240))
+    largest = np.linalg.norm(results.shape(7), axis=1).max()
+    extents = np.ptp(results.nodes, axis=0)
+    expected = min(AUTO_SCALE_FRACTION * extents.max(), AUTO_SCALE_CAP_FRACTION * extents.min())
+    assert scale * largest == pytest.approx(expected)
+    # The tiny tube is 0.5 m long and 82 mm across: the cap decides.
+    assert scale * largest == pytest.approx(0.25 * 0.082, rel=1e-6)
+    assert draw_mode(results, 7, tmp_path / "m2.png", scale=2.5, size_px=(320, 240)) == 2.5
+
+
+def test_boundary_of_the_tube_is_its_four_surfaces(results: coremodal.Results) -> None:
+    polygons = boundary_polygons(results.cells, results.cell_type)
+    on_boundary = np.unique(polygons)
+    radius = np.hypot(results.nodes[on_boundary, 0], results.nodes[on_boundary, 1])
+    z = results.nodes[on_boundary, 2]
+    near = lambda a, b: np.isclose(a, b, rtol=0, atol=1e-9)  # noqa: E731
+    # Every boundary node lies on the inner or outer cylinder or an end face.
+    assert np.all(near(radius, 0.038) | near(radius, 0.041) | near(z, z.min()) | near(z, z.max()))
+
+
+# ------------------------------------------------------------------ CLI
+
+
+def test_cli_table_prints_every_mode(modes_h5: Path, results: coremodal.Results,
+                                     cli_env: dict[str, str]) -> None:
+    run = run_cli(cli_env, "table", str(modes_h5))
+    assert run.returncode == 0, run.stderr
+    rows = [line.split() for line in run.stdout.splitlines()]
+    numbered = [row for row in rows if row and row[0].isdigit()]
+    assert [int(row[0]) for row in numbered] == list(range(1, results.n_modes + 1))
+    for row, frequency, kind in zip(numbered, results.frequencies_hz, results.types):
+        assert float(row[1]) == pytest.approx(frequency, abs=1e-3)
+        assert row[2] == kind
+
+
+def test_cli_plot_writes_the_png(modes_h5: Path, cli_env: dict[str, str],
+                                 tmp_path: Path) -> None:
+    out = tmp_path / "mode7.png"
+    run = run_cli(cli_env, "plot", str(modes_h5), "--mode", "7", "--out", str(out),
+                  "--size", "400x300")
+    assert run.returncode == 0, run.stderr
+    assert png_size(out) == (400, 300)
+
+    run = run_cli(cli_env, "plot", str(modes_h5), "--mode", "999", "--out", str(out))
+    assert run.returncode == 1
+    assert "mode 999 does not exist" in run.stderr
+
+
+# ------------------------------------------------------------------ schema
+
+
+@pytest.fixture
+def future_file(modes_h5: Path, tmp_path: Path) -> Path:
+    """A copy of the real file claiming the next schema version."""
+    copy = tmp_path / "future.h5"
+    shutil.copyfile(modes_h5, copy)
+    with h5py.File(copy, "r+") as f:
+        f.attrs["schema_version"] = np.int32(coremodal.SUPPORTED_SCHEMA_VERSION + 1)
+    return copy
+
+
+def test_a_future_schema_version_is_rejected(future_file: Path,
+                                             cli_env: dict[str, str]) -> None:
+    newer = coremodal.SUPPORTED_SCHEMA_VERSION + 1
+    with pytest.raises(coremodal.SchemaVersionError, match=f"schema_version {newer}"):
+        coremodal.load(future_file)
+
+    run = run_cli(cli_env, "table", str(future_file))
+    assert run.returncode == 1
+    assert f"schema_version {newer}" in run.stderr and "Traceback" not in run.stderr
+
+
+def test_a_file_that_is_not_coremodal_results_is_rejected(tmp_path: Path) -> None:
+    other = tmp_path / "other.h5"
+    with h5py.File(other, "w") as f:
+        f["x"] = np.zeros(3)
+    with pytest.raises(coremodal.ResultsFormatError, match="not a coremodal results file"):
+        coremodal.load(other)
+
+
+@pytest.mark.parametrize("cell_type, n_nodes, faces, polygon", [
+    ("hex20", 20, 6, 8), ("hex27", 27, 6, 8), ("tet10", 10, 4, 6)])
+def test_boundary_polygons_of_synthetic_cells(cell_type: str, n_nodes: int, faces: int,
+                                              polygon: int) -> None:
+    one = np.arange(n_nodes)[None, :]
+    assert boundary_polygons(one, cell_type).shape == (faces, polygon)
+    # Two cells glued face to face (the second is the first mirrored, with its
+    # glued face's nodes shared): that face is interior and disappears.
+    if cell_type == "tet10":
+        second = np.array([0, 2, 1, 10, 6, 5, 4, 11, 12, 13])  # shares face (0,1,2)
+    else:
+        second = np.arange(n_nodes) + 100
+        for a, b in [(0, 4), (1, 5), (2, 6), (3, 7), (8, 16), (11, 18), (13, 19), (9, 17)]:
+            second[a] = b  # second's bottom face is the first cell's top face
+    both = np.vstack([one, second[None, :]])
+    assert len(boundary_polygons(both, cell_type)) == 2 * faces - 2
+    # Every polygon alternates corner, mid-edge node, corner, ...
+    corners = 4 if cell_type == "tet10" else 8
+    assert np.all(boundary_polygons(one, cell_type)[:, ::2] < corners)

@@ -1,0 +1,519 @@
+#include "output/modes_h5.hpp"
+
+#include "output/xdmf.hpp"
+
+#include <hdf5.h>
+
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+namespace coremodal {
+
+namespace {
+
+// ---------------------------------------------------------------------------
+// HDF5 plumbing
+
+// Owns one HDF5 identifier and closes it when it goes out of scope, so that an
+// exception half-way through writing leaks nothing and leaves the file closed.
+class Handle {
+public:
+    using Closer = herr_t (*)(hid_t);
+    Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    Handle(Handle&& other) noexcept : id_(std::exchange(other.id_, -1)), closer_(other.closer_) {}
+    Handle& operator=(Handle&&) = delete;
+    ~Handle() {
+        if (id_ >= 0) closer_(id_);
+    }
+    operator hid_t() const { return id_; }
+    // Closes now and returns the status: closing a file flushes it, and that
+    // failure (a full disk) must be reported, not swallowed by the destructor.
+    herr_t close() {
+        const herr_t status = id_ >= 0 ? closer_(id_) : 0;
+        id_ = -1;
+        return status;
+    }
+
+private:
+    hid_t id_;
+    Closer closer_;
+};
+
+// HDF5 prints its error stack to stderr by default. We report failures by
+// exception instead (with the most specific HDF5 message), so silence the
+// printing while we write and restore the caller's setting afterwards.
+class QuietHdf5Errors {
+public:
+    QuietHdf5Errors() {
+        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    }
+    QuietHdf5Errors(const QuietHdf5Errors&) = delete;
+    QuietHdf5Errors& operator=(const QuietHdf5Errors&) = delete;
+    ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+
+private:
+    H5E_auto2_t func_ = nullptr;
+    void* data_ = nullptr;
+};
+
+// The most specific message on the current HDF5 error stack, e.g.
+// "unable to open file: name = '/x/modes.h5', errno = 2, ...".
+std::string hdf5_error_message() {
+    std::string message;
+    auto first_description = [](unsigned n, const H5E_error2_t* err, void* out) -> herr_t {
+        auto* text = static_cast<std::string*>(out);
+        if (n == 0 && err && err->desc) *text = err->desc;
+        return 0;
+    };
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, first_description, &message);
+    H5Eclear2(H5E_DEFAULT);
+    return message;
+}
+
+template <class T>
+struct H5Types;
+template <>
+struct H5Types<double> {
+    static hid_t memory() { return H5T_NATIVE_DOUBLE; }
+    static hid_t file() { return H5T_IEEE_F64LE; }
+};
+template <>
+struct H5Types<std::int64_t> {
+    static hid_t memory() { return H5T_NATIVE_INT64; }
+    static hid_t file() { return H5T_STD_I64LE; }
+};
+template <>
+struct H5Types<std::int32_t> {
+    static hid_t memory() { return H5T_NATIVE_INT32; }
+    static hid_t file() { return H5T_STD_I32LE; }
+};
+
+// Writes objects into one file; every failure becomes a runtime_error that
+// names the file and what was being written.
+class Writer {
+public:
+    explicit Writer(std::string path) : path_(std::move(path)) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        std::string message = "cannot write " + path_ + ": " + what;
+        const std::string detail = hdf5_error_message();
+        if (!detail.empty()) message += " (HDF5: " + detail + ")";
+        throw std::runtime_error(message);
+    }
+    hid_t check_id(hid_t id, const std::string& what) const {
+        if (id < 0) fail(what);
+        return id;
+    }
+    void check_status(herr_t status, const std::string& what) const {
+        if (status < 0) fail(what);
+    }
+
+    Handle create_file() const {
+        return {check_id(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                         "cannot create the file"),
+                H5Fclose};
+    }
+
+    Handle group(hid_t parent, const std::string& name) const {
+        return {check_id(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                         "group " + name),
+                H5Gclose};
+    }
+
+    // A numeric dataset of shape `dims` (row-major data).
+    template <class T>
+    void dataset(hid_t parent, const std::string& name, const std::vector<hsize_t>& dims,
+                 const T* data) const {
+        Handle space(check_id(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
+                              "dataspace of " + name),
+                     H5Sclose);
+        Handle set(check_id(H5Dcreate2(parent, name.c_str(), H5Types<T>::file(), space,
+                                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                            "dataset " + name),
+                   H5Dclose);
+        if (element_count(dims) == 0) return;  // nothing to write; data may be null
+        check_status(H5Dwrite(set, H5Types<T>::memory(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+                     "dataset " + name);
+    }
+
+    template <class T>
+    void vector_dataset(hid_t parent, const std::string& name, const std::vector<T>& values) const {
+        dataset(parent, name, {values.size()}, values.data());
+    }
+
+    // A 1-D dataset of variable-length UTF-8 strings (h5py reads them as str
+    // via .asstr()).
+    void string_list(hid_t parent, const std::string& name,
+                     const std::vector<std::string>& values) const {
+        Handle type = string_type();
+        const hsize_t n = values.size();
+        Handle space(check_id(H5Screate_simple(1, &n, nullptr), "dataspace of " + name), H5Sclose);
+        Handle set(check_id(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT,
+                                       H5P_DEFAULT, H5P_DEFAULT),
+                            "dataset " + name),
+                   H5Dclose);
+        if (values.empty()) return;
+        std::vector<const char*> pointers;
+        for (const std::string& v : values) pointers.push_back(v.c_str());
+        check_status(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+                     "dataset " + name);
+    }
+
+    // A scalar string dataset: used for the case JSON, which may exceed the
+    // 64 KiB that an attribute can hold.
+    void string_scalar(hid_t parent, const std::string& name, const std::string& value) const {
+        Handle type = string_type();
+        Handle space(check_id(H5Screate(H5S_SCALAR), "dataspace of " + name), H5Sclose);
+        Handle set(check_id(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT,
+                                       H5P_DEFAULT, H5P_DEFAULT),
+                            "dataset " + name),
+                   H5Dclose);
+        const char* pointer = value.c_str();
+        check_status(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, &pointer),
+                     "dataset " + name);
+    }
+
+    void string_attribute(hid_t object, const std::string& name, const std::string& value) const {
+        Handle type = string_type();
+        Handle space(check_id(H5Screate(H5S_SCALAR), "dataspace of attribute " + name), H5Sclose);
+        Handle attribute(check_id(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT,
+                                             H5P_DEFAULT),
+                                  "attribute " + name),
+                         H5Aclose);
+        const char* pointer = value.c_str();
+        check_status(H5Awrite(attribute, type, &pointer), "attribute " + name);
+    }
+
+    void int_attribute(hid_t object, const std::string& name, std::int32_t value) const {
+        Handle space(check_id(H5Screate(H5S_SCALAR), "dataspace of attribute " + name), H5Sclose);
+        Handle attribute(check_id(H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space,
+                                             H5P_DEFAULT, H5P_DEFAULT),
+                                  "attribute " + name),
+                         H5Aclose);
+        check_status(H5Awrite(attribute, H5T_NATIVE_INT32, &value), "attribute " + name);
+    }
+
+private:
+    static hsize_t element_count(const std::vector<hsize_t>& dims) {
+        hsize_t n = 1;
+        for (hsize_t d : dims) n *= d;
+        return n;
+    }
+
+    Handle string_type() const {
+        Handle type(check_id(H5Tcopy(H5T_C_S1), "string type"), H5Tclose);
+        check_status(H5Tset_size(type, H5T_VARIABLE), "string type");
+        check_status(H5Tset_cset(type, H5T_CSET_UTF8), "string type");
+        return type;
+    }
+
+    std::string path_;
+};
+
+// ---------------------------------------------------------------------------
+// Just enough JSON to pick the case name out of the resolved case, without a
+// JSON library in the writer. Malformed input gives "no name", never a throw:
+// the name is a label, the JSON itself is stored verbatim.
+
+void skip_space(std::string_view s, size_t& i) {
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+}
+
+void append_utf8(std::string& out, std::uint32_t code) {
+    if (code < 0x80) {
+        out += static_cast<char>(code);
+    } else if (code < 0x800) {
+        out += static_cast<char>(0xC0 | (code >> 6));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+    } else if (code < 0x10000) {
+        out += static_cast<char>(0xE0 | (code >> 12));
+        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (code >> 18));
+        out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (code & 0x3F));
+    }
+}
+
+bool read_hex4(std::string_view s, size_t& i, std::uint32_t& code) {
+    if (i + 4 > s.size()) return false;
+    code = 0;
+    for (int k = 0; k < 4; ++k) {
+        const char c = s[i++];
+        code <<= 4;
+        if (c >= '0' && c <= '9') code |= c - '0';
+        else if (c >= 'a' && c <= 'f') code |= c - 'a' + 10;
+        else if (c >= 'A' && c <= 'F') code |= c - 'A' + 10;
+        else return false;
+    }
+    return true;
+}
+
+// Reads the string starting at s[i] == '"', decoding escapes.
+bool read_json_string(std::string_view s, size_t& i, std::string& out) {
+    if (i >= s.size() || s[i] != '"') return false;
+    ++i;
+    out.clear();
+    while (i < s.size()) {
+        const char c = s[i++];
+        if (c == '"') return true;
+        if (c != '\\') {
+            out += c;
+            continue;
+        }
+        if (i >= s.size()) return false;
+        const char e = s[i++];
+        switch (e) {
+            case 'b': out += '\b'; break;
+            case 'f': out += '\f'; break;
+            case 'n': out += '\n'; break;
+            case 'r': out += '\r'; break;
+            case 't': out += '\t'; break;
+            case 'u': {
+                std::uint32_t code = 0;
+                if (!read_hex4(s, i, code)) return false;
+                // A surrogate pair encodes one code point above U+FFFF.
+                if (code >= 0xD800 && code < 0xDC00 && i + 1 < s.size() && s[i] == '\\' &&
+                    s[i + 1] == 'u') {
+                    i += 2;
+                    std::uint32_t low = 0;
+                    if (!read_hex4(s, i, low)) return false;
+                    code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
+                }
+                append_utf8(out, code);
+                break;
+            }
+            default: out += e;  // \" \\ \/
+        }
+    }
+    return false;
+}
+
+bool skip_json_value(std::string_view s, size_t& i) {
+    skip_space(s, i);
+    if (i >= s.size()) return false;
+    const char c = s[i];
+    if (c == '"') {
+        std::string ignored;
+        return read_json_string(s, i, ignored);
+    }
+    if (c == '{' || c == '[') {
+        const char close = c == '{' ? '}' : ']';
+        ++i;
+        skip_space(s, i);
+        if (i < s.size() && s[i] == close) return ++i, true;
+        while (true) {
+            if (c == '{') {
+                std::string key;
+                skip_space(s, i);
+                if (!read_json_string(s, i, key)) return false;
+                skip_space(s, i);
+                if (i >= s.size() || s[i] != ':') return false;
+                ++i;
+            }
+            if (!skip_json_value(s, i)) return false;
+            skip_space(s, i);
+            if (i >= s.size()) return false;
+            if (s[i] == ',') {
+                ++i;
+                continue;
+            }
+            if (s[i] == close) return ++i, true;
+            return false;
+        }
+    }
+    const size_t start = i;  // number, true, false, null
+    while (i < s.size() && std::string_view(",}] \t\r\n").find(s[i]) == std::string_view::npos)
+        ++i;
+    return i > start;
+}
+
+// The raw text of member `key` of the JSON object `object`, if present.
+std::optional<std::string_view> json_member(std::string_view object, std::string_view key) {
+    size_t i = 0;
+    skip_space(object, i);
+    if (i >= object.size() || object[i] != '{') return std::nullopt;
+    ++i;
+    while (true) {
+        skip_space(object, i);
+        std::string name;
+        if (!read_json_string(object, i, name)) return std::nullopt;
+        skip_space(object, i);
+        if (i >= object.size() || object[i] != ':') return std::nullopt;
+        ++i;
+        skip_space(object, i);
+        const size_t start = i;
+        if (!skip_json_value(object, i)) return std::nullopt;
+        if (name == key) return object.substr(start, i - start);
+        skip_space(object, i);
+        if (i >= object.size() || object[i] != ',') return std::nullopt;
+        ++i;
+    }
+}
+
+std::optional<std::string> json_string_member(std::string_view object, std::string_view key) {
+    const auto value = json_member(object, key);
+    std::string out;
+    size_t i = 0;
+    if (!value || !read_json_string(*value, i, out)) return std::nullopt;
+    return out;
+}
+
+std::string case_name_from_json(const std::string& json) {
+    if (auto name = json_string_member(json, "name")) return *name;
+    if (auto name = json_string_member(json, "case_name")) return *name;
+    if (auto inner = json_member(json, "case"))
+        if (auto name = json_string_member(*inner, "name")) return *name;
+    return "";
+}
+
+// ---------------------------------------------------------------------------
+// The file's content
+
+// Input problems are caught before the file is created, so that a bad call
+// never leaves a half-written modes.h5 behind.
+void check_input(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes) {
+    auto fail = [&](const std::string& what) {
+        throw std::runtime_error("cannot write " + path + ": " + what);
+    };
+    const size_t n_nodes = mesh.nodes.size();
+    const size_t n_cells = mesh.cell_part.size();
+    if (mesh.cells.size() != n_cells * mesh.nodes_per_cell())
+        fail("the mesh has " + std::to_string(mesh.cells.size()) + " cell node indices for " +
+             std::to_string(n_cells) + " cells of " + std::to_string(mesh.nodes_per_cell()) +
+             " nodes");
+    for (int node : mesh.cells)
+        if (node < 0 || static_cast<size_t>(node) >= n_nodes)
+            fail("cell node index " + std::to_string(node) + " is not a node of the mesh");
+    for (int part : mesh.cell_part)
+        if (part < 0 || static_cast<size_t>(part) >= mesh.part_names.size())
+            fail("cell part " + std::to_string(part) + " has no entry in part_names");
+    for (size_t k = 0; k < modes.size(); ++k)
+        if (modes[k].shape.size() != 3 * n_nodes)
+            fail("mode " + std::to_string(k + 1) + " has " +
+                 std::to_string(modes[k].shape.size()) + " shape values, expected 3 x " +
+                 std::to_string(n_nodes) + " nodes");
+}
+
+void write_mesh(const Writer& w, hid_t file, const Mesh& mesh) {
+    static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double));
+    Handle group = w.group(file, "mesh");
+    const hsize_t n_nodes = mesh.nodes.size();
+    const hsize_t n_cells = mesh.cell_part.size();
+    const hsize_t per_cell = mesh.nodes_per_cell();
+
+    w.dataset(group, "nodes", {n_nodes, 3},
+              mesh.nodes.empty() ? nullptr : mesh.nodes.front().data());
+
+    const std::vector<std::int64_t> cells(mesh.cells.begin(), mesh.cells.end());
+    w.dataset(group, "cells", {n_cells, per_cell}, cells.data());
+    {
+        Handle cells_set(w.check_id(H5Dopen2(group, "cells", H5P_DEFAULT), "dataset cells"),
+                         H5Dclose);
+        w.string_attribute(cells_set, "cell_type", cell_type_name(mesh.cell_type));
+    }
+    const hsize_t vtk_per_cell = vtk_nodes_per_cell(mesh.cell_type);
+    w.dataset(group, "vtk_cells", {n_cells, vtk_per_cell}, vtk_cells(mesh).data());
+
+    const std::vector<std::int32_t> parts(mesh.cell_part.begin(), mesh.cell_part.end());
+    w.vector_dataset(group, "cell_part", parts);
+    w.string_list(group, "part_names", mesh.part_names);
+
+    Handle groups = w.group(group, "node_groups");
+    for (const auto& [name, nodes] : mesh.node_groups) {
+        const std::vector<std::int64_t> indices(nodes.begin(), nodes.end());
+        w.vector_dataset(groups, name, indices);
+    }
+}
+
+void write_modes(const Writer& w, hid_t file, const std::vector<Mode>& modes) {
+    Handle group = w.group(file, "modes");
+    std::vector<double> frequency, eigenvalue, residual, share, effective_mass;
+    std::vector<std::int32_t> n, m;
+    std::vector<std::string> type;
+    for (const Mode& mode : modes) {
+        frequency.push_back(mode.frequency_hz);
+        eigenvalue.push_back(mode.eigenvalue);
+        residual.push_back(mode.relative_residual);
+        type.push_back(mode.label.type);
+        n.push_back(mode.label.n);
+        m.push_back(mode.label.m);
+        share.push_back(mode.label.dominant_share);
+        const EffectiveMass& e = mode.effective_mass;
+        effective_mass.insert(effective_mass.end(), {e.x, e.y, e.z, e.rz});
+    }
+    w.vector_dataset(group, "frequency_hz", frequency);
+    w.vector_dataset(group, "eigenvalue", eigenvalue);
+    w.vector_dataset(group, "relative_residual", residual);
+    w.string_list(group, "type", type);
+    w.vector_dataset(group, "n", n);
+    w.vector_dataset(group, "m", m);
+    w.vector_dataset(group, "dominant_share", share);
+    w.dataset(group, "effective_mass", {modes.size(), 4}, effective_mass.data());
+
+    Handle shapes = w.group(group, "shapes");
+    for (size_t k = 0; k < modes.size(); ++k) {
+        const std::string dataset = modes_h5_shape_dataset(static_cast<int>(k) + 1);
+        const std::string name = dataset.substr(dataset.rfind('/') + 1);
+        w.dataset(shapes, name, {modes[k].shape.size() / 3, 3}, modes[k].shape.data());
+    }
+}
+
+void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,
+                const std::string& case_json, const std::string& program_version,
+                bool& created) {
+    const Writer w(path);
+    Handle file = w.create_file();
+    created = true;
+
+    w.int_attribute(file, "schema_version", modes_h5_schema_version);
+    const bool prefixed = program_version.rfind("coremodal", 0) == 0;
+    w.string_attribute(file, "program", prefixed ? program_version
+                                                 : "coremodal " + program_version);
+    w.string_attribute(file, "case_name", case_name_from_json(case_json));
+    {
+        Handle case_group = w.group(file, "case");
+        w.string_scalar(case_group, "json", case_json);
+    }
+    write_mesh(w, file, mesh);
+    write_modes(w, file, modes);
+
+    w.check_status(file.close(), "cannot close (flush) the file");
+}
+
+}  // namespace
+
+std::string modes_h5_shape_dataset(int number) {
+    char name[32];
+    std::snprintf(name, sizeof name, "mode_%04d", number);
+    return std::string("/modes/shapes/") + name;
+}
+
+void write_modes_h5(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,
+                    const std::string& case_json, const std::string& program_version) {
+    check_input(path, mesh, modes);
+    const QuietHdf5Errors quiet;
+    bool created = false;
+    try {
+        write_file(path, mesh, modes, case_json, program_version, created);
+    } catch (...) {
+        // Every handle is closed by now; don't leave a truncated file that a
+        // reader could mistake for results (but never remove a file we did
+        // not create, e.g. one locked by another program).
+        if (created) std::remove(path.c_str());
+        throw;
+    }
+}
+
+}  // namespace coremodal

@@ -1,0 +1,151 @@
+#include "scene/case_schema.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace coremodal {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Upper bounds that catch unit slips (a plain 76 is 76 m, not 76 mm) rather
+// than physics: no core or rest roll comes near them.
+constexpr double kMaxDiameter = 5.0;  // m
+constexpr double kMaxLength = 50.0;   // m
+constexpr double kMaxModulus = 1e13;  // Pa, above diamond
+constexpr double kMaxDensity = 1e5;   // kg/m^3, above osmium
+constexpr int kMaxModes = 10000;
+constexpr int kMaxElementsThrough = 100;
+constexpr int kMaxElementsAround = 4096;
+
+KeySpec length_key(std::string_view table, std::string_view key, double max) {
+    return {table, key, ValueKind::quantity, Dimension::length, 0.0, max, true};
+}
+KeySpec modulus_key(std::string_view key) {
+    return {"material", key, ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true};
+}
+KeySpec poisson_key(std::string_view key) {
+    // The admissible range depends on the moduli (DOMAIN.md §6); the whole
+    // material is checked with why_not_admissible.
+    return {"material", key, ValueKind::quantity, Dimension::dimensionless};
+}
+KeySpec integer_key(std::string_view table, std::string_view key, double min, double max) {
+    return {table, key, ValueKind::integer, Dimension::dimensionless, min, max};
+}
+KeySpec plain_key(std::string_view table, std::string_view key, ValueKind kind) {
+    return {table, key, kind};
+}
+
+}  // namespace
+
+const std::vector<KeySpec>& case_schema() {
+    static const std::vector<KeySpec> schema = {
+        plain_key("", "name", ValueKind::text),
+        plain_key("", "description", ValueKind::text),
+        plain_key("", "core", ValueKind::table),
+        plain_key("", "rest_paper", ValueKind::table),
+        plain_key("", "supports", ValueKind::table),
+        plain_key("", "analysis", ValueKind::table),
+        plain_key("", "mesh", ValueKind::table),
+
+        length_key("core", "inner_diameter", kMaxDiameter),
+        length_key("core", "outer_diameter", kMaxDiameter),
+        length_key("core", "wall", kMaxDiameter),
+        length_key("core", "length", kMaxLength),
+        plain_key("core", "material", ValueKind::material),
+
+        length_key("rest_paper", "thickness", kMaxDiameter),
+        length_key("rest_paper", "outer_diameter", kMaxDiameter),
+        plain_key("rest_paper", "material", ValueKind::material),
+
+        plain_key("material", "base", ValueKind::text),
+        modulus_key("E"),
+        poisson_key("nu"),
+        modulus_key("E_r"),
+        modulus_key("E_theta"),
+        modulus_key("E_z"),
+        modulus_key("G_rtheta"),
+        modulus_key("G_rz"),
+        modulus_key("G_thetaz"),
+        poisson_key("nu_rtheta"),
+        poisson_key("nu_rz"),
+        poisson_key("nu_thetaz"),
+        {"material", "density", ValueKind::quantity, Dimension::density, 0.0, kMaxDensity, true},
+
+        plain_key("supports", "type", ValueKind::text),
+        plain_key("supports", "left", ValueKind::table),
+        plain_key("supports", "right", ValueKind::table),
+
+        length_key("clamp", "length", kMaxLength),
+        {"clamp", "start", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
+        {"clamp", "center", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
+
+        integer_key("analysis", "modes", 1, kMaxModes),
+        plain_key("analysis", "band", ValueKind::band),
+        {"analysis", "tolerance", ValueKind::quantity, Dimension::dimensionless, 0.0, 0.1, true},
+        integer_key("analysis", "max_iterations", 1, 1e7),
+
+        plain_key("mesh", "level", ValueKind::text),
+        integer_key("mesh", "through_wall", 1, kMaxElementsThrough),
+        integer_key("mesh", "through_rest_paper", 1, kMaxElementsThrough),
+        integer_key("mesh", "around", 8, kMaxElementsAround),
+        integer_key("mesh", "along", 2, 100000),
+        plain_key("mesh", "element", ValueKind::text),
+        plain_key("mesh", "file", ValueKind::text),
+    };
+    return schema;
+}
+
+const KeySpec* find_key(std::string_view table, std::string_view key) {
+    for (const KeySpec& spec : case_schema())
+        if (spec.table == table && spec.key == key) return &spec;
+    return nullptr;
+}
+
+std::vector<std::string_view> keys_of(std::string_view table) {
+    std::vector<std::string_view> out;
+    for (const KeySpec& spec : case_schema())
+        if (spec.table == table) out.push_back(spec.key);
+    return out;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    const auto low = [](char c) {
+        return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    };
+    // Optimal string alignment distance on three rolling rows.
+    std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), current(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        current[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = low(a[i - 1]) == low(b[j - 1]) ? 0 : 1;
+            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost});
+            if (i > 1 && j > 1 && low(a[i - 1]) == low(b[j - 2]) && low(a[i - 2]) == low(b[j - 1]))
+                current[j] = std::min(current[j], before[j - 2] + 1);
+        }
+        before.swap(previous);
+        previous.swap(current);
+    }
+    return previous[b.size()];
+}
+
+std::string_view nearest(std::string_view word, const std::vector<std::string_view>& candidates) {
+    // A typo changes a few characters; more than a third of the word is a
+    // different word, and suggesting it would mislead.
+    constexpr std::size_t kShortWord = 3;  // "nu", "E": one slip at most
+    const std::size_t allowed =
+        word.size() <= kShortWord ? 1 : std::max<std::size_t>(2, word.size() / 3);
+    std::string_view best;
+    std::size_t best_distance = allowed + 1;
+    for (std::string_view c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_distance) {
+            best = c;
+            best_distance = d;
+        }
+    }
+    return best;
+}
+
+}  // namespace coremodal

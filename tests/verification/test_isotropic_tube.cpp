@@ -1,0 +1,126 @@
+// An isotropic steel tube against closed forms (DOMAIN.md section 5): the
+// whole pipeline (gmsh mesh, assembly, SLEPc solve, classification) at once.
+#include "verification/tube_scenes.hpp"
+
+#include "beam/beam_theory.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace coremodal;
+using namespace coremodal::testing;
+
+namespace {
+constexpr double E = 210e9, nu = 0.3, rho = 7850;
+const double G = E / (2 * (1 + nu));
+}  // namespace
+
+TEST_CASE("A free-free steel tube has six rigid modes, its mass, and torsion, axial and bending at theory",
+          "[verification][tube]") {
+    // Do 100 mm, wall 5 mm, 1.2 m: slender (L/Do = 12) and thin enough for beam theory.
+    const double L = 1.2;
+    const auto r = solve_quietly(steel_tube(0.100, 0.090, L, 2, 24, 24, 20));
+
+    SECTION("every mode is verified and the count is proven complete") {
+        CHECK(r.modes.verification.complete);
+        CHECK(r.modes.verification.max_relative_residual < 1e-8);
+        CHECK(r.modes.verification.max_orthonormality_error < 1e-8);
+    }
+    SECTION("the six lowest modes are rigid and carry the whole mass in each direction") {
+        double sx = 0, sy = 0, sz = 0;
+        for (int i = 0; i < 6; ++i) {
+            CHECK(r.modes.modes[i].label.type == "rigid");
+            sx += r.modes.modes[i].effective_mass.x;
+            sy += r.modes.modes[i].effective_mass.y;
+            sz += r.modes.modes[i].effective_mass.z;
+        }
+        CHECK(r.modes.modes[6].label.type != "rigid");
+        // Rigid translations lie exactly in the span of the rigid modes.
+        CHECK(sx == Approx(r.model.mass_kg).epsilon(1e-8));
+        CHECK(sy == Approx(r.model.mass_kg).epsilon(1e-8));
+        CHECK(sz == Approx(r.model.mass_kg).epsilon(1e-8));
+    }
+    SECTION("the model's mass is rho V") {
+        // Quadratic cells reproduce the circular arcs to ~(h/R)^4 ~ 1e-5.
+        CHECK(r.model.mass_kg == Approx(r.model.expected_mass_kg).epsilon(1e-5));
+    }
+    SECTION("torsion is exact: f = 1/(2L) sqrt(G/rho)") {
+        // A circular tube twists without warping, so the only error is the
+        // quadratic elements' discretisation along z: (h k)^4 / ~1000 < 1e-5.
+        CHECK(nth_of_type(r, "torsion").frequency_hz == Approx(std::sqrt(G / rho) / (2 * L)).epsilon(1e-4));
+    }
+    SECTION("axial is f = 1/(2L) sqrt(E/rho) up to Love's lateral-inertia correction") {
+        // Love: f/f0 = 1 - (nu pi r_p / L)^2 / 2 with r_p^2 = (ro^2 + ri^2)/2: 2.5e-4 here.
+        const double rp2 = (0.05 * 0.05 + 0.045 * 0.045) / 2;
+        const double love = 1 - 0.5 * nu * nu * M_PI * M_PI * rp2 / (L * L);
+        CHECK(nth_of_type(r, "axial").frequency_hz ==
+              Approx(std::sqrt(E / rho) / (2 * L) * love).epsilon(5e-4));
+    }
+    SECTION("first bending is at Timoshenko's frequency and comes as a degenerate pair") {
+        const Mode& b = nth_of_type(r, "bending");
+        // Timoshenko beam theory of a thin tube at L/Do = 12 is good to the
+        // shell effects of the section (~0.2 %); allow 0.5 %.
+        CHECK(b.frequency_hz == Approx(r.beam.timoshenko_hz).epsilon(5e-3));
+        CHECK(r.beam.fe_over_timoshenko == Approx(1).epsilon(5e-3));
+        const auto& partner = r.modes.modes[b.index];  // index is 1-based: this is the next mode
+        CHECK(partner.label.type == "bending");
+        CHECK(partner.frequency_hz == Approx(b.frequency_hz).epsilon(1e-8));
+        CHECK(partner.label.m == b.label.m);
+    }
+}
+
+TEST_CASE("A clamped-clamped steel tube bends at the Timoshenko frequency of its free span",
+          "[verification][tube]") {
+    // Clamps one diameter long: the tube's own wall is then the only compliance.
+    const double L = 1.4, clamp = 0.1;
+    const auto r = solve_quietly(clamp_both_ends(steel_tube(0.100, 0.090, L, 2, 24, 28, 6), clamp));
+    CHECK(r.modes.verification.complete);
+    CHECK(r.modes.modes.front().label.type == "bending");
+    CHECK(r.beam.span_m == Approx(L - 2 * clamp));
+    // An inner-surface clamp lets the thin wall rotate a little at the span's
+    // ends, so FE lies slightly below the ideal clamped beam: within 3 %.
+    CHECK(r.beam.fe_over_timoshenko < 1.0);
+    CHECK(r.beam.fe_over_timoshenko > 0.97);
+}
+
+TEST_CASE("A long thin free tube's first ovalling modes match the thin-ring formula", "[verification][tube]") {
+    // Do 100 mm, wall 2 mm (R/t = 24), 0.6 m. The ring formula per unit length,
+    // in plane strain (E / (1 - nu^2)), for the mid-surface radius.
+    const double ro = 0.05, ri = 0.048, R = 0.049, t = ro - ri;
+    const auto r = solve_quietly(steel_tube(2 * ro, 2 * ri, 0.6, 2, 48, 12, 16));
+    const double D_per_length = E / (1 - nu * nu) * t * t * t / 12, mass_per_area = rho * t;
+    auto ring_hz = [&](int n) {
+        return std::sqrt(D_per_length / (mass_per_area * std::pow(R, 4)) * n * n * std::pow(n * n - 1.0, 2) /
+                         (n * n + 1)) / (2 * M_PI);
+    };
+    for (int n : {2, 3}) {
+        const Mode* found = nullptr;
+        for (const auto& m : r.modes.modes)
+            if (m.label.type == "ovalling" && m.label.n == n && m.label.m == 0) {
+                found = &m;
+                break;
+            }
+        REQUIRE(found);
+        // Free ends relax the plane-strain ring toward plane stress over a
+        // length ~sqrt(R t); with thin-shell terms of order (t/R)^2, 2 %.
+        CHECK(found->frequency_hz == Approx(ring_hz(n)).epsilon(0.02));
+    }
+}
+
+TEST_CASE("Refining the mesh reduces the first-bending error at the rate of quadratic elements",
+          "[verification][convergence]") {
+    // Uniform refinement of every direction at once halves h; quadratic
+    // elements converge eigenvalues as h^(2p) = h^4. The observed rate from
+    // three levels must be at least 3 (pre-asymptotic levels lose a little).
+    std::vector<double> f;
+    for (int level : {1, 2, 4}) {
+        const auto r = solve_quietly(steel_tube(0.100, 0.080, 0.8, level, 8 * level, 4 * level, 8));
+        f.push_back(nth_of_type(r, "bending").frequency_hz);
+    }
+    const double rate = std::log2(std::abs(f[0] - f[1]) / std::abs(f[1] - f[2]));
+    INFO("frequencies " << f[0] << ", " << f[1] << ", " << f[2] << "; observed rate " << rate);
+    CHECK(rate > 3.0);
+    CHECK(f[0] > f[1]);  // conforming elements approach from above
+    CHECK(f[1] > f[2]);
+}
