@@ -141,7 +141,7 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
     }
 
     if (std::abs(lambda) < kRigidEigenvalueFraction * lambda_scale) {
-        label.type = "rigid";
+        label = {"rigid", 0, 0, 1.0};  // any mix of rigid motions: n and m mean nothing
     } else if (label.dominant_share < kMinDominantShare) {
         label.type = "mixed";
     } else if (best_n == 1) {
