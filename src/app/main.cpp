@@ -76,6 +76,9 @@ int main(int argc, char** argv) {
     run_cmd->add_option("case", run.case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
     run_cmd->add_option("-o,--output", output, "results folder (default results/<case name>)");
     run_cmd->add_flag("-q,--quiet", run.quiet, "no progress lines or tables");
+    std::string mesh_level;
+    run_cmd->add_option("-m,--mesh", mesh_level,
+                        "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
     run_cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
                     "they override coremodal's solver defaults.");
 
@@ -95,6 +98,7 @@ int main(int argc, char** argv) {
     int status = 0;
     try {
         if (!output.empty()) run.output_dir = output;
+        if (!mesh_level.empty()) run.mesh_level = mesh_level;
         if (*run_cmd) coremodal::run_case(run);
     } catch (const coremodal::InputError& e) {
         status = report_error("error: ", e);

@@ -16,6 +16,7 @@
 #include "output/summary.hpp"
 #include "output/xdmf.hpp"
 #include "scene/case_file.hpp"
+#include "scene/mesh_levels.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -121,7 +122,9 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
 RunReport run_case(const RunOptions& options) {
     // 1. Read and check the case file: every input error surfaces here.
     if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
-    return run_scene(parse_case_file(options.case_file), options);
+    Scene scene = parse_case_file(options.case_file);
+    if (options.mesh_level) apply_mesh_level(scene, *options.mesh_level);
+    return run_scene(std::move(scene), options);
 }
 
 RunReport run_scene(Scene scene_in, const RunOptions& options) {

@@ -13,6 +13,7 @@ struct RunOptions {
     std::optional<std::string> output_dir;  // default results/<case name>
     bool quiet = false;                     // no progress lines (tests)
     bool write_results = true;
+    std::optional<std::string> mesh_level;  // overrides the case's [mesh] level
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

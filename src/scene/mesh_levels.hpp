@@ -39,4 +39,10 @@ const MeshLevel* find_mesh_level(std::string_view name);
 std::optional<int> elements_along(double length, double outer_diameter, int n_around,
                                   double axial_aspect);
 
+// Replaces the mesh counts of a generated mesh by those of a named level
+// (the command line's --mesh LEVEL). Throws InputError naming the valid
+// levels for an unknown name, or if the scene uses a user mesh file.
+struct Scene;
+void apply_mesh_level(Scene& scene, std::string_view level_name);
+
 }  // namespace coremodal
