@@ -1,27 +1,27 @@
 // coremodal: natural modes of paper-roll cores, rest rolls and their chucks.
 //
-//   coremodal run CASE.toml [--output DIR] [PETSc/SLEPc options]
+//   coremodal run CASE.toml [--output DIR] [--mesh LEVEL] [PETSc/SLEPc options]
+//   coremodal beam ...      (beam formulas, no mesh)
+//   coremodal batch ...     (many cases, in parallel processes)
 //
 // PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
 // mumps, -eps_view) may follow anywhere; they are applied after coremodal's
 // defaults, so an expert can override any solver setting.
-#include "app/run_case.hpp"
+#include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 
-#include <CLI/CLI.hpp>
 #include <slepcsys.h>
 
-#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
 namespace {
 
-// A PETSc option is a single dash followed by a word with an underscore or a
-// known prefix ("-eps_view", "-log_view", "-malloc_debug"); its value, if any,
-// is the next argument unless that looks like an option or a case file.
+// A PETSc option is a single dash followed by a word with an underscore
+// ("-eps_view", "-log_view", "-st_pc_factor_mat_solver_type"); its value, if
+// any, is the next argument unless that looks like an option or a case file.
 bool is_petsc_option(const std::string& a) {
     return a.size() > 2 && a[0] == '-' && a[1] != '-' && a.find('_') != std::string::npos;
 }
@@ -58,8 +58,22 @@ std::vector<char*> c_strings(std::vector<std::string>& v) {
 }
 
 int report_error(const char* kind, const std::exception& e) {
-    if (coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << e.what() << std::endl;
+    int mpi_up = 0;
+    MPI_Initialized(&mpi_up);
+    if (!mpi_up || coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << e.what() << std::endl;
     return 1;
+}
+
+int run_guarded(const coremodal::Command& command) {
+    try {
+        return command.run();
+    } catch (const coremodal::InputError& e) {
+        return report_error("error: ", e);
+    } catch (const coremodal::SolveError& e) {
+        return report_error("solve failed: ", e);
+    } catch (const std::exception& e) {
+        return report_error("", e);
+    }
 }
 
 }  // namespace
@@ -70,17 +84,8 @@ int main(int argc, char** argv) {
     CLI::App app{"coremodal " COREMODAL_VERSION
                  ": natural modes of paper-roll cores, rest rolls and chucks (gmsh, PETSc, SLEPc)"};
     app.require_subcommand(1);
-    coremodal::RunOptions run;
-    std::string output;
-    auto* run_cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
-    run_cmd->add_option("case", run.case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
-    run_cmd->add_option("-o,--output", output, "results folder (default results/<case name>)");
-    run_cmd->add_flag("-q,--quiet", run.quiet, "no progress lines or tables");
-    std::string mesh_level;
-    run_cmd->add_option("-m,--mesh", mesh_level,
-                        "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
-    run_cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
-                    "they override coremodal's solver defaults.");
+    const std::vector<coremodal::Command> commands = {
+        coremodal::add_run_command(app), coremodal::add_beam_command(app), coremodal::add_batch_command(app)};
 
     auto ours = c_strings(args.ours);
     try {
@@ -88,6 +93,11 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
+    const coremodal::Command* chosen = nullptr;
+    for (const auto& c : commands)
+        if (c.cli->parsed()) chosen = &c;
+    if (!chosen) return 2;
+    if (!chosen->needs_petsc) return run_guarded(*chosen);
 
     auto petsc = c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
@@ -95,18 +105,7 @@ int main(int argc, char** argv) {
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-    int status = 0;
-    try {
-        if (!output.empty()) run.output_dir = output;
-        if (!mesh_level.empty()) run.mesh_level = mesh_level;
-        if (*run_cmd) coremodal::run_case(run);
-    } catch (const coremodal::InputError& e) {
-        status = report_error("error: ", e);
-    } catch (const coremodal::SolveError& e) {
-        status = report_error("solve failed: ", e);
-    } catch (const std::exception& e) {
-        status = report_error("", e);
-    }
+    const int status = run_guarded(*chosen);
     SlepcFinalize();
     return status;
 }

@@ -1,0 +1,23 @@
+// Each subcommand of the coremodal program registers itself with the
+// command line and returns what to run once the line is parsed. main() then
+// starts PETSc/SLEPc only for commands that need it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+
+namespace coremodal {
+
+struct Command {
+    CLI::App* cli = nullptr;
+    std::function<int()> run;  // returns the process exit code
+    bool needs_petsc = true;
+};
+
+Command add_run_command(CLI::App& app);    // app/run_command.cpp
+Command add_beam_command(CLI::App& app);   // app/beam_command.cpp
+Command add_batch_command(CLI::App& app);  // app/batch_command.cpp
+
+}  // namespace coremodal

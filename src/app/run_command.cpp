@@ -1,0 +1,28 @@
+// `coremodal run CASE.toml`: the main job.
+#include "app/commands.hpp"
+#include "app/run_case.hpp"
+
+namespace coremodal {
+
+Command add_run_command(CLI::App& app) {
+    auto options = std::make_shared<RunOptions>();
+    auto output = std::make_shared<std::string>();
+    auto mesh_level = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
+    cmd->add_option("case", options->case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
+    cmd->add_option("-o,--output", *output, "results folder (default results/<case name>)");
+    cmd->add_option("-m,--mesh", *mesh_level,
+                    "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
+    cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or tables");
+    cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
+                "they override coremodal's solver defaults.");
+    auto run = [options, output, mesh_level] {
+        if (!output->empty()) options->output_dir = *output;
+        if (!mesh_level->empty()) options->mesh_level = *mesh_level;
+        run_case(*options);
+        return 0;
+    };
+    return {cmd, run, true};
+}
+
+}  // namespace coremodal
