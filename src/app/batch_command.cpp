@@ -1,12 +1,53 @@
-// `coremodal batch`: batch-theory case files in parallel processes. (Being built: issue 4.)
+// `coremodal batch DIR|FILES...`: many case files, each run by a child
+// `coremodal run` process, a few at a time; a table of f1, the beam ratio and
+// the safe web speed at the end (console, OUT/batch.csv, OUT/batch.md).
+#include "app/batch.hpp"
 #include "app/commands.hpp"
+#include "common/error.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 
 namespace coremodal {
+namespace {
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream f(path);
+    f << text;
+    if (!f) throw InputError("cannot write " + path.string());
+}
+
+}  // namespace
 
 Command add_batch_command(CLI::App& app) {
-    CLI::App* cmd = app.add_subcommand("batch", "Run many case files");
-    cmd->allow_extras();
-    return {cmd, [] { throw std::runtime_error("coremodal batch is not available yet"); return 1; }, false};
+    auto options = std::make_shared<BatchOptions>();
+    auto mesh_level = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand(
+        "batch", "Run many case files, each in its own process, and tabulate f1, FE/Timoshenko and v_safe");
+    cmd->add_option("cases", options->inputs, "case files, or folders (every *.toml in them, sorted)")->required();
+    cmd->add_option("-o,--output", options->output_dir,
+                    "results folder: OUT/<case>/ and OUT/<case>.log per case, OUT/batch.csv and OUT/batch.md")
+        ->capture_default_str();
+    cmd->add_option("-j,--jobs", options->jobs, "cases run at once (default: the number of cores)")
+        ->check(CLI::Range(1u, 4096u));
+    cmd->add_option("-m,--mesh", *mesh_level,
+                    "mesh level for every case, overriding the case files: coarse, default, fine, very_fine");
+    cmd->footer("Each case runs as `coremodal run CASE --output OUT/<case> --quiet`; a failing case does not stop "
+                "the others. Exit code 1 if any case failed. See docs/batch.md.");
+    auto run = [options, mesh_level] {
+        if (!mesh_level->empty()) options->mesh_level = *mesh_level;
+        const auto cases = run_batch(*options, std::cout);
+        const std::filesystem::path out = options->output_dir;
+        write_file(out / "batch.csv", batch_csv(cases));
+        write_file(out / "batch.md", batch_markdown(cases));
+        print_batch_table(std::cout, cases);
+        std::cout << "table: " << (out / "batch.csv").string() << ", " << (out / "batch.md").string() << std::endl;
+        for (const auto& c : cases)
+            if (!c.ok) return 1;
+        return 0;
+    };
+    return {cmd, run, false};
 }
 
 }  // namespace coremodal

@@ -180,7 +180,15 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     request.lambda_scale = std::pow(2 * M_PI * f_scale, 2);
     request.tolerance = scene.analysis.tolerance;
     request.max_iterations = scene.analysis.max_iterations;
-    SolvedModes solved = solve_modes(system.K, system.M, request, say);
+    // The solver's input errors (e.g. more modes than DOFs) are about the
+    // case file's [analysis] table: name the file.
+    SolvedModes solved = [&] {
+        try {
+            return solve_modes(system.K, system.M, request, say);
+        } catch (const InputError& e) {
+            throw InputError(scene.source_file + ": " + e.what());
+        }
+    }();
     report.modes.verification = solved.verification;
     report.timing_s.factor_and_solve = stage.lap();
 

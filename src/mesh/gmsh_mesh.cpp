@@ -129,7 +129,13 @@ Mesh read_msh_file(const std::string& path) {
         gmsh::open(path);
     } catch (const std::exception& e) {
         throw InputError(path + ": gmsh cannot read this mesh file: " + e.what());
+    } catch (const std::string& e) {  // gmsh's C++ API throws its last error message as a string
+        throw InputError(path + ": gmsh cannot read this mesh file: " + e);
     }
+    // gmsh opens an empty file (or one of only comments) without complaint.
+    gmsh::vectorpair entities;
+    gmsh::model::getEntities(entities);
+    if (entities.empty()) throw InputError(path + ": gmsh found no mesh in this file; expected a gmsh .msh mesh");
     return read_current_gmsh_mesh(path);
 }
 

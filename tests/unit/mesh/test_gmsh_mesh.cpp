@@ -214,14 +214,17 @@ TEST_CASE("A missing or unreadable mesh file is an input error naming the file",
         const std::string path = dir.file("garbage.msh");
         std::ofstream(path) << "this is not a mesh\n1 2 3\n$Nodes\nnonsense\n";
         REQUIRE_THROWS_AS(read_msh_file(path), InputError);
-        REQUIRE_THROWS_WITH(read_msh_file(path), Contains(path));
+        // gmsh's API throws its parser's message as a std::string the first
+        // time; opened again, it leaves an empty model. Both name the file.
+        REQUIRE_THROWS_WITH(read_msh_file(path), Contains(path) && Contains("mesh"));
     }
 
     SECTION("an empty file") {
         const std::string path = dir.file("empty.msh");
         std::ofstream{path};
+        // gmsh opens it without complaint and leaves an empty model.
         REQUIRE_THROWS_AS(read_msh_file(path), InputError);
-        REQUIRE_THROWS_WITH(read_msh_file(path), Contains(path));
+        REQUIRE_THROWS_WITH(read_msh_file(path), Contains(path) && Contains("no mesh"));
     }
 }
 
@@ -250,7 +253,7 @@ TEST_CASE("require_groups names the missing group and lists those present", "[me
 TEST_CASE("The free-free tet10 user mesh bends like the generated hex20 mesh of the same tube",
           "[mesh][gmsh][solve]") {
     // Steel: the comparison is between meshes, the material only sets the scale.
-    Scene generated = steel_tube(0.106, 0.076, kLength, 2, 16, 24, 10);
+    Scene generated = steel_tube(0.106, 0.076, kLength, 2, 16, 24, 8);  // 6 rigid + a bending pair
     Scene user = generated;
     user.mesh.file = shipped("tube-76x15-tet10.msh");
     const RunReport hex = solve_quietly(generated);

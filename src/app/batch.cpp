@@ -1,0 +1,545 @@
+#include "app/batch.hpp"
+
+#include "common/error.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+extern char** environ;
+
+namespace coremodal {
+namespace fs = std::filesystem;
+namespace {
+
+// ---- a small JSON reader: enough for summary.json ---------------------------
+
+struct JsonValue {
+    enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
+    double number = 0;
+    std::string text;
+    std::vector<std::pair<std::string, JsonValue>> members;  // object
+    std::vector<JsonValue> items;                             // array
+};
+
+class JsonParser {
+public:
+    explicit JsonParser(const std::string& text) : t_(text) {}
+
+    JsonValue document() {
+        JsonValue v = value(0);
+        if (peek() != '\0') fail("unexpected text after the value");
+        return v;
+    }
+
+private:
+    const std::string& t_;
+    std::size_t p_ = 0;
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::runtime_error("invalid JSON at character " + std::to_string(p_ + 1) + ": " + what);
+    }
+    char peek() {
+        while (p_ < t_.size() && (t_[p_] == ' ' || t_[p_] == '\t' || t_[p_] == '\n' || t_[p_] == '\r')) ++p_;
+        return p_ < t_.size() ? t_[p_] : '\0';
+    }
+    void expect(char c) {
+        if (peek() != c) fail(std::string("expected '") + c + "'");
+        ++p_;
+    }
+    bool literal(const char* word) {
+        const std::size_t n = std::strlen(word);
+        if (t_.compare(p_, n, word) != 0) return false;
+        p_ += n;
+        return true;
+    }
+
+    JsonValue value(int depth) {
+        if (depth > 256) fail("nested too deeply");
+        JsonValue v;
+        const char c = peek();
+        if (c == '{') {
+            ++p_;
+            v.kind = JsonValue::Kind::object;
+            if (peek() == '}') return ++p_, v;
+            for (;;) {
+                if (peek() != '"') fail("expected a key");
+                std::string key = string();
+                expect(':');
+                v.members.emplace_back(std::move(key), value(depth + 1));
+                if (peek() == ',') {
+                    ++p_;
+                    continue;
+                }
+                expect('}');
+                return v;
+            }
+        }
+        if (c == '[') {
+            ++p_;
+            v.kind = JsonValue::Kind::array;
+            if (peek() == ']') return ++p_, v;
+            for (;;) {
+                v.items.push_back(value(depth + 1));
+                if (peek() == ',') {
+                    ++p_;
+                    continue;
+                }
+                expect(']');
+                return v;
+            }
+        }
+        if (c == '"') {
+            v.kind = JsonValue::Kind::string;
+            v.text = string();
+            return v;
+        }
+        if (literal("true") || literal("false")) {
+            v.kind = JsonValue::Kind::boolean;
+            v.number = t_[p_ - 1] == 'e' && t_[p_ - 2] == 'u';
+            return v;
+        }
+        if (literal("null")) return v;
+        if (c == '-' || (c >= '0' && c <= '9')) {
+            const char* begin = t_.c_str() + p_;
+            char* end = nullptr;
+            v.kind = JsonValue::Kind::number;
+            v.number = std::strtod(begin, &end);
+            if (end == begin) fail("bad number");
+            p_ += static_cast<std::size_t>(end - begin);
+            return v;
+        }
+        fail(c == '\0' ? std::string("unexpected end") : std::string("unexpected '") + c + "'");
+    }
+
+    std::string string() {
+        ++p_;  // opening quote
+        std::string s;
+        while (p_ < t_.size() && t_[p_] != '"') {
+            char c = t_[p_++];
+            if (c != '\\') {
+                s += c;
+                continue;
+            }
+            if (p_ >= t_.size()) break;
+            c = t_[p_++];
+            switch (c) {
+                case 'b': s += '\b'; break;
+                case 'f': s += '\f'; break;
+                case 'n': s += '\n'; break;
+                case 'r': s += '\r'; break;
+                case 't': s += '\t'; break;
+                case 'u': {
+                    if (p_ + 4 > t_.size()) fail("bad \\u escape");
+                    const unsigned cp = static_cast<unsigned>(std::stoul(t_.substr(p_, 4), nullptr, 16));
+                    p_ += 4;
+                    if (cp < 0x80) {
+                        s += static_cast<char>(cp);
+                    } else if (cp < 0x800) {
+                        s += static_cast<char>(0xC0 | (cp >> 6));
+                        s += static_cast<char>(0x80 | (cp & 0x3F));
+                    } else {
+                        s += static_cast<char>(0xE0 | (cp >> 12));
+                        s += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+                        s += static_cast<char>(0x80 | (cp & 0x3F));
+                    }
+                    break;
+                }
+                default: s += c;  // \" \\ \/
+            }
+        }
+        if (p_ >= t_.size()) fail("unterminated string");
+        ++p_;  // closing quote
+        return s;
+    }
+};
+
+const JsonValue* json_find(const JsonValue& root, const std::string& path) {
+    const JsonValue* v = &root;
+    std::size_t start = 0;
+    while (start <= path.size()) {
+        const std::size_t dot = std::min(path.find('.', start), path.size());
+        const std::string key = path.substr(start, dot - start);
+        if (v->kind != JsonValue::Kind::object) return nullptr;
+        const JsonValue* next = nullptr;
+        for (const auto& [k, member] : v->members)
+            if (k == key) next = &member;
+        if (!next) return nullptr;
+        v = next;
+        start = dot + 1;
+    }
+    return v;
+}
+
+// ---- child processes ---------------------------------------------------------
+
+std::string read_text(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+// The environment of every child: ours, and with several cases at once one
+// thread per BLAS/OpenMP library (unless the user set it), so that J
+// processes do not each start one thread per core.
+std::vector<std::string> child_environment(bool single_threaded) {
+    std::vector<std::string> env;
+    std::set<std::string> names;
+    for (char** e = environ; e && *e; ++e) {
+        env.emplace_back(*e);
+        names.insert(env.back().substr(0, env.back().find('=')));
+    }
+    if (single_threaded)
+        for (const char* name : {"OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"})
+            if (!names.count(name)) env.push_back(std::string(name) + "=1");
+    return env;
+}
+
+std::vector<char*> c_strings(std::vector<std::string>& v) {
+    std::vector<char*> out;
+    for (auto& s : v) out.push_back(s.data());
+    out.push_back(nullptr);
+    return out;
+}
+
+std::string program_name(const std::string& program) {
+    std::error_code ec;
+    const fs::path real = fs::read_symlink(program, ec);
+    return ec ? program : real.string();
+}
+
+void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
+    std::vector<std::string> args = {program_name(o.program), "run", c.file, "--output", c.result_dir, "--quiet"};
+    if (o.mesh_level) args.insert(args.end(), {"--mesh", *o.mesh_level});
+    auto argv = c_strings(args);
+    auto envp = c_strings(env);
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, c.log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+
+    const auto start = std::chrono::steady_clock::now();
+    pid_t pid = 0;
+    const int spawn_error = posix_spawn(&pid, o.program.c_str(), &actions, nullptr, argv.data(), envp.data());
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawn_error != 0) {
+        c.error = "cannot start " + args[0] + ": " + std::strerror(spawn_error);
+        return;
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    c.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    const std::string message = first_error_line(read_text(c.log_file));
+    if (WIFSIGNALED(status)) {
+        c.error = "crashed: signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+        if (!message.empty()) c.error += ": " + message;
+        return;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        c.error = !message.empty() ? message
+                                   : "exit code " + std::to_string(WEXITSTATUS(status)) + " without a message";
+        return;
+    }
+    const fs::path summary = fs::path(c.result_dir) / "summary.json";
+    if (!fs::exists(summary)) {
+        c.error = "finished without writing " + summary.string();
+        return;
+    }
+    try {
+        read_batch_summary(c, read_text(summary.string()));
+        c.ok = true;
+    } catch (const std::exception& e) {
+        c.error = summary.string() + ": " + e.what();
+    }
+}
+
+// ---- tables -------------------------------------------------------------------
+
+std::string fixed(const std::optional<double>& v, int decimals) {
+    if (!v) return "-";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, *v);
+    return buf;
+}
+
+std::string csv_number(const std::optional<double>& v) {
+    if (!v) return "";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.10g", *v);
+    return buf;
+}
+
+std::string csv_field(const std::string& s) {
+    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) {
+        if (c == '"') q += '"';
+        q += c;
+    }
+    return q + '"';
+}
+
+std::optional<double> times(const std::optional<double>& v, double factor) {
+    return v ? std::optional<double>(*v * factor) : std::nullopt;
+}
+
+// The displayed columns of one case: status, f1, ratio, D [mm], v_safe m/s, m/min, time.
+std::vector<std::string> row_cells(const BatchCase& c) {
+    return {c.name,
+            c.ok ? "ok" : "FAILED",
+            fixed(c.f1_hz, 2),
+            fixed(c.fe_over_timoshenko, 4),
+            fixed(times(c.diameter_m, 1000), 1),
+            fixed(c.v_safe_m_s, 2),
+            fixed(times(c.v_safe_m_s, 60), 0),
+            fixed(c.time_s, 1)};
+}
+
+const std::vector<std::string> kHeader = {"case",   "status",       "f1 [Hz]",        "FE/Timoshenko",
+                                          "D [mm]", "v_safe [m/s]", "v_safe [m/min]", "time [s]"};
+
+std::string footnote() {
+    char buf[512];
+    std::snprintf(buf, sizeof buf,
+                  "f1: first bending mode (summary.json beam.fe_first_bending_hz); FE/Timoshenko: f1 over the "
+                  "Timoshenko beam formula.\n"
+                  "v_safe = %.1f * pi * D * f1 (safe web speed, DOMAIN.md I-5, with the factor %.1f); D = rest roll "
+                  "outer diameter, or the core's without rest paper; not given for free-free cases.\n",
+                  kSafeSpeedFactor, kSafeSpeedFactor);
+    return buf;
+}
+
+}  // namespace
+
+std::optional<double> json_number(const std::string& json, const std::string& path) {
+    const JsonValue root = JsonParser(json).document();
+    const JsonValue* v = json_find(root, path);
+    if (!v || v->kind != JsonValue::Kind::number) return std::nullopt;
+    return v->number;
+}
+
+std::optional<std::string> json_string(const std::string& json, const std::string& path) {
+    const JsonValue root = JsonParser(json).document();
+    const JsonValue* v = json_find(root, path);
+    if (!v || v->kind != JsonValue::Kind::string) return std::nullopt;
+    return v->text;
+}
+
+std::string first_error_line(const std::string& log_text) {
+    std::vector<std::string> lines;
+    std::istringstream in(log_text);
+    for (std::string line; std::getline(in, line);) {
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+        if (!line.empty()) lines.push_back(line);
+    }
+    const std::string prefix = "coremodal: ";
+    for (const auto& l : lines)
+        if (l.rfind(prefix, 0) == 0) return l.substr(prefix.size());
+    for (const auto& l : lines) {
+        std::string lower = l;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return std::tolower(ch); });
+        if (lower.find("error") != std::string::npos) return l;
+    }
+    return lines.empty() ? "" : lines.back();
+}
+
+void read_batch_summary(BatchCase& c, const std::string& summary_json) {
+    const JsonValue root = JsonParser(summary_json).document();
+    auto number = [&](const std::string& path) -> std::optional<double> {
+        const JsonValue* v = json_find(root, path);
+        if (!v || v->kind != JsonValue::Kind::number || !std::isfinite(v->number)) return std::nullopt;
+        return v->number;
+    };
+    const auto f1 = number("beam.fe_first_bending_hz");
+    if (!f1) throw std::runtime_error("no beam.fe_first_bending_hz");
+    // The writer stores 0 when no bending mode was found among the modes.
+    c.f1_hz = *f1 > 0 ? f1 : std::nullopt;
+    const auto ratio = number("beam.fe_over_timoshenko");
+    c.fe_over_timoshenko = ratio && *ratio > 0 ? ratio : std::nullopt;
+    c.diameter_m = number("case.rest_paper.outer_diameter");
+    if (!c.diameter_m) c.diameter_m = number("case.core.outer_diameter");
+    const JsonValue* supports = json_find(root, "case.supports.type");
+    const bool free_free = supports && supports->kind == JsonValue::Kind::string && supports->text == "free";
+    c.v_safe_m_s.reset();
+    if (c.f1_hz && c.diameter_m && !free_free) c.v_safe_m_s = kSafeSpeedFactor * M_PI * *c.diameter_m * *c.f1_hz;
+}
+
+std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {
+    std::vector<std::string> files;
+    for (const auto& input : inputs) {
+        std::error_code ec;
+        if (fs::is_directory(input, ec)) {
+            std::vector<std::string> found;
+            for (const auto& entry : fs::directory_iterator(input, ec))
+                if (entry.path().extension() == ".toml" && !fs::is_directory(entry.path(), ec))
+                    found.push_back(entry.path().string());
+            if (ec) throw InputError("cannot read folder " + input + ": " + ec.message());
+            if (found.empty()) throw InputError("no *.toml case files in folder " + input);
+            std::sort(found.begin(), found.end());
+            files.insert(files.end(), found.begin(), found.end());
+        } else if (fs::exists(input, ec)) {
+            files.push_back(input);
+        } else {
+            throw InputError("no such case file or folder: " + input);
+        }
+    }
+    if (files.empty()) throw InputError("no case files given");
+    return files;
+}
+
+std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) {
+    const auto files = batch_case_files(o.inputs);
+    std::error_code ec;
+    fs::create_directories(o.output_dir, ec);
+    if (ec) throw InputError("cannot create output folder " + o.output_dir + ": " + ec.message());
+
+    // One result folder per case, named by the file stem; a stem seen before
+    // (the same name in two folders) gets -2, -3, ...
+    std::vector<BatchCase> cases;
+    std::map<std::string, int> seen;
+    for (const auto& f : files) {
+        BatchCase c;
+        c.file = f;
+        const std::string stem = fs::path(f).stem().string();
+        const int n = ++seen[stem];
+        c.name = n == 1 ? stem : stem + "-" + std::to_string(n);
+        c.result_dir = (fs::path(o.output_dir) / c.name).string();
+        c.log_file = (fs::path(o.output_dir) / (c.name + ".log")).string();
+        cases.push_back(std::move(c));
+    }
+
+    unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+    jobs = std::min<unsigned>(jobs, static_cast<unsigned>(cases.size()));
+    std::vector<std::string> env = child_environment(jobs > 1);
+
+    progress << "batch: " << cases.size() << (cases.size() == 1 ? " case, " : " cases, ") << jobs
+             << " at a time, results in " << o.output_dir << std::endl;
+
+    std::size_t width = 0;
+    for (const auto& c : cases) width = std::max(width, c.name.size());
+    std::atomic<std::size_t> next{0};
+    std::mutex lock;
+    std::size_t finished = 0;
+    auto worker = [&] {
+        for (std::size_t i; (i = next++) < cases.size();) {
+            BatchCase& c = cases[i];
+            try {
+                run_one(c, o, env);
+            } catch (const std::exception& e) {
+                c.ok = false;
+                c.error = e.what();
+            }
+            std::lock_guard<std::mutex> guard(lock);
+            char head[64], time[64];
+            std::snprintf(head, sizeof head, "[%zu/%zu] ", ++finished, cases.size());
+            std::snprintf(time, sizeof time, "%.1f s", c.time_s);
+            progress << head << c.name << std::string(width - c.name.size(), ' ')
+                     << (c.ok ? "  ok " + std::string(time) : "  FAILED: " + c.error + "  (" + time + ")")
+                     << std::endl;
+        }
+    };
+    std::vector<std::thread> threads;
+    for (unsigned j = 0; j < jobs; ++j) threads.emplace_back(worker);
+    for (auto& t : threads) t.join();
+    return cases;
+}
+
+void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases) {
+    std::vector<std::vector<std::string>> rows = {kHeader};
+    for (const auto& c : cases) rows.push_back(row_cells(c));
+    std::vector<std::size_t> widths(kHeader.size(), 0);
+    for (const auto& r : rows)
+        for (std::size_t i = 0; i < r.size(); ++i) widths[i] = std::max(widths[i], r[i].size());
+    auto print_row = [&](const std::vector<std::string>& r) {
+        std::string line = " ";
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const std::string pad(widths[i] - r[i].size(), ' ');
+            line += i < 2 ? r[i] + pad : pad + r[i];  // names left, numbers right
+            if (i + 1 < r.size()) line += "  ";
+        }
+        out << line << '\n';
+    };
+    out << '\n';
+    print_row(rows[0]);
+    std::vector<std::string> rule;
+    for (auto w : widths) rule.push_back(std::string(w, '-'));
+    print_row(rule);
+    for (std::size_t i = 1; i < rows.size(); ++i) print_row(rows[i]);
+    out << '\n' << footnote();
+    std::size_t failed = 0;
+    for (const auto& c : cases)
+        if (!c.ok) {
+            if (failed++ == 0) out << '\n';
+            out << "FAILED " << c.name << ": " << c.error << "\n  case " << c.file << ", log " << c.log_file << '\n';
+        }
+    out << '\n' << cases.size() - failed << " of " << cases.size() << " cases ok";
+    if (failed) out << ", " << failed << " failed";
+    out << std::endl;
+}
+
+std::string batch_csv(const std::vector<BatchCase>& cases) {
+    std::ostringstream s;
+    s << "case,file,status,f1_hz,fe_over_timoshenko,diameter_m,v_safe_m_per_s,v_safe_m_per_min,time_s,error\n";
+    for (const auto& c : cases) {
+        char time[64];
+        std::snprintf(time, sizeof time, "%.3f", c.time_s);
+        s << csv_field(c.name) << ',' << csv_field(c.file) << ',' << (c.ok ? "ok" : "failed") << ','
+          << csv_number(c.f1_hz) << ',' << csv_number(c.fe_over_timoshenko) << ',' << csv_number(c.diameter_m) << ','
+          << csv_number(c.v_safe_m_s) << ',' << csv_number(times(c.v_safe_m_s, 60)) << ',' << time << ','
+          << csv_field(c.error) << '\n';
+    }
+    return s.str();
+}
+
+std::string batch_markdown(const std::vector<BatchCase>& cases) {
+    auto cell = [](std::string s) {
+        std::string out;
+        for (char c : s) {
+            if (c == '|') out += '\\';
+            out += c == '\n' ? ' ' : c;
+        }
+        return out;
+    };
+    std::ostringstream s;
+    s << "# coremodal batch\n\n|";
+    for (const auto& h : kHeader) s << ' ' << h << " |";
+    s << " error |\n|";
+    for (std::size_t i = 0; i < kHeader.size(); ++i) s << (i < 2 ? "---|" : "---:|");
+    s << "---|\n";
+    for (const auto& c : cases) {
+        s << '|';
+        for (const auto& v : row_cells(c)) s << ' ' << cell(v) << " |";
+        s << ' ' << cell(c.error) << " |\n";
+    }
+    std::string note = footnote();
+    std::replace(note.begin(), note.end(), '\n', ' ');
+    note.pop_back();
+    s << '\n' << note << '\n';
+    return s.str();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,69 @@
+// `coremodal batch`: many case files, each run as a child process of the same
+// coremodal executable (`coremodal run CASE --output OUT/<stem> --quiet`), so
+// that a crash or an error in one case cannot take down the others.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// Safe web speed, DOMAIN.md formula I-5: v_safe = safe * pi * D * f1 with the
+// conservative factor safe = 0.7 (no safety cage).
+inline constexpr double kSafeSpeedFactor = 0.7;
+
+struct BatchOptions {
+    std::vector<std::string> inputs;             // case files and folders (every *.toml in them)
+    std::string output_dir = "results/batch";
+    unsigned jobs = 0;                           // 0: number of cores; never more than the cases
+    std::optional<std::string> mesh_level;       // passed on as `run --mesh LEVEL`
+    std::string program = "/proc/self/exe";      // the coremodal executable to run the cases with
+};
+
+struct BatchCase {
+    std::string file;        // case file as given or found
+    std::string name;        // file stem (made unique): results in OUT/<name>, log OUT/<name>.log
+    std::string result_dir;
+    std::string log_file;
+    bool ok = false;
+    std::string error;       // first error line of a failed case
+    double time_s = 0;       // wall time of the child process
+    // From OUT/<name>/summary.json, when the case succeeded:
+    std::optional<double> f1_hz;               // beam.fe_first_bending_hz (first bending mode)
+    std::optional<double> fe_over_timoshenko;  // beam.fe_over_timoshenko
+    std::optional<double> diameter_m;          // rest paper outer diameter, else the core's
+    std::optional<double> v_safe_m_s;          // kSafeSpeedFactor * pi * D * f1 (not for free-free)
+};
+
+// Case files named by the inputs: a folder stands for every *.toml in it
+// (sorted by name), a file for itself. Throws InputError for a missing path or
+// when no case file is found.
+std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs);
+
+// Runs every case, at most `jobs` at a time, printing one progress line per
+// finished case to `progress`. Never throws for a failing case.
+std::vector<BatchCase> run_batch(const BatchOptions& options, std::ostream& progress);
+
+// Fills the summary fields of `c` from the text of its summary.json. Throws
+// std::runtime_error when the text is not JSON or lacks the beam keys.
+void read_batch_summary(BatchCase& c, const std::string& summary_json);
+
+// The line of a child's log that explains its failure: the first
+// "coremodal: ..." line (prefix removed), else the first line mentioning an
+// error, else the last non-empty line; "" for an empty log.
+std::string first_error_line(const std::string& log_text);
+
+// A number or string in a JSON text by a dotted path of object keys, e.g.
+// "beam.fe_first_bending_hz"; nullopt when the path is absent or of another
+// kind. Throws std::runtime_error when the text is not valid JSON.
+std::optional<double> json_number(const std::string& json, const std::string& path);
+std::optional<std::string> json_string(const std::string& json, const std::string& path);
+
+// The result table: console text, CSV and Markdown.
+void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases);
+std::string batch_csv(const std::vector<BatchCase>& cases);
+std::string batch_markdown(const std::vector<BatchCase>& cases);
+
+}  // namespace coremodal

@@ -1,0 +1,270 @@
+// The program as a user meets it: the real coremodal binary run on small case
+// files written to a temporary folder. Bad input must stop it with a located
+// message on stderr and leave no results behind; good input must produce the
+// whole results folder, serially and under mpirun.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        static int counter = 0;
+        path = fs::temp_directory_path() /
+               ("coremodal_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() { fs::remove_all(path); }
+    void write(const std::string& name, const std::string& text) const { std::ofstream(path / name) << text; }
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct Run {
+    int exit_code = -1;
+    std::string out, err;
+};
+
+// Runs `prefix coremodal args` inside dir, so that case files are named
+// relatively ("bad.toml:4:18: ..."). The test binary itself is an MPI
+// singleton; the Open MPI and PMIx variables that puts in our environment
+// must not reach the child, or its MPI_Init (and mpirun) would try to join
+// this process's job.
+Run run_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
+    const std::string command = "cd '" + dir.path.string() +
+                                "' && unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
+                                "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1) && " +
+                                prefix + "'" COREMODAL_BINARY "' " + args + " >stdout.txt 2>stderr.txt";
+    const int status = std::system(command.c_str());
+    Run r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(dir.path / "stdout.txt");
+    r.err = slurp(dir.path / "stderr.txt");
+    fs::remove(dir.path / "stdout.txt");
+    fs::remove(dir.path / "stderr.txt");
+    return r;
+}
+
+// Anything a run left in dir besides the case and mesh files it was given.
+std::vector<std::string> leftovers(const TempDir& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir.path)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_directory() || name.find(".partial-") != std::string::npos) names.push_back(name);
+    }
+    return names;
+}
+
+// A steel tube 0.5 m long with one hex20 through the wall, 8 around, 4 along:
+// 792 DOFs, a second to solve. Steel keeps the closed forms simple.
+const std::string kTinyCase = R"(name = "tiny"
+
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "0.5 m"
+material = { E = "210 GPa", nu = 0.3, density = "7850 kg/m^3" }
+
+[analysis]
+modes = 12
+
+[mesh]
+around = 8
+along = 4
+through_wall = 1
+)";
+
+const std::string kCoreHeader = R"(name = "bad"
+
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "0.5 m"
+)";
+
+struct BadCase {
+    std::string what;
+    std::string toml;
+    std::vector<std::string> expected;  // all must appear on stderr
+};
+
+std::vector<BadCase> bad_cases() {
+    const std::string tet10 = std::string(COREMODAL_SOURCE_DIR) + "/meshes/tube-76x15-tet10.msh";
+    return {
+        {"inner diameter not below the outer one",
+         "name = \"bad\"\n\n[core]\ninner_diameter = \"120 mm\"\nouter_diameter = \"106 mm\"\nlength = \"0.5 m\"\n",
+         {"bad.toml:4:", "inner_diameter", "outer_diameter"}},
+        {"a negative modulus",
+         kCoreHeader + "material = { E = \"-210 GPa\", nu = 0.3, density = \"7850 kg/m^3\" }\n",
+         {"bad.toml:7:", "E = -210 GPa", "positive"}},
+        {"Poisson ratios that make the compliance indefinite",
+         kCoreHeader + "material = { base = \"paperboard_core\", nu_rtheta = 0.9, nu_rz = 0.9, nu_thetaz = 0.9 }\n",
+         {"bad.toml:7:", "material", "positive definite"}},
+        {"an unknown key",
+         "name = \"bad\"\n\n[core]\ninner_diameter = \"76 mm\"\nouter_diamter = \"106 mm\"\nlength = \"0.5 m\"\n",
+         {"bad.toml:5:", "outer_diamter", "did you mean 'outer_diameter'"}},
+        {"a mass for a diameter",
+         "name = \"bad\"\n\n[core]\ninner_diameter = \"76 kg\"\nwall = \"15 mm\"\nlength = \"0.5 m\"\n",
+         {"bad.toml:4:", "inner_diameter", "76 kg", "mass", "length"}},
+        {"overlapping clamp zones",
+         kCoreHeader + "\n[supports]\ntype = \"clamped\"\n\n[supports.left]\nlength = \"300 mm\"\n",
+         {"bad.toml:12:", "[supports.left]", "[supports.right]", "overlap"}},
+        {"a clamp zone longer than the core",
+         kCoreHeader + "\n[supports]\ntype = \"clamped\"\n\n[supports.left]\nlength = \"2 m\"\n",
+         {"bad.toml:12:", "[supports.left]", "[core] length"}},
+        {"more modes than the mesh has DOFs",
+         kCoreHeader + "\n[analysis]\nmodes = 10000\n\n[mesh]\naround = 8\nalong = 2\nthrough_wall = 1\n",
+         // Found only after meshing: the scene keeps no line numbers, so the
+         // message names the file and the key, not the line.
+         {"bad.toml", "[analysis] modes = 10000", "degrees of freedom"}},
+        {"a missing mesh file",
+         kCoreHeader + "\n[mesh]\nfile = \"nothere.msh\"\n",
+         {"bad.toml:9:", "[mesh] file", "nothere.msh"}},
+        {"a mesh file that is not a mesh",
+         kCoreHeader + "\n[mesh]\nfile = \"garbage.msh\"\n",
+         {"garbage.msh"}},
+        {"a mesh without the clamp groups the supports need",
+         "name = \"bad\"\n\n[core]\ninner_diameter = \"76 mm\"\nwall = \"15 mm\"\nlength = \"1 m\"\n\n"
+         "[supports]\ntype = \"clamped\"\n\n[supports.left]\nlength = \"70 mm\"\n\n[mesh]\nfile = \"" +
+             tet10 + "\"\n",
+         {tet10, "clamp_left", "[supports] type = \"clamped\"", "'core_inner', 'core_outer'"}},
+    };
+}
+
+// Elastic frequencies (Hz) from modes.csv: index,frequency_hz,type,...
+// Rigid modes are left out: their frequencies are round-off (~1e-3 Hz).
+std::vector<double> elastic_frequencies(const fs::path& csv) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);  // header
+    std::vector<double> f;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string index, freq, type;
+        std::getline(row, index, ',');
+        std::getline(row, freq, ',');
+        std::getline(row, type, ',');
+        if (type != "rigid") f.push_back(std::stod(freq));
+    }
+    return f;
+}
+
+}  // namespace
+
+TEST_CASE("Every kind of bad input stops coremodal with a located message and no results", "[app][cli]") {
+    for (const auto& bad : bad_cases()) {
+        DYNAMIC_SECTION("bad input: " << bad.what) {
+            TempDir dir;
+            dir.write("bad.toml", bad.toml);
+            dir.write("garbage.msh", "this is not a mesh\n$Nodes\nnonsense\n");
+            const Run r = run_coremodal(dir, "run bad.toml -o results -q");
+            INFO("stderr: " << r.err);
+            CHECK(r.exit_code != 0);
+            CHECK(r.err.find("error") != std::string::npos);
+            for (const auto& text : bad.expected) {
+                INFO("expected on stderr: " << text);
+                CHECK(r.err.find(text) != std::string::npos);
+            }
+            CHECK(leftovers(dir).empty());
+        }
+    }
+}
+
+TEST_CASE("A missing case file is an error naming it", "[app][cli]") {
+    TempDir dir;
+    const Run r = run_coremodal(dir, "run nothere.toml -o results -q");
+    CHECK(r.exit_code != 0);
+    CHECK(r.err.find("nothere.toml") != std::string::npos);
+    CHECK(leftovers(dir).empty());
+}
+
+TEST_CASE("A good tiny case writes the whole results folder", "[app][cli]") {
+    TempDir dir;
+    dir.write("tiny.toml", kTinyCase);
+    const Run r = run_coremodal(dir, "run tiny.toml -o results -q");
+    INFO("stderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    for (const char* file : {"summary.json", "modes.csv", "modes.h5", "modes.xdmf"}) {
+        INFO(file);
+        CHECK(fs::is_regular_file(dir.path / "results" / file));
+        CHECK(fs::file_size(dir.path / "results" / file) > 0);
+    }
+    // 12 modes: 6 rigid + 6 elastic.
+    CHECK(elastic_frequencies(dir.path / "results" / "modes.csv").size() == 6);
+    CHECK(leftovers(dir) == std::vector<std::string>{"results"});
+}
+
+TEST_CASE("The help texts exit cleanly and name the options", "[app][cli]") {
+    TempDir dir;
+    SECTION("coremodal --help") {
+        const Run r = run_coremodal(dir, "--help");
+        CHECK(r.exit_code == 0);
+        CHECK(r.out.find("run") != std::string::npos);
+    }
+    SECTION("coremodal run --help") {
+        const Run r = run_coremodal(dir, "run --help");
+        CHECK(r.exit_code == 0);
+        CHECK(r.out.find("--output") != std::string::npos);
+        CHECK(r.out.find("--quiet") != std::string::npos);
+        CHECK(r.out.find("PETSc") != std::string::npos);
+    }
+    SECTION("no subcommand is an error") {
+        const Run r = run_coremodal(dir, "");
+        CHECK(r.exit_code != 0);
+    }
+}
+
+TEST_CASE("PETSc and SLEPc options pass through to the solver", "[app][cli]") {
+    TempDir dir;
+    dir.write("tiny.toml", kTinyCase);
+    // -eps_view prints SLEPc's description of the solver on stdout; -eps_tol
+    // overrides the case's tolerance (1e-10 by default) and shows up in it.
+    const Run r = run_coremodal(dir, "run tiny.toml -o results -q -eps_tol 1e-9 -eps_view");
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("EPS Object") != std::string::npos);
+    CHECK(r.out.find("krylovschur") != std::string::npos);
+    CHECK(r.out.find("tolerance: 1e-09") != std::string::npos);
+}
+
+TEST_CASE("Two MPI ranks give the serial frequencies", "[app][cli][mpi]") {
+    TempDir dir;
+    dir.write("tiny.toml", kTinyCase);
+    const Run serial = run_coremodal(dir, "run tiny.toml -o serial -q");
+    REQUIRE(serial.exit_code == 0);
+    const Run parallel = run_coremodal(
+        dir, "run tiny.toml -o parallel -q",
+        "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe ");
+    INFO("mpirun stdout: " << parallel.out << "\nstderr: " << parallel.err);
+    REQUIRE(parallel.exit_code == 0);
+    const auto f1 = elastic_frequencies(dir.path / "serial" / "modes.csv");
+    const auto f2 = elastic_frequencies(dir.path / "parallel" / "modes.csv");
+    REQUIRE(f1.size() == 6);
+    REQUIRE(f2.size() == f1.size());
+    // The same matrices in a different partition: MUMPS's pivoting order and
+    // the Krylov basis differ, so the eigenvalues agree to the solver's
+    // residual (1e-10 relative in lambda), not bitwise; 1e-8 in f leaves room.
+    for (size_t i = 0; i < f1.size(); ++i) CHECK(f2[i] == Approx(f1[i]).epsilon(1e-8));
+    const std::string summary = slurp(dir.path / "parallel" / "summary.json");
+    CHECK(summary.find("\"mpi_ranks\" : 2") != std::string::npos);
+}

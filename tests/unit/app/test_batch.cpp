@@ -1,0 +1,232 @@
+// `coremodal batch`: the pieces (JSON lookup, error lines, summary values,
+// tables) and the real program on a folder with two good and one broken case.
+#include "app/batch.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace coremodal;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Output {
+    int exit_code = -1;
+    std::string text;  // stdout and stderr
+};
+
+Output run_program(const std::string& arguments) {
+    const std::string command = std::string("'") + COREMODAL_BINARY + "' " + arguments + " 2>&1";
+    Output out;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe);
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.text.append(buf, n);
+    const int status = pclose(pipe);
+    out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return out;
+}
+
+std::string read_file(const fs::path& p) {
+    std::ifstream f(p);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+void write_file(const fs::path& p, const std::string& text) {
+    std::ofstream f(p);
+    f << text;
+}
+
+// A short clamped 76x15 tube on the smallest mesh: about a second per run.
+std::string tiny_case(const std::string& name, const std::string& length, const std::string& extra = "") {
+    return "name = \"" + name + "\"\n"
+           "[core]\ninner_diameter = \"76 mm\"\nwall = \"15 mm\"\nlength = \"" + length + "\"\n"
+           "material = \"paperboard_core\"\n"
+           "[supports]\ntype = \"clamped\"\n[supports.left]\nlength = \"50 mm\"\n"
+           "[analysis]\nmodes = 4\n" + extra +
+           "[mesh]\nthrough_wall = 1\naround = 8\nalong = 4\n";
+}
+
+const char* kSummary = R"({
+    "beam" : { "ends" : "clamped-clamped", "fe_first_bending_hz" : 35.5, "fe_mode_index" : 1,
+               "fe_over_timoshenko" : 0.9, "timoshenko_hz" : 39.44 },
+    "case" : {
+        "assumptions" : [ "a \"quoted\" \u00e9 sentence", "x" ],
+        "core" : { "inner_diameter" : 0.1505, "outer_diameter" : 0.1821, "length" : 4.32 },
+        "name" : "rest roll",
+        "rest_paper" : { "outer_diameter" : 0.2021 },
+        "supports" : { "clamps" : [ { "name" : "left", "z_end" : 0.3 } ], "type" : "clamped" }
+    },
+    "modes" : [ { "frequency_hz" : 1.5e1, "index" : 1 } ],
+    "verification" : { "complete" : true, "missing" : null, "shift" : -2.5E-3 }
+}
+)";
+
+}  // namespace
+
+TEST_CASE("json_number and json_string follow dotted paths through nested objects", "[batch]") {
+    CHECK(json_number(kSummary, "beam.fe_first_bending_hz") == Approx(35.5));
+    CHECK(json_number(kSummary, "case.rest_paper.outer_diameter") == Approx(0.2021));
+    CHECK(json_number(kSummary, "case.core.outer_diameter") == Approx(0.1821));
+    CHECK(json_number(kSummary, "verification.shift") == Approx(-2.5e-3));
+    CHECK(json_string(kSummary, "case.supports.type") == std::optional<std::string>("clamped"));
+    CHECK_FALSE(json_number(kSummary, "case.supports.type"));  // a string, not a number
+    CHECK_FALSE(json_number(kSummary, "beam.missing"));
+    CHECK_FALSE(json_number(kSummary, "beam.fe_first_bending_hz.deeper"));
+    CHECK_FALSE(json_number(kSummary, "verification.missing"));
+    CHECK_THROWS_WITH(json_number("{\"a\": 1,}", "a"), Catch::Contains("invalid JSON"));
+    CHECK_THROWS_WITH(json_number("{\"a\": 1", "a"), Catch::Contains("invalid JSON"));
+    CHECK_THROWS_WITH(json_number("", "a"), Catch::Contains("invalid JSON"));
+}
+
+TEST_CASE("read_batch_summary takes f1, the beam ratio and v_safe = 0.7 pi D f1 with D of the rest roll", "[batch]") {
+    BatchCase c;
+    read_batch_summary(c, kSummary);
+    REQUIRE(c.f1_hz);
+    CHECK(*c.f1_hz == Approx(35.5));
+    CHECK(*c.fe_over_timoshenko == Approx(0.9));
+    CHECK(*c.diameter_m == Approx(0.2021));  // the rest paper's, not the core's 0.1821
+    REQUIRE(c.v_safe_m_s);
+    CHECK(*c.v_safe_m_s == Approx(0.7 * M_PI * 0.2021 * 35.5));  // 15.78 m/s, 947 m/min
+
+    SECTION("without rest paper D is the core's outer diameter") {
+        std::string s = kSummary;
+        s.replace(s.find("\"rest_paper\""), 12, "\"no_paper\"");
+        BatchCase d;
+        read_batch_summary(d, s);
+        CHECK(*d.diameter_m == Approx(0.1821));
+        CHECK(*d.v_safe_m_s == Approx(0.7 * M_PI * 0.1821 * 35.5));
+    }
+    SECTION("a free-free case has f1 but no safe web speed") {
+        std::string s = kSummary;
+        s.replace(s.find("\"clamped\" }"), 9, "\"free\"");
+        BatchCase d;
+        read_batch_summary(d, s);
+        CHECK(d.f1_hz);
+        CHECK_FALSE(d.v_safe_m_s);
+    }
+    SECTION("no bending mode found (written as 0) leaves f1 empty") {
+        BatchCase d;
+        read_batch_summary(d, R"({"beam": {"fe_first_bending_hz": 0, "fe_over_timoshenko": 0}, "case": {}})");
+        CHECK_FALSE(d.f1_hz);
+        CHECK_FALSE(d.fe_over_timoshenko);
+        CHECK_FALSE(d.v_safe_m_s);
+    }
+    CHECK_THROWS_WITH(read_batch_summary(c, "{}"), Catch::Contains("beam.fe_first_bending_hz"));
+}
+
+TEST_CASE("first_error_line picks coremodal's message out of a child's log", "[batch]") {
+    CHECK(first_error_line("") == "");
+    CHECK(first_error_line("some MPI warning\ncoremodal: error: x.toml:3:1: unknown key 'a'\nmore\n") ==
+          "error: x.toml:3:1: unknown key 'a'");
+    CHECK(first_error_line("noise\nPETSC ERROR: out of memory\nlast\n") == "PETSC ERROR: out of memory");
+    CHECK(first_error_line("one\nlast line  \n\n") == "last line");
+}
+
+TEST_CASE("batch_case_files takes every *.toml of a folder, sorted, and refuses missing paths", "[batch]") {
+    const fs::path dir = fs::temp_directory_path() / ("coremodal-batch-files-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    for (const char* name : {"b.toml", "a.toml", "notes.txt"}) write_file(dir / name, "");
+    const auto files = batch_case_files({dir.string(), (dir / "b.toml").string()});
+    REQUIRE(files.size() == 3);
+    CHECK(fs::path(files[0]).filename() == "a.toml");
+    CHECK(fs::path(files[1]).filename() == "b.toml");
+    CHECK(fs::path(files[2]).filename() == "b.toml");
+    CHECK_THROWS_WITH(batch_case_files({(dir / "missing.toml").string()}), Catch::Contains("missing.toml"));
+    fs::remove(dir / "a.toml");
+    fs::remove(dir / "b.toml");
+    CHECK_THROWS_WITH(batch_case_files({dir.string()}), Catch::Contains("no *.toml"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[batch]") {
+    BatchCase ok;
+    ok.name = "good";
+    ok.file = "cases/good.toml";
+    ok.ok = true;
+    ok.f1_hz = 35.5;
+    ok.fe_over_timoshenko = 0.9;
+    ok.diameter_m = 0.2;
+    ok.v_safe_m_s = 0.7 * M_PI * 0.2 * 35.5;
+    ok.time_s = 1.25;
+    BatchCase bad;
+    bad.name = "bad";
+    bad.file = "cases/bad.toml";
+    bad.error = "error: x, \"y\" | z";
+    const std::string csv = batch_csv({ok, bad});
+    CHECK(csv.find("good,cases/good.toml,ok,35.5,0.9,0.2,15.6") != std::string::npos);
+    CHECK(csv.find("bad,cases/bad.toml,failed,,,,,,0.000,\"error: x, \"\"y\"\" | z\"") != std::string::npos);
+    const std::string md = batch_markdown({ok, bad});
+    CHECK(md.find("| good | ok | 35.50 | 0.9000 | 200.0 | 15.61 | 937 | 1.2 |") != std::string::npos);
+    CHECK(md.find("error: x, \"y\" \\| z") != std::string::npos);
+    CHECK(md.find("0.7 * pi * D * f1") != std::string::npos);
+    std::ostringstream console;
+    print_batch_table(console, {ok, bad});
+    CHECK(console.str().find("FAILED bad: error: x") != std::string::npos);
+    CHECK(console.str().find("1 of 2 cases ok, 1 failed") != std::string::npos);
+}
+
+TEST_CASE("coremodal batch runs good cases past a broken one and reports it", "[batch]") {
+    const fs::path dir = fs::temp_directory_path() / ("coremodal-batch-test-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "cases");
+    write_file(dir / "cases" / "01-short.toml", tiny_case("short", "0.4 m"));
+    write_file(dir / "cases" / "02-longer.toml", tiny_case("longer", "0.5 m"));
+    write_file(dir / "cases" / "03-broken.toml", tiny_case("broken", "0.4 m", "colour = \"red\"\n"));
+    const fs::path out = dir / "out";
+
+    const Output r = run_program("batch '" + (dir / "cases").string() + "' --output '" + out.string() + "' --jobs 2");
+    INFO(r.text);
+    CHECK(r.exit_code != 0);
+    CHECK(fs::exists(out / "01-short" / "summary.json"));
+    CHECK(fs::exists(out / "02-longer" / "summary.json"));
+    CHECK_FALSE(fs::exists(out / "03-broken"));
+    CHECK(read_file(out / "03-broken.log").find("unknown key 'colour'") != std::string::npos);
+    // Console: a progress line per case and the broken case named with its error.
+    CHECK(r.text.find("[3/3]") != std::string::npos);
+    CHECK(r.text.find("03-broken  FAILED: error:") != std::string::npos);
+    CHECK(r.text.find("FAILED 03-broken: error:") != std::string::npos);
+    CHECK(r.text.find("2 of 3 cases ok, 1 failed") != std::string::npos);
+
+    std::istringstream csv(read_file(out / "batch.csv"));
+    std::vector<std::string> rows;
+    for (std::string line; std::getline(csv, line);) rows.push_back(line);
+    REQUIRE(rows.size() == 4);  // header and 3 cases, in file order
+    CHECK(rows[0].rfind("case,file,status,f1_hz,", 0) == 0);
+    CHECK(rows[1].rfind("01-short,", 0) == 0);
+    CHECK(rows[1].find(",ok,") != std::string::npos);
+    CHECK(rows[2].rfind("02-longer,", 0) == 0);
+    CHECK(rows[2].find(",ok,") != std::string::npos);
+    CHECK(rows[3].rfind("03-broken,", 0) == 0);
+    CHECK(rows[3].find(",failed,") != std::string::npos);
+    CHECK(rows[3].find("unknown key 'colour'") != std::string::npos);
+    // The good rows carry f1 and v_safe = 0.7 pi D f1 with D = 106 mm.
+    BatchCase short_case;
+    read_batch_summary(short_case, read_file(out / "01-short" / "summary.json"));
+    REQUIRE(short_case.f1_hz);
+    CHECK(*short_case.v_safe_m_s == Approx(0.7 * M_PI * 0.106 * *short_case.f1_hz));
+    CHECK(read_file(out / "batch.md").find("| 03-broken | FAILED |") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("coremodal batch --help exits 0; no cases is an error", "[batch]") {
+    const Output help = run_program("batch --help");
+    CHECK(help.exit_code == 0);
+    CHECK(help.text.find("--jobs") != std::string::npos);
+    const Output missing = run_program("batch /nonexistent/folder");
+    CHECK(missing.exit_code != 0);
+    CHECK(missing.text.find("no such case file or folder") != std::string::npos);
+}

@@ -1,0 +1,184 @@
+// Beam theory of a core (src/beam/beam_theory.hpp): Cowper's shear
+// coefficient, section properties, Euler–Bernoulli, and the Timoshenko
+// finite-element model against its limits and against the exact Timoshenko
+// frequency equation solved here by bisection.
+#include "beam/beam_theory.hpp"
+
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+
+using namespace coremodal;
+
+namespace {
+
+constexpr double pi = M_PI;
+
+double ring_area(double d_out, double d_in) { return pi / 4 * (d_out * d_out - d_in * d_in); }
+double ring_inertia(double d_out, double d_in) { return pi / 64 * (std::pow(d_out, 4) - std::pow(d_in, 4)); }
+
+// Isotropic steel tube Do 200 mm, Di 100 mm: short and thick over 1 m
+// (L / radius of gyration = 1 / 0.0559 = 17.9), where shear and rotary
+// inertia matter.
+BeamSection steel_tube(double d_out = 0.2, double d_in = 0.1) {
+    const double E = 210e9, nu = 0.3, G = E / (2 * (1 + nu)), rho = 7850;
+    const double A = ring_area(d_out, d_in), I = ring_inertia(d_out, d_in);
+    BeamSection s;
+    s.EI = E * I;
+    s.rho_A = rho * A;
+    s.rho_I = rho * I;
+    s.kappa_GA = cowper_hollow_circle(nu, d_in / d_out) * G * A;
+    return s;
+}
+
+// Exact Timoshenko frequency equation of a uniform beam, the textbook way:
+//   rho A w_tt = kGA (w'' - phi'),  rho I phi_tt = EI phi'' + kGA (w' - phi).
+// With w, phi ~ e^(lambda x) e^(i omega t):
+//   EI kGA lambda^4 + (EI rhoA + rhoI kGA) omega^2 lambda^2 + rhoA omega^2 (rhoI omega^2 - kGA) = 0,
+// a quadratic in lambda^2 with roots alpha^2 > 0 and -beta^2 < 0 below the
+// cut-off omega^2 = kGA/rhoI. Then
+//   w   = C1 cosh ax + C2 sinh ax + C3 cos bx + C4 sin bx
+//   phi = p (C1 sinh ax + C2 cosh ax) + q (-C3 sin bx + C4 cos bx),
+//   p = a + rhoA omega^2/(kGA a),  q = b - rhoA omega^2/(kGA b)
+// (Euler–Bernoulli limit: p = a, q = b, phi = w'). The frequency makes the
+// 4x4 matrix of the boundary conditions singular.
+double boundary_determinant(const BeamSection& s, double L, BeamEnds ends, double omega) {
+    const double w2 = omega * omega;
+    const double a_ = s.EI * s.kappa_GA, b_ = (s.EI * s.rho_A + s.rho_I * s.kappa_GA) * w2,
+                 c_ = s.rho_A * w2 * (s.rho_I * w2 - s.kappa_GA);
+    const double root = std::sqrt(b_ * b_ - 4 * a_ * c_);
+    const double a = std::sqrt((-b_ + root) / (2 * a_)), b = std::sqrt((b_ + root) / (2 * a_));
+    const double p = a + s.rho_A * w2 / (s.kappa_GA * a), q = b - s.rho_A * w2 / (s.kappa_GA * b);
+    // Rows: a condition at x; columns: C1..C4.
+    auto w_row = [&](double x) {
+        return Eigen::RowVector4d(std::cosh(a * x), std::sinh(a * x), std::cos(b * x), std::sin(b * x));
+    };
+    auto phi_row = [&](double x) {
+        return Eigen::RowVector4d(p * std::sinh(a * x), p * std::cosh(a * x), -q * std::sin(b * x), q * std::cos(b * x));
+    };
+    auto moment_row = [&](double x) {  // phi' (bending moment / EI)
+        return Eigen::RowVector4d(p * a * std::cosh(a * x), p * a * std::sinh(a * x), -q * b * std::cos(b * x),
+                                  -q * b * std::sin(b * x));
+    };
+    auto shear_row = [&](double x) {  // w' - phi (shear force / kGA)
+        return Eigen::RowVector4d((a - p) * std::sinh(a * x), (a - p) * std::cosh(a * x), (q - b) * std::sin(b * x),
+                                  (b - q) * std::cos(b * x));
+    };
+    Eigen::Matrix4d M;
+    if (ends == BeamEnds::clamped_clamped) M << w_row(0), phi_row(0), w_row(L), phi_row(L);
+    else M << moment_row(0), shear_row(0), moment_row(L), shear_row(L);
+    return M.determinant();
+}
+
+// First root of the determinant above 0.5 f_EB: scan for a sign change, then bisect.
+double exact_timoshenko_first_hz(const BeamSection& s, double L, BeamEnds ends) {
+    const double f_eb = euler_bernoulli_first_bending_hz(s, L);
+    auto D = [&](double f) { return boundary_determinant(s, L, ends, 2 * pi * f); };
+    const int steps = 2000;
+    double lo = 0.5 * f_eb, d_lo = D(lo);
+    for (int i = 1; i <= steps; ++i) {
+        double hi = 0.5 * f_eb + i * (0.6 * f_eb / steps);
+        if ((D(hi) < 0) == (d_lo < 0)) {
+            lo = hi, d_lo = D(hi);
+            continue;
+        }
+        while (hi - lo > 1e-14 * hi) {
+            const double mid = 0.5 * (lo + hi), d_mid = D(mid);
+            if ((d_mid < 0) == (d_lo < 0)) lo = mid, d_lo = d_mid;
+            else hi = mid;
+        }
+        return 0.5 * (lo + hi);
+    }
+    FAIL("no root of the Timoshenko frequency equation between 0.5 and 1.1 f_EB");
+    return 0;
+}
+
+}  // namespace
+
+TEST_CASE("Cowper's shear coefficient of a hollow circle at its known limits", "[beam]") {
+    // Cowper (1966), hollow circle m = ri/ro:
+    //   kappa = 6 (1 + nu)(1 + m^2)^2 / ((7 + 6 nu)(1 + m^2)^2 + (20 + 12 nu) m^2)
+    // Solid circle, m = 0: 6 (1 + nu)/(7 + 6 nu): nu = 0 -> 6/7; nu = 0.3 -> 7.8/8.8.
+    CHECK(cowper_hollow_circle(0.0, 0.0) == Approx(6.0 / 7.0).epsilon(1e-14));
+    CHECK(cowper_hollow_circle(0.3, 0.0) == Approx(7.8 / 8.8).epsilon(1e-14));
+    // Thin-walled tube, m -> 1: 24 (1 + nu)/(4 (7 + 6 nu) + 20 + 12 nu) = 2 (1 + nu)/(4 + 3 nu):
+    // nu = 0 -> 0.5; nu = 0.3 -> 2.6/4.9 = 0.530612.
+    CHECK(cowper_hollow_circle(0.0, 1.0) == Approx(0.5).epsilon(1e-14));
+    CHECK(cowper_hollow_circle(0.3, 1.0) == Approx(2.6 / 4.9).epsilon(1e-14));
+    CHECK(cowper_hollow_circle(0.3, 0.999999) == Approx(2.6 / 4.9).epsilon(1e-9));
+    // In between, m = 0.5, nu = 0.3: (1 + m^2)^2 = 1.5625;
+    // 6 * 1.3 * 1.5625 / (8.8 * 1.5625 + 23.6 * 0.25) = 12.1875 / 19.65 = 0.620229.
+    CHECK(cowper_hollow_circle(0.3, 0.5) == Approx(12.1875 / 19.65).epsilon(1e-14));
+}
+
+TEST_CASE("Beam section of a core with rest paper, and the span of a scene", "[beam]") {
+    Scene scene;
+    scene.core.inner_diameter = 0.076, scene.core.outer_diameter = 0.106, scene.core.length = 2.0;
+    scene.core.material = OrthotropicMaterial::isotropic("steel", 210e9, 0.3, 7850);
+    RestPaperSpec paper;
+    paper.outer_diameter = 0.126;
+    paper.material = OrthotropicMaterial::isotropic("paper", 5e9, 0.25, 1350);
+    scene.rest_paper = paper;
+    const BeamSection s = beam_section(scene);
+    // Core: Ac = pi/4 (0.106^2 - 0.076^2) = 4.28827e-3 m^2, Ic = pi/64 (0.106^4 - 0.076^4) = 4.55951e-6 m^4.
+    // Paper: Ap = pi/4 (0.126^2 - 0.106^2) = 3.64425e-3 m^2, Ip = pi/64 (0.126^4 - 0.106^4) = 6.34548e-6 m^4.
+    const double Ac = 4.28827e-3, Ic = 4.55951e-6, Ap = 3.64425e-3, Ip = 6.34548e-6;
+    CHECK(s.EI == Approx(210e9 * Ic + 5e9 * Ip).epsilon(1e-5));  // 9.5750e5 + 3.1727e4 N m^2
+    CHECK(s.rho_A == Approx(7850 * Ac + 1350 * Ap).epsilon(1e-5));
+    CHECK(s.rho_I == Approx(7850 * Ic + 1350 * Ip).epsilon(1e-5));
+    // Shear: kappa G A per layer, G = E / (2 (1 + nu)), Cowper with m = Di/Do of the layer.
+    const double kGA = cowper_hollow_circle(0.3, 0.076 / 0.106) * 210e9 / 2.6 * Ac +
+                       cowper_hollow_circle(0.25, 0.106 / 0.126) * 5e9 / 2.5 * Ap;
+    CHECK(s.kappa_GA == Approx(kGA).epsilon(1e-5));
+
+    CHECK(beam_span(scene) == 2.0);  // free scene: the core length
+    scene.core.length = 4.32;
+    scene.supports.kind = SupportKind::clamped;
+    scene.supports.clamps = {{"left", 0.2, 0.3}, {"right", 4.02, 4.12}};
+    CHECK(beam_span(scene) == Approx(3.72).epsilon(1e-14));  // 4.02 - 0.3: between the inner edges
+}
+
+TEST_CASE("Euler-Bernoulli first bending frequency by hand", "[beam]") {
+    // Steel tube 200 x 100 mm, L = 1 m:
+    //   I = pi/64 (0.2^4 - 0.1^4) = 7.36311e-5 m^4, EI = 210e9 I = 1.546253e7 N m^2
+    //   A = pi/4 (0.2^2 - 0.1^2) = 2.356194e-2 m^2, rho A = 7850 A = 184.9613 kg/m
+    //   f = 4.7300407^2/(2 pi) sqrt(EI/rhoA) = 3.560823 * 289.1363 = 1029.56 Hz
+    const BeamSection s = steel_tube();
+    CHECK(euler_bernoulli_first_bending_hz(s, 1.0) == Approx(3.560823 * 289.1363).epsilon(2e-6));
+    // 1/L^2 scaling: twice as long, a quarter of the frequency.
+    CHECK(euler_bernoulli_first_bending_hz(s, 2.0) == Approx(euler_bernoulli_first_bending_hz(s, 1.0) / 4));
+}
+
+TEST_CASE("Timoshenko beam tends to Euler-Bernoulli without shear and rotary inertia", "[beam]") {
+    BeamSection s = steel_tube();
+    const double L = 1.0, f_eb = euler_bernoulli_first_bending_hz(s, L);
+    s.rho_I = 0;
+    for (BeamEnds ends : {BeamEnds::clamped_clamped, BeamEnds::free_free}) {
+        // kGA = 1e9 EI/L^2: the shear correction is of order (beta L)^2 EI/(kGA L^2) ~ 1e-8.
+        double previous_gap = 1;
+        for (double stiff : {1e3, 1e5, 1e7, 1e9}) {
+            s.kappa_GA = stiff * s.EI / (L * L);
+            const double f = timoshenko_bending_hz(s, L, ends, 1).at(0);
+            const double gap = std::abs(f / f_eb - 1);
+            CHECK(f <= f_eb * (1 + 1e-9));  // shear only softens
+            CHECK(gap < previous_gap);
+            previous_gap = gap;
+        }
+        CHECK(previous_gap < 1e-6);
+    }
+}
+
+TEST_CASE("Short thick tube: Timoshenko model matches the exact frequency equation", "[beam]") {
+    const BeamSection s = steel_tube();
+    const double L = 1.0, f_eb = euler_bernoulli_first_bending_hz(s, L);  // 1029.56 Hz
+    for (BeamEnds ends : {BeamEnds::clamped_clamped, BeamEnds::free_free}) {
+        const double exact = exact_timoshenko_first_hz(s, L, ends);
+        const double fe = timoshenko_bending_hz(s, L, ends, 1).at(0);
+        INFO((ends == BeamEnds::clamped_clamped ? "clamped-clamped" : "free-free")
+             << ": EB " << f_eb << " Hz, exact Timoshenko " << exact << " Hz, FE " << fe << " Hz");
+        CHECK(fe == Approx(exact).epsilon(1e-6));
+        CHECK(exact < f_eb);
+    }
+}
