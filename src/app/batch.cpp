@@ -2,6 +2,8 @@
 
 #include "common/error.hpp"
 
+#include <toml++/toml.h>
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -230,7 +232,12 @@ std::string program_name(const std::string& program) {
 
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
     std::vector<std::string> args = {program_name(o.program), "run", c.file, "--output", c.result_dir, "--quiet"};
-    if (o.mesh_level) args.insert(args.end(), {"--mesh", *o.mesh_level});
+    if (o.mesh_level) {
+        if (case_has_mesh_file(c.file))
+            c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
+        else
+            args.insert(args.end(), {"--mesh", *o.mesh_level});
+    }
     auto argv = c_strings(args);
     auto envp = c_strings(env);
 
@@ -388,6 +395,15 @@ void read_batch_summary(BatchCase& c, const std::string& summary_json) {
     if (c.f1_hz && c.diameter_m && !free_free) c.v_safe_m_s = kSafeSpeedFactor * M_PI * *c.diameter_m * *c.f1_hz;
 }
 
+bool case_has_mesh_file(const std::string& case_file) {
+    try {
+        const toml::table t = toml::parse_file(case_file);
+        return t["mesh"]["file"].is_string();
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {
     std::vector<std::string> files;
     for (const auto& input : inputs) {
@@ -459,7 +475,7 @@ std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) 
             std::snprintf(time, sizeof time, "%.1f s", c.time_s);
             progress << head << c.name << std::string(width - c.name.size(), ' ')
                      << (c.ok ? "  ok " + std::string(time) : "  FAILED: " + c.error + "  (" + time + ")")
-                     << std::endl;
+                     << (c.note.empty() ? "" : "  [" + c.note + "]") << std::endl;
         }
     };
     std::vector<std::thread> threads;
@@ -496,6 +512,13 @@ void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases) {
             if (failed++ == 0) out << '\n';
             out << "FAILED " << c.name << ": " << c.error << "\n  case " << c.file << ", log " << c.log_file << '\n';
         }
+    bool noted = false;
+    for (const auto& c : cases)
+        if (!c.note.empty()) {
+            if (!noted) out << '\n';
+            noted = true;
+            out << "note " << c.name << ": " << c.note << '\n';
+        }
     out << '\n' << cases.size() - failed << " of " << cases.size() << " cases ok";
     if (failed) out << ", " << failed << " failed";
     out << std::endl;
@@ -503,14 +526,14 @@ void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases) {
 
 std::string batch_csv(const std::vector<BatchCase>& cases) {
     std::ostringstream s;
-    s << "case,file,status,f1_hz,fe_over_timoshenko,diameter_m,v_safe_m_per_s,v_safe_m_per_min,time_s,error\n";
+    s << "case,file,status,f1_hz,fe_over_timoshenko,diameter_m,v_safe_m_per_s,v_safe_m_per_min,time_s,error,note\n";
     for (const auto& c : cases) {
         char time[64];
         std::snprintf(time, sizeof time, "%.3f", c.time_s);
         s << csv_field(c.name) << ',' << csv_field(c.file) << ',' << (c.ok ? "ok" : "failed") << ','
           << csv_number(c.f1_hz) << ',' << csv_number(c.fe_over_timoshenko) << ',' << csv_number(c.diameter_m) << ','
           << csv_number(c.v_safe_m_s) << ',' << csv_number(times(c.v_safe_m_s, 60)) << ',' << time << ','
-          << csv_field(c.error) << '\n';
+          << csv_field(c.error) << ',' << csv_field(c.note) << '\n';
     }
     return s.str();
 }
@@ -527,13 +550,13 @@ std::string batch_markdown(const std::vector<BatchCase>& cases) {
     std::ostringstream s;
     s << "# coremodal batch\n\n|";
     for (const auto& h : kHeader) s << ' ' << h << " |";
-    s << " error |\n|";
+    s << " error | note |\n|";
     for (std::size_t i = 0; i < kHeader.size(); ++i) s << (i < 2 ? "---|" : "---:|");
-    s << "---|\n";
+    s << "---|---|\n";
     for (const auto& c : cases) {
         s << '|';
         for (const auto& v : row_cells(c)) s << ' ' << cell(v) << " |";
-        s << ' ' << cell(c.error) << " |\n";
+        s << ' ' << cell(c.error) << " | " << cell(c.note) << " |\n";
     }
     std::string note = footnote();
     std::replace(note.begin(), note.end(), '\n', ' ');

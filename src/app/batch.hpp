@@ -18,7 +18,8 @@ struct BatchOptions {
     std::vector<std::string> inputs;             // case files and folders (every *.toml in them)
     std::string output_dir = "results/batch";
     unsigned jobs = 0;                           // 0: number of cores; never more than the cases
-    std::optional<std::string> mesh_level;       // passed on as `run --mesh LEVEL`
+    std::optional<std::string> mesh_level;       // passed on as `run --mesh LEVEL`, except to
+                                                 // cases with their own [mesh] file
     std::string program = "/proc/self/exe";      // the coremodal executable to run the cases with
 };
 
@@ -29,6 +30,7 @@ struct BatchCase {
     std::string log_file;
     bool ok = false;
     std::string error;       // first error line of a failed case
+    std::string note;        // e.g. why --mesh was not passed on
     double time_s = 0;       // wall time of the child process
     // From OUT/<name>/summary.json, when the case succeeded:
     std::optional<double> f1_hz;               // beam.fe_first_bending_hz (first bending mode)
@@ -41,6 +43,10 @@ struct BatchCase {
 // (sorted by name), a file for itself. Throws InputError for a missing path or
 // when no case file is found.
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs);
+
+// Whether a case file names its own mesh ([mesh] file = ...); false when
+// the file cannot be read or parsed (the child run will report that).
+bool case_has_mesh_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.

@@ -152,6 +152,13 @@ TEST_CASE("batch_case_files takes every *.toml of a folder, sorted, and refuses 
     fs::remove_all(dir);
 }
 
+TEST_CASE("case_has_mesh_file tells cases with their own mesh (no --mesh for them)", "[batch]") {
+    const std::string cases = std::string(COREMODAL_SOURCE_DIR) + "/cases/";
+    CHECK(case_has_mesh_file(cases + "04-user-mesh-76x15.toml"));
+    CHECK_FALSE(case_has_mesh_file(cases + "02-clamped-76x15.toml"));
+    CHECK_FALSE(case_has_mesh_file(cases + "no-such-case.toml"));
+}
+
 TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[batch]") {
     BatchCase ok;
     ok.name = "good";
