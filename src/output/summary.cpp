@@ -150,11 +150,16 @@ void print_mode_table(std::ostream& out, const RunReport& r) {
     char line[256];
     out << "\n mode   f [Hz]       type       n   m   share   eff. mass x/y/z [kg]        residual\n";
     out << " ----  -----------  ---------  --  --  -----  --------------------------  --------\n";
+    // Effective masses below this share of the model mass are round-off of
+    // an exact zero (symmetry) and print as 0 so the table reads at a glance.
+    constexpr double kNegligibleMassShare = 1e-9;
+    const double negligible = kNegligibleMassShare * r.model.mass_kg;
+    auto shown = [negligible](double v) { return v < negligible ? 0.0 : v; };
     for (const auto& m : r.modes.modes) {
         const auto& e = m.effective_mass;
         std::snprintf(line, sizeof line, " %4d  %11.4f  %-9s  %2d  %2d  %5.2f  %8.3g %8.3g %8.3g  %8.1e\n", m.index,
-                      m.frequency_hz, m.label.type.c_str(), m.label.n, m.label.m, m.label.dominant_share, e.x, e.y,
-                      e.z, m.relative_residual);
+                      m.frequency_hz, m.label.type.c_str(), m.label.n, m.label.m, m.label.dominant_share,
+                      shown(e.x), shown(e.y), shown(e.z), m.relative_residual);
         out << line;
     }
 }
