@@ -131,6 +131,18 @@ int reported_count(const std::vector<double>& lambdas, int wanted, double scale)
     return n;
 }
 
+// Retries after a failed completeness check before giving up.
+constexpr int kMaxRetries = 2;
+
+// The shift for a retry: half the lowest elastic eigenvalue found below zero
+// (negative, so rigid modes stay harmless), or the old shift if that is closer.
+double better_shift(const std::vector<double>& lambdas, double scale, double old_sigma) {
+    constexpr double kRigidFraction = 1e-6;  // as modes/classify.hpp
+    for (double lambda : lambdas)
+        if (lambda > kRigidFraction * scale) return std::max(old_sigma, -kShiftFraction * lambda);
+    return old_sigma;
+}
+
 std::string format_count_mismatch(long pivots, long found, double sigma) {
     std::ostringstream s;
     s << "the shifted factor K - sigma M at sigma = " << sigma << " rad^2/s^2 ("
@@ -173,7 +185,7 @@ SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progres
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
     const double scale = request.lambda_scale;
-    const double sigma = -kShiftFraction * scale;
+    double sigma = -kShiftFraction * scale;
 
     int wanted = request.n_modes;
     if (request.lambda_max) {
@@ -210,7 +222,11 @@ SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progres
         progress("checking completeness: inertia of K - sigma M at the band edge");
         const long pivots = count_eigenvalues_below(K, M, check);
         if (pivots != n_report) {
-            if (attempt == 0 && pivots > n_report && pivots < n_dofs) {
+            if (attempt < kMaxRetries && pivots > n_report && pivots < n_dofs) {
+                // A shift far below the wanted modes squeezes them together in
+                // the transformed spectrum and Krylov-Schur may skip some: move
+                // the shift next to the lowest elastic mode found, and make room.
+                sigma = better_shift(a.lambdas, scale, sigma);
                 progress("inertia count says " + std::to_string(pivots) + " modes lie below the edge, " +
                          std::to_string(n_report) + " found: solving again with a larger subspace");
                 nev = std::min<int>(n_dofs, int(pivots) + std::max(kMinExtraModes, int(pivots) / 4));
