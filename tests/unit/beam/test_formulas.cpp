@@ -154,9 +154,11 @@ TEST_CASE("I-13/I-14 flexural modulus from the ISO 11093-8 free-free test", "[be
     CHECK(iso_flexural_modulus(f, M, L, Ic, Ac) == Approx(E * Q * 7.88e-8 / constant).epsilon(1e-12));
     CHECK(iso_flexural_modulus(f, M, L, Ic, Ac) == Approx(E).epsilon(0.002));
 
-    // With shear and rotary inertia (isotropic tube, G = E/2.6, Timoshenko
-    // free–free at the ISO length 1.5 m) Q brings the modulus back closer than
-    // Euler–Bernoulli would: the Timoshenko frequency alone (Q = 1) under-reads Ec.
+    // With shear and rotary inertia (isotropic tube, G = E/2.6, Cowper kappa,
+    // Timoshenko free–free at the ISO length 1.5 m, 133.85 Hz): without Q the
+    // modulus reads 4.9 % low (6.185 GPa), Q = 1.0391 lifts it to 6.426 GPa,
+    // 1.1 % low. Q's 82.66 is one fixed shear correction; it cannot know a
+    // particular tube's E/(kappa G).
     BeamSection b;
     b.EI = E * Ic, b.rho_A = M, b.rho_I = 920 * Ic;
     b.kappa_GA = cowper_hollow_circle(0.3, 0.076 / 0.106) * E / 2.6 * Ac;
@@ -165,7 +167,8 @@ TEST_CASE("I-13/I-14 flexural modulus from the ISO 11093-8 free-free test", "[be
     const double Ec_without_Q = Ec_iso / iso_free_free_shear_factor(1.5, Ic, Ac);
     INFO("Timoshenko free-free " << f_timo << " Hz; Ec by I-13/14 " << Ec_iso << " Pa; without Q " << Ec_without_Q);
     CHECK(std::abs(Ec_iso / E - 1) < std::abs(Ec_without_Q / E - 1));
-    CHECK(Ec_iso == Approx(E).epsilon(0.01));
+    CHECK(Ec_iso == Approx(E).epsilon(0.015));
+    CHECK(Ec_without_Q == Approx(E).epsilon(0.06));
 }
 
 TEST_CASE("I-15 rest paper modulus from a free-free rest roll", "[beam]") {
@@ -176,9 +179,9 @@ TEST_CASE("I-15 rest paper modulus from a free-free rest roll", "[beam]") {
     CHECK(f == Approx(35.1554 * 3.82 * 3.82 / (4.32 * 4.32)).epsilon(1e-5));  // 27.4885 Hz
     s.Ep = 0;  // unknown
     CHECK(rest_paper_modulus(f, s, 4.32) == Approx(5e9).epsilon(1e-12));
-    // By hand at 30 Hz: (2 pi 30 * 4.32^2/22.3733)^2 * 15.74154 = 388920.9 N m^2;
-    // Ep = (388920.9 - 6.5e9 * 2.879363e-5)/2.791369e-5 = 7.2281e9 Pa.
-    CHECK(rest_paper_modulus(30, s, 4.32) == Approx(7.2281e9).epsilon(1e-4));
+    // By hand at 30 Hz: (2 pi 30 * 4.32^2/22.3733)^2 * 15.74154 = 24721.6 * 15.74154 = 389157.0 N m^2;
+    // Ep = (389157.0 - 6.5e9 * 2.879363e-5)/2.791369e-5 = (389157.0 - 187158.6)/2.791369e-5 = 7.23654e9 Pa.
+    CHECK(rest_paper_modulus(30, s, 4.32) == Approx(7.23654e9).epsilon(1e-5));
     // Below the bare core carrying the paper's mass: no positive Ep.
     CHECK(error_of([&] { rest_paper_modulus(15, s, 4.32); }).find("f = 15 Hz is at or below") != std::string::npos);
 }
