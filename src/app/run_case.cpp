@@ -111,7 +111,7 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
     ResultsFolder folder(dir);
     write_summary_json(folder.file("summary.json"), report);
     write_modes_csv(folder.file("modes.csv"), report);
-    write_modes_h5(folder.file("modes.h5"), mesh, report.modes.modes, scene_json(report.scene),
+    write_modes_h5(folder.file("modes.h5"), mesh, report.modes.modes, report.scene.name, scene_json(report.scene),
                    "coremodal " COREMODAL_VERSION);
     write_modes_xdmf(folder.file("modes.xdmf"), "modes.h5", mesh, report.modes.modes);
     folder.commit();

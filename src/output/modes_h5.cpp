@@ -220,165 +220,6 @@ private:
 };
 
 // ---------------------------------------------------------------------------
-// Just enough JSON to pick the case name out of the resolved case, without a
-// JSON library in the writer. Malformed input gives "no name", never a throw:
-// the name is a label, the JSON itself is stored verbatim.
-
-void skip_space(std::string_view s, size_t& i) {
-    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
-}
-
-void append_utf8(std::string& out, std::uint32_t code) {
-    if (code < 0x80) {
-        out += static_cast<char>(code);
-    } else if (code < 0x800) {
-        out += static_cast<char>(0xC0 | (code >> 6));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else if (code < 0x10000) {
-        out += static_cast<char>(0xE0 | (code >> 12));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (code >> 18));
-        out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    }
-}
-
-bool read_hex4(std::string_view s, size_t& i, std::uint32_t& code) {
-    if (i + 4 > s.size()) return false;
-    code = 0;
-    for (int k = 0; k < 4; ++k) {
-        const char c = s[i++];
-        code <<= 4;
-        if (c >= '0' && c <= '9') code |= c - '0';
-        else if (c >= 'a' && c <= 'f') code |= c - 'a' + 10;
-        else if (c >= 'A' && c <= 'F') code |= c - 'A' + 10;
-        else return false;
-    }
-    return true;
-}
-
-// Reads the string starting at s[i] == '"', decoding escapes.
-bool read_json_string(std::string_view s, size_t& i, std::string& out) {
-    if (i >= s.size() || s[i] != '"') return false;
-    ++i;
-    out.clear();
-    while (i < s.size()) {
-        const char c = s[i++];
-        if (c == '"') return true;
-        if (c != '\\') {
-            out += c;
-            continue;
-        }
-        if (i >= s.size()) return false;
-        const char e = s[i++];
-        switch (e) {
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
-            case 'u': {
-                std::uint32_t code = 0;
-                if (!read_hex4(s, i, code)) return false;
-                // A surrogate pair encodes one code point above U+FFFF.
-                if (code >= 0xD800 && code < 0xDC00 && i + 1 < s.size() && s[i] == '\\' &&
-                    s[i + 1] == 'u') {
-                    i += 2;
-                    std::uint32_t low = 0;
-                    if (!read_hex4(s, i, low)) return false;
-                    code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
-                }
-                append_utf8(out, code);
-                break;
-            }
-            default: out += e;  // \" \\ \/
-        }
-    }
-    return false;
-}
-
-bool skip_json_value(std::string_view s, size_t& i) {
-    skip_space(s, i);
-    if (i >= s.size()) return false;
-    const char c = s[i];
-    if (c == '"') {
-        std::string ignored;
-        return read_json_string(s, i, ignored);
-    }
-    if (c == '{' || c == '[') {
-        const char close = c == '{' ? '}' : ']';
-        ++i;
-        skip_space(s, i);
-        if (i < s.size() && s[i] == close) return ++i, true;
-        while (true) {
-            if (c == '{') {
-                std::string key;
-                skip_space(s, i);
-                if (!read_json_string(s, i, key)) return false;
-                skip_space(s, i);
-                if (i >= s.size() || s[i] != ':') return false;
-                ++i;
-            }
-            if (!skip_json_value(s, i)) return false;
-            skip_space(s, i);
-            if (i >= s.size()) return false;
-            if (s[i] == ',') {
-                ++i;
-                continue;
-            }
-            if (s[i] == close) return ++i, true;
-            return false;
-        }
-    }
-    const size_t start = i;  // number, true, false, null
-    while (i < s.size() && std::string_view(",}] \t\r\n").find(s[i]) == std::string_view::npos)
-        ++i;
-    return i > start;
-}
-
-// The raw text of member `key` of the JSON object `object`, if present.
-std::optional<std::string_view> json_member(std::string_view object, std::string_view key) {
-    size_t i = 0;
-    skip_space(object, i);
-    if (i >= object.size() || object[i] != '{') return std::nullopt;
-    ++i;
-    while (true) {
-        skip_space(object, i);
-        std::string name;
-        if (!read_json_string(object, i, name)) return std::nullopt;
-        skip_space(object, i);
-        if (i >= object.size() || object[i] != ':') return std::nullopt;
-        ++i;
-        skip_space(object, i);
-        const size_t start = i;
-        if (!skip_json_value(object, i)) return std::nullopt;
-        if (name == key) return object.substr(start, i - start);
-        skip_space(object, i);
-        if (i >= object.size() || object[i] != ',') return std::nullopt;
-        ++i;
-    }
-}
-
-std::optional<std::string> json_string_member(std::string_view object, std::string_view key) {
-    const auto value = json_member(object, key);
-    std::string out;
-    size_t i = 0;
-    if (!value || !read_json_string(*value, i, out)) return std::nullopt;
-    return out;
-}
-
-std::string case_name_from_json(const std::string& json) {
-    if (auto name = json_string_member(json, "name")) return *name;
-    if (auto name = json_string_member(json, "case_name")) return *name;
-    if (auto inner = json_member(json, "case"))
-        if (auto name = json_string_member(*inner, "name")) return *name;
-    return "";
-}
-
-// ---------------------------------------------------------------------------
 // The file's content
 
 // Input problems are caught before the file is created, so that a bad call
@@ -471,8 +312,8 @@ void write_modes(const Writer& w, hid_t file, const std::vector<Mode>& modes) {
 }
 
 void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,
-                const std::string& case_json, const std::string& program_version,
-                bool& created) {
+                const std::string& case_name, const std::string& case_json,
+                const std::string& program_version, bool& created) {
     const Writer w(path);
     Handle file = w.create_file();
     created = true;
@@ -481,7 +322,7 @@ void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mod
     const bool prefixed = program_version.rfind("coremodal", 0) == 0;
     w.string_attribute(file, "program", prefixed ? program_version
                                                  : "coremodal " + program_version);
-    w.string_attribute(file, "case_name", case_name_from_json(case_json));
+    w.string_attribute(file, "case_name", case_name);
     {
         Handle case_group = w.group(file, "case");
         w.string_scalar(case_group, "json", case_json);
@@ -501,12 +342,13 @@ std::string modes_h5_shape_dataset(int number) {
 }
 
 void write_modes_h5(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,
-                    const std::string& case_json, const std::string& program_version) {
+                    const std::string& case_name, const std::string& case_json,
+                    const std::string& program_version) {
     check_input(path, mesh, modes);
     const QuietHdf5Errors quiet;
     bool created = false;
     try {
-        write_file(path, mesh, modes, case_json, program_version, created);
+        write_file(path, mesh, modes, case_name, case_json, program_version, created);
     } catch (...) {
         // Every handle is closed by now; don't leave a truncated file that a
         // reader could mistake for results (but never remove a file we did

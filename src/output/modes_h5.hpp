@@ -21,12 +21,12 @@ inline constexpr int modes_h5_schema_version = 1;
 std::string modes_h5_shape_dataset(int number);
 
 // Writes modes.h5 with the serial HDF5 API; call on one rank only (the rank
-// holding the mode shapes). `case_json` is the resolved case as a JSON object;
-// its top-level "name" (or "case_name", or "case"."name") becomes the
-// case_name root attribute. Each mode's shape must hold 3 * mesh.n_nodes()
+// holding the mode shapes). `case_json` is the resolved case as a JSON object,
+// stored verbatim; `case_name` becomes the case_name root attribute. Each mode's shape must hold 3 * mesh.n_nodes()
 // values. Overwrites an existing file. Throws std::runtime_error naming the
 // path on any HDF5 failure or inconsistent input.
 void write_modes_h5(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,
-                    const std::string& case_json, const std::string& program_version);
+                    const std::string& case_name, const std::string& case_json,
+                    const std::string& program_version);
 
 }  // namespace coremodal

@@ -4,6 +4,8 @@
 #include "element/quadrature.hpp"
 #include "element/shape_functions.hpp"
 
+#include "support/test_materials.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,19 +23,7 @@ namespace {
 
 const CellType all_types[] = {CellType::hex20, CellType::hex27, CellType::tet10};
 
-OrthotropicMaterial paperboard() {
-    OrthotropicMaterial m;
-    m.name = "paperboard";
-    m.E_r = 33e6;
-    m.E_theta = 4e9;
-    m.E_z = 6.5e9;
-    m.G_rtheta = m.G_rz = 130e6;
-    m.G_thetaz = 1.8e9;
-    m.nu_rtheta = m.nu_rz = 0.002;
-    m.nu_thetaz = 0.3;
-    m.density = 700;
-    return m;
-}
+using coremodal::testing::paperboard;
 
 // Tube sector: r in [ri, ro], theta in [theta0, theta0 + dtheta], z in [0, length].
 struct Sector {

@@ -2,6 +2,8 @@
 // and the rotation to global axes.
 #include "material/material.hpp"
 
+#include "support/test_materials.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,23 +12,7 @@ using namespace coremodal;
 
 namespace {
 
-// The paperboard-like set of the brief: radial modulus two orders below the
-// in-plane ones, transverse shear soft, nu_zr = 0.002 * 6.5e9 / 33e6 = 0.39.
-OrthotropicMaterial paperboard() {
-    OrthotropicMaterial m;
-    m.name = "paperboard";
-    m.E_r = 33e6;
-    m.E_theta = 4e9;
-    m.E_z = 6.5e9;
-    m.G_rtheta = 130e6;
-    m.G_rz = 130e6;
-    m.G_thetaz = 1.8e9;
-    m.nu_rtheta = 0.002;
-    m.nu_rz = 0.002;
-    m.nu_thetaz = 0.3;
-    m.density = 700;
-    return m;
-}
+using coremodal::testing::paperboard;
 
 OrthotropicMaterial steel() { return OrthotropicMaterial::isotropic("steel", 210e9, 0.3, 7850); }
 

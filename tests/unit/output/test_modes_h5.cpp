@@ -355,7 +355,7 @@ TEST_CASE("write_modes_h5 writes every dataset of schema 1", "[output][h5]") {
         const Mesh mesh = one_cell_mesh(type);
         const std::vector<Mode> modes = fake_modes(mesh.n_nodes());
         const std::string path = dir.file(std::string("modes_") + cell_type_name(type) + ".h5");
-        write_modes_h5(path, mesh, modes, case_json, "9.9.9-test");
+        write_modes_h5(path, mesh, modes, "tiny \"tube\"", case_json, "9.9.9-test");
         check_file_matches(path, mesh, modes);
     }
 }
@@ -364,8 +364,8 @@ TEST_CASE("write_modes_h5 handles a run with no modes and overwrites old files",
     TempDir dir;
     const Mesh mesh = one_cell_mesh(CellType::hex20);
     const std::string path = dir.file("modes.h5");
-    write_modes_h5(path, mesh, fake_modes(mesh.n_nodes()), case_json, "coremodal 9.9.9-test");
-    write_modes_h5(path, mesh, {}, case_json, "coremodal 9.9.9-test");
+    write_modes_h5(path, mesh, fake_modes(mesh.n_nodes()), "tiny", case_json, "coremodal 9.9.9-test");
+    write_modes_h5(path, mesh, {}, "tiny \"tube\"", case_json, "coremodal 9.9.9-test");
     check_file_matches(path, mesh, {});
 }
 
@@ -374,32 +374,16 @@ TEST_CASE("write_modes_h5 reports failures with the path", "[output][h5]") {
     const Mesh mesh = one_cell_mesh(CellType::hex20);
 
     const std::string missing_dir = dir.file("no/such/dir/modes.h5");
-    CHECK_THROWS_WITH(write_modes_h5(missing_dir, mesh, fake_modes(mesh.n_nodes()), "{}", "1"),
+    CHECK_THROWS_WITH(write_modes_h5(missing_dir, mesh, fake_modes(mesh.n_nodes()), "x", "{}", "1"),
                       Catch::Contains(missing_dir));
 
     // A shape of the wrong length is refused before any file is created.
     const std::string path = dir.file("bad.h5");
     std::vector<Mode> modes = fake_modes(mesh.n_nodes());
     modes[1].shape.pop_back();
-    CHECK_THROWS_WITH(write_modes_h5(path, mesh, modes, "{}", "1"),
+    CHECK_THROWS_WITH(write_modes_h5(path, mesh, modes, "x", "{}", "1"),
                       Catch::Contains(path) && Catch::Contains("mode 2"));
     CHECK_FALSE(fs::exists(path));
-}
-
-TEST_CASE("case_name comes from the case JSON", "[output][h5]") {
-    TempDir dir;
-    const Mesh mesh = one_cell_mesh(CellType::tet10);
-    auto case_name_of = [&](const std::string& json) {
-        const std::string path = dir.file("name.h5");
-        write_modes_h5(path, mesh, {}, json, "1");
-        H5 file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-        return read_string_attribute(file, "case_name");
-    };
-    CHECK(case_name_of(R"({"core": {"name": "inner"}, "name": "outer"})") == "outer");
-    CHECK(case_name_of(R"({"units": ["a", {"name": "x"}], "case_name": "caf\u00e9"})") ==
-          "caf\xc3\xa9");
-    CHECK(case_name_of(R"({"case": {"source": "a.toml", "name": "nested"}})") == "nested");
-    CHECK(case_name_of("not json") == "");
 }
 
 TEST_CASE("mode attribute names in the XDMF file", "[output][xdmf]") {
@@ -419,7 +403,7 @@ TEST_CASE("write_modes_xdmf points at the datasets of modes.h5", "[output][xdmf]
     for (CellType type : {CellType::hex20, CellType::tet10}) {
         const Mesh mesh = one_cell_mesh(type);
         const std::vector<Mode> modes = fake_modes(mesh.n_nodes());
-        write_modes_h5(dir.file("modes.h5"), mesh, modes, case_json, "1");
+        write_modes_h5(dir.file("modes.h5"), mesh, modes, "tiny", case_json, "1");
         const std::string xdmf = dir.file("modes.xdmf");
         write_modes_xdmf(xdmf, "modes.h5", mesh, modes);
 
