@@ -15,8 +15,9 @@ import numpy as np
 import pytest
 
 import coremodal
-from coremodal.plot import (AUTO_SCALE_CAP_FRACTION, AUTO_SCALE_FRACTION, boundary_polygons,
-                            draw_mode)
+from coremodal.plot import (AUTO_SCALE_CAP_FRACTION, AUTO_SCALE_FRACTION,
+                            SECTION_SCALE_FRACTION, boundary_polygons, centreline_curves,
+                            clamp_spans, draw_mode, section_ring)
 
 N_MODES_ASKED = 10  # [analysis] modes in data/tiny.toml
 
@@ -167,6 +168,114 @@ def test_boundary_of_the_tube_is_its_four_surfaces(results: coremodal.Results) -
     near = lambda a, b: np.isclose(a, b, rtol=0, atol=1e-9)  # noqa: E731
     # Every boundary node lies on the inner or outer cylinder or an end face.
     assert np.all(near(radius, 0.038) | near(radius, 0.041) | near(z, z.min()) | near(z, z.max()))
+
+
+# A synthetic tube: 121 planes of 48 nodes on each of 3 radii, for testing the
+# curves and the ring on displacement fields known in closed form.
+TUBE_LENGTH, TUBE_RADII, TUBE_PLANES, TUBE_ANGLES = 4.0, (0.075, 0.082, 0.09), 121, 48
+
+
+def synthetic_tube() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Nodes (N, 3) and each node's z, angle and radius."""
+    z, theta, radius = np.meshgrid(np.linspace(0.0, TUBE_LENGTH, TUBE_PLANES),
+                                   np.linspace(-np.pi, np.pi, TUBE_ANGLES, endpoint=False),
+                                   TUBE_RADII, indexing="ij")
+    z, theta, radius = z.ravel(), theta.ravel(), radius.ravel()
+    nodes = np.column_stack([radius * np.cos(theta), radius * np.sin(theta), z])
+    return nodes, z, theta, radius
+
+
+def test_centreline_of_a_bending_sine_is_the_sine() -> None:
+    nodes, z, _, _ = synthetic_tube()
+    shape = np.zeros_like(nodes)
+    shape[:, 0] = np.sin(np.pi * z / TUBE_LENGTH)
+    curves = centreline_curves(nodes, shape, n_stations=60)
+    assert curves.z.shape == (60,) and curves.edges.shape == (61,)
+    np.testing.assert_allclose(curves.ux, np.sin(np.pi * curves.z / TUBE_LENGTH), atol=2e-3)
+    assert np.abs(curves.ux).max() == pytest.approx(1.0, abs=2e-3)
+    for other in (curves.uy, curves.uz, curves.twist):
+        np.testing.assert_allclose(other, 0.0, atol=1e-12)
+    # The section moves but keeps its shape (up to the curvature of the sine
+    # within a station).
+    assert np.abs(curves.ring_shape).max() < 1e-3
+
+
+def test_centreline_shows_axial_displacement_and_twist() -> None:
+    nodes, z, _, _ = synthetic_tube()
+    shape = np.zeros_like(nodes)
+    shape[:, 2] = np.cos(np.pi * z / TUBE_LENGTH)
+    twist = 0.01 * z  # rad: the section turns as a rigid disc, u = twist * (-y, x)
+    shape[:, 0], shape[:, 1] = -twist * nodes[:, 1], twist * nodes[:, 0]
+    curves = centreline_curves(nodes, shape)
+    np.testing.assert_allclose(curves.uz, np.cos(np.pi * curves.z / TUBE_LENGTH), atol=2e-3)
+    np.testing.assert_allclose(curves.twist, 0.01 * curves.z, rtol=1e-9, atol=1e-12)
+    for other in (curves.ux, curves.uy, curves.ring_shape):
+        np.testing.assert_allclose(other, 0.0, atol=1e-12)
+
+
+def test_section_ring_of_an_ovalling_field_is_an_n2_ring() -> None:
+    nodes, z, theta, _ = synthetic_tube()
+    # u_r = cos(2 theta), largest at mid-length: the ring is taken there.
+    radial = 1e-3 * np.cos(2 * theta) * np.sin(np.pi * z / TUBE_LENGTH)
+    shape = np.column_stack([radial * np.cos(theta), radial * np.sin(theta), np.zeros_like(z)])
+    ring = section_ring(nodes, shape)
+    outer = max(TUBE_RADII)
+    assert ring.radius == pytest.approx(outer)
+    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=TUBE_LENGTH / 60)
+    assert len(ring.theta) == TUBE_ANGLES and np.all(np.diff(ring.theta) > 0)
+    np.testing.assert_allclose(np.hypot(*ring.xy.T), outer)
+    # The deformed ring's largest radial change is 20 % of the radius...
+    deformed_radius = np.hypot(*(ring.deformed - ring.centre).T)
+    change = deformed_radius - outer
+    assert np.abs(change).max() == pytest.approx(SECTION_SCALE_FRACTION * outer, rel=1e-9)
+    # ...and it is an n = 2 shape: two waves around, longest along x and y.
+    spectrum = np.abs(np.fft.rfft(change))
+    assert int(np.argmax(spectrum)) == 2
+    assert spectrum[2] > 50 * np.delete(spectrum, 2).max()
+    assert change[np.argmin(np.abs(ring.theta))] > 0  # theta = 0: wider
+    assert change[np.argmin(np.abs(ring.theta - np.pi / 2))] < 0  # theta = 90 deg: narrower
+    # The section does not move as a whole, but its shape changes.
+    curves = centreline_curves(nodes, shape)
+    np.testing.assert_allclose([curves.ux, curves.uy, curves.uz], 0.0, atol=1e-12)
+    middle = np.argmin(np.abs(curves.z - TUBE_LENGTH / 2))
+    assert curves.ring_shape[middle] == pytest.approx(1e-3 / np.sqrt(2), rel=1e-2)
+
+
+def test_section_ring_of_a_bending_field_is_a_shifted_circle() -> None:
+    nodes, z, _, _ = synthetic_tube()
+    shape = np.zeros_like(nodes)
+    shape[:, 1] = np.sin(np.pi * z / TUBE_LENGTH)
+    ring = section_ring(nodes, shape)
+    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=TUBE_LENGTH / 60)
+    shift = ring.deformed - ring.xy
+    np.testing.assert_allclose(shift[:, 0], 0.0, atol=1e-15)
+    np.testing.assert_allclose(shift[:, 1], SECTION_SCALE_FRACTION * max(TUBE_RADII), rtol=1e-3)
+
+
+def test_clamp_spans_read_the_case() -> None:
+    case = {"supports": {"type": "clamped", "clamps": [
+        {"name": "left", "z_start": 0.2, "z_end": 0.3},
+        {"name": "right", "z_start": 4.02, "z_end": 4.12}]}}
+    assert clamp_spans(case) == [(0.2, 0.3), (4.02, 4.12)]
+    assert clamp_spans({"supports": {"type": "free", "clamps": []}}) == []
+    assert clamp_spans({}) == []
+    assert clamp_spans({"supports": {"clamps": [{"name": "no zone"}]}}) == []
+
+
+def test_draw_mode_of_a_clamped_core_draws_three_panels(results: coremodal.Results,
+                                                        tmp_path: Path) -> None:
+    """The picture for a case with clamps (the tiny tube with two clamps
+    added to its case): curves along the core and the cross-section."""
+    import dataclasses
+
+    clamped = dataclasses.replace(results, case={
+        **results.case, "supports": {"type": "clamped", "clamps": [
+            {"name": "left", "z_start": 0.0, "z_end": 0.05},
+            {"name": "right", "z_start": 0.45, "z_end": 0.5}]}})
+    out = tmp_path / "clamped.png"
+    draw_mode(clamped, 7, out, size_px=(900, 700))
+    assert png_size(out) == (900, 700)
+    assert out.stat().st_size > 10_000
 
 
 # ------------------------------------------------------------------ CLI
