@@ -1,5 +1,6 @@
 #include "app/batch.hpp"
 
+#include "common/argv.hpp"
 #include "common/error.hpp"
 
 #include <toml++/toml.h>
@@ -215,13 +216,6 @@ std::vector<std::string> child_environment(bool single_threaded) {
         for (const char* name : {"OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"})
             if (!names.count(name)) env.push_back(std::string(name) + "=1");
     return env;
-}
-
-std::vector<char*> c_strings(std::vector<std::string>& v) {
-    std::vector<char*> out;
-    for (auto& s : v) out.push_back(s.data());
-    out.push_back(nullptr);
-    return out;
 }
 
 std::string program_name(const std::string& program) {

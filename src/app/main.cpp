@@ -7,6 +7,7 @@
 // PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
 // mumps, -eps_view) may follow anywhere; they are applied after coremodal's
 // defaults, so an expert can override any solver setting.
+#include "common/argv.hpp"
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
@@ -50,13 +51,6 @@ SplitArgs split_arguments(int argc, char** argv) {
     return s;
 }
 
-std::vector<char*> c_strings(std::vector<std::string>& v) {
-    std::vector<char*> out;
-    for (auto& s : v) out.push_back(s.data());
-    out.push_back(nullptr);
-    return out;
-}
-
 int report_error(const char* kind, const std::exception& e) {
     int mpi_up = 0;
     MPI_Initialized(&mpi_up);
@@ -87,7 +81,7 @@ int main(int argc, char** argv) {
     const std::vector<coremodal::Command> commands = {
         coremodal::add_run_command(app), coremodal::add_beam_command(app), coremodal::add_batch_command(app)};
 
-    auto ours = c_strings(args.ours);
+    auto ours = coremodal::c_strings(args.ours);
     try {
         app.parse(static_cast<int>(args.ours.size()), ours.data());
     } catch (const CLI::ParseError& e) {
@@ -99,7 +93,7 @@ int main(int argc, char** argv) {
     if (!chosen) return 2;
     if (!chosen->needs_petsc) return run_guarded(*chosen);
 
-    auto petsc = c_strings(args.petsc);
+    auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
