@@ -8,6 +8,7 @@
 #include "common/stopwatch.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "geometry/tube_model.hpp"
+#include "mesh/connectivity.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mode_shapes.hpp"
@@ -156,6 +157,10 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
                     0,
                     expected_mass(scene),
                     mesh_source};
+    for (const std::string& warning : unheld_parts(mesh, eliminated)) {
+        if (root) std::cerr << "coremodal: warning: " << mesh_source << ": " << warning << std::endl;
+        report.warnings.push_back(warning);
+    }
     say("      " + std::to_string(mesh.n_cells()) + " " + report.model.element + " cells, " +
         std::to_string(mesh.n_nodes()) + " nodes, " + std::to_string(dofs.n_dofs) + " DOFs (" +
         std::to_string(eliminated.size()) + " clamped nodes eliminated)");

@@ -45,6 +45,7 @@ struct RunReport {
     Timing timing_s;
     double peak_memory_mb = 0;  // sum over MPI ranks of the peak resident set
     int mpi_ranks = 1;
+    std::vector<std::string> warnings;  // things the user should know (e.g. an unheld part)
 };
 
 }  // namespace coremodal

@@ -17,6 +17,12 @@ namespace {
 // never expected (every writer input is checked upstream).
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
 
+toml::array strings_array(const std::vector<std::string>& items) {
+    toml::array a;
+    for (const auto& item : items) a.push_back(item);
+    return a;
+}
+
 toml::table material_table(const OrthotropicMaterial& m) {
     return toml::table{{"name", m.name},           {"E_r", m.E_r},           {"E_theta", m.E_theta},
                        {"E_z", m.E_z},             {"G_rtheta", m.G_rtheta}, {"G_rz", m.G_rz},
@@ -49,9 +55,7 @@ toml::table scene_table(const Scene& s) {
     if (s.analysis.f_max_hz)
         analysis.insert("band_hz", toml::array{s.analysis.f_min_hz.value_or(0.0), *s.analysis.f_max_hz});
     t.insert("analysis", analysis);
-    toml::array assumptions;
-    for (const auto& a : s.assumptions) assumptions.push_back(a);
-    t.insert("assumptions", assumptions);
+    t.insert("assumptions", strings_array(s.assumptions));
     return t;
 }
 
@@ -85,8 +89,7 @@ void write_text_file(const std::string& path, const std::string& text) {
 std::string scene_json(const Scene& scene) { return to_json(scene_table(scene)); }
 
 void write_summary_json(const std::string& path, const RunReport& r) {
-    toml::array effects;
-    for (const auto& e : r.scene.effects()) effects.push_back(e);
+    const toml::array effects = strings_array(r.scene.effects());
     toml::array modes;
     for (const auto& m : r.modes.modes) modes.push_back(mode_table(m));
     const auto& v = r.modes.verification;
@@ -127,6 +130,7 @@ void write_summary_json(const std::string& path, const RunReport& r) {
                                  {"verify", t.verify},
                                  {"classify", t.classify},
                                  {"total", t.total}}},
+        {"warnings", strings_array(r.warnings)},
         {"peak_memory_mb", r.peak_memory_mb},
         {"mpi_ranks", r.mpi_ranks}};
     write_text_file(path, to_json(summary) + "\n");
