@@ -14,6 +14,33 @@ using GridIndex = std::pair<int, int>;  // (radial boundary i, axial breakpoint 
 // Cores are millimetres thick; a micrometre separates every real boundary.
 constexpr double kGeometryTolerance = 1e-6;
 
+// Size ratio of the largest to the smallest element of a segment graded
+// towards clamp edges. Measured on case 02 (3 through the wall, 32 around;
+// f1 with 24 / 48 / 96 elements along): uniform 62.018 / 61.687 / 61.479 Hz,
+// ratio 4: 61.649 / 61.493 / 61.391 Hz, ratio 8: 61.545 / 61.455 / 61.377 Hz,
+// ratio 16: 61.489 / 61.439 Hz. The clamp edge is singular, so every mesh
+// converges slowly; grading by 8 gives with 24 elements what uniform gives
+// with ~80, and keeps the middle elements short enough for higher modes.
+constexpr double kClampEdgeGradingRatio = 8.0;
+
+// A geometric progression of n elements with the given size ratio end to
+// end; gmsh's "Progression" coefficient is the ratio of neighbours.
+void set_axial_grading(int line, const AxialSegment& seg) {
+    namespace geo = gmsh::model::geo;
+    const int n = seg.n_elements;
+    const double step = n > 1 ? std::pow(kClampEdgeGradingRatio, 1.0 / (n - 1)) : 1.0;
+    switch (seg.grading) {
+    case AxialGrading::uniform: geo::mesh::setTransfiniteCurve(line, n + 1); break;
+    case AxialGrading::toward_start: geo::mesh::setTransfiniteCurve(line, n + 1, "Progression", step); break;
+    case AxialGrading::toward_end: geo::mesh::setTransfiniteCurve(line, n + 1, "Progression", 1 / step); break;
+    case AxialGrading::toward_both:
+        // Bump: small elements at both ends; gmsh's coefficient is the ratio
+        // of the end size to the middle size.
+        geo::mesh::setTransfiniteCurve(line, n + 1, "Bump", 1 / kClampEdgeGradingRatio);
+        break;
+    }
+}
+
 struct SectionTags {
     std::vector<int> surfaces;
 };
@@ -39,7 +66,7 @@ SectionTags build_section(const TubeSection& s) {
     };
     auto axial_line = [&](int i, int j) {  // at radius i from breakpoint j to j+1
         int tag = geo::addLine(point[{i, j}], point[{i, j + 1}]);
-        geo::mesh::setTransfiniteCurve(tag, s.segments[j].n_elements + 1);
+        set_axial_grading(tag, s.segments[j]);
         return tag;
     };
     std::map<GridIndex, int> radial, axial;

@@ -42,6 +42,30 @@ std::vector<int> distribute_elements(const std::vector<double>& lengths, int n_t
     return counts;
 }
 
+bool inside_a_clamp(const Scene& scene, double z0, double z1) {
+    for (const auto& c : scene.supports.clamps)
+        if (z0 >= c.z_start - kBreakpointMergeTolerance && z1 <= c.z_end + kBreakpointMergeTolerance) return true;
+    return false;
+}
+
+bool is_clamp_edge(const Scene& scene, double z) {
+    const double tol = kBreakpointMergeTolerance * scene.core.length;
+    if (z < tol || z > scene.core.length - tol) return false;  // a core end is free, not a clamp edge
+    for (const auto& c : scene.supports.clamps)
+        if (std::abs(z - c.z_start) < tol || std::abs(z - c.z_end) < tol) return true;
+    return false;
+}
+
+// Free-core segments are refined towards the clamp edges they touch.
+AxialGrading grading(const Scene& scene, double z0, double z1) {
+    if (inside_a_clamp(scene, z0, z1)) return AxialGrading::uniform;
+    const bool at_start = is_clamp_edge(scene, z0), at_end = is_clamp_edge(scene, z1);
+    if (at_start && at_end) return AxialGrading::toward_both;
+    if (at_start) return AxialGrading::toward_start;
+    if (at_end) return AxialGrading::toward_end;
+    return AxialGrading::uniform;
+}
+
 }  // namespace
 
 TubeSection make_tube_section(const Scene& scene) {
@@ -56,7 +80,8 @@ TubeSection make_tube_section(const Scene& scene) {
     std::vector<double> lengths;
     for (size_t i = 0; i + 1 < z.size(); ++i) lengths.push_back(z[i + 1] - z[i]);
     const auto counts = distribute_elements(lengths, scene.mesh.n_along);
-    for (size_t i = 0; i + 1 < z.size(); ++i) section.segments.push_back({z[i], z[i + 1], counts[i]});
+    for (size_t i = 0; i + 1 < z.size(); ++i)
+        section.segments.push_back({z[i], z[i + 1], counts[i], grading(scene, z[i], z[i + 1])});
 
     COREMODAL_ASSERT(scene.mesh.n_around % 4 == 0 && scene.mesh.n_around >= 8);
     section.n_around = scene.mesh.n_around;

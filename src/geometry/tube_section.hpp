@@ -18,9 +18,15 @@ struct RadialLayer {
     int n_elements = 1;
 };
 
+// How a segment's elements are sized along z. Clamp edges are stress
+// singularities in a shear-soft wall (DOMAIN.md section 6): segments of the
+// free core next to them are graded towards them.
+enum class AxialGrading { uniform, toward_start, toward_end, toward_both };
+
 struct AxialSegment {
     double z_start = 0, z_end = 0;  // m
     int n_elements = 1;
+    AxialGrading grading = AxialGrading::uniform;
 };
 
 struct TubeSection {

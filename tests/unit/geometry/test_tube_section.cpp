@@ -1,0 +1,40 @@
+#include "geometry/tube_section.hpp"
+
+#include "verification/tube_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace coremodal;
+
+TEST_CASE("Axial segments end on clamp edges and the free core is graded towards them", "[geometry]") {
+    // Clamp zones 100 mm long centred 250 mm from each end of a 4.32 m core
+    // (case 03): overhang, clamp, span, clamp, overhang.
+    Scene s = testing::steel_tube(0.176, 0.1505, 4.32, 2, 16, 60);
+    s.supports.kind = SupportKind::clamped;
+    s.supports.clamps = {{"left", 0.2, 0.3}, {"right", 4.02, 4.12}};
+    const TubeSection section = make_tube_section(s);
+    REQUIRE(section.segments.size() == 5);
+    CHECK(section.segments[0].grading == AxialGrading::toward_end);    // overhang, clamp on its right
+    CHECK(section.segments[1].grading == AxialGrading::uniform);       // inside the clamp
+    CHECK(section.segments[2].grading == AxialGrading::toward_both);   // the free span
+    CHECK(section.segments[3].grading == AxialGrading::uniform);
+    CHECK(section.segments[4].grading == AxialGrading::toward_start);  // overhang, clamp on its left
+    CHECK(section.segments[2].z_start == Approx(0.3));
+    CHECK(section.segments[2].z_end == Approx(4.02));
+    int total = 0;
+    for (const auto& seg : section.segments) {
+        CHECK(seg.n_elements >= 2);
+        total += seg.n_elements;
+    }
+    CHECK(total >= 60);
+}
+
+TEST_CASE("Clamps at the core ends leave no graded overhang; a free core is uniform", "[geometry]") {
+    Scene s = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 2.211, 2, 16, 40), 0.07);
+    const TubeSection clamped = make_tube_section(s);
+    REQUIRE(clamped.segments.size() == 3);
+    CHECK(clamped.segments[1].grading == AxialGrading::toward_both);
+    const TubeSection free = make_tube_section(testing::steel_tube(0.106, 0.076, 2.211, 2, 16, 40));
+    REQUIRE(free.segments.size() == 1);
+    CHECK(free.segments[0].grading == AxialGrading::uniform);
+}
