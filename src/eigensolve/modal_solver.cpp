@@ -143,9 +143,8 @@ constexpr int kMaxRetries = 2;
 // The shift for a retry: half the lowest elastic eigenvalue found below zero
 // (negative, so rigid modes stay harmless), or the old shift if that is closer.
 double better_shift(const std::vector<double>& lambdas, double scale, double old_sigma) {
-    constexpr double kRigidFraction = 1e-6;  // as modes/classify.hpp
     for (double lambda : lambdas)
-        if (lambda > kRigidFraction * scale) return std::max(old_sigma, -kShiftFraction * lambda);
+        if (lambda > kRigidEigenvalueFraction * scale) return std::max(old_sigma, -kShiftFraction * lambda);
     return old_sigma;
 }
 

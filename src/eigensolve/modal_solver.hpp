@@ -13,6 +13,11 @@
 
 namespace coremodal {
 
+// |lambda| below this fraction of SolveRequest::lambda_scale: a rigid-body
+// mode. Rigid modes come out at |lambda| ~ 1e-9 of the first elastic
+// eigenvalue; the first elastic mode is never below ~1e-2 of a beam estimate.
+constexpr double kRigidEigenvalueFraction = 1e-6;
+
 struct SolveRequest {
     int n_modes = 20;                   // lowest modes wanted (if no band)
     std::optional<double> lambda_min;   // band request, rad^2/s^2 (both set, or neither)

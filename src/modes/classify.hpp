@@ -14,6 +14,7 @@
 // degenerate pair, arbitrarily rotated, get the same m).
 #pragma once
 
+#include "eigensolve/modal_solver.hpp"  // kRigidEigenvalueFraction
 #include "mesh/mesh.hpp"
 #include "modes/mode_set.hpp"
 
@@ -23,10 +24,6 @@ namespace coremodal {
 
 constexpr int kMaxWaveNumber = 8;
 constexpr double kMinDominantShare = 0.5;
-// lambda below this fraction of the first elastic eigenvalue's scale: rigid.
-// Rigid modes come out at |lambda| ~ 1e-9 of it; the first elastic mode is
-// never below ~1e-2 of a beam estimate.
-constexpr double kRigidEigenvalueFraction = 1e-6;
 
 // Geometric data of the nodes reused for every mode of a mesh.
 struct ModeClassifier {

@@ -127,7 +127,6 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         {"timing_s", toml::table{{"mesh", t.mesh},
                                  {"assemble", t.assemble},
                                  {"factor_and_solve", t.factor_and_solve},
-                                 {"verify", t.verify},
                                  {"classify", t.classify},
                                  {"total", t.total}}},
         {"warnings", strings_array(r.warnings)},
