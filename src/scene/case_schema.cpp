@@ -80,6 +80,32 @@ const std::vector<KeySpec>& case_schema() {
         {"clamp", "start", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
         {"clamp", "center", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
 
+        // [supports.left] / [supports.right] of type = "chucks" (docs/chucks.md).
+        length_key("chuck", "inserted_length", kMaxLength),
+        {"chuck", "clearance", ValueKind::quantity, Dimension::length, 0.0, kMaxDiameter},
+        length_key("chuck", "body_diameter", kMaxDiameter),
+        length_key("chuck", "shaft_diameter", kMaxDiameter),
+        length_key("chuck", "shaft_length", kMaxLength),
+        plain_key("chuck", "material", ValueKind::material),
+        plain_key("chuck", "interface", ValueKind::text),
+        plain_key("chuck", "expanded", ValueKind::boolean),
+        {"chuck", "normal_stiffness", ValueKind::quantity, Dimension::stiffness_per_area, 0.0, kInf, true},
+        {"chuck", "tangential_stiffness", ValueKind::quantity, Dimension::stiffness_per_area, 0.0, kInf, true},
+        {"chuck", "expansion_pressure", ValueKind::quantity, Dimension::pressure, 0.0, 1e9},
+        plain_key("chuck", "expanding", ValueKind::tables),
+        plain_key("chuck", "bearing", ValueKind::table),
+
+        {"expanding", "center", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
+        length_key("expanding", "width", kMaxLength),
+        integer_key("expanding", "segments", 1, 64),
+        {"expanding", "segment_angle", ValueKind::quantity, Dimension::angle, 0.0, 6.2832, true},
+
+        plain_key("bearing", "type", ValueKind::text),
+        {"bearing", "radial_stiffness", ValueKind::quantity, Dimension::stiffness, 0.0, kInf, true},
+        {"bearing", "tilting_stiffness", ValueKind::quantity, Dimension::rotational_stiffness, 0.0, kInf, true},
+        {"bearing", "frame_mass", ValueKind::quantity, Dimension::mass, 0.0, 1e6, true},
+        {"bearing", "frame_stiffness", ValueKind::quantity, Dimension::stiffness, 0.0, kInf, true},
+
         integer_key("analysis", "modes", 1, kMaxModes),
         plain_key("analysis", "band", ValueKind::band),
         {"analysis", "tolerance", ValueKind::quantity, Dimension::dimensionless, 0.0, 0.1, true},

@@ -20,6 +20,8 @@ enum class ValueKind {
     table,     // TOML table
     material,  // library name (string) or inline table
     band,      // array of two frequencies
+    boolean,   // true or false
+    tables,    // array of tables, [[...]]
 };
 
 // Schema tables. Material tables ([core.material], [rest_paper.material]) share

@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include <algorithm>
+
 namespace coremodal {
 
 // The vocabulary of effects is shared with the summary and the result file:
@@ -9,7 +11,21 @@ std::vector<std::string> Scene::effects() const {
     std::vector<std::string> out{"core"};
     if (rest_paper) out.push_back("rest_paper");
     if (supports.kind == SupportKind::clamped) out.push_back("rigid_clamps");
+    if (supports.kind == SupportKind::chucks) {
+        out.push_back("elastic_chucks");
+        const auto any = [&](auto pred) { return std::any_of(supports.chucks.begin(), supports.chucks.end(), pred); };
+        if (any([](const ChuckSpec& c) { return c.interface.kind == InterfaceKind::spring; }))
+            out.push_back("contact_compliance");
+        if (any([](const ChuckSpec& c) { return !c.bearing.rigid; })) out.push_back("bearing_springs");
+        if (any([](const ChuckSpec& c) { return c.bearing.frame_mass.has_value(); })) out.push_back("frame_mass");
+    }
     return out;
+}
+
+double ChuckSpec::li() const {
+    double li = 0;
+    for (const ExpandingElement& e : expanding) li = std::max(li, e.center);
+    return li;
 }
 
 }  // namespace coremodal

@@ -30,11 +30,63 @@ struct ClampSpec {
     double z_start = 0, z_end = 0;
 };
 
-enum class SupportKind { free, clamped };
+// One expanding element of a chuck: a full circumferential band, or
+// `segments` equal pads each spanning `segment_angle`, spaced evenly around
+// (the first centred at theta = 0, the +x axis).
+struct ExpandingElement {
+    double center = 0;  // m, from this chuck's core end, towards the core middle
+    double width = 0;   // m, along the axis
+    int segments = 0;   // 0 = full band
+    double segment_angle = 0;  // rad, span of one segment (segments > 0)
+};
+
+// How the core is held over the expanding elements (DOMAIN.md section 3,
+// docs/chucks.md): bonded = shared displacements; spring = a distributed
+// spring layer with normal and tangential stiffness per unit area.
+enum class InterfaceKind { bonded, spring };
+
+struct ChuckInterface {
+    InterfaceKind kind = InterfaceKind::spring;
+    bool expanded = true;               // false: the chuck was not expanded (soft contact)
+    double normal_stiffness = 0;        // Pa/m (pressure per unit relative displacement)
+    double tangential_stiffness = 0;    // Pa/m
+    std::optional<double> expansion_pressure;  // Pa, when the stiffnesses were derived from it
+};
+
+// The stand's bearing at the shaft end. Rigid: the shaft end face is held
+// (all displacements zero). Elastic: springs to the frame (or the ground).
+struct BearingSpec {
+    bool rigid = true;
+    double radial_stiffness = 0;   // N/m
+    double tilting_stiffness = 0;  // N m/rad
+    std::optional<double> frame_mass;       // kg, a lumped frame mass behind the bearing
+    std::optional<double> frame_stiffness;  // N/m, frame to ground (needed with a frame mass)
+};
+
+// An elastic chuck at one core end: a solid steel body inside the core, a
+// shaft outside it to the bearing, and expanding elements on the body.
+// Axial positions are measured from this chuck's own core end, inwards.
+struct ChuckSpec {
+    std::string name;              // "left" or "right"
+    double inserted_length = 0;    // m, body length inside the core
+    double body_diameter = 0;      // m, = core inner diameter - 2 x radial clearance
+    double shaft_diameter = 0;     // m
+    double shaft_length = 0;       // m, core end to the bearing
+    OrthotropicMaterial material;  // steel unless given
+    std::vector<ExpandingElement> expanding;
+    ChuckInterface interface;
+    BearingSpec bearing;
+
+    // Li: core end to the middle of the furthest expanding element (Ilomäki).
+    double li() const;
+};
+
+enum class SupportKind { free, clamped, chucks };
 
 struct SupportSpec {
     SupportKind kind = SupportKind::free;
     std::vector<ClampSpec> clamps;  // empty for free; left then right for clamped
+    std::vector<ChuckSpec> chucks;  // left then right for chucks
 };
 
 struct MeshSpec {

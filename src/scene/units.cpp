@@ -76,6 +76,19 @@ constexpr std::array kUnits = {
     UnitSpec{"kg", Dimension::mass, 1.0, true},
     UnitSpec{"g", Dimension::mass, 1.0, true, 1e3},
     UnitSpec{"t", Dimension::mass, 1e3, true},
+
+    UnitSpec{"N/m", Dimension::stiffness, 1.0, true},
+    UnitSpec{"kN/mm", Dimension::stiffness, 1e6, true},
+    UnitSpec{"N/mm", Dimension::stiffness, 1e3, true},
+    UnitSpec{"kN/m", Dimension::stiffness, 1e3, false},
+    UnitSpec{"MN/m", Dimension::stiffness, 1e6, false},
+
+    UnitSpec{"N*m/rad", Dimension::rotational_stiffness, 1.0, true},
+    UnitSpec{"kN*m/rad", Dimension::rotational_stiffness, 1e3, true},
+    UnitSpec{"MN*m/rad", Dimension::rotational_stiffness, 1e6, true},
+    UnitSpec{"Nm/rad", Dimension::rotational_stiffness, 1.0, false},
+    UnitSpec{"kNm/rad", Dimension::rotational_stiffness, 1e3, false},
+    UnitSpec{"MNm/rad", Dimension::rotational_stiffness, 1e6, false},
 };
 
 // "kg / m³" -> "kg/m3": spaces, '^' and superscript digits do not matter;
@@ -168,6 +181,10 @@ const char* dimension_name(Dimension d) {
             return "speed";
         case Dimension::mass:
             return "mass";
+        case Dimension::stiffness:
+            return "stiffness";
+        case Dimension::rotational_stiffness:
+            return "rotational stiffness";
     }
     return "quantity";
 }
@@ -192,6 +209,10 @@ const char* si_unit(Dimension d) {
             return "m/s";
         case Dimension::mass:
             return "kg";
+        case Dimension::stiffness:
+            return "N/m";
+        case Dimension::rotational_stiffness:
+            return "N*m/rad";
     }
     return "";
 }

@@ -9,7 +9,8 @@
 namespace coremodal {
 
 enum class Dimension { length, pressure, density, frequency, dimensionless,
-                       stiffness_per_area, angle, speed, mass };
+                       stiffness_per_area, angle, speed, mass,
+                       stiffness, rotational_stiffness };
 
 const char* dimension_name(Dimension d);  // "length", "pressure (modulus)", ...
 const char* si_unit(Dimension d);         // "m", "Pa", "kg/m^3", ...
