@@ -1,14 +1,18 @@
 #include "geometry/tube_model.hpp"
 
+#include "common/error.hpp"
+
 #include <gmsh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
 namespace coremodal {
 namespace {
 
-using GridIndex = std::pair<int, int>;  // (radial boundary i, axial breakpoint j)
+namespace geo = gmsh::model::geo;
 
 // Tolerance for recognising a surface by its radius or z range (metres).
 // Cores are millimetres thick; a micrometre separates every real boundary.
@@ -23,87 +27,230 @@ constexpr double kGeometryTolerance = 1e-6;
 // with ~80, and keeps the middle elements short enough for higher modes.
 constexpr double kClampEdgeGradingRatio = 8.0;
 
-// A geometric progression of n elements with the given size ratio end to
-// end; gmsh's "Progression" coefficient is the ratio of neighbours.
-void set_axial_grading(int line, const AxialSegment& seg) {
-    namespace geo = gmsh::model::geo;
+// Half-width of the O-grid's centre square (corner distance from the axis)
+// as a share of the innermost ring radius: 0.5 keeps the ring elements and
+// the square's elements of similar size and shape.
+constexpr double kOGridCoreShare = 0.5;
+
+// n element sizes growing geometrically by `ratio` end to end, from small to large.
+std::vector<double> geometric_sizes(int n, double ratio) {
+    std::vector<double> sizes(n);
+    const double step = n > 1 ? std::pow(ratio, 1.0 / (n - 1)) : 1.0;
+    for (int i = 0; i < n; ++i) sizes[i] = std::pow(step, i);
+    return sizes;
+}
+
+// Element boundaries of a segment as fractions of its length (after the
+// start, ending with 1): what gmsh's extrusion takes as layer heights.
+std::vector<double> layer_fractions(const AxialSegment& seg) {
+    std::vector<double> sizes;
     const int n = seg.n_elements;
-    const double step = n > 1 ? std::pow(kClampEdgeGradingRatio, 1.0 / (n - 1)) : 1.0;
     switch (seg.grading) {
-    case AxialGrading::uniform: geo::mesh::setTransfiniteCurve(line, n + 1); break;
-    case AxialGrading::toward_start: geo::mesh::setTransfiniteCurve(line, n + 1, "Progression", step); break;
-    case AxialGrading::toward_end: geo::mesh::setTransfiniteCurve(line, n + 1, "Progression", 1 / step); break;
-    case AxialGrading::toward_both:
-        // Bump: small elements at both ends; gmsh's coefficient is the ratio
-        // of the end size to the middle size.
-        geo::mesh::setTransfiniteCurve(line, n + 1, "Bump", 1 / kClampEdgeGradingRatio);
+    case AxialGrading::uniform: sizes.assign(n, 1.0); break;
+    case AxialGrading::toward_start: sizes = geometric_sizes(n, kClampEdgeGradingRatio); break;
+    case AxialGrading::toward_end:
+        sizes = geometric_sizes(n, kClampEdgeGradingRatio);
+        std::reverse(sizes.begin(), sizes.end());
+        break;
+    case AxialGrading::toward_both: {
+        // Small at both ends, largest in the middle: two mirrored halves.
+        const int half = (n + 1) / 2;
+        sizes = geometric_sizes(half, std::sqrt(kClampEdgeGradingRatio));
+        std::vector<double> back(sizes.rbegin() + (n % 2), sizes.rend());
+        sizes.insert(sizes.end(), back.begin(), back.end());
         break;
     }
+    }
+    double total = 0;
+    for (double s : sizes) total += s;
+    std::vector<double> fractions;
+    double sum = 0;
+    for (double s : sizes) fractions.push_back((sum += s) / total);
+    fractions.back() = 1.0;
+    return fractions;
 }
 
-struct SectionTags {
-    std::vector<int> surfaces;
+// A quarter of a ring of radius r at height z, from angle q * 90 degrees.
+struct Ring {
+    int center = 0;
+    std::array<int, 4> points{};  // at 0, 90, 180, 270 degrees
+    std::array<int, 4> arcs{};    // arcs[q] from points[q] to points[q + 1]
 };
 
-// Points and transfinite lines of the r–z grid in the plane y = 0 (x = r),
-// then one recombined transfinite surface per (layer, segment).
-SectionTags build_section(const TubeSection& s) {
-    namespace geo = gmsh::model::geo;
-    std::vector<double> radii = {s.layers.front().r_inner};
-    for (const auto& layer : s.layers) radii.push_back(layer.r_outer);
-    std::vector<double> zs = {s.segments.front().z_start};
-    for (const auto& seg : s.segments) zs.push_back(seg.z_end);
-
-    std::map<GridIndex, int> point;
-    for (size_t i = 0; i < radii.size(); ++i)
-        for (size_t j = 0; j < zs.size(); ++j)
-            point[{int(i), int(j)}] = geo::addPoint(radii[i], 0, zs[j]);
-
-    auto radial_line = [&](int i, int j) {  // from radius i to i+1 at breakpoint j
-        int tag = geo::addLine(point[{i, j}], point[{i + 1, j}]);
-        geo::mesh::setTransfiniteCurve(tag, s.layers[i].n_elements + 1);
-        return tag;
-    };
-    auto axial_line = [&](int i, int j) {  // at radius i from breakpoint j to j+1
-        int tag = geo::addLine(point[{i, j}], point[{i, j + 1}]);
-        set_axial_grading(tag, s.segments[j]);
-        return tag;
-    };
-    std::map<GridIndex, int> radial, axial;
-    for (int i = 0; i + 1 < int(radii.size()); ++i)
-        for (int j = 0; j < int(zs.size()); ++j) radial[{i, j}] = radial_line(i, j);
-    for (int i = 0; i < int(radii.size()); ++i)
-        for (int j = 0; j + 1 < int(zs.size()); ++j) axial[{i, j}] = axial_line(i, j);
-
-    SectionTags tags;
-    for (int i = 0; i + 1 < int(radii.size()); ++i)
-        for (int j = 0; j + 1 < int(zs.size()); ++j) {
-            int loop = geo::addCurveLoop(
-                {radial[{i, j}], axial[{i + 1, j}], -radial[{i, j + 1}], -axial[{i, j}]});
-            int surface = geo::addPlaneSurface({loop});
-            geo::mesh::setTransfiniteSurface(surface);
-            geo::mesh::setRecombine(2, surface);
-            tags.surfaces.push_back(surface);
-        }
-    return tags;
+Ring make_ring(int center, double r, double z, int n_quarter) {
+    Ring ring;
+    ring.center = center;
+    for (int q = 0; q < 4; ++q)
+        ring.points[q] = geo::addPoint(r * std::cos(q * M_PI / 2), r * std::sin(q * M_PI / 2), z);
+    for (int q = 0; q < 4; ++q) {
+        ring.arcs[q] = geo::addCircleArc(ring.points[q], center, ring.points[(q + 1) % 4]);
+        geo::mesh::setTransfiniteCurve(ring.arcs[q], n_quarter + 1);
+    }
+    return ring;
 }
 
-// Four quarter turns about the z axis, each extruding the previous top faces.
-void revolve_full_turn(const SectionTags& section, int n_around) {
-    gmsh::vectorpair current;
-    for (int tag : section.surfaces) current.emplace_back(2, tag);
-    for (int quarter = 0; quarter < 4; ++quarter) {
-        gmsh::vectorpair out;
-        gmsh::model::geo::revolve(current, 0, 0, 0, 0, 0, 1, M_PI / 2, out, {n_around / 4}, {}, true);
-        gmsh::vectorpair tops;
-        for (size_t k = 1; k < out.size(); ++k)
-            if (out[k].first == 3) tops.push_back(out[k - 1]);
-        current = tops;
+int structured_quad(const std::vector<int>& loop_curves) {
+    const int surface = geo::addPlaneSurface({geo::addCurveLoop(loop_curves)});
+    geo::mesh::setTransfiniteSurface(surface);
+    geo::mesh::setRecombine(2, surface);
+    return surface;
+}
+
+// The four quarter surfaces between two rings (same centre), with n_radial
+// elements across. Radial lines run along the x and y axes.
+std::vector<int> annulus(const Ring& in, const Ring& out, int n_radial) {
+    std::array<int, 4> spokes{};
+    for (int q = 0; q < 4; ++q) {
+        spokes[q] = geo::addLine(in.points[q], out.points[q]);
+        geo::mesh::setTransfiniteCurve(spokes[q], n_radial + 1);
     }
-    // The last quarter ends on the starting section: merge the coincident
-    // entities so the mesh is conforming across the seam.
-    gmsh::model::geo::removeAllDuplicates();
-    gmsh::model::geo::synchronize();
+    std::vector<int> surfaces;
+    for (int q = 0; q < 4; ++q)
+        surfaces.push_back(structured_quad({spokes[q], out.arcs[q], -spokes[(q + 1) % 4], -in.arcs[q]}));
+    return surfaces;
+}
+
+// A structured cross-section at height z: the core wall and rest paper as
+// annuli, and optionally a solid chuck disc as an O-grid (a centre square with
+// its corners on the axes, then rings at the shaft and body radii).
+struct CrossSection {
+    std::vector<std::pair<std::string, int>> tube;  // (part, surface)
+    std::vector<int> disc_shaft, disc_outer;         // chuck disc: inside / outside the shaft radius
+};
+
+std::vector<int> tube_surfaces(const TubeSection& s, int center, double z) {
+    const int n_quarter = s.n_around / 4;
+    Ring inner = make_ring(center, s.layers.front().r_inner, z, n_quarter);
+    std::vector<int> surfaces;
+    for (const RadialLayer& layer : s.layers) {
+        Ring outer = make_ring(center, layer.r_outer, z, n_quarter);
+        for (int tag : annulus(inner, outer, layer.n_elements)) surfaces.push_back(tag);
+        inner = outer;
+    }
+    return surfaces;
+}
+
+void chuck_disc(const ChuckBody& c, int n_around, int center, double z, CrossSection& out) {
+    const int n_quarter = n_around / 4;
+    const double a = kOGridCoreShare * c.shaft_radius;
+    std::array<int, 4> corners{};
+    for (int q = 0; q < 4; ++q) corners[q] = geo::addPoint(a * std::cos(q * M_PI / 2), a * std::sin(q * M_PI / 2), z);
+    Ring square;  // straight edges in place of arcs
+    square.points = corners;
+    for (int q = 0; q < 4; ++q) {
+        square.arcs[q] = geo::addLine(corners[q], corners[(q + 1) % 4]);
+        geo::mesh::setTransfiniteCurve(square.arcs[q], n_quarter + 1);
+    }
+    out.disc_shaft.push_back(structured_quad({square.arcs[0], square.arcs[1], square.arcs[2], square.arcs[3]}));
+    // Ring elements about as wide radially as around.
+    const auto n_across = [&](double r0, double r1) {
+        return std::max(1, static_cast<int>(std::round((r1 - r0) / (M_PI / 2 * r1 / n_quarter))));
+    };
+    const Ring shaft = make_ring(center, c.shaft_radius, z, n_quarter);
+    for (int tag : annulus(square, shaft, n_across(a, c.shaft_radius))) out.disc_shaft.push_back(tag);
+    if (c.body_radius > c.shaft_radius + kGeometryTolerance) {
+        const Ring body = make_ring(center, c.body_radius, z, n_quarter);
+        for (int tag : annulus(shaft, body, n_across(c.shaft_radius, c.body_radius))) out.disc_outer.push_back(tag);
+    }
+}
+
+// Extrudes surfaces by dz into hexahedral layers; returns (top surface, volume) per input.
+std::vector<std::pair<int, int>> extrude(const std::vector<int>& surfaces, double dz,
+                                         const std::vector<double>& fractions) {
+    gmsh::vectorpair in, out;
+    for (int tag : surfaces) in.emplace_back(2, tag);
+    geo::extrude(in, 0, 0, dz, out, std::vector<int>(fractions.size(), 1), fractions, true);
+    // gmsh returns, per input surface: its top, its volume, then the lateral surfaces.
+    std::vector<std::pair<int, int>> result;
+    for (size_t k = 0; k + 1 < out.size(); ++k)
+        if (out[k].first == 2 && out[k + 1].first == 3) result.push_back({out[k].second, out[k + 1].second});
+    COREMODAL_ASSERT(result.size() == surfaces.size());
+    return result;
+}
+
+// Volume tags per part name, filled as the extrusion goes.
+using PartVolumes = std::map<std::string, std::vector<int>>;
+
+struct ChuckState {
+    const ChuckBody* body = nullptr;
+    std::vector<int> shaft, outer;  // current top surfaces of the body's disc
+    bool started = false, done = false;
+};
+
+
+// Extrudes `current` and replaces it by the top surfaces.
+const std::vector<int>& extrude_into(std::vector<int>& current, const std::string& part, double dz,
+                                     const std::vector<double>& fractions, PartVolumes& volumes) {
+    std::vector<int> tops;
+    for (auto [top, volume] : extrude(current, dz, fractions)) {
+        tops.push_back(top);
+        volumes[part].push_back(volume);
+    }
+    current = std::move(tops);
+    return current;
+}
+
+// The whole model: the cross-section at z = 0 extruded segment by segment
+// along the core; chuck discs join where a body starts and leave where it
+// ends; shafts are extruded outwards from the body's end face at the core end.
+PartVolumes build_volumes(const TubeSection& s) {
+    PartVolumes volumes;
+    const double z0 = s.segments.front().z_start;
+    std::map<double, int> centers;  // one centre point per height (arcs need one)
+    const auto center_at = [&](double z) {
+        auto it = centers.find(z);
+        return it != centers.end() ? it->second : centers[z] = geo::addPoint(0, 0, z);
+    };
+    // Tube surfaces, grouped per layer (4 quarters each).
+    std::vector<int> tube = tube_surfaces(s, center_at(z0), z0);
+    std::vector<std::string> tube_part;
+    for (const RadialLayer& layer : s.layers) tube_part.insert(tube_part.end(), 4, layer.part);
+
+    std::vector<ChuckState> chucks;
+    for (const ChuckBody& c : s.chucks) {
+        ChuckState state;
+        state.body = &c;
+        chucks.push_back(state);
+    }
+    const double tol = kGeometryTolerance;
+    for (const AxialSegment& seg : s.segments) {
+        const std::vector<double> fractions = layer_fractions(seg);
+        const double dz = seg.z_end - seg.z_start;
+        for (ChuckState& c : chucks) {
+            if (c.started || std::abs(c.body->z_body_start - seg.z_start) > tol) continue;
+            CrossSection disc;
+            chuck_disc(*c.body, s.n_around, center_at(seg.z_start), seg.z_start, disc);
+            c.shaft = disc.disc_shaft;
+            c.outer = disc.disc_outer;
+            c.started = true;
+            if (c.body->shaft_below) {  // the shaft hangs from the body's start face
+                std::vector<int> start_face = c.shaft;
+                extrude_into(start_face, "chuck_" + c.body->name, -c.body->shaft_length,
+                             layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
+            }
+        }
+        // Tube layers: extruded one part at a time so volumes know their part.
+        std::vector<int> next;
+        for (size_t k = 0; k < tube.size(); k += 4) {
+            std::vector<int> quarter(tube.begin() + k, tube.begin() + k + 4);
+            for (int t : extrude_into(quarter, tube_part[k], dz, fractions, volumes)) next.push_back(t);
+        }
+        tube = next;
+        for (ChuckState& c : chucks) {
+            if (!c.started || c.done) continue;
+            const std::string part = "chuck_" + c.body->name;
+            extrude_into(c.shaft, part, dz, fractions, volumes);
+            if (!c.outer.empty()) extrude_into(c.outer, part, dz, fractions, volumes);
+            if (std::abs(c.body->z_body_end - seg.z_end) <= tol) {
+                c.done = true;
+                if (!c.body->shaft_below)
+                    extrude_into(c.shaft, part, c.body->shaft_length,
+                                 layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
+            }
+        }
+    }
+    geo::synchronize();
+    return volumes;
 }
 
 // Radius of a surface if it is a cylinder about z (radius equal at several
@@ -131,44 +278,58 @@ void add_named_group(int dim, const std::vector<int>& tags, const std::string& n
     gmsh::model::setPhysicalName(dim, group, name);
 }
 
-void add_physical_groups(const TubeSection& s, const std::vector<ClampSpec>& clamps) {
+struct Box {
+    double x0, y0, z0, x1, y1, z1;
+};
+
+Box bounding_box(int dim, int tag) {
+    Box b{};
+    gmsh::model::getBoundingBox(dim, tag, b.x0, b.y0, b.z0, b.x1, b.y1, b.z1);
+    return b;
+}
+
+bool within(const Box& b, double z_start, double z_end) {
+    return b.z0 >= z_start - kGeometryTolerance && b.z1 <= z_end + kGeometryTolerance;
+}
+
+// Named surfaces: the cylinders of the core and rest paper, clamp zones on
+// the core bore, and for chucks the facing surfaces over each expanding
+// element ("interface_<chuck>_core" on the bore, "interface_<chuck>_chuck" on
+// the body) and the shaft end face at the bearing ("bearing_<chuck>").
+void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clamps) {
     const double ri = s.layers.front().r_inner, ro = s.layers.front().r_outer;
     const double e = kGeometryTolerance;
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
-    std::vector<int> core, paper;
-    for (auto [dim, tag] : volumes) {
-        double x0, y0, z0, x1, y1, z1;
-        gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
-        (std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)}) <= ro + e ? core : paper)
-            .push_back(tag);
-    }
-    add_named_group(3, core, "core");
-    add_named_group(3, paper, "rest_paper");
-
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
-    std::vector<int> inner, outer, paper_outer;
-    std::map<std::string, std::vector<int>> clamp_faces;
+    std::map<std::string, std::vector<int>> groups;
     for (auto [dim, tag] : surfaces) {
+        const Box b = bounding_box(dim, tag);
+        if (std::abs(b.z1 - b.z0) < e) {  // a plane face: maybe a bearing face
+            for (const ChuckBody& c : s.chucks)
+                if (std::abs(b.z0 - c.z_bearing()) < e) groups["bearing_" + c.name].push_back(tag);
+            continue;
+        }
         const double r = cylinder_radius(tag);
         if (r < 0) continue;
-        double x0, y0, z0, x1, y1, z1;
-        gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
         if (std::abs(r - ri) < e) {
-            inner.push_back(tag);
+            groups["core_inner"].push_back(tag);
             for (const auto& c : clamps)
-                if (z0 >= c.z_start - e && z1 <= c.z_end + e) clamp_faces["clamp_" + c.name].push_back(tag);
+                if (within(b, c.z_start, c.z_end)) groups["clamp_" + c.name].push_back(tag);
+            for (const auto& [chuck, zone] : s.interfaces)
+                if (within(b, zone.first, zone.second)) groups["interface_" + chuck + "_core"].push_back(tag);
         } else if (std::abs(r - ro) < e) {
-            outer.push_back(tag);
+            groups["core_outer"].push_back(tag);
         } else if (s.layers.size() > 1 && std::abs(r - s.layers.back().r_outer) < e) {
-            paper_outer.push_back(tag);
+            groups["rest_paper_outer"].push_back(tag);
+        } else {
+            for (const ChuckBody& c : s.chucks)
+                if (std::abs(r - c.body_radius) < e && within(b, c.z_body_start, c.z_body_end))
+                    for (const auto& [chuck, zone] : s.interfaces)
+                        if (chuck == c.name && within(b, zone.first, zone.second))
+                            groups["interface_" + chuck + "_chuck"].push_back(tag);
         }
     }
-    add_named_group(2, inner, "core_inner");
-    add_named_group(2, outer, "core_outer");
-    add_named_group(2, paper_outer, "rest_paper_outer");
-    for (const auto& [name, tags] : clamp_faces) add_named_group(2, tags, name);
+    for (const auto& [name, tags] : groups) add_named_group(2, tags, name);
 }
 
 }  // namespace
@@ -176,8 +337,11 @@ void add_physical_groups(const TubeSection& s, const std::vector<ClampSpec>& cla
 void build_tube_model(const TubeSection& section, const std::vector<ClampSpec>& clamps,
                       const std::string& element) {
     gmsh::model::add("coremodal");
-    revolve_full_turn(build_section(section), section.n_around);
-    add_physical_groups(section, clamps);
+    const PartVolumes volumes = build_volumes(section);
+    // Parts in a fixed order: core, rest paper, then the chucks.
+    for (const std::string part : {"core", "rest_paper", "chuck_left", "chuck_right"})
+        if (volumes.count(part)) add_named_group(3, volumes.at(part), part);
+    add_surface_groups(section, clamps);
     gmsh::option::setNumber("Mesh.ElementOrder", 2);
     // Incomplete second order = 20-node serendipity hexahedra; complete = 27-node.
     gmsh::option::setNumber("Mesh.SecondOrderIncomplete", element == "hex27" ? 0 : 1);

@@ -15,13 +15,32 @@ constexpr int kMinElementsPerSegment = 2;
 // clamp zone starting at the core end does not create a sliver segment.
 constexpr double kBreakpointMergeTolerance = 1e-9;
 
+// Axial zones where the core is held: rigid clamp zones, or the expanding
+// elements of elastic chucks (global z). Their edges are where the wall's
+// strain concentrates (DOMAIN.md section 6), so the mesh grades towards them.
+std::vector<std::pair<double, double>> held_zones(const Scene& scene) {
+    std::vector<std::pair<double, double>> zones;
+    for (const auto& c : scene.supports.clamps) zones.push_back({c.z_start, c.z_end});
+    for (const auto& chuck : scene.supports.chucks)
+        for (const auto& e : chuck.expanding) {
+            const double a = e.center - e.width / 2, b = e.center + e.width / 2;
+            if (chuck.name == "right")
+                zones.push_back({scene.core.length - b, scene.core.length - a});
+            else
+                zones.push_back({a, b});
+        }
+    return zones;
+}
+
 std::vector<double> axial_breakpoints(const Scene& scene) {
     const double L = scene.core.length;
     std::vector<double> z = {0.0, L};
-    for (const auto& clamp : scene.supports.clamps) {
-        z.push_back(clamp.z_start);
-        z.push_back(clamp.z_end);
+    for (const auto& [a, b] : held_zones(scene)) {
+        z.push_back(a);
+        z.push_back(b);
     }
+    for (const auto& chuck : scene.supports.chucks)
+        z.push_back(chuck.name == "right" ? L - chuck.inserted_length : chuck.inserted_length);
     std::sort(z.begin(), z.end());
     std::vector<double> unique;
     for (double v : z)
@@ -43,17 +62,44 @@ std::vector<int> distribute_elements(const std::vector<double>& lengths, int n_t
 }
 
 bool inside_a_clamp(const Scene& scene, double z0, double z1) {
-    for (const auto& c : scene.supports.clamps)
-        if (z0 >= c.z_start - kBreakpointMergeTolerance && z1 <= c.z_end + kBreakpointMergeTolerance) return true;
+    const double tol = kBreakpointMergeTolerance * scene.core.length;
+    for (const auto& [a, b] : held_zones(scene))
+        if (z0 >= a - tol && z1 <= b + tol) return true;
     return false;
 }
 
 bool is_clamp_edge(const Scene& scene, double z) {
     const double tol = kBreakpointMergeTolerance * scene.core.length;
     if (z < tol || z > scene.core.length - tol) return false;  // a core end is free, not a clamp edge
-    for (const auto& c : scene.supports.clamps)
-        if (std::abs(z - c.z_start) < tol || std::abs(z - c.z_end) < tol) return true;
+    for (const auto& [a, b] : held_zones(scene))
+        if (std::abs(z - a) < tol || std::abs(z - b) < tol) return true;
     return false;
+}
+
+// Elements along a shaft: about as long as the core's elements are wide.
+int shaft_elements(double length, double radius, int n_around) {
+    const double size = 2 * M_PI * radius / n_around * 2;
+    return std::max(kMinElementsPerSegment, static_cast<int>(std::ceil(length / size)));
+}
+
+void add_chucks(const Scene& scene, TubeSection& section) {
+    const double L = scene.core.length;
+    for (const auto& c : scene.supports.chucks) {
+        ChuckBody body;
+        body.name = c.name;
+        body.body_radius = c.body_diameter / 2;
+        body.shaft_radius = c.shaft_diameter / 2;
+        body.shaft_below = c.name != "right";
+        body.z_body_start = body.shaft_below ? 0.0 : L - c.inserted_length;
+        body.z_body_end = body.shaft_below ? c.inserted_length : L;
+        body.shaft_length = c.shaft_length;
+        body.n_shaft = shaft_elements(c.shaft_length, body.shaft_radius, scene.mesh.n_around);
+        section.chucks.push_back(body);
+        for (const auto& e : c.expanding) {
+            const double a = e.center - e.width / 2, b = e.center + e.width / 2;
+            section.interfaces.push_back({c.name, body.shaft_below ? std::pair{a, b} : std::pair{L - b, L - a}});
+        }
+    }
 }
 
 // Free-core segments are refined towards the clamp edges they touch.
@@ -83,6 +129,7 @@ TubeSection make_tube_section(const Scene& scene) {
     for (size_t i = 0; i + 1 < z.size(); ++i)
         section.segments.push_back({z[i], z[i + 1], counts[i], grading(scene, z[i], z[i + 1])});
 
+    add_chucks(scene, section);
     COREMODAL_ASSERT(scene.mesh.n_around % 4 == 0 && scene.mesh.n_around >= 8);
     section.n_around = scene.mesh.n_around;
     return section;

@@ -29,10 +29,28 @@ struct AxialSegment {
     AxialGrading grading = AxialGrading::uniform;
 };
 
+// An elastic chuck's solid parts: a body of radius body_radius inside the
+// core over [z_body_start, z_body_end] (global z), and a shaft of radius
+// shaft_radius <= body_radius from the core end outwards to the bearing.
+// Solid cylinders are meshed as an O-grid (a centre square and rings) whose
+// nodes around match the core's, so that core and chuck nodes face each other.
+struct ChuckBody {
+    std::string name;  // "left", "right": parts "chuck_<name>"
+    double body_radius = 0, shaft_radius = 0;  // m
+    double z_body_start = 0, z_body_end = 0;   // m
+    bool shaft_below = true;  // left chuck: the shaft runs from z_body_start to -shaft_length
+    double shaft_length = 0;  // m
+    int n_shaft = 2;          // elements along the shaft
+    double z_bearing() const { return shaft_below ? z_body_start - shaft_length : z_body_end + shaft_length; }
+};
+
 struct TubeSection {
     std::vector<RadialLayer> layers;    // from the inside out, sharing radii
     std::vector<AxialSegment> segments; // from z = 0 to the core length
     int n_around = 32;                  // elements around, a multiple of 4
+    std::vector<ChuckBody> chucks;      // empty unless the scene has elastic chucks
+    // Axial ranges [z0, z1] (global) of the expanding elements, per chuck name.
+    std::vector<std::pair<std::string, std::pair<double, double>>> interfaces;
 };
 
 // Builds the section of the scene's core (and rest paper) with the mesh
