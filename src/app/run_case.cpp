@@ -2,6 +2,7 @@
 // stage of the pipeline (DESIGN.md).
 #include "app/run_case.hpp"
 
+#include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"
@@ -41,9 +42,24 @@ std::vector<std::string> clamp_group_names(const Scene& scene) {
     return names;
 }
 
+std::vector<std::string> chuck_group_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& c : scene.supports.chucks)
+        for (const char* g : {"interface_%_core", "interface_%_chuck", "bearing_%"}) {
+            std::string name = g;
+            name.replace(name.find('%'), 1, c.name);
+            names.push_back(name);
+        }
+    return names;
+}
+
 // Step 2: the mesh, generated from the scene's section or read from the user's file.
 Mesh make_mesh(const Scene& scene) {
     GmshSession gmsh;
+    if (scene.mesh.file && scene.supports.kind == SupportKind::chucks)
+        throw InputError(scene.source_file + ": [mesh] file with [supports] type = \"chucks\": elastic chucks are "
+                         "built into the generated mesh (core and chuck nodes must face each other); expected "
+                         "no [mesh] file, or rigid clamps with a user mesh");
     if (scene.mesh.file) {
         Mesh mesh = read_msh_file(*scene.mesh.file);
         std::vector<std::string> parts = {"core"};
@@ -55,6 +71,8 @@ Mesh make_mesh(const Scene& scene) {
     build_tube_model(make_tube_section(scene), scene.supports.clamps, scene.mesh.element);
     Mesh mesh = read_current_gmsh_mesh("generated mesh");
     require_groups(mesh, {"core"}, clamp_group_names(scene), "generated mesh", "the clamps");
+    require_groups(mesh, {}, chuck_group_names(scene), "generated mesh", "the chucks");
+    add_frame_nodes(scene, mesh);
     return mesh;
 }
 
@@ -64,6 +82,8 @@ std::vector<PartMaterial> part_materials(const Scene& scene, const Mesh& mesh, c
         const OrthotropicMaterial* m = nullptr;
         if (part == "core") m = &scene.core.material;
         if (part == "rest_paper" && scene.rest_paper) m = &scene.rest_paper->material;
+        for (const auto& c : scene.supports.chucks)
+            if (part == "chuck_" + c.name) m = &c.material;
         if (!m)
             throw InputError(source + ": mesh part '" + part + "' has no material in the case file; parts are "
                              "'core' and (with a [rest_paper] table) 'rest_paper'");
@@ -85,7 +105,73 @@ double expected_mass(const Scene& s) {
     if (s.rest_paper)
         m += s.rest_paper->material.density * ring(s.rest_paper->outer_diameter, s.core.outer_diameter) *
              s.core.length;
+    for (const auto& c : s.supports.chucks) {
+        m += c.material.density * (ring(c.body_diameter, 0) * c.inserted_length + ring(c.shaft_diameter, 0) * c.shaft_length);
+        m += c.bearing.frame_mass.value_or(0.0);
+    }
     return m;
+}
+
+// The nodes the classifier looks at: those of the core and rest paper cells.
+std::vector<int> roll_nodes(const Mesh& mesh) {
+    std::vector<char> take(mesh.n_nodes(), 0);
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        const std::string& part = mesh.part_names[mesh.cell_part[c]];
+        if (part != "core" && part != "rest_paper") continue;
+        for (int a = 0; a < mesh.nodes_per_cell(); ++a) take[mesh.cell(c)[a]] = 1;
+    }
+    std::vector<int> nodes;
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (take[n]) nodes.push_back(n);
+    return nodes;
+}
+
+// Nodes held by the ground (eliminated, or on springs to the ground) and the
+// links that join parts (spring layers, ties): for the "part not held" check.
+struct Holding {
+    std::vector<int> held;
+    std::vector<std::vector<int>> links;
+};
+
+Holding holding(const std::vector<int>& eliminated, const ChuckSupports& chucks) {
+    Holding h{eliminated, {}};
+    for (const NodeTie& t : chucks.ties) h.links.push_back({t.node, t.master});
+    for (const CouplingElement& e : chucks.couplings) h.links.push_back(e.nodes);
+    h.held.insert(h.held.end(), chucks.grounded.begin(), chucks.grounded.end());
+    return h;
+}
+
+// The free-free roll over the free span: the same core and rest paper, cut
+// to L, meshed with the same density, no supports.
+Scene free_span_scene(const Scene& scene, double span) {
+    Scene free = scene;
+    free.name = scene.name + "-free-span";
+    free.core.length = span;
+    free.supports = {};
+    free.mesh.n_along = std::max(4, static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)));
+    free.analysis = {};
+    free.analysis.n_modes = 10;  // 6 rigid, the bending pair, and margin
+    return free;
+}
+
+ChuckFactor chuck_factor(const Scene& scene, double f1) {
+    const auto& chucks = scene.supports.chucks;
+    ChuckFactor k;
+    k.li_left_m = chucks.at(0).li();
+    k.li_right_m = chucks.at(1).li();
+    k.li_m = (k.li_left_m + k.li_right_m) / 2;
+    k.free_span_m = scene.core.length - k.li_left_m - k.li_right_m;
+    k.f1_hz = f1;
+    const Scene free = free_span_scene(scene, k.free_span_m);
+    RunOptions quiet;
+    quiet.quiet = true;
+    quiet.write_results = false;
+    const RunReport free_run = run_scene(free, quiet);
+    k.f2_fe_hz = free_run.beam.fe_first_bending_hz;
+    k.f2_beam_hz = timoshenko_bending_hz(beam_section(scene), k.free_span_m, BeamEnds::free_free, 1).at(0);
+    k.chuck_factor = k.f2_fe_hz > 0 ? f1 / k.f2_fe_hz : 0;
+    k.chuck_factor_beam = f1 / k.f2_beam_hz;
+    return k;
 }
 
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
@@ -145,9 +231,12 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const std::string mesh_source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
     report.timing_s.mesh = stage.lap();
 
-    // 3. Degrees of freedom: clamped nodes are eliminated.
-    const std::vector<int> eliminated = clamped_nodes(scene, mesh);
-    const DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated);
+    // 3. Degrees of freedom: clamped nodes (and shaft ends in rigid bearings)
+    //    are eliminated; bonded core nodes take their chuck node's DOFs.
+    const ChuckSupports chucks = chuck_supports(scene, mesh);
+    std::vector<int> eliminated = clamped_nodes(scene, mesh);
+    eliminated.insert(eliminated.end(), chucks.eliminated.begin(), chucks.eliminated.end());
+    const DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties);
     report.model = {"solid3d",
                     cell_type_name(mesh.cell_type),
                     dofs.n_dofs,
@@ -157,7 +246,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
                     0,
                     expected_mass(scene),
                     mesh_source};
-    for (const std::string& warning : unheld_parts(mesh, eliminated)) {
+    const Holding held = holding(eliminated, chucks);
+    for (const std::string& warning : unheld_parts(mesh, held.held, held.links)) {
         if (root) std::cerr << "coremodal: warning: " << mesh_source << ": " << warning << std::endl;
         report.warnings.push_back(warning);
     }
@@ -167,7 +257,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 4. Assemble K and M.
     say("[3/7] assembling stiffness and mass");
-    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh, mesh_source), dofs);
+    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh, mesh_source), dofs, chucks.couplings);
     report.model.mass_kg = system.model_mass;
     report.timing_s.assemble = stage.lap();
 
@@ -199,7 +289,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 6. Name every mode and compute its effective masses.
     say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
-    const ModeClassifier classifier(mesh);
+    const ModeClassifier classifier(mesh, scene.supports.kind == SupportKind::chucks ? roll_nodes(mesh) : std::vector<int>{});
     const EffectiveMassCalculator effective_mass(system.M, mesh, dofs);
     const double lambda_band_min = request.lambda_min.value_or(-1e300);
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
@@ -221,6 +311,11 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     // 7. Compare with beam theory.
     say("[6/7] comparing with beam theory");
     report.beam = compare_with_beam(scene, report.modes.modes);
+    if (scene.supports.kind == SupportKind::chucks) {
+        say("      chuck factor: the free-free roll over the free span (FE and beam)");
+        report.chuck = chuck_factor(scene, report.beam.fe_first_bending_hz);
+        report.timing_s.chuck_factor = stage.lap();
+    }
 
     double peak = peak_memory_mb();
     MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);

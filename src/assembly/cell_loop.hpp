@@ -20,6 +20,13 @@ struct PartMaterial {
     double density = 0;
 };
 
+// A contribution beyond the volume cells: springs between nodes or to the
+// ground, point masses. Three DOFs per node, node-major like the cells.
+struct CouplingElement {
+    std::vector<int> nodes;
+    Eigen::MatrixXd K, M;  // 3 n x 3 n (M may be empty: springs have no mass)
+};
+
 using CellInsert = std::function<void(const std::vector<int>& dofs, const Eigen::MatrixXd& K_cell,
                                       const Eigen::MatrixXd& M_cell)>;
 

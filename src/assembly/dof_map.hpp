@@ -18,7 +18,14 @@ struct DofMap {
     int dof(int node, int c) const { return node_first_dof[node] < 0 ? -1 : node_first_dof[node] + c; }
 };
 
-DofMap make_dof_map(int n_nodes, const std::vector<int>& eliminated_nodes);
+// A node tied to another: it takes the other node's degrees of freedom (a
+// bonded interface between facing core and chuck nodes; DESIGN.md: ties
+// eliminate, no penalty numbers).
+struct NodeTie {
+    int node = 0, master = 0;
+};
+
+DofMap make_dof_map(int n_nodes, const std::vector<int>& eliminated_nodes, const std::vector<NodeTie>& ties = {});
 
 // Free nodes [first, last) owned by `rank` of `size`: contiguous, balanced blocks.
 std::pair<int, int> owned_free_nodes(int n_free_nodes, int rank, int size);

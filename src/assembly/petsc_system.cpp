@@ -7,48 +7,59 @@
 namespace coremodal {
 namespace {
 
-// Node -> cells incidence in compressed rows.
-struct NodeCells {
-    std::vector<int> offset, cells;
+// Every element (cells, then couplings) as a node list, and the inverse:
+// node -> elements, in compressed rows.
+struct ElementGraph {
+    std::vector<int> element_offset, element_nodes;
+    std::vector<int> node_offset, node_elements;
 };
 
-NodeCells node_cells(const Mesh& mesh) {
+ElementGraph element_graph(const Mesh& mesh, const std::vector<CouplingElement>& couplings) {
+    ElementGraph g;
+    g.element_offset.push_back(0);
     const int npc = mesh.nodes_per_cell();
-    NodeCells nc;
-    nc.offset.assign(mesh.n_nodes() + 1, 0);
-    for (int v : mesh.cells) ++nc.offset[v + 1];
-    for (int n = 0; n < mesh.n_nodes(); ++n) nc.offset[n + 1] += nc.offset[n];
-    nc.cells.resize(mesh.cells.size());
-    std::vector<int> fill(nc.offset.begin(), nc.offset.end() - 1);
-    for (int c = 0; c < mesh.n_cells(); ++c)
-        for (int a = 0; a < npc; ++a) nc.cells[fill[mesh.cell(c)[a]]++] = c;
-    return nc;
+    g.element_nodes = mesh.cells;
+    for (int c = 0; c < mesh.n_cells(); ++c) g.element_offset.push_back((c + 1) * npc);
+    for (const CouplingElement& e : couplings) {
+        g.element_nodes.insert(g.element_nodes.end(), e.nodes.begin(), e.nodes.end());
+        g.element_offset.push_back(static_cast<int>(g.element_nodes.size()));
+    }
+    const int n_elements = static_cast<int>(g.element_offset.size()) - 1;
+    g.node_offset.assign(mesh.n_nodes() + 1, 0);
+    for (int v : g.element_nodes) ++g.node_offset[v + 1];
+    for (int n = 0; n < mesh.n_nodes(); ++n) g.node_offset[n + 1] += g.node_offset[n];
+    g.node_elements.resize(g.element_nodes.size());
+    std::vector<int> fill(g.node_offset.begin(), g.node_offset.end() - 1);
+    for (int e = 0; e < n_elements; ++e)
+        for (int k = g.element_offset[e]; k < g.element_offset[e + 1]; ++k)
+            g.node_elements[fill[g.element_nodes[k]]++] = e;
+    return g;
 }
 
-// Number of free neighbour nodes (including itself) of each owned free node,
-// split into those owned here (diagonal block) and elsewhere (off-diagonal).
-void count_block_nonzeros(const Mesh& mesh, const DofMap& dofs, int first, int last,
-                          std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) {
-    const NodeCells nc = node_cells(mesh);
-    const int npc = mesh.nodes_per_cell();
-    std::vector<int> free_node_of(mesh.n_nodes());
-    for (int n = 0; n < mesh.n_nodes(); ++n) free_node_of[n] = dofs.node_first_dof[n] < 0 ? -1 : dofs.node_first_dof[n] / 3;
+// Number of free-node blocks in each owned block row, split into columns
+// owned here (diagonal block) and elsewhere (off-diagonal). A row gathers
+// the elements of every mesh node that shares its DOFs (tied nodes).
+void count_block_nonzeros(const Mesh& mesh, const std::vector<CouplingElement>& couplings, const DofMap& dofs,
+                          int first, int last, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) {
+    const ElementGraph g = element_graph(mesh, couplings);
+    const auto free_node_of = [&](int n) { return dofs.node_first_dof[n] < 0 ? -1 : dofs.node_first_dof[n] / 3; };
+    std::vector<std::vector<int>> row_nodes(last - first);
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (const int row = free_node_of(n); row >= first && row < last) row_nodes[row - first].push_back(n);
     d_nnz.assign(last - first, 0);
     o_nnz.assign(last - first, 0);
-    std::vector<int> seen(mesh.n_nodes(), -1);
-    for (int n = 0; n < mesh.n_nodes(); ++n) {
-        const int row = free_node_of[n];
-        if (row < first || row >= last) continue;
-        for (int k = nc.offset[n]; k < nc.offset[n + 1]; ++k) {
-            const int* nodes = mesh.cell(nc.cells[k]);
-            for (int a = 0; a < npc; ++a) {
-                const int col = free_node_of[nodes[a]];
-                if (col < 0 || seen[nodes[a]] == n) continue;
-                seen[nodes[a]] = n;
-                ++((col >= first && col < last) ? d_nnz : o_nnz)[row - first];
+    std::vector<int> seen(dofs.n_free_nodes, -1);
+    for (int row = first; row < last; ++row)
+        for (int n : row_nodes[row - first])
+            for (int k = g.node_offset[n]; k < g.node_offset[n + 1]; ++k) {
+                const int e = g.node_elements[k];
+                for (int j = g.element_offset[e]; j < g.element_offset[e + 1]; ++j) {
+                    const int col = free_node_of(g.element_nodes[j]);
+                    if (col < 0 || seen[col] == row) continue;
+                    seen[col] = row;
+                    ++((col >= first && col < last) ? d_nnz : o_nnz)[row - first];
+                }
             }
-        }
-    }
 }
 
 PetscMatrix create_matrix(MPI_Comm comm, int n_local_dofs, const std::vector<PetscInt>& d_nnz,
@@ -67,26 +78,27 @@ PetscMatrix create_matrix(MPI_Comm comm, int n_local_dofs, const std::vector<Pet
 }  // namespace
 
 PetscSystem assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                           MPI_Comm comm) {
+                           const std::vector<CouplingElement>& couplings, MPI_Comm comm) {
     const int rank = mpi_rank(comm), size = mpi_size(comm);
     const auto [first, last] = owned_free_nodes(dofs.n_free_nodes, rank, size);
     std::vector<PetscInt> d_nnz, o_nnz;
-    count_block_nonzeros(mesh, dofs, first, last, d_nnz, o_nnz);
+    count_block_nonzeros(mesh, couplings, dofs, first, last, d_nnz, o_nnz);
 
     PetscSystem system;
     system.K = create_matrix(comm, 3 * (last - first), d_nnz, o_nnz);
     system.M = create_matrix(comm, 3 * (last - first), d_nnz, o_nnz);
 
-    // A cell is assembled by the rank owning its lowest-numbered free node.
-    auto take = [&](int c) {
+    // An element is assembled by the rank owning its lowest-numbered free node.
+    auto owned_here = [&](const int* nodes, int n) {
         int lowest = dofs.n_free_nodes;
-        for (int a = 0; a < mesh.nodes_per_cell(); ++a) {
-            const int d = dofs.node_first_dof[mesh.cell(c)[a]];
+        for (int a = 0; a < n; ++a) {
+            const int d = dofs.node_first_dof[nodes[a]];
             if (d >= 0) lowest = std::min(lowest, d / 3);
         }
         if (lowest == dofs.n_free_nodes) return rank == 0;  // fully clamped: mass only
         return lowest >= first && lowest < last;
     };
+    auto take = [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); };
     std::vector<PetscInt> idx;
     auto insert = [&](const std::vector<int>& cell_dofs, const Eigen::MatrixXd& Kc, const Eigen::MatrixXd& Mc) {
         idx.assign(cell_dofs.begin(), cell_dofs.end());
@@ -96,7 +108,16 @@ PetscSystem assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
         COREMODAL_PETSC(MatSetValues(system.K, n, idx.data(), n, idx.data(), Kc.data(), ADD_VALUES));
         COREMODAL_PETSC(MatSetValues(system.M, n, idx.data(), n, idx.data(), Mc.data(), ADD_VALUES));
     };
-    const double local_mass = assemble_cells(mesh, materials, dofs, take, insert);
+    double local_mass = assemble_cells(mesh, materials, dofs, take, insert);
+    for (const CouplingElement& e : couplings) {
+        if (!owned_here(e.nodes.data(), static_cast<int>(e.nodes.size()))) continue;
+        std::vector<int> element_dofs;
+        for (int n : e.nodes)
+            for (int c = 0; c < 3; ++c) element_dofs.push_back(dofs.dof(n, c));
+        const Eigen::MatrixXd M = e.M.size() ? e.M : Eigen::MatrixXd::Zero(e.K.rows(), e.K.cols());
+        insert(element_dofs, e.K, M);
+        local_mass += M.sum() / 3;
+    }
     for (Mat A : {system.K.get(), system.M.get()}) {
         COREMODAL_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
         COREMODAL_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));

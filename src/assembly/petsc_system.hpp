@@ -15,6 +15,6 @@ struct PetscSystem {
 };
 
 PetscSystem assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                           MPI_Comm comm = PETSC_COMM_WORLD);
+                           const std::vector<CouplingElement>& couplings = {}, MPI_Comm comm = PETSC_COMM_WORLD);
 
 }  // namespace coremodal

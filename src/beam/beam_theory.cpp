@@ -97,6 +97,10 @@ std::vector<double> timoshenko_bending_hz(const BeamSection& s, double length, B
 }
 
 double beam_span(const Scene& scene) {
+    // Elastic chucks: Ilomäki's free span, core ends to the middles of the
+    // furthest expanding elements.
+    if (scene.supports.kind == SupportKind::chucks && scene.supports.chucks.size() == 2)
+        return scene.core.length - scene.supports.chucks[0].li() - scene.supports.chucks[1].li();
     if (scene.supports.kind == SupportKind::free || scene.supports.clamps.size() < 2) return scene.core.length;
     double left_inner = 0, right_inner = scene.core.length;
     for (const auto& c : scene.supports.clamps) {

@@ -20,8 +20,10 @@ struct DisjointSets {
 
 }  // namespace
 
-std::vector<MeshComponent> connected_components(const Mesh& mesh) {
+std::vector<MeshComponent> connected_components(const Mesh& mesh, const std::vector<std::vector<int>>& links) {
     DisjointSets sets(mesh.n_nodes());
+    for (const auto& link : links)
+        for (size_t a = 1; a < link.size(); ++a) sets.join(link[0], link[a]);
     for (int c = 0; c < mesh.n_cells(); ++c)
         for (int a = 1; a < mesh.nodes_per_cell(); ++a) sets.join(mesh.cell(c)[0], mesh.cell(c)[a]);
     std::map<int, MeshComponent> by_root;
@@ -39,12 +41,13 @@ std::vector<MeshComponent> connected_components(const Mesh& mesh) {
     return out;
 }
 
-std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& held_nodes) {
+std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& held_nodes,
+                                      const std::vector<std::vector<int>>& links) {
     std::vector<std::string> sentences;
     if (held_nodes.empty()) return sentences;
     std::vector<char> held(mesh.n_nodes(), 0);
     for (int n : held_nodes) held[n] = 1;
-    for (const MeshComponent& comp : connected_components(mesh)) {
+    for (const MeshComponent& comp : connected_components(mesh, links)) {
         const bool is_held = std::any_of(comp.cells.begin(), comp.cells.end(), [&](int c) {
             return std::any_of(mesh.cell(c), mesh.cell(c) + mesh.nodes_per_cell(), [&](int n) { return held[n]; });
         });
@@ -52,7 +55,7 @@ std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& 
         std::string names;
         for (int p : comp.part_names) names += (names.empty() ? "'" : ", '") + mesh.part_names[p] + "'";
         sentences.push_back("mesh part " + names + " (" + std::to_string(comp.cells.size()) +
-                            " cells) is not connected to any clamp: it will show six rigid-body modes");
+                            " cells) is not connected to any clamp or bearing: it will show six rigid-body modes");
     }
     return sentences;
 }

@@ -15,11 +15,14 @@ struct MeshComponent {
 };
 
 // Connected components of the mesh (cells sharing a node are connected).
-std::vector<MeshComponent> connected_components(const Mesh& mesh);
+// `links` are further node sets that hang together (a spring layer's nodes, a
+// tied pair): parts joined only through them are one component.
+std::vector<MeshComponent> connected_components(const Mesh& mesh, const std::vector<std::vector<int>>& links = {});
 
 // Sentences naming every component that holds none of `held_nodes`, e.g.
 // "mesh part 'rest_paper' (120 cells) is not connected to any clamp: it will
 // show six rigid-body modes". Empty when `held_nodes` is empty (a free scene).
-std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& held_nodes);
+std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& held_nodes,
+                                      const std::vector<std::vector<int>>& links = {});
 
 }  // namespace coremodal

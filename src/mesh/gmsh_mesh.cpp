@@ -16,6 +16,8 @@ namespace {
 constexpr int kGmshTet10 = 11;
 constexpr int kGmshHex27 = 12;
 constexpr int kGmshHex20 = 17;
+constexpr int kGmshQuad8 = 16;
+constexpr int kGmshQuad9 = 10;
 
 CellType cell_type_of(int gmsh_type, const std::string& source) {
     switch (gmsh_type) {
@@ -42,6 +44,27 @@ std::string join(const std::vector<std::string>& items) {
     std::string out;
     for (const auto& s : items) out += (out.empty() ? "" : ", ") + ("'" + s + "'");
     return out.empty() ? "none" : out;
+}
+
+// Quadratic quadrilateral faces of a surface group, if it has only those.
+void read_quad_faces(int dim, int group, const std::vector<int>& index_of, Mesh& mesh) {
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group, entities);
+    FaceSet set;
+    for (int entity : entities) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> element_tags, node_tags;
+        gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, entity);
+        for (size_t t = 0; t < types.size(); ++t) {
+            if (types[t] != kGmshQuad8 && types[t] != kGmshQuad9) return;
+            set.nodes_per_face = types[t] == kGmshQuad8 ? 8 : 9;
+            for (std::size_t tag : node_tags[t]) {
+                if (tag >= index_of.size() || index_of[tag] < 0) return;  // not a node of any cell
+                set.faces.push_back(index_of[tag]);
+            }
+        }
+    }
+    if (!set.faces.empty()) mesh.face_groups[physical_name(dim, group)] = std::move(set);
 }
 
 }  // namespace
@@ -117,6 +140,7 @@ Mesh read_current_gmsh_mesh(const std::string& source) {
         std::sort(nodes.begin(), nodes.end());
         nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
         mesh.node_groups[physical_name(dim, group)] = std::move(nodes);
+        read_quad_faces(dim, group, index_of, mesh);
     }
     return mesh;
 }

@@ -10,6 +10,15 @@
 
 namespace coremodal {
 
+// Quadratic quadrilateral faces of a physical surface (gmsh order: corners,
+// then mid-edges, then the centre for 9-node faces).
+struct FaceSet {
+    int nodes_per_face = 8;  // 8 or 9
+    std::vector<int> faces;  // n_faces x nodes_per_face, 0-based mesh nodes
+    int n_faces() const { return static_cast<int>(faces.size()) / nodes_per_face; }
+    const int* face(int f) const { return faces.data() + static_cast<size_t>(f) * nodes_per_face; }
+};
+
 struct Mesh {
     CellType cell_type = CellType::hex20;
     std::vector<std::array<double, 3>> nodes;  // metres
@@ -19,6 +28,9 @@ struct Mesh {
     // Physical surface groups as node sets (sorted, unique): "core_inner",
     // "core_outer", "clamp_left", "clamp_right", ...
     std::map<std::string, std::vector<int>> node_groups;
+    // The same physical surfaces as quadratic quadrilateral faces, where they
+    // are made of them (generated meshes): spring layers and bearings integrate over them.
+    std::map<std::string, FaceSet> face_groups;
 
     int n_nodes() const { return static_cast<int>(nodes.size()); }
     int n_cells() const { return static_cast<int>(cell_part.size()); }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <numeric>
 
 namespace coremodal {
 namespace {
@@ -41,16 +42,21 @@ int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
     return count;
 }
 
-ModeClassifier::ModeClassifier(const Mesh& mesh) {
+ModeClassifier::ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes) {
+    std::vector<int> looked_at = nodes;
+    if (looked_at.empty()) {
+        looked_at.resize(mesh.n_nodes());
+        std::iota(looked_at.begin(), looked_at.end(), 0);
+    }
     double z_min = 1e300, z_max = -1e300;
-    for (const auto& x : mesh.nodes) {
-        z_min = std::min(z_min, x[2]);
-        z_max = std::max(z_max, x[2]);
+    for (int n : looked_at) {
+        z_min = std::min(z_min, mesh.nodes[n][2]);
+        z_max = std::max(z_max, mesh.nodes[n][2]);
     }
     const double width = std::max(z_max - z_min, 1e-12) / kStations;
     stations_.assign(kStations, {});
     theta_.resize(mesh.n_nodes());
-    for (int n = 0; n < mesh.n_nodes(); ++n) {
+    for (int n : looked_at) {
         const auto& x = mesh.nodes[n];
         theta_[n] = std::atan2(x[1], x[0]);
         stations_[std::min(kStations - 1, int((x[2] - z_min) / width))].push_back(n);

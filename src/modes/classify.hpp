@@ -27,7 +27,9 @@ constexpr double kMinDominantShare = 0.5;
 
 // Geometric data of the nodes reused for every mode of a mesh.
 struct ModeClassifier {
-    explicit ModeClassifier(const Mesh& mesh);
+    // Only the nodes in `nodes` (all when empty) are looked at: with chucks,
+    // the core and rest paper, not the steel inside.
+    explicit ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes = {});
     // shape: n_nodes x 3 (node-major); lambda_scale as in SolveRequest.
     ModeLabel classify(const std::vector<double>& shape, double lambda, double lambda_scale) const;
 

@@ -5,6 +5,7 @@
 #include "modes/mode_set.hpp"
 #include "scene/scene.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,24 @@ struct BeamComparison {
     double fe_over_euler_bernoulli = 0;
 };
 
+// Ilomäki's chuck factor k = f1 / f2 (DOMAIN.md section 3): f1 the first
+// bending frequency of the scene, f2 the free-free first bending frequency
+// of the same core (and rest paper) cut to the free span L = Lc - Li_left -
+// Li_right (= Lc - 2 Li for equal ends).
+struct ChuckFactor {
+    double li_left_m = 0, li_right_m = 0;
+    double li_m = 0;  // the mean of the two ends (equal ends: Li)
+    double free_span_m = 0;
+    double f1_hz = 0;
+    double f2_fe_hz = 0;    // FE, free-free, same mesh density
+    double f2_beam_hz = 0;  // Timoshenko beam, free-free
+    double chuck_factor = 0;       // f1 / f2_fe
+    double chuck_factor_beam = 0;  // f1 / f2_beam
+};
+
 struct Timing {
     // factor_and_solve includes verification and the inertia count.
-    double mesh = 0, assemble = 0, factor_and_solve = 0, classify = 0, total = 0;
+    double mesh = 0, assemble = 0, factor_and_solve = 0, classify = 0, chuck_factor = 0, total = 0;
 };
 
 struct RunReport {
@@ -43,6 +59,7 @@ struct RunReport {
     ModelInfo model;
     ModeSet modes;
     BeamComparison beam;
+    std::optional<ChuckFactor> chuck;  // scenes with elastic chucks
     Timing timing_s;
     double peak_memory_mb = 0;  // sum over MPI ranks of the peak resident set
     int mpi_ranks = 1;

@@ -30,6 +30,55 @@ toml::table material_table(const OrthotropicMaterial& m) {
                        {"nu_thetaz", m.nu_thetaz}, {"density", m.density},   {"source", m.source}};
 }
 
+const char* support_type_name(SupportKind kind) {
+    switch (kind) {
+    case SupportKind::free: return "free";
+    case SupportKind::clamped: return "clamped";
+    case SupportKind::chucks: return "chucks";
+    }
+    return "";
+}
+
+toml::table bearing_table(const BearingSpec& b) {
+    toml::table t{{"type", b.rigid ? "rigid" : "elastic"}};
+    if (b.rigid) return t;
+    t.insert("radial_stiffness_n_per_m", b.radial_stiffness);
+    t.insert("tilting_stiffness_nm_per_rad", b.tilting_stiffness);
+    if (b.frame_mass) t.insert("frame_mass_kg", *b.frame_mass);
+    if (b.frame_stiffness) t.insert("frame_stiffness_n_per_m", *b.frame_stiffness);
+    return t;
+}
+
+toml::array chucks_array(const std::vector<ChuckSpec>& chucks) {
+    toml::array out;
+    for (const auto& c : chucks) {
+        toml::array expanding;
+        for (const auto& e : c.expanding)
+            expanding.push_back(toml::table{{"center_m", e.center},
+                                            {"width_m", e.width},
+                                            {"segments", e.segments},
+                                            {"segment_angle_rad", e.segment_angle}});
+        toml::table interface{{"kind", c.interface.kind == InterfaceKind::bonded ? "bonded" : "spring"}};
+        if (c.interface.kind == InterfaceKind::spring) {
+            interface.insert("expanded", c.interface.expanded);
+            interface.insert("normal_stiffness_pa_per_m", c.interface.normal_stiffness);
+            interface.insert("tangential_stiffness_pa_per_m", c.interface.tangential_stiffness);
+            if (c.interface.expansion_pressure) interface.insert("expansion_pressure_pa", *c.interface.expansion_pressure);
+        }
+        out.push_back(toml::table{{"name", c.name},
+                                  {"inserted_length_m", c.inserted_length},
+                                  {"body_diameter_m", c.body_diameter},
+                                  {"shaft_diameter_m", c.shaft_diameter},
+                                  {"shaft_length_m", c.shaft_length},
+                                  {"li_m", c.li()},
+                                  {"material", material_table(c.material)},
+                                  {"expanding", expanding},
+                                  {"interface", interface},
+                                  {"bearing", bearing_table(c.bearing)}});
+    }
+    return out;
+}
+
 toml::table scene_table(const Scene& s) {
     toml::table core{{"inner_diameter", s.core.inner_diameter},
                      {"outer_diameter", s.core.outer_diameter},
@@ -42,8 +91,9 @@ toml::table scene_table(const Scene& s) {
     toml::array clamps;
     for (const auto& c : s.supports.clamps)
         clamps.push_back(toml::table{{"name", c.name}, {"z_start", c.z_start}, {"z_end", c.z_end}});
-    t.insert("supports", toml::table{{"type", s.supports.kind == SupportKind::free ? "free" : "clamped"},
-                                     {"clamps", clamps}});
+    toml::table supports{{"type", support_type_name(s.supports.kind)}, {"clamps", clamps}};
+    if (!s.supports.chucks.empty()) supports.insert("chucks", chucks_array(s.supports.chucks));
+    t.insert("supports", supports);
     toml::table mesh{{"level", s.mesh.level},         {"through_wall", s.mesh.n_wall},
                      {"through_rest_paper", s.mesh.n_rest_paper}, {"around", s.mesh.n_around},
                      {"along", s.mesh.n_along},       {"element", s.mesh.element}};
@@ -125,6 +175,7 @@ void write_summary_json(const std::string& path, const RunReport& r) {
                              {"fe_over_timoshenko", finite(b.fe_over_timoshenko)},
                              {"fe_over_euler_bernoulli", finite(b.fe_over_euler_bernoulli)}}},
         {"timing_s", toml::table{{"mesh", t.mesh},
+                                 {"chuck_factor", t.chuck_factor},
                                  {"assemble", t.assemble},
                                  {"factor_and_solve", t.factor_and_solve},
                                  {"classify", t.classify},
@@ -132,6 +183,22 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         {"warnings", strings_array(r.warnings)},
         {"peak_memory_mb", r.peak_memory_mb},
         {"mpi_ranks", r.mpi_ranks}};
+    if (r.chuck) {
+        const ChuckFactor& k = *r.chuck;
+        toml::table chuck{{"li_m", k.li_m},
+                          {"free_span_m", k.free_span_m},
+                          {"f1_hz", k.f1_hz},
+                          {"f2_fe_hz", k.f2_fe_hz},
+                          {"f2_beam_hz", k.f2_beam_hz},
+                          {"chuck_factor", finite(k.chuck_factor)},
+                          {"chuck_factor_beam", finite(k.chuck_factor_beam)},
+                          {"span_definition", "free_span = core length - Li_left - Li_right"}};
+        if (std::abs(k.li_left_m - k.li_right_m) > 1e-12) {
+            chuck.insert("li_left_m", k.li_left_m);
+            chuck.insert("li_right_m", k.li_right_m);
+        }
+        summary.insert("chuck", chuck);
+    }
     write_text_file(path, to_json(summary) + "\n");
 }
 
@@ -187,6 +254,15 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
                   b.ends.c_str(), b.span_m, b.euler_bernoulli_hz, b.timoshenko_hz, b.fe_mode_index,
                   b.fe_first_bending_hz, b.fe_over_timoshenko);
     out << line;
+    if (r.chuck) {
+        const ChuckFactor& k = *r.chuck;
+        std::snprintf(line, sizeof line,
+                      "chuck factor: Li %.4g m (left %.4g, right %.4g), free span L = %.4g m; f1 %.4f Hz, "
+                      "f2 free-free over L: FE %.4f Hz, Timoshenko %.4f Hz; k = f1/f2 = %.4f (beam f2: %.4f)\n",
+                      k.li_m, k.li_left_m, k.li_right_m, k.free_span_m, k.f1_hz, k.f2_fe_hz, k.f2_beam_hz,
+                      k.chuck_factor, k.chuck_factor_beam);
+        out << line;
+    }
 }
 
 }  // namespace coremodal

@@ -1,0 +1,199 @@
+#include "assembly/chuck_supports.hpp"
+
+#include "common/error.hpp"
+#include "element/face.hpp"
+
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace coremodal {
+namespace {
+
+// Gauss points per direction on a spring-layer face. The segments of an
+// expanding element need not end on element edges: a point counts if it lies
+// on a segment, and 6 x 6 points per face make the covered area exact to a
+// few per cent of one face, far below the uncertainty of the stiffness.
+constexpr int kSpringLayerGauss = 6;
+constexpr int kBearingGauss = 3;  // exact for the quadratic face's N_a N_b
+
+using FaceCoords = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+
+FaceCoords face_coords(const Mesh& mesh, const FaceSet& set, int f) {
+    FaceCoords x(set.nodes_per_face, 3);
+    for (int a = 0; a < set.nodes_per_face; ++a)
+        for (int d = 0; d < 3; ++d) x(a, d) = mesh.nodes[set.face(f)[a]][d];
+    return x;
+}
+
+const FaceSet& faces_of(const Mesh& mesh, const std::string& group) {
+    const auto it = mesh.face_groups.find(group);
+    if (it == mesh.face_groups.end())
+        throw SolveError("the mesh has no quadrilateral faces in group '" + group +
+                         "' (elastic chucks need the generated mesh)");
+    return it->second;
+}
+
+// Finds, for a core bore node, the chuck node facing it: same direction from
+// the axis, same z. Generated meshes put them there exactly.
+class FacingNodes {
+public:
+    FacingNodes(const Mesh& mesh, const std::vector<int>& chuck_nodes) : mesh_(mesh) {
+        for (int n : chuck_nodes) index_[key(mesh.nodes[n])] = n;
+    }
+    int operator()(int core_node) const {
+        const auto k = key(mesh_.nodes[core_node]);
+        for (long dx : {0L, -1L, 1L})
+            for (long dy : {0L, -1L, 1L})
+                for (long dz : {0L, -1L, 1L})
+                    if (auto it = index_.find({k[0] + dx, k[1] + dy, k[2] + dz}); it != index_.end()) return it->second;
+        throw SolveError("no chuck node faces core node " + std::to_string(core_node) +
+                         ": the chuck and core meshes do not match around or along");
+    }
+
+private:
+    // Direction to 1e-6 rad, z to 0.1 micrometre: far finer than any element.
+    static std::array<long, 3> key(const std::array<double, 3>& x) {
+        const double r = std::hypot(x[0], x[1]);
+        return {std::lround(x[0] / r * 1e6), std::lround(x[1] / r * 1e6), std::lround(x[2] * 1e7)};
+    }
+    const Mesh& mesh_;
+    std::map<std::array<long, 3>, int> index_;
+};
+
+// Is the bore point (z, theta) on an expanding element of this chuck? Bands
+// cover all angles; N segments are centred at theta = 2 pi k / N.
+bool on_expanding_element(const Scene& scene, const ChuckSpec& chuck, double z, double theta) {
+    const double s = chuck.name == "right" ? scene.core.length - z : z;  // from this chuck's core end
+    constexpr double kEdge = 1e-9;
+    for (const ExpandingElement& e : chuck.expanding) {
+        if (std::abs(s - e.center) > e.width / 2 + kEdge) continue;
+        if (e.segments == 0) return true;
+        for (int k = 0; k < e.segments; ++k) {
+            const double d = std::remainder(theta - 2 * M_PI * k / e.segments, 2 * M_PI);
+            if (std::abs(d) <= e.segment_angle / 2 + kEdge) return true;
+        }
+    }
+    return false;
+}
+
+// Spring layer over one bore face: relative displacement (core - chuck) at
+// each point, stiffness k_n along the radius and k_t in the tangent plane,
+// per unit bore area.
+CouplingElement spring_layer_face(const Scene& scene, const Mesh& mesh, const ChuckSpec& chuck, const FaceSet& set,
+                                  int f, const FacingNodes& facing, double& covered_area) {
+    const int n = set.nodes_per_face;
+    CouplingElement e;
+    for (int a = 0; a < n; ++a) e.nodes.push_back(set.face(f)[a]);
+    for (int a = 0; a < n; ++a) e.nodes.push_back(facing(set.face(f)[a]));
+    Eigen::MatrixXd Kab = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    for (const FacePoint& p : face_quadrature(face_coords(mesh, set, f), kSpringLayerGauss)) {
+        const double theta = std::atan2(p.x[1], p.x[0]);
+        if (!on_expanding_element(scene, chuck, p.x[2], theta)) continue;
+        covered_area += p.area_weight;
+        const Eigen::Vector3d er(std::cos(theta), std::sin(theta), 0);
+        const Eigen::Matrix3d D = chuck.interface.tangential_stiffness * Eigen::Matrix3d::Identity() +
+                                  (chuck.interface.normal_stiffness - chuck.interface.tangential_stiffness) *
+                                      er * er.transpose();
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) Kab.block<3, 3>(3 * a, 3 * b) += p.area_weight * p.N[a] * p.N[b] * D;
+    }
+    e.K.resize(6 * n, 6 * n);
+    e.K << Kab, -Kab, -Kab, Kab;
+    return e;
+}
+
+void hold_core_by_chuck(const Scene& scene, const Mesh& mesh, const ChuckSpec& chuck, ChuckSupports& out) {
+    const std::string core_group = "interface_" + chuck.name + "_core";
+    const FaceSet& bore = faces_of(mesh, core_group);
+    const FacingNodes facing(mesh, mesh.node_groups.at("interface_" + chuck.name + "_chuck"));
+    if (chuck.interface.kind == InterfaceKind::spring) {
+        for (int f = 0; f < bore.n_faces(); ++f)
+            out.couplings.push_back(spring_layer_face(scene, mesh, chuck, bore, f, facing, out.coupled_area_m2));
+        return;
+    }
+    // Bonded: every bore node on an expanding element shares its chuck node's DOFs.
+    for (int node : mesh.node_groups.at(core_group)) {
+        const auto& x = mesh.nodes[node];
+        if (on_expanding_element(scene, chuck, x[2], std::atan2(x[1], x[0]))) out.ties.push_back({node, facing(node)});
+    }
+    for (int f = 0; f < bore.n_faces(); ++f)
+        for (const FacePoint& p : face_quadrature(face_coords(mesh, bore, f), kSpringLayerGauss))
+            if (on_expanding_element(scene, chuck, p.x[2], std::atan2(p.x[1], p.x[0])))
+                out.coupled_area_m2 += p.area_weight;
+}
+
+// Bearing springs spread over the shaft end face: c_r = k_radial / A in x
+// and y, c_z = k_tilt / I_x along z, so that the face translates against
+// k_radial and tilts against k_tilt as a whole (docs/chucks.md). To the
+// ground, or to the frame node when there is a frame mass.
+void hold_chuck_by_bearing(const Mesh& mesh, const ChuckSpec& chuck, ChuckSupports& out) {
+    const std::string group = "bearing_" + chuck.name;
+    if (chuck.bearing.rigid) {
+        const auto& nodes = mesh.node_groups.at(group);
+        out.eliminated.insert(out.eliminated.end(), nodes.begin(), nodes.end());
+        return;
+    }
+    const FaceSet& face = faces_of(mesh, group);
+    double area = 0, second_moment = 0;
+    for (int f = 0; f < face.n_faces(); ++f)
+        for (const FacePoint& p : face_quadrature(face_coords(mesh, face, f), kBearingGauss)) {
+            area += p.area_weight;
+            second_moment += p.area_weight * p.x[0] * p.x[0];
+        }
+    const Eigen::Vector3d c(chuck.bearing.radial_stiffness / area, chuck.bearing.radial_stiffness / area,
+                            chuck.bearing.tilting_stiffness / second_moment);
+    const bool to_frame = chuck.bearing.frame_mass.has_value();
+    if (to_frame)
+        out.grounded.push_back(mesh.node_groups.at("frame_" + chuck.name).at(0));
+    else
+        out.grounded.insert(out.grounded.end(), face.faces.begin(), face.faces.end());
+    for (int f = 0; f < face.n_faces(); ++f) {
+        const int n = face.nodes_per_face, m = n + (to_frame ? 1 : 0);
+        CouplingElement e;
+        e.nodes.assign(face.face(f), face.face(f) + n);
+        if (to_frame) e.nodes.push_back(mesh.node_groups.at("frame_" + chuck.name).at(0));
+        e.K = Eigen::MatrixXd::Zero(3 * m, 3 * m);
+        for (const FacePoint& p : face_quadrature(face_coords(mesh, face, f), kBearingGauss)) {
+            Eigen::VectorXd N(m);  // relative displacement: face minus frame
+            N.head(n) = p.N;
+            if (to_frame) N[n] = -1;
+            for (int a = 0; a < m; ++a)
+                for (int b = 0; b < m; ++b)
+                    e.K.block<3, 3>(3 * a, 3 * b) += p.area_weight * N[a] * N[b] * c.asDiagonal().toDenseMatrix();
+        }
+        out.couplings.push_back(std::move(e));
+    }
+    if (to_frame) {  // the frame: a lumped mass on a spring to the ground, in all three directions
+        CouplingElement frame;
+        frame.nodes = {mesh.node_groups.at("frame_" + chuck.name).at(0)};
+        frame.K = *chuck.bearing.frame_stiffness * Eigen::MatrixXd::Identity(3, 3);
+        frame.M = *chuck.bearing.frame_mass * Eigen::MatrixXd::Identity(3, 3);
+        out.couplings.push_back(std::move(frame));
+    }
+}
+
+}  // namespace
+
+double bearing_z(const Scene& scene, const ChuckSpec& chuck) {
+    return chuck.name == "right" ? scene.core.length + chuck.shaft_length : -chuck.shaft_length;
+}
+
+void add_frame_nodes(const Scene& scene, Mesh& mesh) {
+    for (const ChuckSpec& chuck : scene.supports.chucks) {
+        if (chuck.bearing.rigid || !chuck.bearing.frame_mass) continue;
+        mesh.node_groups["frame_" + chuck.name] = {mesh.n_nodes()};
+        mesh.nodes.push_back({0.0, 0.0, bearing_z(scene, chuck)});
+    }
+}
+
+ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh) {
+    ChuckSupports out;
+    for (const ChuckSpec& chuck : scene.supports.chucks) {
+        hold_core_by_chuck(scene, mesh, chuck, out);
+        hold_chuck_by_bearing(mesh, chuck, out);
+    }
+    return out;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,39 @@
+// Elastic chucks in the system: how the core is held by each chuck over its
+// expanding elements (ties or a spring layer), and how the chuck is held by
+// the stand (a rigid bearing eliminates the shaft end face; an elastic one
+// spreads springs over it, optionally through a frame mass on a frame spring).
+// docs/chucks.md gives the formulas.
+#pragma once
+
+#include "assembly/cell_loop.hpp"
+#include "assembly/dof_map.hpp"
+#include "mesh/mesh.hpp"
+#include "scene/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+struct ChuckSupports {
+    std::vector<int> eliminated;           // nodes of rigid bearing faces
+    std::vector<NodeTie> ties;             // bonded core nodes -> facing chuck nodes
+    std::vector<CouplingElement> couplings;  // spring layers, bearing springs, frame masses
+    std::vector<int> grounded;             // nodes on springs to the ground (elastic bearings, frames)
+    double coupled_area_m2 = 0;            // bore area held by expanding elements (both chucks)
+};
+
+// Mesh groups it reads (made by build_tube_model): "interface_<chuck>_core",
+// "interface_<chuck>_chuck", "bearing_<chuck>", and the node group
+// "frame_<chuck>" (one node) when the bearing has a frame mass.
+ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh);
+
+// Appends one node per chuck whose bearing has a frame mass, at the bearing
+// centre, in node group "frame_<chuck>". No cell uses it; springs and the
+// lumped mass attach to it.
+void add_frame_nodes(const Scene& scene, Mesh& mesh);
+
+// z of a chuck's bearing (its shaft end): below 0 on the left, beyond the core length on the right.
+double bearing_z(const Scene& scene, const ChuckSpec& chuck);
+
+}  // namespace coremodal

@@ -1,0 +1,102 @@
+#include "element/face.hpp"
+
+#include <stdexcept>
+
+namespace coremodal {
+namespace {
+
+// gmsh's reference positions: corners, then mid-edges, then the centre.
+constexpr double kNodeXi[9] = {-1, 1, 1, -1, 0, 1, 0, -1, 0};
+constexpr double kNodeEta[9] = {-1, -1, 1, 1, -1, 0, 1, 0, 0};
+
+// 1D quadratic Lagrange polynomial through -1, 0, 1 that is 1 at node c.
+void lagrange(double x, double c, double& value, double& derivative) {
+    if (c < -0.5) {
+        value = 0.5 * x * (x - 1);
+        derivative = x - 0.5;
+    } else if (c > 0.5) {
+        value = 0.5 * x * (x + 1);
+        derivative = x + 0.5;
+    } else {
+        value = 1 - x * x;
+        derivative = -2 * x;
+    }
+}
+
+void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
+    x.resize(n);
+    w.resize(n);
+    for (int i = 0; i < n; ++i) {  // Newton on P_n from Chebyshev guesses
+        double t = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0;
+        for (int it = 0; it < 100; ++it) {
+            double p0 = 1, p1 = t;
+            for (int k = 2; k <= n; ++k) {
+                const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = n * (t * p1 - p0) / (t * t - 1);
+            const double step = p1 / dp;
+            t -= step;
+            if (std::abs(step) < 1e-15) break;
+        }
+        x[i] = t;
+        w[i] = 2 / ((1 - t * t) * dp * dp);
+    }
+}
+
+}  // namespace
+
+void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::VectorXd& dN_dxi,
+                Eigen::VectorXd& dN_deta) {
+    N.resize(nodes);
+    dN_dxi.resize(nodes);
+    dN_deta.resize(nodes);
+    if (nodes == 9) {
+        for (int a = 0; a < 9; ++a) {
+            double lx, dlx, ly, dly;
+            lagrange(xi, kNodeXi[a], lx, dlx);
+            lagrange(eta, kNodeEta[a], ly, dly);
+            N[a] = lx * ly;
+            dN_dxi[a] = dlx * ly;
+            dN_deta[a] = lx * dly;
+        }
+        return;
+    }
+    if (nodes != 8) throw std::invalid_argument("face_shape: faces have 8 or 9 nodes");
+    for (int a = 0; a < 4; ++a) {  // serendipity corners
+        const double s = kNodeXi[a], t = kNodeEta[a];
+        N[a] = 0.25 * (1 + s * xi) * (1 + t * eta) * (s * xi + t * eta - 1);
+        dN_dxi[a] = 0.25 * s * (1 + t * eta) * (2 * s * xi + t * eta);
+        dN_deta[a] = 0.25 * t * (1 + s * xi) * (s * xi + 2 * t * eta);
+    }
+    for (int a = 4; a < 8; ++a) {
+        const double s = kNodeXi[a], t = kNodeEta[a];
+        if (s == 0) {
+            N[a] = 0.5 * (1 - xi * xi) * (1 + t * eta);
+            dN_dxi[a] = -xi * (1 + t * eta);
+            dN_deta[a] = 0.5 * t * (1 - xi * xi);
+        } else {
+            N[a] = 0.5 * (1 + s * xi) * (1 - eta * eta);
+            dN_dxi[a] = 0.5 * s * (1 - eta * eta);
+            dN_deta[a] = -eta * (1 + s * xi);
+        }
+    }
+}
+
+std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss) {
+    std::vector<double> g, w;
+    gauss_legendre(n_gauss, g, w);
+    const int nodes = static_cast<int>(coords.rows());
+    std::vector<FacePoint> points;
+    Eigen::VectorXd N, dxi, deta;
+    for (int i = 0; i < n_gauss; ++i)
+        for (int j = 0; j < n_gauss; ++j) {
+            face_shape(nodes, g[i], g[j], N, dxi, deta);
+            const Eigen::Vector3d tx = coords.transpose() * dxi, ty = coords.transpose() * deta;
+            points.push_back({N, coords.transpose() * N, w[i] * w[j] * tx.cross(ty).norm()});
+        }
+    return points;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,26 @@
+// Quadratic quadrilateral faces (8-node serendipity, 9-node Lagrange) in
+// gmsh order, for integrals over surfaces: spring layers between core and
+// chuck, bearing springs on a shaft end face. Plain Eigen.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace coremodal {
+
+struct FacePoint {
+    Eigen::VectorXd N;     // shape values at the point
+    Eigen::Vector3d x;     // position
+    double area_weight{};  // quadrature weight x |dx/dxi x dx/deta|
+};
+
+// n-point Gauss-Legendre in each direction over the face with the given
+// node coordinates (rows, metres). nodes: 8 or 9.
+std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss);
+
+// Shape values of an 8- or 9-node face at (xi, eta) in [-1, 1]^2, with derivatives.
+void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::VectorXd& dN_dxi,
+                Eigen::VectorXd& dN_deta);
+
+}  // namespace coremodal
