@@ -154,7 +154,7 @@ Scene free_span_scene(const Scene& scene, double span) {
     return free;
 }
 
-ChuckFactor chuck_factor(const Scene& scene, double f1) {
+ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_fe) {
     const auto& chucks = scene.supports.chucks;
     ChuckFactor k;
     k.li_left_m = chucks.at(0).li();
@@ -162,12 +162,12 @@ ChuckFactor chuck_factor(const Scene& scene, double f1) {
     k.li_m = (k.li_left_m + k.li_right_m) / 2;
     k.free_span_m = scene.core.length - k.li_left_m - k.li_right_m;
     k.f1_hz = f1;
-    const Scene free = free_span_scene(scene, k.free_span_m);
-    RunOptions quiet;
-    quiet.quiet = true;
-    quiet.write_results = false;
-    const RunReport free_run = run_scene(free, quiet);
-    k.f2_fe_hz = free_run.beam.fe_first_bending_hz;
+    if (by_fe) {
+        RunOptions quiet;
+        quiet.quiet = true;
+        quiet.write_results = false;
+        k.f2_fe_hz = run_scene(free_span_scene(scene, k.free_span_m), quiet).beam.fe_first_bending_hz;
+    }
     k.f2_beam_hz = timoshenko_bending_hz(beam_section(scene), k.free_span_m, BeamEnds::free_free, 1).at(0);
     k.chuck_factor = k.f2_fe_hz > 0 ? f1 / k.f2_fe_hz : 0;
     k.chuck_factor_beam = f1 / k.f2_beam_hz;
@@ -312,8 +312,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     say("[6/7] comparing with beam theory");
     report.beam = compare_with_beam(scene, report.modes.modes);
     if (scene.supports.kind == SupportKind::chucks) {
-        say("      chuck factor: the free-free roll over the free span (FE and beam)");
-        report.chuck = chuck_factor(scene, report.beam.fe_first_bending_hz);
+        if (options.chuck_factor_by_fe) say("      chuck factor: the free-free roll over the free span (FE and beam)");
+        report.chuck = chuck_factor(scene, report.beam.fe_first_bending_hz, options.chuck_factor_by_fe);
         report.timing_s.chuck_factor = stage.lap();
     }
 

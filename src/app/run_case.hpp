@@ -14,6 +14,9 @@ struct RunOptions {
     bool quiet = false;                     // no progress lines (tests)
     bool write_results = true;
     std::optional<std::string> mesh_level;  // overrides the case's [mesh] level
+    // Scenes with chucks: also solve the free-free roll over the free span for
+    // f2 and k (a second, smaller solve). Off where only f1 matters (sweeps of f1).
+    bool chuck_factor_by_fe = true;
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "element/face.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -10,11 +11,9 @@
 namespace coremodal {
 namespace {
 
-// Gauss points per direction on a spring-layer face. The segments of an
-// expanding element need not end on element edges: a point counts if it lies
-// on a segment, and 6 x 6 points per face make the covered area exact to a
-// few per cent of one face, far below the uncertainty of the stiffness.
-constexpr int kSpringLayerGauss = 6;
+// Gauss points per direction on a spring layer: N_a N_b of quadratic faces
+// on a curved face needs a little more than 3.
+constexpr int kSpringLayerGauss = 4;
 constexpr int kBearingGauss = 3;  // exact for the quadratic face's N_a N_b
 
 using FaceCoords = Eigen::Matrix<double, Eigen::Dynamic, 3>;
@@ -77,6 +76,49 @@ bool on_expanding_element(const Scene& scene, const ChuckSpec& chuck, double z, 
     return false;
 }
 
+// Quadrature points on the part of a bore face that an expanding element
+// covers. Segment edges need not fall on element edges: the face is cut at
+// them (found by bisection on the angle along the face's circumferential
+// direction) and each piece integrated, so the covered area is exact.
+std::vector<FacePoint> covered_points(const Scene& scene, const ChuckSpec& chuck, const FaceCoords& x) {
+    const auto theta_at = [&](double xi, double eta) {
+        const Eigen::Vector3d p = face_point(x, xi, eta);
+        return std::atan2(p[1], p[0]);
+    };
+    // Which reference direction runs around the axis?
+    const bool around_is_xi = std::abs(std::remainder(theta_at(1, 0) - theta_at(-1, 0), 2 * M_PI)) >
+                              std::abs(std::remainder(theta_at(0, 1) - theta_at(0, -1), 2 * M_PI));
+    const auto theta_along = [&](double s) { return around_is_xi ? theta_at(s, 0) : theta_at(0, s); };
+    // Cuts: the reference coordinates where a segment edge crosses the face.
+    std::vector<double> cuts = {-1, 1};
+    const double t0 = theta_along(-1);
+    const double span = std::remainder(theta_along(1) - t0, 2 * M_PI);
+    for (const ExpandingElement& e : chuck.expanding)
+        for (int k = 0; k < e.segments; ++k)
+            for (double edge : {-0.5, 0.5}) {
+                const double angle = 2 * M_PI * k / e.segments + edge * e.segment_angle;
+                const double d = std::remainder(angle - t0, 2 * M_PI);
+                if (d * span <= 0 || std::abs(d) >= std::abs(span)) continue;
+                double lo = -1, hi = 1;  // theta runs monotonically along the face
+                for (int it = 0; it < 60; ++it) {
+                    const double mid = (lo + hi) / 2;
+                    (std::remainder(theta_along(mid) - t0, 2 * M_PI) / span < d / span ? lo : hi) = mid;
+                }
+                cuts.push_back((lo + hi) / 2);
+            }
+    std::sort(cuts.begin(), cuts.end());
+    std::vector<FacePoint> points;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const double a = cuts[i], b = cuts[i + 1];
+        const Eigen::Vector3d mid = around_is_xi ? face_point(x, (a + b) / 2, 0) : face_point(x, 0, (a + b) / 2);
+        if (b - a < 1e-12 || !on_expanding_element(scene, chuck, mid[2], std::atan2(mid[1], mid[0]))) continue;
+        const auto piece = around_is_xi ? face_quadrature(x, kSpringLayerGauss, a, b, -1, 1)
+                                        : face_quadrature(x, kSpringLayerGauss, -1, 1, a, b);
+        points.insert(points.end(), piece.begin(), piece.end());
+    }
+    return points;
+}
+
 // Spring layer over one bore face: relative displacement (core - chuck) at
 // each point, stiffness k_n along the radius and k_t in the tangent plane,
 // per unit bore area.
@@ -87,9 +129,8 @@ CouplingElement spring_layer_face(const Scene& scene, const Mesh& mesh, const Ch
     for (int a = 0; a < n; ++a) e.nodes.push_back(set.face(f)[a]);
     for (int a = 0; a < n; ++a) e.nodes.push_back(facing(set.face(f)[a]));
     Eigen::MatrixXd Kab = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-    for (const FacePoint& p : face_quadrature(face_coords(mesh, set, f), kSpringLayerGauss)) {
+    for (const FacePoint& p : covered_points(scene, chuck, face_coords(mesh, set, f))) {
         const double theta = std::atan2(p.x[1], p.x[0]);
-        if (!on_expanding_element(scene, chuck, p.x[2], theta)) continue;
         covered_area += p.area_weight;
         const Eigen::Vector3d er(std::cos(theta), std::sin(theta), 0);
         const Eigen::Matrix3d D = chuck.interface.tangential_stiffness * Eigen::Matrix3d::Identity() +
@@ -118,9 +159,8 @@ void hold_core_by_chuck(const Scene& scene, const Mesh& mesh, const ChuckSpec& c
         if (on_expanding_element(scene, chuck, x[2], std::atan2(x[1], x[0]))) out.ties.push_back({node, facing(node)});
     }
     for (int f = 0; f < bore.n_faces(); ++f)
-        for (const FacePoint& p : face_quadrature(face_coords(mesh, bore, f), kSpringLayerGauss))
-            if (on_expanding_element(scene, chuck, p.x[2], std::atan2(p.x[1], p.x[0])))
-                out.coupled_area_m2 += p.area_weight;
+        for (const FacePoint& p : covered_points(scene, chuck, face_coords(mesh, bore, f)))
+            out.coupled_area_m2 += p.area_weight;
 }
 
 // Bearing springs spread over the shaft end face: c_r = k_radial / A in x

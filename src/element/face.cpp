@@ -85,18 +85,30 @@ void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::Vec
 }
 
 std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss) {
+    return face_quadrature(coords, n_gauss, -1, 1, -1, 1);
+}
+
+std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss,
+                                       double xi0, double xi1, double eta0, double eta1) {
     std::vector<double> g, w;
     gauss_legendre(n_gauss, g, w);
     const int nodes = static_cast<int>(coords.rows());
+    const double hx = (xi1 - xi0) / 2, hy = (eta1 - eta0) / 2;
     std::vector<FacePoint> points;
     Eigen::VectorXd N, dxi, deta;
     for (int i = 0; i < n_gauss; ++i)
         for (int j = 0; j < n_gauss; ++j) {
-            face_shape(nodes, g[i], g[j], N, dxi, deta);
+            face_shape(nodes, xi0 + hx * (g[i] + 1), eta0 + hy * (g[j] + 1), N, dxi, deta);
             const Eigen::Vector3d tx = coords.transpose() * dxi, ty = coords.transpose() * deta;
-            points.push_back({N, coords.transpose() * N, w[i] * w[j] * tx.cross(ty).norm()});
+            points.push_back({N, coords.transpose() * N, hx * hy * w[i] * w[j] * tx.cross(ty).norm()});
         }
     return points;
+}
+
+Eigen::Vector3d face_point(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, double xi, double eta) {
+    Eigen::VectorXd N, dxi, deta;
+    face_shape(static_cast<int>(coords.rows()), xi, eta, N, dxi, deta);
+    return coords.transpose() * N;
 }
 
 }  // namespace coremodal

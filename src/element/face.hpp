@@ -19,6 +19,13 @@ struct FacePoint {
 // node coordinates (rows, metres). nodes: 8 or 9.
 std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss);
 
+// The same over the part [xi0, xi1] x [eta0, eta1] of the reference square.
+std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss,
+                                       double xi0, double xi1, double eta0, double eta1);
+
+// Position of the face point (xi, eta).
+Eigen::Vector3d face_point(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, double xi, double eta);
+
 // Shape values of an 8- or 9-node face at (xi, eta) in [-1, 1]^2, with derivatives.
 void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::VectorXd& dN_dxi,
                 Eigen::VectorXd& dN_deta);

@@ -4,6 +4,7 @@
 
 #include "app/run_case.hpp"
 #include "scene/scene.hpp"
+#include "support/test_materials.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -50,6 +51,46 @@ inline const Mode& nth_of_type(const RunReport& r, const std::string& type, int 
         if (++seen == k) return m;
     }
     throw std::runtime_error("no mode " + std::to_string(k) + " of type " + type);
+}
+
+}  // namespace coremodal::testing
+
+namespace coremodal::testing {
+
+// A paperboard core (76 x 15 mm) of the given length, small mesh.
+inline Scene paper_core(double length, int around = 16, int along = 24) {
+    Scene s = steel_tube(0.106, 0.076, length, 2, around, along, 8);
+    s.name = "paper_core";
+    s.core.material = paperboard();
+    return s;
+}
+
+// Steel chucks at both ends: 110 mm inserted, 0.5 mm radial clearance, a
+// 60 mm shaft 150 mm long, one band 60 mm wide ending at the body's end
+// (centre 80 mm), so that a rigid clamp over the band meshes identically.
+inline Scene with_chucks(Scene s, InterfaceKind interface, double k_normal = 3.1e10) {
+    ChuckSpec c;
+    c.name = "left";
+    c.inserted_length = 0.11;
+    c.body_diameter = s.core.inner_diameter - 2 * 0.5e-3;
+    c.shaft_diameter = 0.06;
+    c.shaft_length = 0.15;
+    c.material = OrthotropicMaterial::isotropic("steel", 210e9, 0.3, 7850);
+    c.expanding = {{0.08, 0.06, 0, 0}};
+    c.interface.kind = interface;
+    c.interface.normal_stiffness = k_normal;
+    c.interface.tangential_stiffness = 0.82 * k_normal;
+    s.supports.kind = SupportKind::chucks;
+    s.supports.chucks = {c, c};
+    s.supports.chucks[1].name = "right";
+    return s;
+}
+
+// The rigid-clamp scene the chucks approach: clamps over the bands.
+inline Scene clamped_over_bands(Scene s) {
+    s.supports.kind = SupportKind::clamped;
+    s.supports.clamps = {{"left", 0.05, 0.11}, {"right", s.core.length - 0.11, s.core.length - 0.05}};
+    return s;
 }
 
 }  // namespace coremodal::testing

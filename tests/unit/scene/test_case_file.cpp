@@ -359,6 +359,76 @@ TEST_CASE("Clamp zones are placed from each end and checked", "[scene][case_file
     }
 }
 
+TEST_CASE("Elastic chucks are read, mirrored and checked", "[scene][case_file][chucks]") {
+    // kCore is 76 mm bore, 1.5 m long; lines 1-5, then [supports] on line 6.
+    const std::string chucks = kCore + "[supports]\ntype = \"chucks\"\n";
+    const std::string left = "[supports.left]\ninserted_length = \"110 mm\"\nclearance = \"0.5 mm\"\n";
+    const std::string band = "[[supports.left.expanding]]\ncenter = \"70 mm\"\nwidth = \"60 mm\"\n";
+    SECTION("a band, mirrored to the right, with derived stiffness and defaults echoed") {
+        const Scene s = parse_case_text(chucks + left + band, kFile);
+        REQUIRE(s.supports.kind == SupportKind::chucks);
+        REQUIRE(s.supports.chucks.size() == 2);
+        const ChuckSpec& c = s.supports.chucks[1];
+        CHECK(c.name == "right");
+        CHECK(c.body_diameter == Approx(0.075));
+        CHECK(c.shaft_diameter == Approx(0.075));
+        CHECK(c.li() == Approx(0.07));
+        CHECK(c.interface.kind == InterfaceKind::spring);
+        // k_n = K2 (p + p_res) / h = 50 x (0.6 MPa + 20 kPa) / 1 mm = 3.1e10 Pa/m.
+        CHECK(c.interface.normal_stiffness == Approx(3.1e10));
+        CHECK(c.interface.tangential_stiffness == Approx(3.1e10 * 2 * 0.7 / 1.7));
+        CHECK(c.bearing.rigid);
+        CHECK(has(s.assumptions, "rigid bearing"));
+        CHECK(has(s.assumptions, "expansion pressure 600 kPa (assumed)"));
+        const auto effects = s.effects();
+        CHECK(std::find(effects.begin(), effects.end(), "elastic_chucks") != effects.end());
+    }
+    SECTION("segments, a not-expanded chuck and an elastic bearing with a frame") {
+        const Scene s = parse_case_text(
+            chucks + left + "expanded = false\n" +
+                "[[supports.left.expanding]]\ncenter = \"70 mm\"\nwidth = \"60 mm\"\nsegments = 3\n"
+                "segment_angle = \"60 deg\"\n"
+                "[supports.left.bearing]\nradial_stiffness = \"200 kN/mm\"\ntilting_stiffness = \"1 MN*m/rad\"\n"
+                "frame_mass = \"50 kg\"\nframe_stiffness = \"100 kN/mm\"\n",
+            kFile);
+        const ChuckSpec& c = s.supports.chucks[0];
+        CHECK(c.expanding[0].segments == 3);
+        CHECK(c.expanding[0].segment_angle == Approx(M_PI / 3));
+        CHECK_FALSE(c.interface.expanded);
+        CHECK(c.interface.normal_stiffness == Approx(50 * 20e3 / 1e-3));  // residual pressure only
+        CHECK(c.bearing.radial_stiffness == Approx(2e8));
+        CHECK(c.bearing.tilting_stiffness == Approx(1e6));
+        CHECK(*c.bearing.frame_mass == Approx(50));
+    }
+    SECTION("an expanding element outside the inserted length") {
+        CHECK_THAT(error_of(chucks + left + "[[supports.left.expanding]]\ncenter = \"100 mm\"\nwidth = \"60 mm\"\n"),
+                   Catch::Contains(":12:10: [supports.left.expanding #1] spans 0.07 m to 0.13 m from the core end, "
+                                   "outside the inserted length 0 to 0.11 m"));
+    }
+    SECTION("a chuck body larger than the bore") {
+        CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"110 mm\"\nbody_diameter = \"80 mm\"\n" + band),
+                   Catch::Contains(":10:17: [supports.left] body_diameter = \"80 mm\" is not smaller than the core bore"));
+    }
+    SECTION("a negative stiffness") {
+        CHECK_THAT(error_of(chucks + left + "normal_stiffness = \"-1e10 N/m^3\"\n" + band),
+                   Catch::Contains(":11:20: [supports.left] normal_stiffness = -10 GN/m^3 must be positive"));
+        CHECK_THAT(error_of(chucks + left + band + "[supports.left.bearing]\nradial_stiffness = -5\n"),
+                   Catch::Contains("[supports.left.bearing] radial_stiffness = -5 N/m must be positive"));
+    }
+    SECTION("a chuck longer than half the core") {
+        CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"0.8 m\"\n" + band),
+                   Catch::Contains(":9:19: [supports.left] inserted_length = \"0.8 m\" is longer than half the core"));
+    }
+    SECTION("no expanding element, overlapping segments, unknown interface") {
+        CHECK_THAT(error_of(chucks + left), Catch::Contains("[supports.left] has no expanding elements"));
+        CHECK_THAT(error_of(chucks + left +
+                            "[[supports.left.expanding]]\ncenter = 0.07\nwidth = 0.06\nsegments = 4\nsegment_angle = \"100 deg\"\n"),
+                   Catch::Contains("overlap (more than 360 deg in all)"));
+        CHECK_THAT(error_of(chucks + left + "interface = \"glued\"\n" + band),
+                   Catch::Contains("[supports.left] interface = \"glued\": unknown value"));
+    }
+}
+
 TEST_CASE("Analysis requests", "[scene][case_file]") {
     SECTION("a frequency band") {
         const Scene s =
