@@ -2,6 +2,8 @@
 // stage of the pipeline (DESIGN.md).
 #include "app/run_case.hpp"
 
+#include "app/rigid_comparison.hpp"
+
 #include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
@@ -23,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
 
@@ -201,6 +204,11 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
     write_modes_h5(folder.file("modes.h5"), mesh, report.modes.modes, report.scene.name, scene_json(report.scene),
                    "coremodal " COREMODAL_VERSION);
     write_modes_xdmf(folder.file("modes.xdmf"), "modes.h5", mesh, report.modes.modes);
+    if (!report.rigid_comparison.empty()) {
+        std::ofstream csv(folder.file("rigid_vs_elastic.csv"));
+        csv << side_by_side_csv(report.rigid_comparison);
+        if (!csv) throw SolveError("cannot write " + folder.file("rigid_vs_elastic.csv"));
+    }
     folder.commit();
 }
 
@@ -316,6 +324,14 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
         report.chuck = chuck_factor(scene, report.beam.fe_first_bending_hz, options.chuck_factor_by_fe);
         report.timing_s.chuck_factor = stage.lap();
     }
+    if (options.compare_rigid && scene.supports.kind == SupportKind::chucks) {
+        say("      the same scene on rigid clamps over the expanding elements");
+        RunOptions quiet;
+        quiet.quiet = true;
+        quiet.write_results = false;
+        const RunReport rigid = run_scene(rigid_clamp_variant(scene), quiet);
+        report.rigid_comparison = pair_by_label(report.modes.modes, rigid.modes.modes);
+    }
 
     double peak = peak_memory_mb();
     MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
@@ -325,6 +341,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     if (root && !options.quiet) {
         print_mode_table(std::cout, report);
         print_verification_and_beam(std::cout, report);
+        if (!report.rigid_comparison.empty()) print_side_by_side(std::cout, report.rigid_comparison);
     }
     if (root && options.write_results) {
         say("[7/7] writing " + out_dir.string());

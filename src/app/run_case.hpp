@@ -17,6 +17,9 @@ struct RunOptions {
     // Scenes with chucks: also solve the free-free roll over the free span for
     // f2 and k (a second, smaller solve). Off where only f1 matters (sweeps of f1).
     bool chuck_factor_by_fe = true;
+    // Scenes with chucks: also run the rigid-clamp variant and pair the modes
+    // (console table, rigid_vs_elastic.csv, summary.json "rigid_comparison").
+    bool compare_rigid = false;
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

@@ -14,6 +14,9 @@ Command add_run_command(CLI::App& app) {
     cmd->add_option("-m,--mesh", *mesh_level,
                     "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or tables");
+    cmd->add_flag("--compare-rigid", options->compare_rigid,
+                  "with elastic chucks: also run rigid clamps over the expanding elements and list both mode "
+                  "tables side by side (rigid_vs_elastic.csv)");
     cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
                 "they override coremodal's solver defaults.");
     auto run = [options, output, mesh_level] {

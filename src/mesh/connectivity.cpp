@@ -47,6 +47,14 @@ std::vector<std::string> unheld_parts(const Mesh& mesh, const std::vector<int>& 
     if (held_nodes.empty()) return sentences;
     std::vector<char> held(mesh.n_nodes(), 0);
     for (int n : held_nodes) held[n] = 1;
+    // A node outside every cell (a frame mass) holds what it is linked to.
+    for (bool spread = true; spread;) {
+        spread = false;
+        for (const auto& link : links)
+            if (std::any_of(link.begin(), link.end(), [&](int n) { return held[n]; }))
+                for (int n : link)
+                    if (!held[n]) held[n] = 1, spread = true;
+    }
     for (const MeshComponent& comp : connected_components(mesh, links)) {
         const bool is_held = std::any_of(comp.cells.begin(), comp.cells.end(), [&](int c) {
             return std::any_of(mesh.cell(c), mesh.cell(c) + mesh.nodes_per_cell(), [&](int n) { return held[n]; });

@@ -49,6 +49,15 @@ struct ChuckFactor {
     double chuck_factor_beam = 0;  // f1 / f2_beam
 };
 
+// One row of the rigid-vs-elastic comparison (app/rigid_comparison.hpp).
+struct ModeShift {
+    std::string type;
+    int n = 0, m = 0;
+    int elastic_index = 0, rigid_index = 0;  // 0: no partner
+    double elastic_hz = 0, rigid_hz = 0;
+    double shift_percent() const { return elastic_index && rigid_index ? 100 * (elastic_hz / rigid_hz - 1) : 0; }
+};
+
 struct Timing {
     // factor_and_solve includes verification and the inertia count.
     double mesh = 0, assemble = 0, factor_and_solve = 0, classify = 0, chuck_factor = 0, total = 0;
@@ -60,6 +69,7 @@ struct RunReport {
     ModeSet modes;
     BeamComparison beam;
     std::optional<ChuckFactor> chuck;  // scenes with elastic chucks
+    std::vector<ModeShift> rigid_comparison;  // run --compare-rigid: elastic vs rigid-clamp modes
     Timing timing_s;
     double peak_memory_mb = 0;  // sum over MPI ranks of the peak resident set
     int mpi_ranks = 1;

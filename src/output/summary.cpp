@@ -199,6 +199,19 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         }
         summary.insert("chuck", chuck);
     }
+    if (!r.rigid_comparison.empty()) {
+        toml::array rows;
+        for (const ModeShift& m : r.rigid_comparison)
+            rows.push_back(toml::table{{"type", m.type},
+                                       {"n", m.n},
+                                       {"m", m.m},
+                                       {"elastic_mode", m.elastic_index},
+                                       {"elastic_hz", m.elastic_hz},
+                                       {"rigid_mode", m.rigid_index},
+                                       {"rigid_hz", m.rigid_hz},
+                                       {"shift_percent", m.shift_percent()}});
+        summary.insert("rigid_comparison", rows);
+    }
     write_text_file(path, to_json(summary) + "\n");
 }
 

@@ -1,0 +1,89 @@
+#include "app/rigid_comparison.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace coremodal {
+
+Scene rigid_clamp_variant(const Scene& scene) {
+    Scene rigid = scene;
+    rigid.name = scene.name + "-rigid";
+    rigid.supports = {};
+    rigid.supports.kind = SupportKind::clamped;
+    const double L = scene.core.length;
+    for (const ChuckSpec& c : scene.supports.chucks) {
+        double near = L, far = 0;  // from this chuck's core end
+        for (const ExpandingElement& e : c.expanding) {
+            near = std::min(near, e.center - e.width / 2);
+            far = std::max(far, e.center + e.width / 2);
+        }
+        rigid.supports.clamps.push_back(c.name == "right" ? ClampSpec{c.name, L - far, L - near}
+                                                          : ClampSpec{c.name, near, far});
+    }
+    return rigid;
+}
+
+std::vector<ModeShift> pair_by_label(const std::vector<Mode>& elastic, const std::vector<Mode>& rigid) {
+    // Type and n, then order: the k-th bending mode of one run with the k-th of
+    // the other. The axial count m is not a key: it counts nodes over the
+    // whole core, and a rigid clamp stills the overhang that a chuck moves.
+    using Key = std::tuple<std::string, int>;
+    const auto key = [](const Mode& m) { return Key{m.label.type, m.label.n}; };
+    std::map<Key, std::vector<const Mode*>> rigid_by_label;
+    for (const Mode& m : rigid) rigid_by_label[key(m)].push_back(&m);
+    std::map<Key, size_t> used;
+    std::vector<ModeShift> rows;
+    for (const Mode& e : elastic) {
+        ModeShift row{e.label.type, e.label.n, e.label.m, e.index, 0, e.frequency_hz, 0};
+        auto& candidates = rigid_by_label[key(e)];
+        if (size_t& k = used[key(e)]; k < candidates.size()) {
+            row.rigid_index = candidates[k]->index;
+            row.rigid_hz = candidates[k]->frequency_hz;
+            ++k;
+        }
+        rows.push_back(row);
+    }
+    for (auto& [k, candidates] : rigid_by_label)
+        for (size_t i = used[k]; i < candidates.size(); ++i) {
+            const Mode& r = *candidates[i];
+            rows.push_back({r.label.type, r.label.n, r.label.m, 0, r.index, 0, r.frequency_hz});
+        }
+    return rows;
+}
+
+void print_side_by_side(std::ostream& out, const std::vector<ModeShift>& shifts) {
+    out << "\nelastic chucks vs rigid clamps over the expanding elements (paired by type, n and order; m of the elastic run):\n";
+    out << " type       n   m   elastic: mode  f [Hz]     rigid: mode  f [Hz]     shift\n";
+    out << " ---------  --  --  -------------------  -------------------  --------\n";
+    char line[256];
+    for (const ModeShift& s : shifts) {
+        const auto side = [](int index, double f) {
+            char cell[64];
+            if (index)
+                std::snprintf(cell, sizeof cell, "%4d  %11.4f", index, f);
+            else
+                std::snprintf(cell, sizeof cell, "%4s  %11s", "-", "(not found)");
+            return std::string(cell);
+        };
+        char shift[32] = "";
+        if (s.elastic_index && s.rigid_index) std::snprintf(shift, sizeof shift, "%+7.2f %%", s.shift_percent());
+        std::snprintf(line, sizeof line, " %-9s  %2d  %2d  %s    %s    %s\n", s.type.c_str(), s.n, s.m,
+                      side(s.elastic_index, s.elastic_hz).c_str(), side(s.rigid_index, s.rigid_hz).c_str(), shift);
+        out << line;
+    }
+}
+
+std::string side_by_side_csv(const std::vector<ModeShift>& shifts) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "type,n,m,elastic_mode,elastic_hz,rigid_mode,rigid_hz,shift_percent\n";
+    for (const ModeShift& r : shifts)
+        s << r.type << ',' << r.n << ',' << r.m << ',' << r.elastic_index << ',' << r.elastic_hz << ','
+          << r.rigid_index << ',' << r.rigid_hz << ',' << r.shift_percent() << '\n';
+    return s.str();
+}
+
+}  // namespace coremodal
