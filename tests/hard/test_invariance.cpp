@@ -1,6 +1,7 @@
 // Hard cases: strong orthotropy must not make the answer depend on how the
 // unknowns are numbered or how the mesh is turned about the axis, and dense
 // clusters of ovalling modes must come out whole.
+#include "hard/mesh_transforms.hpp"
 #include "verification/tube_scenes.hpp"
 
 #include "assembly/petsc_system.hpp"
@@ -13,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <random>
 
 using namespace coremodal;
 using namespace coremodal::testing;
@@ -53,29 +53,6 @@ std::vector<double> lowest_eigenvalues(const Mesh& mesh, const OrthotropicMateri
     CHECK(solved.verification.complete);
     CHECK(solved.verification.max_relative_residual < 1e-8);
     return solved.eigenvalues;
-}
-
-// The same mesh with its nodes numbered in a random order.
-Mesh shuffled(const Mesh& mesh, unsigned seed) {
-    std::vector<int> new_of_old(mesh.n_nodes());
-    std::iota(new_of_old.begin(), new_of_old.end(), 0);
-    std::shuffle(new_of_old.begin(), new_of_old.end(), std::mt19937(seed));
-    Mesh out = mesh;
-    for (int old = 0; old < mesh.n_nodes(); ++old) out.nodes[new_of_old[old]] = mesh.nodes[old];
-    for (int& v : out.cells) v = new_of_old[v];
-    for (auto& [name, nodes] : out.node_groups) {
-        for (int& v : nodes) v = new_of_old[v];
-        std::sort(nodes.begin(), nodes.end());
-    }
-    return out;
-}
-
-// The same mesh turned about the z axis.
-Mesh rotated(const Mesh& mesh, double angle) {
-    Mesh out = mesh;
-    const double c = std::cos(angle), s = std::sin(angle);
-    for (auto& x : out.nodes) x = {c * x[0] - s * x[1], s * x[0] + c * x[1], x[2]};
-    return out;
 }
 
 }  // namespace
