@@ -179,6 +179,12 @@ Report compute(const BeamOptions& options) {
         if (std::abs(left - right) > 1e-9)
             r.notes.push_back("clamp zone centres differ (" + mm(left) + " and " + mm(right) +
                               " from their ends): Li is their mean, L the distance between them");
+    } else if (s.supports.kind == SupportKind::chucks) {
+        const double left = s.supports.chucks.at(0).li(), right = s.supports.chucks.at(1).li();
+        r.Li = 0.5 * (left + right);
+        r.li_source = "the chucks' furthest expanding elements";
+        if (std::abs(left - right) > 1e-9)
+            r.notes.push_back("chuck Li differ (" + mm(left) + " and " + mm(right) + "): Li is their mean");
     } else {
         r.Li = 0, r.li_source = "none given: free core, L = Lc";
     }
@@ -199,6 +205,9 @@ Report compute(const BeamOptions& options) {
         const double left = s.supports.clamps[0].z_end, right = case_length - s.supports.clamps[1].z_start;
         r.koenig_l = r.Lc - left - right, r.koenig_l_source = "between the clamp zones' inner edges";
         if (!(r.koenig_l > 0)) throw InputError("the clamp zones leave no free core length for König's l");
+    } else if (s.supports.kind == SupportKind::chucks && options.raw.count("li") == 0) {
+        r.koenig_l = r.Lc - s.supports.chucks.at(0).inserted_length - s.supports.chucks.at(1).inserted_length;
+        r.koenig_l_source = "between the chucks' inserted ends";
     } else {
         r.koenig_l = r.L, r.koenig_l_source = "insertion depth taken as Li (give --chuck-depth)";
     }
