@@ -1,5 +1,7 @@
 #include "element/face.hpp"
 
+#include "element/shape_functions.hpp"
+
 #include <stdexcept>
 
 namespace coremodal {
@@ -8,20 +10,6 @@ namespace {
 // gmsh's reference positions: corners, then mid-edges, then the centre.
 constexpr double kNodeXi[9] = {-1, 1, 1, -1, 0, 1, 0, -1, 0};
 constexpr double kNodeEta[9] = {-1, -1, 1, 1, -1, 0, 1, 0, 0};
-
-// 1D quadratic Lagrange polynomial through -1, 0, 1 that is 1 at node c.
-void lagrange(double x, double c, double& value, double& derivative) {
-    if (c < -0.5) {
-        value = 0.5 * x * (x - 1);
-        derivative = x - 0.5;
-    } else if (c > 0.5) {
-        value = 0.5 * x * (x + 1);
-        derivative = x + 0.5;
-    } else {
-        value = 1 - x * x;
-        derivative = -2 * x;
-    }
-}
 
 void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
     x.resize(n);
@@ -55,8 +43,8 @@ void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::Vec
     if (nodes == 9) {
         for (int a = 0; a < 9; ++a) {
             double lx, dlx, ly, dly;
-            lagrange(xi, kNodeXi[a], lx, dlx);
-            lagrange(eta, kNodeEta[a], ly, dly);
+            lagrange_1d(xi, kNodeXi[a], lx, dlx);
+            lagrange_1d(eta, kNodeEta[a], ly, dly);
             N[a] = lx * ly;
             dN_dxi[a] = dlx * ly;
             dN_deta[a] = lx * dly;

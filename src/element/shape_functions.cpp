@@ -75,20 +75,6 @@ ValueAndGradient hex20_function(const Eigen::Vector3d& xi, const double* c) {
     return f;
 }
 
-// 1D quadratic Lagrange function on nodes {-1, 0, 1} for the node at c.
-void lagrange_1d(double x, double c, double& value, double& derivative) {
-    if (c < 0) {
-        value = 0.5 * x * (x - 1.0);
-        derivative = x - 0.5;
-    } else if (c > 0) {
-        value = 0.5 * x * (x + 1.0);
-        derivative = x + 0.5;
-    } else {
-        value = 1.0 - x * x;
-        derivative = -2.0 * x;
-    }
-}
-
 // hex27: tensor product of 1D quadratic Lagrange functions.
 ValueAndGradient hex27_function(const Eigen::Vector3d& xi, const double* c) {
     std::array<double, 3> factor{}, derivative{};
@@ -160,6 +146,20 @@ Eigen::Matrix<double, Eigen::Dynamic, 3> shape_gradients(CellType type, const Ei
     }
     for (int a = 0; a < n; ++a) dN.row(a) = hex_function(type, xi, a).gradient;
     return dN;
+}
+
+// 1D quadratic Lagrange function on nodes {-1, 0, 1} for the node at c.
+void lagrange_1d(double x, double c, double& value, double& derivative) {
+    if (c < 0) {
+        value = 0.5 * x * (x - 1.0);
+        derivative = x - 0.5;
+    } else if (c > 0) {
+        value = 0.5 * x * (x + 1.0);
+        derivative = x + 0.5;
+    } else {
+        value = 1.0 - x * x;
+        derivative = -2.0 * x;
+    }
 }
 
 }  // namespace coremodal

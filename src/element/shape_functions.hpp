@@ -24,4 +24,8 @@ Eigen::VectorXd shape_values(CellType type, const Eigen::Vector3d& xi);
 // dN(a, j) = d N_a / d xi_j at reference point xi.
 Eigen::Matrix<double, Eigen::Dynamic, 3> shape_gradients(CellType type, const Eigen::Vector3d& xi);
 
+// 1D quadratic Lagrange function on the nodes {-1, 0, 1}, for the node at c
+// (its sign picks the node), and its derivative at x.
+void lagrange_1d(double x, double c, double& value, double& derivative);
+
 }  // namespace coremodal

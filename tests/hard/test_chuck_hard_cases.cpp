@@ -30,14 +30,6 @@ OrthotropicMaterial soft_radial_paper() {
     return m;
 }
 
-Mesh mesh_of(const Scene& s) {
-    GmshSession gmsh;
-    build_tube_model(make_tube_section(s), s.supports.clamps, "hex20");
-    Mesh mesh = read_current_gmsh_mesh("test");
-    add_frame_nodes(s, mesh);
-    return mesh;
-}
-
 std::vector<PartMaterial> materials_by_part(const Scene& s, const Mesh& mesh) {
     std::vector<PartMaterial> out;
     for (const auto& part : mesh.part_names) {
@@ -68,7 +60,7 @@ TEST_CASE("Stiffness contrast 2e4 (steel chuck bonded to 10 MPa paper): numberin
           "[hard][chucks]") {
     Scene s = with_chucks(paper_core(0.9, 16, 16), InterfaceKind::bonded);
     s.core.material = soft_radial_paper();
-    const Mesh mesh = mesh_of(s);
+    const Mesh mesh = generated_mesh(s);
     const auto reference = solve_on(s, mesh, 8).eigenvalues;
     const auto renumbered = solve_on(s, shuffled(mesh, 11), 8).eigenvalues;
     const auto turned = solve_on(s, rotated(mesh, 0.37), 8).eigenvalues;

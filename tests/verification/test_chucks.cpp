@@ -23,14 +23,6 @@ namespace {
 // 0.9 m paper core: long enough to bend like a beam, small enough to solve in seconds.
 constexpr double kLength = 0.9;
 
-Mesh generated_mesh(const Scene& s) {
-    GmshSession gmsh;
-    build_tube_model(make_tube_section(s), s.supports.clamps, s.mesh.element);
-    Mesh mesh = read_current_gmsh_mesh("test mesh");
-    add_frame_nodes(s, mesh);
-    return mesh;
-}
-
 // For every node, the node at (x, y, L - z).
 std::vector<int> mirror_nodes(const Mesh& mesh, double length) {
     const auto key = [](double x, double y, double z) {

@@ -3,6 +3,9 @@
 #pragma once
 
 #include "app/run_case.hpp"
+#include "assembly/chuck_supports.hpp"
+#include "geometry/tube_model.hpp"
+#include "mesh/gmsh_mesh.hpp"
 #include "scene/scene.hpp"
 #include "support/test_materials.hpp"
 
@@ -84,6 +87,15 @@ inline Scene with_chucks(Scene s, InterfaceKind interface, double k_normal = 3.1
     s.supports.chucks = {c, c};
     s.supports.chucks[1].name = "right";
     return s;
+}
+
+// The mesh run_scene builds for a generated scene (same nodes, same order).
+inline Mesh generated_mesh(const Scene& s) {
+    GmshSession gmsh;
+    build_tube_model(make_tube_section(s), s.supports.clamps, s.mesh.element);
+    Mesh mesh = read_current_gmsh_mesh("test mesh");
+    add_frame_nodes(s, mesh);
+    return mesh;
 }
 
 // The rigid-clamp scene the chucks approach: clamps over the bands.

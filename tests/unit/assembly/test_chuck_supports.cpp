@@ -14,14 +14,6 @@ using namespace coremodal::testing;
 
 namespace {
 
-Mesh mesh_of(const Scene& s) {
-    GmshSession gmsh;
-    build_tube_model(make_tube_section(s), s.supports.clamps, "hex20");
-    Mesh mesh = read_current_gmsh_mesh("test");
-    add_frame_nodes(s, mesh);
-    return mesh;
-}
-
 // Force along x on the core side when the core moves by one metre in x
 // against a fixed chuck, summed over the spring-layer elements.
 double translation_stiffness(const ChuckSupports& supports) {
@@ -39,7 +31,7 @@ double translation_stiffness(const ChuckSupports& supports) {
 
 TEST_CASE("A band's spring layer resists translation with pi R w (k_n + k_t)", "[assembly][chucks]") {
     const Scene s = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::spring, 3e10);
-    const ChuckSupports supports = chuck_supports(s, mesh_of(s));
+    const ChuckSupports supports = chuck_supports(s, generated_mesh(s));
     const double R = 0.038, w = 0.06, kn = 3e10, kt = 0.82 * 3e10;
     // Quadratic faces on 16 elements around follow the circle to ~1e-5.
     CHECK(supports.coupled_area_m2 == Approx(2 * 2 * M_PI * R * w).epsilon(1e-4));
@@ -51,7 +43,7 @@ TEST_CASE("Segments whose edges cut through faces cover exactly their area", "[a
     Scene s = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::spring, 3e10);
     // 3 segments of 50 degrees: edges at +-25 deg, never on the 22.5-degree grid.
     for (auto& c : s.supports.chucks) c.expanding[0] = {0.08, 0.06, 3, 50 * M_PI / 180};
-    const ChuckSupports supports = chuck_supports(s, mesh_of(s));
+    const ChuckSupports supports = chuck_supports(s, generated_mesh(s));
     const double R = 0.038, w = 0.06, kn = 3e10, kt = 0.82 * 3e10, covered = 3 * 50 * M_PI / 180;
     CHECK(supports.coupled_area_m2 == Approx(2 * R * w * covered).epsilon(1e-4));
     // Three segments 120 degrees apart: cos^2 and sin^2 average to 1/2 each.
@@ -60,7 +52,7 @@ TEST_CASE("Segments whose edges cut through faces cover exactly their area", "[a
 
 TEST_CASE("A bonded band ties every bore node over it to a chuck node", "[assembly][chucks]") {
     const Scene s = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::bonded);
-    const Mesh mesh = mesh_of(s);
+    const Mesh mesh = generated_mesh(s);
     const ChuckSupports supports = chuck_supports(s, mesh);
     std::set<int> core_nodes(mesh.node_groups.at("interface_left_core").begin(),
                              mesh.node_groups.at("interface_left_core").end());
@@ -84,7 +76,7 @@ TEST_CASE("Elastic bearing springs give the face k_radial in translation and k_t
         c.bearing.radial_stiffness = 2e8;
         c.bearing.tilting_stiffness = 3e6;
     }
-    const Mesh mesh = mesh_of(s);
+    const Mesh mesh = generated_mesh(s);
     const ChuckSupports supports = chuck_supports(s, mesh);
     double k_translation = 0, k_tilt = 0;
     for (const CouplingElement& e : supports.couplings) {
