@@ -145,15 +145,28 @@ Holding holding(const std::vector<int>& eliminated, const ChuckSupports& chucks)
 }
 
 // The free-free roll over the free span: the same core and rest paper, cut
-// to L, meshed with the same density, no supports.
+// to L, no supports. Its first bending mode is smooth (no clamp edge), so
+// it converges at h^4: the coarse level is within 0.1 % of the converged
+// value (case 01: 133.46 against 133.36 Hz), far inside the uncertainty of
+// any k, at a fraction of the scene's cost; finer scene meshes do not
+// coarsen it further.
 Scene free_span_scene(const Scene& scene, double span) {
     Scene free = scene;
     free.name = scene.name + "-free-span";
     free.core.length = span;
     free.supports = {};
-    free.mesh.n_along = std::max(4, static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)));
     free.analysis = {};
-    free.analysis.n_modes = 10;  // 6 rigid, the bending pair, and margin
+    free.analysis.n_modes = 8;  // 6 rigid modes and the bending pair
+    const MeshLevel& coarse = *find_mesh_level("coarse");
+    free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
+    free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
+    free.mesh.n_around = std::min(scene.mesh.n_around, coarse.n_around);
+    free.mesh.n_along = std::min(
+        static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)),
+        elements_along(span, free.core.outer_diameter,
+                       free.mesh.n_around, coarse.axial_aspect)
+            .value_or(kMaxElementsAlong));
+    free.mesh.n_along = std::max(free.mesh.n_along, kMinElementsAlong);
     return free;
 }
 
