@@ -2,6 +2,7 @@
 // stage of the pipeline (DESIGN.md).
 #include "app/run_case.hpp"
 
+#include "app/run_beam.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"
@@ -88,6 +89,8 @@ double expected_mass(const Scene& s) {
     return m;
 }
 
+}  // namespace
+
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
     BeamComparison b;
     const BeamSection section = beam_section(scene);
@@ -107,6 +110,8 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
         }
     return b;
 }
+
+namespace {
 
 void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir) {
     ResultsFolder folder(dir);
@@ -129,6 +134,7 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene_in, const RunOptions& options) {
+    if (scene_in.model == "beam") return run_beam_scene(std::move(scene_in), options);  // app/run_beam.cpp
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;
