@@ -62,21 +62,24 @@ struct Assembler {
 
     explicit Assembler(const Placement& p) : place(p), K(p.dofs.size()), M(p.dofs.size()) {}
 
-    // Every entry goes to `target` and, as an explicit zero, to the other
-    // matrix: K and M share one pattern, so K - lambda M is a sum of value
-    // arrays and every shift factors on one symbolic analysis.
-    template <typename Matrix, size_t N>
-    void add(std::vector<Triplets>& target, const Matrix& local, const std::array<int, N>& dofs) {
-        std::vector<Triplets>& other = &target == &K ? M : K;
+    // K and M entries at once; where only one of them has an entry the other
+    // gets an explicit zero: K and M share one pattern, so K - lambda M is a
+    // sum of value arrays and every shift factors on one symbolic analysis.
+    template <typename MatrixK, typename MatrixM, size_t N>
+    void add(const MatrixK& k, const MatrixM& m, const std::array<int, N>& dofs) {
         for (size_t i = 0; i < N; ++i) {
             const int problem = place.problem[dofs[i]];
             if (problem < 0) continue;
             for (size_t j = 0; j < N; ++j)
-                if (place.problem[dofs[j]] == problem && local(i, j) != 0.0) {
-                    target[problem].emplace_back(place.row[dofs[i]], place.row[dofs[j]], local(i, j));
-                    other[problem].emplace_back(place.row[dofs[i]], place.row[dofs[j]], 0.0);
+                if (place.problem[dofs[j]] == problem && (k(i, j) != 0.0 || m(i, j) != 0.0)) {
+                    K[problem].emplace_back(place.row[dofs[i]], place.row[dofs[j]], k(i, j));
+                    M[problem].emplace_back(place.row[dofs[i]], place.row[dofs[j]], m(i, j));
                 }
         }
+    }
+    template <typename Matrix, size_t N>
+    void add_stiffness(const Matrix& k, const std::array<int, N>& dofs) {
+        add(k, Matrix::Zero(), dofs);
     }
 };
 
@@ -110,8 +113,7 @@ void add_beam(Assembler& out, const BeamNetwork& net, const BeamNetwork::Beam& b
     for (size_t e = 0; e < beam.sections.size(); ++e) {
         const ElementMatrices m = element_matrices(element_of(net, beam, e));
         const auto dofs = dofs_of<kElementNodes>(element_nodes(beam, e));
-        out.add(out.K, m.K, dofs);
-        out.add(out.M, m.M, dofs);
+        out.add(m.K, m.M, dofs);
     }
 }
 
@@ -147,24 +149,24 @@ void add_coupling(Assembler& out, const BeamNetwork& net, const BeamNetwork::Cou
         for (int i = 0; i < n_nodes; ++i)
             for (int j = 0; j < n_nodes; ++j) local.block<6, 6>(6 * i, 6 * j) = weights(i, j) * c.stiffness_per_length;
         const auto na = element_nodes(a, ea), nb = element_nodes(b, eb);
-        out.add(out.K, local, dofs_of<n_nodes>({na[0], na[1], na[2], nb[0], nb[1], nb[2]}));
+        out.add_stiffness(local, dofs_of<n_nodes>({na[0], na[1], na[2], nb[0], nb[1], nb[2]}));
     }
 }
 
 void add_spring(Assembler& out, const BeamNetwork::Spring& s) {
     if (s.node_b < 0) {
-        out.add(out.K, s.stiffness, dofs_of<1>({s.node_a}));
+        out.add_stiffness(s.stiffness, dofs_of<1>({s.node_a}));
         return;
     }
     Eigen::Matrix<double, 12, 12> local;
     local << s.stiffness, -s.stiffness, -s.stiffness, s.stiffness;
-    out.add(out.K, local, dofs_of<2>({s.node_a, s.node_b}));
+    out.add_stiffness(local, dofs_of<2>({s.node_a, s.node_b}));
 }
 
 void add_point_mass(Assembler& out, const BeamNetwork::PointMass& m) {
     Matrix6 local = Matrix6::Zero();
     for (int d : {beam_dof::ux, beam_dof::uy, beam_dof::uz}) local(d, d) = m.mass;
-    out.add(out.M, local, dofs_of<1>({m.node}));
+    out.add(Matrix6::Zero(), local, dofs_of<1>({m.node}));
 }
 
 // Every 6x6 stiffness the network holds besides its beams (and a coupling's

@@ -23,11 +23,11 @@ constexpr double kShiftFraction = 0.1;
 // Up to this many DOFs, or when the Krylov space would hold half of them,
 // the dense solver is the faster one.
 constexpr int kDenseLimit = 16;
-// Krylov space: vectors added per step (2: exact pairs within one problem,
-// such as two identical overhangs), and when it is first checked: this many
-// columns per wanted mode plus kExtraVectors (as a rule enough for a
-// residual of 1e-10; each check is a dense eigensolve), then every time it
-// grew by a quarter.
+// Lanczos: vectors added per step (2: exact pairs within one problem, such as
+// two identical overhangs), and when the Ritz pairs are first checked: this
+// many columns per wanted mode plus kExtraVectors (as a rule enough for a
+// residual of 1e-10; each check is a dense eigensolve), then every time the
+// space grew by a quarter.
 constexpr int kBlockSize = 2;
 constexpr int kColumnsPerMode = 3;
 constexpr int kExtraVectors = 8;
@@ -114,93 +114,115 @@ ProblemModes dense_modes(const Problem& p, int nev) {
     return {solver.eigenvalues().head(nev), solver.eigenvectors().leftCols(nev)};
 }
 
-// An M-orthonormal basis V of a growing Krylov space, with MV = M V and
-// KV = K V kept alongside. New columns are orthogonalised twice by classical
-// Gram-Schmidt (matrix-vector products into reused workspace: blocks are too
-// thin for matrix products to pay); a column that vanishes (the space is
-// invariant) is replaced by a random one.
-class KrylovBasis {
+// Block Lanczos with full reorthogonalisation on the shift-and-invert
+// operator T = (K - sigma M)^-1 M, which is self-adjoint in the M inner
+// product: V is an M-orthonormal basis of the block Krylov space, and the
+// Gram-Schmidt coefficients of T V are the projected operator
+// H = V^T M T V, so Rayleigh-Ritz needs no product with K. A Ritz pair
+// (theta, y) of T is the pair (sigma + 1/theta, y) of (K, M).
+class ShiftInvertLanczos {
 public:
-    KrylovBasis(const Problem& p, int capacity)
-        : K_(p.system.K), M_(p.system.M), n_(p.size()), w_(n_), Mw_(n_), c_(n_) {
+    ShiftInvertLanczos(const Problem& p, const BandedLDLT& factor, int capacity)
+        : M_(p.system.M), factor_(factor), n_(p.size()), w_(n_), Mw_(n_), h_(n_) {
         reserve(capacity);
+        for (int j = 0; j < kBlockSize && k_ < n_; ++j) add_column(random_vector(), kNotAnImage);
     }
 
-    void add(const Eigen::MatrixXd& W) {
-        for (Eigen::Index j = 0; j < W.cols() && k_ < n_; ++j) add_column(W.col(j));
-    }
     int size() const { return k_; }
-    Eigen::MatrixXd random_block(int b) {
-        return Eigen::MatrixXd::NullaryExpr(n_, b, [this](Eigen::Index, Eigen::Index) { return normal_(random_); });
-    }
-    // The last `b` columns of M V: the next block is (K - sigma M)^-1 times them.
-    auto last_MV(int b) const { return MV_.middleCols(k_ - b, b); }
+    // Columns whose image under T is in H; the Ritz pairs live on these.
+    int processed() const { return processed_; }
 
-    // Rayleigh-Ritz of (K, M) on the basis: the lowest nev Ritz pairs, and
-    // the largest relative residual among them.
-    ProblemModes ritz(int nev, double norm_K, double& worst_residual) const {
-        const auto V = V_.leftCols(k_), KV = KV_.leftCols(k_), MV = MV_.leftCols(k_);
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(Kr_.topLeftCorner(k_, k_));
-        const Eigen::MatrixXd S = solver.eigenvectors().leftCols(nev);
-        const Eigen::VectorXd lambda = solver.eigenvalues().head(nev);
-        Eigen::MatrixXd X = V * S;
-        const Eigen::MatrixXd R = KV * S - (MV * S) * lambda.asDiagonal();
-        worst_residual = (R.colwise().norm().array() / (norm_K * X.colwise().norm().array())).maxCoeff();
-        return {lambda, std::move(X)};
+    // Images of the oldest block not yet processed, orthogonalised into the basis.
+    void extend() {
+        const int b = std::min(kBlockSize, k_ - processed_);
+        const Eigen::MatrixXd W = factor_.solve(MV_.middleCols(processed_, b));
+        for (int j = 0; j < b && k_ < n_; ++j) add_column(W.col(j), processed_ + j);
+        processed_ += b;
+    }
+
+    // The nev largest Ritz values theta of T on the processed columns, their
+    // vectors, and the norm of the part of T y outside the processed span
+    // relative to theta (zero when the space is invariant).
+    struct Ritz {
+        Eigen::VectorXd theta;
+        Eigen::MatrixXd X;
+        double worst_estimate;
+    };
+    Ritz ritz(int nev) const {
+        const int m = processed_;
+        const Eigen::MatrixXd Hm = H_.topLeftCorner(m, m);
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (Hm + Hm.transpose()));
+        const Eigen::MatrixXd S = solver.eigenvectors().rightCols(nev).rowwise().reverse();
+        const Eigen::VectorXd theta = solver.eigenvalues().tail(nev).reverse();
+        const Eigen::MatrixXd outside = H_.block(m, 0, k_ - m, m) * S;
+        const double worst = (outside.colwise().norm().transpose().array() / theta.array().abs()).maxCoeff();
+        return {theta, V_.leftCols(m) * S, k_ > m ? worst : 0.0};
     }
 
 private:
     // Below this share of its length before orthogonalisation a column
-    // carries no new direction.
+    // carries no new direction; a second Gram-Schmidt pass is needed when
+    // the first one removes more than 1 - kReorthogonalise of it (DGKS).
     static constexpr double kBreakdown = 1e-8;
+    static constexpr double kReorthogonalise = 0.7071;
 
     void reserve(int columns) {
-        if (columns <= V_.cols()) return;
-        const Eigen::Index capacity = std::min<Eigen::Index>(n_, std::max<Eigen::Index>(columns, 2 * V_.cols()));
-        for (Eigen::MatrixXd* A : {&V_, &MV_, &KV_}) A->conservativeResize(n_, capacity);
-        Kr_.conservativeResize(capacity, capacity);
+        const Eigen::Index capacity = std::min<Eigen::Index>(n_, columns);
+        if (capacity <= V_.cols()) return;
+        V_.conservativeResize(n_, capacity);
+        MV_.conservativeResize(n_, capacity);
+        H_.conservativeResizeLike(Eigen::MatrixXd::Zero(capacity, capacity));
     }
 
-    void add_column(const Eigen::Ref<const Eigen::VectorXd>& column) {
-        reserve(k_ + 1);
-        w_ = column;
-        for (int attempt = 0;; ++attempt) {
-            const double before = w_.norm();
-            for (int pass = 0; pass < 2; ++pass) {
-                c_.head(k_).noalias() = MV_.leftCols(k_).transpose() * w_;
-                w_.noalias() -= V_.leftCols(k_) * c_.head(k_);
-            }
-            if (w_.norm() > kBreakdown * before) break;
-            COREMODAL_ASSERT(attempt < 3);  // random vectors are never in the span of a partial basis
-            w_ = random_block(1);
+    Eigen::VectorXd random_vector() {
+        return Eigen::VectorXd::NullaryExpr(n_, [this](Eigen::Index) { return normal_(random_); });
+    }
+
+    // Orthogonalises w into the basis. When w is T times column `image_of`,
+    // that column of H takes its components, the new column's included.
+    static constexpr int kNotAnImage = -1;
+    void add_column(const Eigen::Ref<const Eigen::VectorXd>& w_in, int image_of) {
+        if (k_ + 1 > V_.cols()) reserve(std::max<int>(k_ + 1, 2 * static_cast<int>(V_.cols())));
+        w_ = w_in;
+        h_.head(k_).setZero();
+        double before = w_.norm();
+        for (int pass = 0; pass < 2; ++pass) {
+            const Eigen::VectorXd c = MV_.leftCols(k_).transpose() * w_;
+            w_.noalias() -= V_.leftCols(k_) * c;
+            h_.head(k_) += c;
+            const double after = w_.norm();
+            if (after > kReorthogonalise * before) break;
+            before = after;
+        }
+        if (image_of != kNotAnImage) H_.col(image_of).head(k_) = h_.head(k_);
+        if (w_.norm() <= kBreakdown * w_in.norm()) {  // invariant subspace: go on with a fresh direction
+            add_column(random_vector(), kNotAnImage);
+            return;
         }
         Mw_.noalias() = M_ * w_;
         const double length = std::sqrt(w_.dot(Mw_));
+        if (image_of != kNotAnImage) H_(k_, image_of) = length;
         V_.col(k_) = w_ / length;
         MV_.col(k_) = Mw_ / length;
-        KV_.col(k_).noalias() = K_ * V_.col(k_);
-        // V^T K V grows by a row and a column (kept exactly symmetric).
-        Kr_.col(k_).head(k_ + 1).noalias() = V_.leftCols(k_ + 1).transpose() * KV_.col(k_);
-        Kr_.row(k_).head(k_) = Kr_.col(k_).head(k_).transpose();
         ++k_;
     }
 
-    const SparseMatrix &K_, &M_;
+    const SparseMatrix& M_;
+    const BandedLDLT& factor_;
     int n_;
-    Eigen::MatrixXd V_, MV_, KV_;
-    Eigen::MatrixXd Kr_;          // V^T K V
-    Eigen::VectorXd w_, Mw_, c_;  // workspace
-    int k_ = 0;
+    Eigen::MatrixXd V_, MV_, H_;
+    Eigen::VectorXd w_, Mw_, h_;  // workspace
+    int k_ = 0, processed_ = 0;
     std::mt19937 random_{kStartSeed};
     std::normal_distribution<double> normal_;
 };
 
-// Block Krylov space of (K - sigma M)^-1 M (shift-and-invert; sigma < 0 keeps
-// the factor positive definite with rigid-body modes) with Rayleigh-Ritz of
-// (K, M): the space grows until the wanted Ritz pairs converge, at the latest
-// when it spans every DOF and Rayleigh-Ritz is exact. Blocks of two vectors
-// find both members of an exactly degenerate pair; anything the Krylov space
-// still misses, the inertia count catches.
+// The nev lowest modes by shift-and-invert block Lanczos (sigma < 0 keeps the
+// factor positive definite with rigid-body modes): the Krylov space grows
+// until the wanted Ritz pairs have relative residuals below the tolerance,
+// at the latest when it spans every DOF and Rayleigh-Ritz is exact. Blocks of
+// two vectors find both members of an exactly degenerate pair; anything the
+// space still misses, the inertia count catches.
 ProblemModes krylov_modes(const Problem& p, int nev, const NetworkSolveRequest& r) {
     const int n = p.size();
     const double sigma = -kShiftFraction * r.lambda_scale;
@@ -210,17 +232,19 @@ ProblemModes krylov_modes(const Problem& p, int nev, const NetworkSolveRequest& 
                          " (a part of the network without mass or stiffness?)");
     const double norm_K = matrix_norm(p.system.K);
     int check_at = std::min(n, kColumnsPerMode * nev + kExtraVectors);
-    KrylovBasis basis(p, std::min(n, check_at + 2 * kBlockSize));
-    basis.add(basis.random_block(kBlockSize));
+    ShiftInvertLanczos lanczos(p, factor, check_at + 2 * kBlockSize);
     for (;;) {
-        if (basis.size() >= check_at) {
-            double worst = 0;
-            ProblemModes modes = basis.ritz(nev, norm_K, worst);
-            if (basis.size() == n || worst <= r.tolerance) return modes;
-            check_at = std::min(n, basis.size() + std::max(kBlockSize, basis.size() / 4));
+        while (lanczos.processed() < check_at && lanczos.processed() < lanczos.size()) lanczos.extend();
+        const ShiftInvertLanczos::Ritz ritz = lanczos.ritz(std::min(nev, lanczos.processed()));
+        const bool exhausted = lanczos.processed() >= n;
+        if (ritz.worst_estimate <= r.tolerance || exhausted) {
+            ProblemModes modes{(sigma + ritz.theta.array().inverse()).matrix(), ritz.X};
+            // The estimate is for T; the tolerance is for (K, M): check it.
+            const Eigen::MatrixXd R = p.system.K * modes.X - (p.system.M * modes.X) * modes.lambda.asDiagonal();
+            const double worst = (R.colwise().norm().array() / (norm_K * modes.X.colwise().norm().array())).maxCoeff();
+            if (worst <= r.tolerance || exhausted) return modes;
         }
-        const int last = std::min(kBlockSize, basis.size());
-        basis.add(factor.solve(basis.last_MV(last)));
+        check_at = std::min(n, lanczos.processed() + std::max(kBlockSize, lanczos.processed() / 4));
     }
 }
 
@@ -362,6 +386,7 @@ NetworkModes solve_network_modes(const BeamNetwork& net, const NetworkSolveReque
     if (!out.verification.complete && !r.force_dense) {  // the one retry: every problem densely
         NetworkSolveRequest dense = r;
         dense.force_dense = true;
+        out.dense_retry = true;
         solution = solve_problems(problems, dense);
         all = merge(problems, solution);
         out.verification = verify(problems, solution, all, r);

@@ -50,6 +50,7 @@ struct NetworkModes {
     long n_free_dofs = 0;
     int n_problems = 0;            // independent problems solved
     bool mirrored_planes = false;  // y-z bending taken from x-z
+    bool dense_retry = false;      // the inertia count disagreed once: solved again densely
 };
 
 // Throws SolveError when a problem cannot be factored (a free DOF without mass
