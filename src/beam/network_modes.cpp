@@ -105,13 +105,28 @@ double matrix_norm(const SparseMatrix& A) {  // max column sum = max row sum (sy
     return norm;
 }
 
-ProblemModes dense_modes(const Problem& p, int nev) {
-    const Eigen::MatrixXd K(p.system.K), M(p.system.M);
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(K, M);
+// The dense solver works on the inverted pencil M x = mu (K - sigma M) x,
+// mu = 1 / (lambda - sigma): solving (K, M) directly would give the lowest
+// eigenvalues only to within rounding of the highest (eps lambda_max, which
+// stiff steel chucks beside a paperboard core push to 1e-6 of the lowest);
+// inverted, the lowest modes are the largest mu and keep their relative accuracy.
+ProblemModes dense_modes(const Problem& p, int nev, double sigma) {
+    // Equilibrated first (unit diagonal of A): steel next to paperboard
+    // spreads the diagonal over many decades, which the Cholesky reduction
+    // would otherwise pay for in accuracy.
+    const SparseMatrix A_sparse = p.shifted(sigma);
+    const Eigen::VectorXd scale = A_sparse.diagonal().cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd M = scale.asDiagonal() * Eigen::MatrixXd(p.system.M) * scale.asDiagonal();
+    const Eigen::MatrixXd A = scale.asDiagonal() * Eigen::MatrixXd(A_sparse) * scale.asDiagonal();
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(M, A);
     if (solver.info() != Eigen::Success)
         throw SolveError("beam model: the dense eigensolver failed on a " + std::to_string(p.size()) +
                          "-DOF problem (is every free DOF given mass?)");
-    return {solver.eigenvalues().head(nev), solver.eigenvectors().leftCols(nev)};
+    // Largest mu first; the vectors come A-normalised, x^T M x = mu x^T A x = mu.
+    const Eigen::VectorXd mu = solver.eigenvalues().tail(nev).reverse();
+    const Eigen::MatrixXd X = scale.asDiagonal() * solver.eigenvectors().rightCols(nev).rowwise().reverse() *
+                              mu.cwiseSqrt().cwiseInverse().asDiagonal();
+    return {(sigma + mu.array().inverse()).matrix(), X};
 }
 
 // Block Lanczos with full reorthogonalisation on the shift-and-invert
@@ -252,7 +267,7 @@ ProblemModes lowest_modes(const Problem& p, int nev, const NetworkSolveRequest& 
     if (nev <= 0) return {Eigen::VectorXd(0), Eigen::MatrixXd(p.size(), 0)};
     const bool dense = r.force_dense || p.size() <= kDenseLimit ||
                        2 * (kColumnsPerMode * nev + kExtraVectors) >= p.size();
-    return dense ? dense_modes(p, nev) : krylov_modes(p, nev, r);
+    return dense ? dense_modes(p, nev, -kShiftFraction * r.lambda_scale) : krylov_modes(p, nev, r);
 }
 
 // How many of a problem's eigenvalues lie below lambda; all of them when the
