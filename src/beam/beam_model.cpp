@@ -378,6 +378,7 @@ BeamModelResult solve_beam_model(const Scene& scene, const BeamModelOptions& opt
     out.verification = solved.verification;
     out.n_problems = solved.n_problems;
     out.mirrored_planes = solved.mirrored_planes;
+    out.dense_retry = solved.dense_retry;
     out.timing_s.solve = stage.lap();
 
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {

@@ -62,6 +62,7 @@ struct BeamModelResult {
     double lambda_scale = 0;  // (2 pi f)^2 of the Euler-Bernoulli beam over beam_span
     int n_problems = 0;       // independent eigenproblems (network_modes.hpp)
     bool mirrored_planes = false;
+    bool dense_retry = false;  // the inertia check failed once and every problem was solved densely
     // What this model assumed beyond the scene (e.g. how an elastic bearing
     // holds the shaft axially), for the run summary.
     std::vector<std::string> assumptions;
