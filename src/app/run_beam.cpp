@@ -35,7 +35,7 @@ double mass_from_dimensions(const Scene& s) {
 
 ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
     return {"beam",
-            "timoshenko2",
+            "timoshenko3",
             beam.n_dofs,
             beam.network.n_nodes(),
             beam.network.n_elements(),

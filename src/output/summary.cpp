@@ -42,7 +42,8 @@ toml::table scene_table(const Scene& s) {
     toml::array clamps;
     for (const auto& c : s.supports.clamps)
         clamps.push_back(toml::table{{"name", c.name}, {"z_start", c.z_start}, {"z_end", c.z_end}});
-    t.insert("supports", toml::table{{"type", s.supports.kind == SupportKind::free ? "free" : "clamped"},
+    const char* support_types[] = {"free", "clamped", "chucks"};  // SupportKind order
+    t.insert("supports", toml::table{{"type", support_types[static_cast<int>(s.supports.kind)]},
                                      {"clamps", clamps}});
     toml::table mesh{{"level", s.mesh.level},         {"through_wall", s.mesh.n_wall},
                      {"through_rest_paper", s.mesh.n_rest_paper}, {"around", s.mesh.n_around},
