@@ -4,7 +4,6 @@
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 #include "eigensolve/rigid_modes.hpp"
-#include "scene/units.hpp"
 
 #include <algorithm>
 #include <array>
