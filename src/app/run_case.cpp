@@ -3,7 +3,7 @@
 #include "app/run_case.hpp"
 
 #include "app/rigid_comparison.hpp"
-
+#include "app/run_beam.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
@@ -190,6 +190,8 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_fe) {
     return k;
 }
 
+}  // namespace
+
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
     BeamComparison b;
     const BeamSection section = beam_section(scene);
@@ -209,6 +211,8 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
         }
     return b;
 }
+
+namespace {
 
 void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir) {
     ResultsFolder folder(dir);
@@ -236,6 +240,7 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene_in, const RunOptions& options) {
+    if (scene_in.model == "beam") return run_beam_scene(std::move(scene_in), options);  // app/run_beam.cpp
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;

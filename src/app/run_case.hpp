@@ -27,6 +27,11 @@ struct RunOptions {
 RunReport run_case(const RunOptions& options);
 
 // Steps 2 onwards for a scene already in memory (options.case_file unused).
+// A scene with model = "beam" goes to run_beam_scene (app/run_beam.hpp).
 RunReport run_scene(Scene scene, const RunOptions& options);
+
+// The scene's first bending mode in `modes` against Euler-Bernoulli and
+// Timoshenko beam theory over beam_span (any model level).
+BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes);
 
 }  // namespace coremodal

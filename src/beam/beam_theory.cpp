@@ -1,5 +1,6 @@
 #include "beam/beam_theory.hpp"
 
+#include "beam/timoshenko_element.hpp"
 #include "common/error.hpp"
 
 #include <Eigen/Dense>
@@ -22,17 +23,29 @@ double cowper_hollow_circle(double nu, double m) {
     return 6 * (1 + nu) * q / ((7 + 6 * nu) * q + (20 + 12 * nu) * m * m);
 }
 
-BeamSection beam_section(const Scene& scene) {
+BeamSection& BeamSection::operator+=(const BeamSection& layer) {
+    EI += layer.EI, rho_A += layer.rho_A, rho_I += layer.rho_I, kappa_GA += layer.kappa_GA;
+    EA += layer.EA, GJ += layer.GJ, rho_J += layer.rho_J;
+    return *this;
+}
+
+BeamSection tube_beam_section(double d_out, double d_in, const OrthotropicMaterial& mat) {
+    const double A = ring_area(d_out, d_in), I = ring_inertia(d_out, d_in);
     BeamSection s;
-    auto add = [&s](double d_out, double d_in, const OrthotropicMaterial& mat) {
-        const double A = ring_area(d_out, d_in), I = ring_inertia(d_out, d_in);
-        s.EI += mat.E_z * I;
-        s.rho_A += mat.density * A;
-        s.rho_I += mat.density * I;
-        s.kappa_GA += cowper_hollow_circle(mat.nu_thetaz, d_in / d_out) * mat.G_thetaz * A;
-    };
-    add(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material);
-    if (scene.rest_paper) add(scene.rest_paper->outer_diameter, scene.core.outer_diameter, scene.rest_paper->material);
+    s.EI = mat.E_z * I;
+    s.rho_A = mat.density * A;
+    s.rho_I = mat.density * I;
+    s.kappa_GA = cowper_hollow_circle(mat.nu_thetaz, d_in / d_out) * mat.G_thetaz * A;
+    s.EA = mat.E_z * A;
+    s.GJ = mat.G_thetaz * 2 * I;
+    s.rho_J = mat.density * 2 * I;
+    return s;
+}
+
+BeamSection beam_section(const Scene& scene) {
+    BeamSection s = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material);
+    if (scene.rest_paper)
+        s += tube_beam_section(scene.rest_paper->outer_diameter, scene.core.outer_diameter, scene.rest_paper->material);
     return s;
 }
 
@@ -41,41 +54,15 @@ double euler_bernoulli_first_bending_hz(const BeamSection& s, double L) {
 }
 
 std::vector<double> timoshenko_bending_hz(const BeamSection& s, double length, BeamEnds ends, int n_modes) {
-    // Unknowns per node: deflection w and section rotation phi.
-    // Weak form: int EI phi'^2 + kGA (w' - phi)^2 dx  and  int rhoA w^2 + rhoI phi^2 dx.
+    // Unknowns per node: deflection w and section rotation phi; the plane
+    // element of timoshenko_element.hpp.
     const int n_el = kTimoshenkoElements, n_nodes = 2 * n_el + 1, n = 2 * n_nodes;
-    const double h = length / n_el;
+    const TimoshenkoElement element{length / n_el, s};
+    const PlaneMatrix Ke = plane_bending_stiffness(element), Me = plane_bending_mass(element);
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n), M = Eigen::MatrixXd::Zero(n, n);
-    auto shape = [](double xi, double N[3], double dN[3]) {  // on [-1, 1], nodes -1, 0, 1
-        N[0] = 0.5 * xi * (xi - 1), N[1] = 1 - xi * xi, N[2] = 0.5 * xi * (xi + 1);
-        dN[0] = xi - 0.5, dN[1] = -2 * xi, dN[2] = xi + 0.5;
-    };
-    const double g3[3] = {-std::sqrt(0.6), 0, std::sqrt(0.6)}, w3[3] = {5. / 9, 8. / 9, 5. / 9};
-    const double g2[2] = {-1 / std::sqrt(3.), 1 / std::sqrt(3.)}, w2[2] = {1, 1};
-    const double J = h / 2;
     for (int e = 0; e < n_el; ++e) {
-        int dof[6];
-        for (int a = 0; a < 3; ++a) dof[2 * a] = 2 * (2 * e + a), dof[2 * a + 1] = 2 * (2 * e + a) + 1;
-        Eigen::Matrix<double, 6, 6> Ke = Eigen::Matrix<double, 6, 6>::Zero(), Me = Ke;
-        double N[3], dN[3];
-        for (int q = 0; q < 3; ++q) {  // bending and mass: full integration
-            shape(g3[q], N, dN);
-            for (int a = 0; a < 3; ++a)
-                for (int b = 0; b < 3; ++b) {
-                    Ke(2 * a + 1, 2 * b + 1) += s.EI * dN[a] * dN[b] / (J * J) * J * w3[q];
-                    Me(2 * a, 2 * b) += s.rho_A * N[a] * N[b] * J * w3[q];
-                    Me(2 * a + 1, 2 * b + 1) += s.rho_I * N[a] * N[b] * J * w3[q];
-                }
-        }
-        for (int q = 0; q < 2; ++q) {  // shear: reduced integration against locking
-            shape(g2[q], N, dN);
-            double B[6];  // gamma = w' - phi
-            for (int a = 0; a < 3; ++a) B[2 * a] = dN[a] / J, B[2 * a + 1] = -N[a];
-            for (int i = 0; i < 6; ++i)
-                for (int j = 0; j < 6; ++j) Ke(i, j) += s.kappa_GA * B[i] * B[j] * J * w2[q];
-        }
-        for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 6; ++j) K(dof[i], dof[j]) += Ke(i, j), M(dof[i], dof[j]) += Me(i, j);
+        K.block<6, 6>(4 * e, 4 * e) += Ke;
+        M.block<6, 6>(4 * e, 4 * e) += Me;
     }
     std::vector<int> keep;
     for (int i = 0; i < n; ++i) {

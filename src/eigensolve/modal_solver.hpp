@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/petsc_handle.hpp"
+#include "eigensolve/rigid_modes.hpp"
 #include "modes/mode_set.hpp"
 
 #include <functional>
@@ -12,11 +13,6 @@
 #include <vector>
 
 namespace coremodal {
-
-// |lambda| below this fraction of SolveRequest::lambda_scale: a rigid-body
-// mode. Rigid modes come out at |lambda| ~ 1e-9 of the first elastic
-// eigenvalue; the first elastic mode is never below ~1e-2 of a beam estimate.
-constexpr double kRigidEigenvalueFraction = 1e-6;
 
 struct SolveRequest {
     int n_modes = 20;                   // lowest modes wanted (if no band)

@@ -23,7 +23,6 @@
 namespace coremodal {
 
 constexpr int kMaxWaveNumber = 8;
-constexpr double kMinDominantShare = 0.5;
 
 // Geometric data of the nodes reused for every mode of a mesh.
 struct ModeClassifier {

@@ -6,6 +6,9 @@
 
 namespace coremodal {
 
+// A mode is "mixed" unless one family holds at least this share of its kinetic energy.
+constexpr double kMinDominantShare = 0.5;
+
 // One word per mode: rigid, bending, torsion, axial, breathing, ovalling, mixed.
 struct ModeLabel {
     std::string type = "mixed";

@@ -84,7 +84,7 @@ toml::table scene_table(const Scene& s) {
                      {"outer_diameter", s.core.outer_diameter},
                      {"length", s.core.length},
                      {"material", material_table(s.core.material)}};
-    toml::table t{{"name", s.name}, {"source_file", s.source_file}, {"core", core}};
+    toml::table t{{"name", s.name}, {"source_file", s.source_file}, {"model", s.model}, {"core", core}};
     if (s.rest_paper)
         t.insert("rest_paper", toml::table{{"outer_diameter", s.rest_paper->outer_diameter},
                                            {"material", material_table(s.rest_paper->material)}});

@@ -43,6 +43,7 @@ constexpr int kAroundMultiple = 4;
 // Long values are cut in messages: the message must point, not reproduce.
 constexpr std::size_t kMaxShownChars = 60;
 
+const std::vector<std::string_view> kModelLevels = {"solid", "beam"};
 const std::vector<std::string_view> kSupportTypes = {"free", "clamped", "chucks"};
 const std::vector<std::string_view> kInterfaceKinds = {"spring", "bonded"};
 const std::vector<std::string_view> kBearingTypes = {"rigid", "elastic"};
@@ -209,6 +210,7 @@ public:
         scene.source_file = path_;
         scene.name = text(top, "name").value_or(fs::path(path_).stem().string());
         scene.description = text(top, "description").value_or("");
+        scene.model = choice(top, "model", kModelLevels).value_or(scene.model);
         scene.core = read_core(top, scene);
         scene.rest_paper = read_rest_paper(top, scene);
         scene.supports = read_supports(top, scene);

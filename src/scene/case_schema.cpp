@@ -42,6 +42,7 @@ const std::vector<KeySpec>& case_schema() {
     static const std::vector<KeySpec> schema = {
         plain_key("", "name", ValueKind::text),
         plain_key("", "description", ValueKind::text),
+        plain_key("", "model", ValueKind::text),
         plain_key("", "core", ValueKind::table),
         plain_key("", "rest_paper", ValueKind::table),
         plain_key("", "supports", ValueKind::table),

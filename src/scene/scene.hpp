@@ -111,6 +111,7 @@ struct Scene {
     std::string name;         // case name (file stem unless given)
     std::string source_file;  // path of the case file, as given
     std::string description;  // free text from the case file, "" when not given
+    std::string model = "solid";  // model level: "solid" (3D FE) or "beam" (Timoshenko beam network)
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;
     SupportSpec supports;

@@ -1,0 +1,45 @@
+// The top-level `model` key: which model level runs the scene.
+#include "scene/case_file.hpp"
+
+#include "common/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace coremodal;
+
+namespace {
+
+const std::string kCore =
+    "[core]\n"
+    "inner_diameter = \"76 mm\"\n"
+    "outer_diameter = \"106 mm\"\n"
+    "length = \"1.5 m\"\n";
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_case_text(text, "cases/x.toml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("The model level is solid unless the case file says beam", "[scene][case_file][model]") {
+    CHECK(parse_case_text(kCore, "cases/x.toml").model == "solid");
+    CHECK(parse_case_text("model = \"solid\"\n" + kCore, "cases/x.toml").model == "solid");
+    CHECK(parse_case_text("model = \"beam\"\n" + kCore, "cases/x.toml").model == "beam");
+}
+
+TEST_CASE("An unknown model level names file, line, key and the levels there are", "[scene][case_file][model]") {
+    CHECK(error_of("model = \"beem\"\n" + kCore) ==
+          "cases/x.toml:1:9: model = \"beem\": unknown value; did you mean \"beam\"?; expected one of solid, beam");
+    CHECK(error_of("model = \"shell\"\n" + kCore) ==
+          "cases/x.toml:1:9: model = \"shell\": unknown value; expected one of solid, beam");
+    CHECK(error_of("model = 1\n" + kCore) == "cases/x.toml:1:9: model = 1: expected a string in quotes");
+    CHECK(error_of("modle = \"beam\"\n" + kCore) ==
+          "cases/x.toml:1:1: unknown key 'modle' at the top level; did you mean 'model'?");
+}
