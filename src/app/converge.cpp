@@ -61,6 +61,35 @@ UnitMesh parse_unit(const std::string& text, const std::string& option) {
     return {v[0], v[1], v[2], v[3]};
 }
 
+long estimate_dofs(const MeshSpec& m, bool rest_paper) {
+    const long r = m.n_wall + (rest_paper ? m.n_rest_paper : 0), t = m.n_around, z = m.n_along;
+    if (m.element == "hex27") return 3 * (2 * r + 1) * (2 * t) * (2 * z + 1);
+    // Corner nodes, then mid-edge nodes on radial, circumferential and axial edges.
+    const long nodes = t * ((r + 1) * (z + 1) + r * (z + 1) + (r + 1) * (z + 1) + (r + 1) * z);
+    return 3 * nodes;
+}
+
+UnitMesh fit_unit_to_budget(const Scene& scene, UnitMesh unit, int first, int levels, long max_dofs,
+                            std::string& note) {
+    note.clear();
+    if (max_dofs <= 0 || scene.mesh.file) return unit;
+    const bool paper = scene.rest_paper.has_value();
+    auto finest_dofs = [&](const UnitMesh& u) {
+        return estimate_dofs(refinement_ladder(scene, u, first, levels).back().mesh, paper);
+    };
+    const int asked = unit.n_along;
+    while (finest_dofs(unit) > max_dofs && unit.n_along > kMinUnitElementsAlong) --unit.n_along;
+    if (unit.n_along != asked)
+        note = "the unit's elements along were lowered from " + std::to_string(asked) + " to " +
+               std::to_string(unit.n_along) + " so that the finest level stays within --max-dofs " +
+               std::to_string(max_dofs) + " (estimated " + std::to_string(finest_dofs(unit)) + " DOFs)";
+    if (finest_dofs(unit) > max_dofs)
+        note += std::string(note.empty() ? "" : "; ") + "the finest level (estimated " +
+                std::to_string(finest_dofs(unit)) + " DOFs) exceeds --max-dofs " + std::to_string(max_dofs) +
+                " even with the fewest elements along; use fewer --levels or a smaller --unit";
+    return unit;
+}
+
 std::vector<MeshStep> refinement_ladder(const Scene& scene, const UnitMesh& unit, int first, int levels) {
     if (scene.mesh.file)
         throw InputError(scene.source_file + ": [mesh] file = " + *scene.mesh.file +
@@ -122,6 +151,9 @@ LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& ru
     };
     r.median_s = {med(&Timing::mesh), med(&Timing::assemble), med(&Timing::factor_and_solve),
                   med(&Timing::classify), med(&Timing::total)};
+    std::vector<double> cpu;
+    for (const auto& run : runs) cpu.push_back(run.cpu_s);
+    r.median_cpu_s = median(cpu);
     for (const auto& run : runs) {
         r.peak_memory_mb = std::max(r.peak_memory_mb, run.peak_memory_mb);
         r.complete = r.complete && run.complete;
@@ -410,7 +442,7 @@ std::string role_title(const std::string& role) {
 
 std::string converge_csv(const ConvergeStudy& study) {
     std::ostringstream s;
-    s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,peak_memory_mb,"
+    s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,cpu_s,peak_memory_mb,"
          "mode,role,type,n,m,occurrence,frequency_hz,extrapolated_hz,error_estimate_hz,observed_order,asymptotic,"
          "relative_error\n";
     for (const auto& model : study.models)
@@ -421,7 +453,8 @@ std::string converge_csv(const ConvergeStudy& study) {
                 s << model.model << ',' << l.step.k << ',' << l.step.counts << ','
                   << fmt("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << fmt("%.4f", t.mesh) << ','
                   << fmt("%.4f", t.assemble) << ',' << fmt("%.4f", t.factor_and_solve) << ','
-                  << fmt("%.4f", t.classify) << ',' << fmt("%.4f", t.total) << ',' << fmt("%.1f", l.peak_memory_mb)
+                  << fmt("%.4f", t.classify) << ',' << fmt("%.4f", t.total) << ',' << fmt("%.4f", l.median_cpu_s)
+                  << ',' << fmt("%.1f", l.peak_memory_mb)
                   << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
                   << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
                   << opt(mode.frequency_hz[i]) << ',';
@@ -450,6 +483,7 @@ std::string converge_json(const ConvergeStudy& study) {
                                          {"n_dofs", l.n_dofs},
                                          {"runs", l.runs},
                                          {"timing_s", timing_table(l.median_s)},
+                                         {"cpu_s", l.median_cpu_s},
                                          {"peak_memory_mb", l.peak_memory_mb},
                                          {"complete", l.complete},
                                          {"repeat_spread", l.max_repeat_spread}});
@@ -504,6 +538,9 @@ std::string converge_json(const ConvergeStudy& study) {
                      {"repeats", study.repeats},
                      {"repeat_limit_s", study.repeat_limit_s},
                      {"total_time_s", study.total_time_s},
+                     {"ladder_time_s", study.ladder_time_s},
+                     {"load_average", toml::array{study.load_start, study.load_end}},
+                     {"n_cores", study.n_cores},
                      {"models", models},
                      {"checks", checks},
                      {"notes", notes}};
@@ -518,10 +555,10 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
     const TrackedMode* f1 = role_mode(m, "f1");
     const TrackedMode* oval = role_mode(m, "ovalling");
     s << "| k | mesh (wall/paper/around/along) | DOFs | runs | mesh [s] | assemble [s] | factor+solve [s] | "
-         "total [s] | peak memory [MiB] |";
+         "total [s] | CPU [s] | peak memory [MiB] |";
     if (f1) s << " f1 [Hz] | error f1 |";
     if (oval) s << " ovalling [Hz] | error ovalling |";
-    s << "\n|---:|---|---:|---:|---:|---:|---:|---:|---:|";
+    s << "\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|";
     if (f1) s << "---:|---:|";
     if (oval) s << "---:|---:|";
     s << "\n";
@@ -530,8 +567,8 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
         const Timing& t = l.median_s;
         s << "| " << l.step.k << " | " << l.step.counts << " | " << l.n_dofs
           << " | " << l.runs << " | " << seconds(t.mesh) << " | " << seconds(t.assemble) << " | "
-          << seconds(t.factor_and_solve) << " | " << seconds(t.total) << " | " << fmt("%.0f", l.peak_memory_mb)
-          << " |";
+          << seconds(t.factor_and_solve) << " | " << seconds(t.total) << " | " << seconds(l.median_cpu_s) << " | "
+          << fmt("%.0f", l.peak_memory_mb) << " |";
         for (const TrackedMode* t : {f1, oval}) {
             if (!t) continue;
             s << ' ' << opt(t->frequency_hz[i], "%.4f") << " | "
@@ -605,7 +642,11 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
       << study.repeats << " runs per level (levels whose first run took longer than "
       << fmt("%.0f", study.repeat_limit_s) << " s run once). Model levels: ";
     for (std::size_t i = 0; i < study.models.size(); ++i) s << (i ? ", " : "") << study.models[i].model;
-    s << ". Whole study: " << seconds(study.total_time_s) << " s.\n";
+    s << ". Ladders: " << seconds(study.ladder_time_s) << " s; whole study (with named-level checks): "
+      << seconds(study.total_time_s) << " s on " << study.n_cores
+      << " cores, load average " << fmt("%.1f", study.load_start) << " at the start and "
+      << fmt("%.1f", study.load_end) << " at the end (a load above the number of cores means other processes "
+      << "shared the machine and the wall times are longer than on an idle one; CPU time is less affected).\n";
     for (const auto& m : study.models) {
         s << "\n## Model level: " << m.model << "\n\n" << m.ladder_note << "\n\n";
         markdown_levels(s, m);

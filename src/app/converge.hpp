@@ -57,6 +57,26 @@ struct MeshStep {
     std::string label;   // "k=3 3/3/24/63"
 };
 
+// DOFs of a generated tube mesh with these counts, before clamped nodes are
+// eliminated (an upper bound within a few per cent): hex20 has corner nodes
+// and mid-edge nodes, hex27 every node of the doubled grid.
+long estimate_dofs(const MeshSpec& mesh, bool rest_paper);
+
+// Fewest elements along the whole core in a unit mesh (level k = 1) that
+// fit_unit_to_budget goes down to. Every axial segment keeps at least two
+// elements whatever this number (the mesher's floor), so it bounds only the
+// free spans; the finest level has k times as many.
+inline constexpr int kMinUnitElementsAlong = 4;
+
+// The cost bound of a study: the unit's elements along are lowered (to no
+// fewer than kMinUnitElementsAlong) until the finest level's estimated DOFs are
+// within max_dofs. Along is the direction to give up: the free span is graded
+// towards the clamp edges and holds smooth waves, while the singular clamp
+// edges keep their resolution through the per-segment minimum. Returns the
+// unit used; `note` says what was changed ("" if nothing). max_dofs <= 0: no bound.
+UnitMesh fit_unit_to_budget(const Scene& scene, UnitMesh unit, int first, int levels, long max_dofs,
+                            std::string& note);
+
 // Levels k = first, first+1, ..., first+levels-1 of the unit mesh on the
 // scene's section: each axial segment gets exactly k times its unit count.
 // Throws InputError for a user mesh file (nothing to refine) or an unusable unit.
@@ -68,6 +88,8 @@ std::vector<MeshStep> refinement_ladder(const Scene& scene, const UnitMesh& unit
 struct LevelRun {
     long n_dofs = 0;
     Timing timing_s;
+    double cpu_s = 0;  // processor time of the run (user + system, this process, rank 0):
+                       // on a shared machine less disturbed by other processes than wall time
     double peak_memory_mb = 0;
     std::vector<Mode> modes;  // frequency order; shapes not kept
     bool complete = true;     // the solver proved no mode missing
@@ -79,6 +101,7 @@ struct LevelResult {
     long n_dofs = 0;
     int runs = 0;
     Timing median_s;
+    double median_cpu_s = 0;
     double peak_memory_mb = 0;
     std::vector<Mode> modes;  // of the first run (every run solves the same mesh)
     bool complete = true;
@@ -217,6 +240,11 @@ struct ConvergeStudy {
     std::vector<NamedLevelCheck> checks;  // solid model only
     std::vector<std::string> notes;
     double total_time_s = 0;
+    double ladder_time_s = 0;  // the ladders alone (total less the named-level checks)
+    // The machine's 1-minute load average at the start and the end: timings
+    // on a shared machine include waiting for other processes.
+    double load_start = 0, load_end = 0;
+    int n_cores = 0;
 };
 
 ModelStudy analyse_levels(std::string model, std::string ladder_note, std::vector<LevelResult> levels);
@@ -230,6 +258,11 @@ std::optional<std::size_t> first_level_within(const TrackedMode& mode, double ta
 
 // ---- running it (app/converge_command.cpp: needs PETSc) ---------------------
 
+// The finest level's default DOF bound: ~190 k DOFs solve in about 85 s on
+// the 2-core reference machine (docs/performance.md), so that a four-level
+// study of the 4.32 m rest roll fits in a few minutes.
+inline constexpr long kDefaultMaxDofs = 200000;
+
 struct ConvergeOptions {
     std::string case_file;
     std::optional<std::string> output_dir;  // default results/<case name>-converge
@@ -238,6 +271,7 @@ struct ConvergeOptions {
     std::optional<std::string> unit;        // "W/P/A/Z"; default: default_unit(scene)
     int repeats = 3;                        // runs per level; the median time is reported
     double repeat_limit_s = 30;             // a level whose first run takes longer runs once
+    long max_dofs = kDefaultMaxDofs;        // bound on the finest level (fit_unit_to_budget); 0: none
     std::optional<int> n_modes;             // modes per run; default: the case's, raised
                                             // until the coarsest level shows an ovalling mode
     std::vector<std::string> check_levels;  // named mesh levels to compare with f0

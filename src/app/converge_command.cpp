@@ -16,6 +16,7 @@
 
 #include <malloc.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -25,6 +26,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 extern char** environ;
 
@@ -39,6 +41,20 @@ std::string fmt(const char* format, double v) {
 
 // ---- 1. model levels and their ladders ---------------------------------------
 
+// Processor time of this process so far (user + system, all its threads).
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return s(usage.ru_utime) + s(usage.ru_stime);
+}
+
+// The 1-minute load average (0 when unknown).
+double load_average() {
+    double load[1] = {0};
+    return getloadavg(load, 1) == 1 ? load[0] : 0.0;
+}
+
 // One run of the solid model on one mesh of the ladder. The peak memory is
 // the process's peak during this run (summed over ranks); freed memory is
 // handed back to the system afterwards so that a level does not inherit the
@@ -51,10 +67,12 @@ LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
     options.quiet = true;
     options.write_results = false;
     const bool reset = reset_peak_memory();
+    const double cpu_start = cpu_seconds();
     RunReport report = run_scene(std::move(s), options);
     LevelRun run;
     run.n_dofs = report.model.n_dofs;
     run.timing_s = report.timing_s;
+    run.cpu_s = cpu_seconds() - cpu_start;
     double peak = reset ? peak_memory_since_reset_mb() : peak_memory_mb();
     MPI_Allreduce(&peak, &run.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     run.complete = report.modes.verification.complete;
@@ -65,16 +83,31 @@ LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
 }
 
 ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes) {
-    const UnitMesh unit = o.unit ? parse_unit(*o.unit, "--unit") : default_unit(scene);
+    std::string budget_note;
+    UnitMesh unit;
+    if (o.unit) {
+        unit = parse_unit(*o.unit, "--unit");  // the user's unit is taken as given
+    } else {
+        unit = fit_unit_to_budget(scene, default_unit(scene), o.first, o.levels, o.max_dofs, budget_note);
+    }
     ModelLadder ladder;
     ladder.model = "solid";
     ladder.steps = refinement_ladder(scene, unit, o.first, o.levels);
+    const long finest = estimate_dofs(ladder.steps.back().mesh, scene.rest_paper.has_value());
+    if (o.unit && o.max_dofs > 0 && finest > o.max_dofs)
+        budget_note = "the finest level (estimated " + std::to_string(finest) + " DOFs) exceeds --max-dofs " +
+                      std::to_string(o.max_dofs) + "; --unit was taken as given";
+    // The unit's counts per axial segment, as the ladder multiplies them.
+    std::string segments;
+    for (int n : ladder.steps.front().mesh.along_per_segment)
+        segments += (segments.empty() ? "" : "+") + std::to_string(n / ladder.steps.front().k);
     const std::string paper = scene.rest_paper ? std::to_string(unit.n_rest_paper) : std::string("-");
     ladder.note = "Ladder: level k has k times the elements of the unit mesh " + std::to_string(unit.n_wall) + "/" +
-                  paper + "/" + std::to_string(unit.n_around) + "/" + std::to_string(unit.n_along) +
-                  " (through the wall / through the rest paper / around / along) in every direction and in every "
-                  "axial segment, so h = 1/k exactly (ratios between levels k+1/k; the graded segments keep "
-                  "their size ratio). Hexahedra " + scene.mesh.element + ".";
+                  paper + "/" + std::to_string(unit.n_around) + "/" + std::to_string(ladder.steps.front().mesh.n_along /
+                  ladder.steps.front().k) + " (through the wall / through the rest paper / around / along; along "
+                  "per axial segment " + segments + ") in every direction and in every axial segment, so h = 1/k "
+                  "exactly (ratios (k+1)/k between levels; graded segments keep their size ratio). Hexahedra " +
+                  scene.mesh.element + (budget_note.empty() ? "." : "; " + budget_note + ".");
     ladder.run_once = [&scene, &n_modes](const MeshStep& step) { return run_solid_once(scene, step.mesh, n_modes); };
     return ladder;
 }
@@ -277,7 +310,8 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "\n";
             }
     }
-    out << "\nwhole study " << fmt("%.1f", study.total_time_s) << " s" << std::endl;
+    out << "\nladders " << fmt("%.1f", study.ladder_time_s) << " s, whole study " << fmt("%.1f", study.total_time_s)
+        << " s" << std::endl;
 }
 
 }  // namespace
@@ -296,6 +330,8 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     // 1. The scene and its model levels.
     const Scene scene = parse_case_file(o.case_file);
     ConvergeStudy study;
+    study.load_start = load_average();
+    study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
     study.case_name = scene.name;
     study.source_file = o.case_file;
     study.repeats = o.repeats;
@@ -326,6 +362,8 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
         study.models.push_back(analyse_levels(ladder.model, ladder.note, std::move(levels)));
     }
 
+    study.ladder_time_s = clock.seconds();
+
     // 4. Named mesh levels, for choosing the default.
     for (const auto& name : o.check_levels) study.checks.push_back(run_named_level(scene, name, n_modes, o, progress));
 
@@ -338,6 +376,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
                                       fmt("%.1e", l.max_repeat_spread) + " in frequency");
         }
     study.total_time_s = clock.seconds();
+    study.load_end = load_average();
 
     // 5. Write (rank 0): numbers first, then the picture, then the report.
     if (root && o.write_results) {
@@ -374,6 +413,11 @@ Command add_converge_command(CLI::App& app) {
         ->capture_default_str()
         ->check(CLI::Range(1, 100));
     cmd->add_option("--repeat-limit", options->repeat_limit_s, "seconds: a level whose first run is slower runs once")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--max-dofs", options->max_dofs,
+                    "bound on the finest level's DOFs: the default unit's elements along are lowered to stay "
+                    "within it (0: no bound; an explicit --unit is taken as given)")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--modes", *n_modes,

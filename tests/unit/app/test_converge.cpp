@@ -320,3 +320,34 @@ TEST_CASE("The report files hold every level and tracked mode", "[converge]") {
     CHECK(study.models[0].time_exponent);
     CHECK(*study.models[0].time_exponent == Approx(1.0).epsilon(1e-9));  // time ~ k^3, DOFs ~ k^3
 }
+
+TEST_CASE("The DOF estimate of a tube mesh and the study's cost bound", "[converge]") {
+    const Scene rest_roll = parse_case_file(cases("03-rest-roll-150x15.8-4320.toml"));
+    MeshSpec m = rest_roll.mesh;
+    m.n_wall = 4, m.n_rest_paper = 4, m.n_around = 32, m.n_along = 104;
+    // Measured: 346,944 DOFs after eliminating the clamped nodes (docs/accuracy-vs-cost.md).
+    CHECK(estimate_dofs(m, true) == 351936);
+    CHECK(estimate_dofs(m, true) > 346944);
+    CHECK(estimate_dofs(m, true) < 1.02 * 346944);
+
+    SECTION("A long rest roll's unit is shortened along until the finest level fits") {
+        std::string note;
+        const UnitMesh unit = fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 200000, note);
+        CHECK(unit.n_along < default_unit(rest_roll).n_along);
+        CHECK(estimate_dofs(refinement_ladder(rest_roll, unit, 1, 4).back().mesh, true) <= 200000);
+        CHECK_THAT(note, Catch::Contains("lowered from 21 to"));
+    }
+    SECTION("A scene that fits keeps its unit; no bound keeps every unit") {
+        const Scene free_core = parse_case_file(cases("01-iso-free-free-76x15.toml"));
+        std::string note;
+        CHECK(fit_unit_to_budget(free_core, default_unit(free_core), 1, 4, 200000, note).n_along ==
+              default_unit(free_core).n_along);
+        CHECK(note.empty());
+        CHECK(fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 0, note).n_along == 21);
+    }
+    SECTION("A bound that cannot be met says so") {
+        std::string note;
+        fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 1000, note);
+        CHECK_THAT(note, Catch::Contains("exceeds --max-dofs 1000"));
+    }
+}
