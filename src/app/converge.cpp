@@ -382,6 +382,23 @@ std::optional<std::size_t> first_level_within(const TrackedMode& mode, double ta
     return std::nullopt;
 }
 
+std::optional<TargetPrediction> predict_level_for(const ModelStudy& model, const TrackedMode& mode, double target) {
+    if (!mode.richardson || !mode.richardson->extrapolated || !mode.richardson->asymptotic || model.levels.empty())
+        return std::nullopt;
+    const Richardson& r = *mode.richardson;
+    const double f0 = std::abs(r.f0);
+    const double room = target - r.f0_uncertainty.value_or(0.0) / f0;
+    const double finest_error = r.error_estimate / f0;
+    if (room <= 0 || finest_error <= 0) return std::nullopt;
+    const LevelResult& finest = model.levels.back();
+    TargetPrediction p;
+    p.k = finest.step.k * std::pow(finest_error / room, 1.0 / r.order);
+    p.n_dofs = double(finest.n_dofs) * std::pow(p.k / finest.step.k, 3);
+    if (model.time_exponent)
+        p.time_s = finest.median_s.total * std::pow(p.n_dofs / double(finest.n_dofs), *model.time_exponent);
+    return p;
+}
+
 // ---- writers ----------------------------------------------------------------
 
 namespace {
@@ -609,12 +626,16 @@ void markdown_targets(std::ostringstream& s, const ModelStudy& m) {
             if (i) {
                 const LevelResult& l = m.levels[*i];
                 s << l.step.label << " | " << l.n_dofs << " | " << seconds(l.median_s.total) << " |\n";
+            } else if (const auto p = predict_level_for(m, *t, target)) {
+                s << "none of the ladder; predicted k ≈ " << fmt("%.1f", p->k) << " | ≈ " << fmt("%.3g", p->n_dofs)
+                  << " | " << (p->time_s ? "≈ " + fmt("%.3g", *p->time_s) : std::string("–")) << " |\n";
             } else {
-                s << "none of the ladder | – | – |\n";
+                s << "none of the ladder (not asymptotic, or below what f0 is known to) | – | – |\n";
             }
         }
     }
-    s << "\nA level reaches a target when its error against f0 plus the uncertainty of f0 is within it.\n";
+    s << "\nA level reaches a target when its error against f0 plus the uncertainty of f0 is within it. "
+         "Predictions extend the observed order and time scaling beyond the ladder (uniform refinement).\n";
 }
 
 void markdown_cost(std::ostringstream& s, const ModelStudy& m) {

@@ -286,6 +286,17 @@ inline constexpr int kMaxModesForOvalling = 64;
 // for bad options or case files.
 ConvergeStudy run_converge(const ConvergeOptions& options, std::ostream& progress);
 
+// Where the ladder would have to go for a target it does not reach, from the
+// observed order (error ~ (1/k)^p from the finest level), DOFs ~ k^3 and the
+// observed time exponent. Nothing when the mode is not asymptotic or when f0
+// itself is not known to better than the target.
+struct TargetPrediction {
+    double k = 0;
+    double n_dofs = 0;
+    std::optional<double> time_s;
+};
+std::optional<TargetPrediction> predict_level_for(const ModelStudy& model, const TrackedMode& mode, double target);
+
 // Writers: converge.csv (one row per model x level x tracked mode),
 // converge.json (everything, for the plot), converge.md (the report; embeds
 // error_vs_time.png when plot_note is empty, else prints the note).

@@ -303,9 +303,15 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "  " << role << " within";
                 for (double target : kAccuracyTargets) {
                     const auto i = first_level_within(t, target);
-                    out << "  " << fmt("%g", target * 100) << " %: "
-                        << (i ? m.levels[*i].step.label + " (" + fmt("%.1f", m.levels[*i].median_s.total) + " s)"
-                              : std::string("not in the ladder"));
+                    out << "  " << fmt("%g", target * 100) << " %: ";
+                    if (i) {
+                        out << m.levels[*i].step.label << " (" << fmt("%.1f", m.levels[*i].median_s.total) << " s)";
+                    } else if (const auto p = predict_level_for(m, t, target)) {
+                        out << "not in the ladder (k ~ " << fmt("%.1f", p->k) << ", ~" << fmt("%.2g", p->n_dofs)
+                            << " DOFs" << (p->time_s ? ", ~" + fmt("%.2g", *p->time_s) + " s" : std::string()) << ")";
+                    } else {
+                        out << "not in the ladder";
+                    }
                 }
                 out << "\n";
             }

@@ -351,3 +351,27 @@ TEST_CASE("The DOF estimate of a tube mesh and the study's cost bound", "[conver
         CHECK_THAT(note, Catch::Contains("exceeds --max-dofs 1000"));
     }
 }
+
+TEST_CASE("A target beyond the ladder is predicted from the observed order and time scaling", "[converge]") {
+    std::vector<LevelResult> levels;
+    for (int k = 1; k <= 4; ++k) {
+        const double e = std::pow(1.0 / k, 4);
+        levels.push_back(level(k, {mode(1, 100 + 10 * e, "ovalling", 2, 0)}));
+    }
+    const ModelStudy m = analyse_levels("solid", "", levels);
+    const TrackedMode& oval = m.modes.at(0);
+    REQUIRE(oval.richardson);
+    // Finest error 10/256/100 = 3.9e-4: 1e-4 needs k = 4 (3.9)^(1/4) = 5.59.
+    const auto p = predict_level_for(m, oval, 1e-4);
+    REQUIRE(p);
+    CHECK(p->k == Approx(4 * std::pow(10.0 / 256 / 100 / 1e-4, 0.25)).epsilon(1e-6));
+    CHECK(p->n_dofs == Approx(64000 * std::pow(p->k / 4, 3)).epsilon(1e-9));
+    REQUIRE(p->time_s);
+    CHECK(*p->time_s == Approx(1.2 * std::pow(p->k, 3)).epsilon(1e-6));  // time ~ DOFs here
+    const std::string md = [&] {
+        ConvergeStudy study;
+        study.models.push_back(m);
+        return converge_markdown(study, "");
+    }();
+    CHECK_THAT(md, Catch::Contains("predicted k ≈ 5.6"));
+}
