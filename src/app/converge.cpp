@@ -154,6 +154,13 @@ LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& ru
     std::vector<double> cpu;
     for (const auto& run : runs) cpu.push_back(run.cpu_s);
     r.median_cpu_s = median(cpu);
+    auto med_solver = [&](double SolverBreakdown::*part) {
+        std::vector<double> v;
+        for (const auto& run : runs) v.push_back(run.solver_s.*part);
+        return median(v);
+    };
+    r.median_solver_s = {med_solver(&SolverBreakdown::factor_s), med_solver(&SolverBreakdown::solve_s),
+                         med_solver(&SolverBreakdown::orthogonalize_s)};
     for (const auto& run : runs) {
         r.peak_memory_mb = std::max(r.peak_memory_mb, run.peak_memory_mb);
         r.complete = r.complete && run.complete;
@@ -459,7 +466,8 @@ std::string role_title(const std::string& role) {
 
 std::string converge_csv(const ConvergeStudy& study) {
     std::ostringstream s;
-    s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,cpu_s,peak_memory_mb,"
+    s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,cpu_s,factorizations_s,"
+         "triangular_solves_s,orthogonalization_s,peak_memory_mb,"
          "mode,role,type,n,m,occurrence,frequency_hz,extrapolated_hz,error_estimate_hz,observed_order,asymptotic,"
          "relative_error\n";
     for (const auto& model : study.models)
@@ -471,7 +479,8 @@ std::string converge_csv(const ConvergeStudy& study) {
                   << fmt("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << fmt("%.4f", t.mesh) << ','
                   << fmt("%.4f", t.assemble) << ',' << fmt("%.4f", t.factor_and_solve) << ','
                   << fmt("%.4f", t.classify) << ',' << fmt("%.4f", t.total) << ',' << fmt("%.4f", l.median_cpu_s)
-                  << ',' << fmt("%.1f", l.peak_memory_mb)
+                  << ',' << fmt("%.4f", l.median_solver_s.factor_s) << ',' << fmt("%.4f", l.median_solver_s.solve_s)
+                  << ',' << fmt("%.4f", l.median_solver_s.orthogonalize_s) << ',' << fmt("%.1f", l.peak_memory_mb)
                   << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
                   << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
                   << opt(mode.frequency_hz[i]) << ',';
@@ -501,6 +510,9 @@ std::string converge_json(const ConvergeStudy& study) {
                                          {"runs", l.runs},
                                          {"timing_s", timing_table(l.median_s)},
                                          {"cpu_s", l.median_cpu_s},
+                                         {"solver_s", toml::table{{"factorizations", l.median_solver_s.factor_s},
+                                                                  {"triangular_solves", l.median_solver_s.solve_s},
+                                                                  {"orthogonalization", l.median_solver_s.orthogonalize_s}}},
                                          {"peak_memory_mb", l.peak_memory_mb},
                                          {"complete", l.complete},
                                          {"repeat_spread", l.max_repeat_spread}});
@@ -649,6 +661,15 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
       << "), factorization and solve " << seconds(t.factor_and_solve) << " s (" << percent(t.factor_and_solve / total)
       << "), classification " << seconds(t.classify) << " s (" << percent(t.classify / total) << "); total "
       << seconds(t.total) << " s, peak memory " << fmt("%.0f", l.peak_memory_mb) << " MiB.\n";
+    const SolverBreakdown& b = l.median_solver_s;
+    if (b.factor_s + b.solve_s + b.orthogonalize_s > 0) {
+        const double rest = std::max(0.0, t.factor_and_solve - b.factor_s - b.solve_s - b.orthogonalize_s);
+        s << "\nInside factorization and solve (PETSc event log): factorizations " << seconds(b.factor_s) << " s ("
+          << percent(b.factor_s / total) << " of the total), triangular solves " << seconds(b.solve_s) << " s ("
+          << percent(b.solve_s / total) << "), orthogonalization of the Krylov basis " << seconds(b.orthogonalize_s)
+          << " s (" << percent(b.orthogonalize_s / total) << "), the rest of the eigensolver (M products, projected "
+          << "problem, residual checks) " << seconds(rest) << " s (" << percent(rest / total) << ").\n";
+    }
     if (m.time_exponent && m.memory_exponent)
         s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^" << fmt("%.2f", *m.time_exponent)
           << ", peak memory ~ DOFs^" << fmt("%.2f", *m.memory_exponent) << ".\n";

@@ -84,10 +84,22 @@ std::vector<MeshStep> refinement_ladder(const Scene& scene, const UnitMesh& unit
 
 // ---- one level's runs -------------------------------------------------------
 
+// Where factor_and_solve goes, from PETSc's and SLEPc's event logs (seconds,
+// rank 0): numeric and symbolic factorizations (the shift-and-invert
+// Cholesky and the LDL^T of the inertia count), triangular solves, and the
+// M-orthogonalization of the Krylov basis. The rest of factor_and_solve is
+// the other Krylov-Schur work (M products, projected problem) and the
+// residual and orthonormality checks. (Events are inclusive: the products of
+// the shift-and-invert operator contain the solves, so they are not listed.)
+struct SolverBreakdown {
+    double factor_s = 0, solve_s = 0, orthogonalize_s = 0;
+};
+
 // What one run of one mesh level gives back (model-level independent).
 struct LevelRun {
     long n_dofs = 0;
     Timing timing_s;
+    SolverBreakdown solver_s;
     double cpu_s = 0;  // processor time of the run (user + system, this process, rank 0):
                        // on a shared machine less disturbed by other processes than wall time
     double peak_memory_mb = 0;
@@ -102,6 +114,7 @@ struct LevelResult {
     int runs = 0;
     Timing median_s;
     double median_cpu_s = 0;
+    SolverBreakdown median_solver_s;
     double peak_memory_mb = 0;
     std::vector<Mode> modes;  // of the first run (every run solves the same mesh)
     bool complete = true;

@@ -49,6 +49,26 @@ double cpu_seconds() {
     return s(usage.ru_utime) + s(usage.ru_stime);
 }
 
+// PETSc's cumulative event times (main stage, this rank) of the events that
+// make up a solve; their differences over a run give SolverBreakdown. An
+// event not registered yet (no matrix factored so far) counts 0.
+double event_seconds(std::initializer_list<const char*> names) {
+    double total = 0;
+    for (const char* name : names) {
+        PetscLogEvent id = -1;
+        PetscEventPerfInfo info{};
+        if (PetscLogEventGetId(name, &id) || id < 0) continue;
+        if (PetscLogEventGetPerfInfo(0, id, &info)) continue;
+        total += info.time;
+    }
+    return total;
+}
+
+SolverBreakdown solver_event_seconds() {
+    return {event_seconds({"MatCholFctrSym", "MatCholFctrNum", "MatLUFactorSym", "MatLUFactorNum"}),
+            event_seconds({"MatSolve"}), event_seconds({"BVOrthogonalizeV"})};
+}
+
 // The 1-minute load average (0 when unknown).
 double load_average() {
     double load[1] = {0};
@@ -68,11 +88,15 @@ LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
     options.write_results = false;
     const bool reset = reset_peak_memory();
     const double cpu_start = cpu_seconds();
+    const SolverBreakdown events_start = solver_event_seconds();
     RunReport report = run_scene(std::move(s), options);
+    const SolverBreakdown events_end = solver_event_seconds();
     LevelRun run;
     run.n_dofs = report.model.n_dofs;
     run.timing_s = report.timing_s;
     run.cpu_s = cpu_seconds() - cpu_start;
+    run.solver_s = {events_end.factor_s - events_start.factor_s, events_end.solve_s - events_start.solve_s,
+                    events_end.orthogonalize_s - events_start.orthogonalize_s};
     double peak = reset ? peak_memory_since_reset_mb() : peak_memory_mb();
     MPI_Allreduce(&peak, &run.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     run.complete = report.modes.verification.complete;
@@ -332,6 +356,12 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     for (const auto& name : o.check_levels)
         if (!find_mesh_level(name))
             throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
+
+    // PETSc's event log (cheap) splits the solver time into factorizations,
+    // triangular solves and products; -log_view may have started it already.
+    PetscBool logging = PETSC_FALSE;
+    PetscLogIsActive(&logging);
+    if (!logging) PetscLogDefaultBegin();
 
     // 1. The scene and its model levels.
     const Scene scene = parse_case_file(o.case_file);

@@ -101,6 +101,14 @@ TEST_CASE("Converge on case 01: f1 extrapolates to the Timoshenko value at the r
         CHECK(l.max_repeat_spread < 1e-8);  // the same mesh gives the same frequencies
     }
 
+    // PETSc's event log splits the solver time; the parts fit inside it.
+    const LevelResult& finest = solid.levels.back();
+    const SolverBreakdown& b = finest.median_solver_s;
+    CHECK(b.factor_s > 0);
+    CHECK(b.solve_s > 0);
+    CHECK(b.orthogonalize_s > 0);
+    CHECK(b.factor_s + b.solve_s + b.orthogonalize_s <= finest.median_s.factor_and_solve * 1.001);
+
     const TrackedMode* f1 = nullptr;
     const TrackedMode* oval = nullptr;
     for (const auto& t : solid.modes) {
