@@ -1,7 +1,9 @@
-"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``.
+"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...`` and
+``python3 -m coremodal converge-plot CONVERGE_DIR``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
+    python3 -m coremodal converge-plot results/CASE-converge     # error_vs_time.png from converge.json
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist (with a one-line message on stderr), 2 for a usage error.
@@ -45,11 +47,37 @@ def _parser() -> argparse.ArgumentParser:
                       "of its smallest)")
     plot.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
                       help="picture size in pixels (default 1200x900)")
+
+    converge = commands.add_parser(
+        "converge-plot", help="draw error against time (PNG) from a `coremodal converge` folder")
+    converge.add_argument("results", type=Path, help="folder holding converge.json (or the file)")
+    converge.add_argument("--out", type=Path,
+                          help="PNG to write (default: error_vs_time.png beside converge.json)")
+    converge.add_argument("--size", type=_size, default=(1000, 700), metavar="WxH",
+                          help="picture size in pixels (default 1000x700)")
+    converge.add_argument("--quiet", action="store_true", help="print nothing on success")
     return parser
+
+
+def _converge_plot(args: argparse.Namespace) -> int:
+    from . import converge_plot  # matplotlib only when drawing
+
+    try:
+        study = converge_plot.load_study(args.results)
+        folder = args.results if args.results.is_dir() else args.results.parent
+        out = converge_plot.draw_error_vs_time(study, args.out or folder / "error_vs_time.png", args.size)
+    except (converge_plot.ConvergeFormatError, KeyError, OSError) as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    if not args.quiet:
+        print(out)
+    return 0
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "converge-plot":
+        return _converge_plot(args)
     try:
         if not args.results.is_file():
             raise ResultsFormatError(f"{args.results}: no such file")

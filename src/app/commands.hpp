@@ -19,5 +19,6 @@ struct Command {
 Command add_run_command(CLI::App& app);    // app/run_command.cpp
 Command add_beam_command(CLI::App& app);   // app/beam_command.cpp
 Command add_batch_command(CLI::App& app);  // app/batch_command.cpp
+Command add_converge_command(CLI::App& app);  // app/converge_command.cpp
 
 }  // namespace coremodal

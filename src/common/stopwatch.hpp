@@ -26,4 +26,11 @@ private:
 // Peak resident set size of this process so far, in MiB.
 double peak_memory_mb();
 
+// For several runs in one process (coremodal converge): resets the kernel's
+// peak resident set to the current one (Linux /proc/self/clear_refs); false
+// when the kernel does not allow it. peak_memory_since_reset_mb() then reads
+// the peak since the reset (VmHWM), or peak_memory_mb() if it cannot.
+bool reset_peak_memory();
+double peak_memory_since_reset_mb();
+
 }  // namespace coremodal

@@ -125,7 +125,11 @@ TubeSection make_tube_section(const Scene& scene) {
     const auto z = axial_breakpoints(scene);
     std::vector<double> lengths;
     for (size_t i = 0; i + 1 < z.size(); ++i) lengths.push_back(z[i + 1] - z[i]);
-    const auto counts = distribute_elements(lengths, scene.mesh.n_along);
+    auto counts = distribute_elements(lengths, scene.mesh.n_along);
+    if (!scene.mesh.along_per_segment.empty()) {
+        COREMODAL_ASSERT(scene.mesh.along_per_segment.size() == counts.size());
+        counts = scene.mesh.along_per_segment;
+    }
     for (size_t i = 0; i + 1 < z.size(); ++i)
         section.segments.push_back({z[i], z[i + 1], counts[i], grading(scene, z[i], z[i + 1])});
 

@@ -55,7 +55,8 @@ struct TubeSection {
 
 // Builds the section of the scene's core (and rest paper) with the mesh
 // density of scene.mesh. Segments get elements in proportion to their length,
-// at least kMinElementsPerSegment each.
+// at least kMinElementsPerSegment each, unless scene.mesh.along_per_segment
+// gives every segment's count.
 TubeSection make_tube_section(const Scene& scene);
 
 }  // namespace coremodal

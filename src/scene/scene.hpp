@@ -95,6 +95,10 @@ struct MeshSpec {
     int n_rest_paper = 2;  // elements through the rest paper
     int n_around = 32;     // elements around the circumference (multiple of 4)
     int n_along = 40;      // elements along the core length (over all segments)
+    // Elements per axial segment (from z = 0), when set: exact counts instead
+    // of n_along distributed by length. The converge ladder uses it to refine
+    // every segment by the same integer factor. Not a case-file key.
+    std::vector<int> along_per_segment;
     std::string element = "hex20";    // hex20 | hex27
     std::optional<std::string> file;  // user .msh (absolute or resolved against the case file)
 };

@@ -1,0 +1,106 @@
+"""The error-against-time picture of ``coremodal converge``, on a converge.json
+written here in the layout the program writes (see src/app/converge.cpp)."""
+
+from __future__ import annotations
+
+import json
+import struct
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from coremodal import converge_plot
+
+
+def png_size(path: Path) -> tuple[int, int]:
+    header = path.read_bytes()[:24]
+    assert header[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
+    return struct.unpack(">II", header[16:24])
+
+
+def level(k: int) -> dict:
+    return {"k": k, "h": 1 / k, "mesh": f"{k}/{k}/{8 * k}/{10 * k}", "n_dofs": 1000 * k**3, "runs": 3,
+            "timing_s": {"mesh": 0.01, "assemble": 0.1 * k, "factor_and_solve": k**3, "classify": 0.01,
+                         "total": 1.2 * k**3},
+            "peak_memory_mb": 100 * k**2, "complete": True, "repeat_spread": 0.0}
+
+
+def mode(role: str, f0: float, c: float, p: float, type_: str, n: int) -> dict:
+    values = []
+    for i, k in enumerate(range(1, 5)):
+        f = f0 + c * (1 / k) ** p
+        values.append({"level": i, "frequency_hz": f, "relative_error": abs(f - f0) / f0})
+    return {"id": f"{type_} n={n} m=0", "type": type_, "n": n, "m": 0, "occurrence": 1, "role": role,
+            "values": values,
+            "richardson": {"extrapolated": True, "order": p, "f0_hz": f0, "error_estimate_hz": c / 4**p,
+                           "relative_error_estimate": c / 4**p / f0, "asymptotic": True, "note": ""}}
+
+
+@pytest.fixture()
+def study() -> dict:
+    return {
+        "program": "coremodal test", "case": "synthetic", "source_file": "synthetic.toml", "n_modes": 20,
+        "repeats": 3, "repeat_limit_s": 30, "total_time_s": 120.0,
+        "models": [{"model": "solid", "ladder": "unit 1/1/8/10",
+                    "levels": [level(k) for k in range(1, 5)],
+                    "modes": [mode("f1", 32.1, 0.5, 4, "bending", 1),
+                              mode("", 85.0, 1.0, 4, "bending", 1),
+                              mode("ovalling", 435.0, 90.0, 3, "ovalling", 2)]}],
+        "checks": [{"name": "default", "mesh": "3/2/32/81", "n_dofs": 181152,
+                    "timing_s": {"total": 84.0}, "peak_memory_mb": 3510,
+                    "modes": [{"id": "bending n=1 m=0", "frequency_hz": 32.11, "relative_error": 3e-4,
+                               "role": "f1"}]}],
+        "notes": [],
+    }
+
+
+def test_curves_follow_the_roles_and_the_levels(study: dict) -> None:
+    curves = converge_plot.error_curves(study)
+    assert [(c["model"], c["role"]) for c in curves] == [("solid", "f1"), ("solid", "ovalling")]
+    f1 = curves[0]
+    assert f1["time_s"] == [1.2, 9.6, pytest.approx(32.4), 76.8]
+    assert f1["dofs"] == [1000, 8000, 27000, 64000]
+    assert f1["finest"] == [False, False, False, True]
+    assert f1["error"][1] == pytest.approx(0.5 / 16 / 32.1)
+    assert converge_plot.check_points(study) == [
+        {"name": "default", "role": "f1", "time_s": 84.0, "error": 3e-4}]
+
+
+def test_draws_a_png_of_the_asked_size(study: dict, tmp_path: Path) -> None:
+    out = converge_plot.draw_error_vs_time(study, tmp_path / "e.png", size_px=(800, 500))
+    assert out == tmp_path / "e.png"
+    assert png_size(out) == (800, 500)
+
+
+def test_a_study_without_extrapolated_modes_still_draws(study: dict, tmp_path: Path) -> None:
+    for m in study["models"][0]["modes"]:
+        for v in m["values"]:
+            del v["relative_error"]
+    assert converge_plot.error_curves(study) == []
+    assert png_size(converge_plot.draw_error_vs_time(study, tmp_path / "empty.png")) == (1000, 700)
+
+
+def run_cli(env: dict[str, str], *args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "coremodal", *args], capture_output=True, text=True,
+                          env=env, timeout=300)
+
+
+def test_command_line_writes_error_vs_time_beside_the_json(study: dict, tmp_path: Path,
+                                                           cli_env: dict[str, str]) -> None:
+    (tmp_path / "converge.json").write_text(json.dumps(study))
+    run = run_cli(cli_env, "converge-plot", str(tmp_path))
+    assert run.returncode == 0, run.stderr
+    assert png_size(tmp_path / "error_vs_time.png") == (1000, 700)
+    assert "error_vs_time.png" in run.stdout
+
+
+def test_command_line_names_a_missing_or_bad_study(tmp_path: Path, cli_env: dict[str, str]) -> None:
+    run = run_cli(cli_env, "converge-plot", str(tmp_path))
+    assert run.returncode == 1
+    assert "converge.json" in run.stderr
+    (tmp_path / "converge.json").write_text('{"case": "x"}')
+    run = run_cli(cli_env, "converge-plot", str(tmp_path))
+    assert run.returncode == 1
+    assert "no 'models' list" in run.stderr

@@ -1,0 +1,741 @@
+#include "app/converge.hpp"
+
+#include "common/error.hpp"
+#include "geometry/tube_section.hpp"
+#include "scene/mesh_levels.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+std::string fmt(const char* format, double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, v);
+    return buffer;
+}
+
+std::string counts_text(const MeshSpec& m, bool rest_paper) {
+    return std::to_string(m.n_wall) + "/" + (rest_paper ? std::to_string(m.n_rest_paper) : std::string("-")) +
+           "/" + std::to_string(m.n_around) + "/" + std::to_string(m.n_along);
+}
+
+}  // namespace
+
+// ---- the ladder -------------------------------------------------------------
+
+UnitMesh default_unit(const Scene& scene) {
+    UnitMesh unit;
+    const double along = std::ceil(double(scene.mesh.n_along) * kUnitElementsAround / scene.mesh.n_around);
+    unit.n_along = std::max(kMinElementsAlong, static_cast<int>(along));
+    return unit;
+}
+
+UnitMesh parse_unit(const std::string& text, const std::string& option) {
+    const std::string expected = "; expected WALL/PAPER/AROUND/ALONG element counts of the k = 1 level, e.g. 1/1/8/21";
+    std::vector<int> v;
+    std::stringstream s(text);
+    std::string item;
+    while (std::getline(s, item, '/')) {
+        std::size_t used = 0;
+        int value = 0;
+        try {
+            value = std::stoi(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || value < 1)
+            throw InputError(option + " " + text + ": '" + item + "' is not a positive whole number" + expected);
+        v.push_back(value);
+    }
+    if (v.size() != 4) throw InputError(option + " " + text + ": " + std::to_string(v.size()) + " counts" + expected);
+    if (v[2] % 4 != 0)
+        throw InputError(option + " " + text + ": around = " + std::to_string(v[2]) +
+                         " must be a multiple of 4 (8 keeps ovalling pairs degenerate)" + expected);
+    return {v[0], v[1], v[2], v[3]};
+}
+
+long estimate_dofs(const MeshSpec& m, bool rest_paper) {
+    const long r = m.n_wall + (rest_paper ? m.n_rest_paper : 0), t = m.n_around, z = m.n_along;
+    if (m.element == "hex27") return 3 * (2 * r + 1) * (2 * t) * (2 * z + 1);
+    // Corner nodes, then mid-edge nodes on radial, circumferential and axial edges.
+    const long nodes = t * ((r + 1) * (z + 1) + r * (z + 1) + (r + 1) * (z + 1) + (r + 1) * z);
+    return 3 * nodes;
+}
+
+UnitMesh fit_unit_to_budget(const Scene& scene, UnitMesh unit, int first, int levels, long max_dofs,
+                            std::string& note) {
+    note.clear();
+    if (max_dofs <= 0 || scene.mesh.file) return unit;
+    const bool paper = scene.rest_paper.has_value();
+    auto finest_dofs = [&](const UnitMesh& u) {
+        return estimate_dofs(refinement_ladder(scene, u, first, levels).back().mesh, paper);
+    };
+    const int asked = unit.n_along;
+    while (finest_dofs(unit) > max_dofs && unit.n_along > kMinUnitElementsAlong) --unit.n_along;
+    if (unit.n_along != asked)
+        note = "the unit's elements along were lowered from " + std::to_string(asked) + " to " +
+               std::to_string(unit.n_along) + " so that the finest level stays within --max-dofs " +
+               std::to_string(max_dofs) + " (estimated " + std::to_string(finest_dofs(unit)) + " DOFs)";
+    if (finest_dofs(unit) > max_dofs)
+        note += std::string(note.empty() ? "" : "; ") + "the finest level (estimated " +
+                std::to_string(finest_dofs(unit)) + " DOFs) exceeds --max-dofs " + std::to_string(max_dofs) +
+                " even with the fewest elements along; use fewer --levels or a smaller --unit";
+    return unit;
+}
+
+std::vector<MeshStep> refinement_ladder(const Scene& scene, const UnitMesh& unit, int first, int levels) {
+    if (scene.mesh.file)
+        throw InputError(scene.source_file + ": [mesh] file = " + *scene.mesh.file +
+                         ": converge refines the generated mesh; expected a case without a mesh file");
+    if (first < 1) throw InputError("--first " + std::to_string(first) + ": expected a multiple k >= 1");
+    if (levels < 3) throw InputError("--levels " + std::to_string(levels) + ": Richardson extrapolation needs at least 3");
+    // The unit's axial segments (clamp zones, graded free spans) as the mesher
+    // would cut them; every level multiplies each segment's count by k.
+    Scene unit_scene = scene;
+    unit_scene.mesh.n_wall = unit.n_wall;
+    unit_scene.mesh.n_rest_paper = unit.n_rest_paper;
+    unit_scene.mesh.n_around = unit.n_around;
+    unit_scene.mesh.n_along = unit.n_along;
+    unit_scene.mesh.along_per_segment.clear();
+    std::vector<int> unit_segments;
+    for (const AxialSegment& segment : make_tube_section(unit_scene).segments)
+        unit_segments.push_back(segment.n_elements);
+
+    std::vector<MeshStep> steps;
+    for (int k = first; k < first + levels; ++k) {
+        MeshStep step;
+        step.k = k;
+        step.h = 1.0 / k;
+        step.mesh = scene.mesh;
+        step.mesh.level = "converge k=" + std::to_string(k);
+        step.mesh.n_wall = k * unit.n_wall;
+        step.mesh.n_rest_paper = k * unit.n_rest_paper;
+        step.mesh.n_around = k * unit.n_around;
+        step.mesh.along_per_segment.clear();
+        for (int n : unit_segments) step.mesh.along_per_segment.push_back(k * n);
+        step.mesh.n_along = std::accumulate(step.mesh.along_per_segment.begin(), step.mesh.along_per_segment.end(), 0);
+        step.counts = counts_text(step.mesh, scene.rest_paper.has_value());
+        step.label = "k=" + std::to_string(k) + " " + step.counts;
+        steps.push_back(std::move(step));
+    }
+    return steps;
+}
+
+// ---- one level's runs -------------------------------------------------------
+
+double median(std::vector<double> values) {
+    COREMODAL_ASSERT(!values.empty());
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& runs) {
+    COREMODAL_ASSERT(!runs.empty());
+    LevelResult r;
+    r.step = step;
+    r.n_dofs = runs.front().n_dofs;
+    r.runs = static_cast<int>(runs.size());
+    r.modes = runs.front().modes;
+    auto med = [&](double Timing::*part) {
+        std::vector<double> v;
+        for (const auto& run : runs) v.push_back(run.timing_s.*part);
+        return median(v);
+    };
+    r.median_s = {med(&Timing::mesh), med(&Timing::assemble), med(&Timing::factor_and_solve),
+                  med(&Timing::classify), med(&Timing::total)};
+    std::vector<double> cpu;
+    for (const auto& run : runs) cpu.push_back(run.cpu_s);
+    r.median_cpu_s = median(cpu);
+    auto med_solver = [&](double SolverBreakdown::*part) {
+        std::vector<double> v;
+        for (const auto& run : runs) v.push_back(run.solver_s.*part);
+        return median(v);
+    };
+    r.median_solver_s = {med_solver(&SolverBreakdown::factor_s), med_solver(&SolverBreakdown::solve_s),
+                         med_solver(&SolverBreakdown::orthogonalize_s)};
+    for (const auto& run : runs) {
+        r.peak_memory_mb = std::max(r.peak_memory_mb, run.peak_memory_mb);
+        r.complete = r.complete && run.complete;
+        // Every run solves the same mesh: the frequencies must agree.
+        for (std::size_t i = 0; i < std::min(run.modes.size(), r.modes.size()); ++i) {
+            const double a = run.modes[i].frequency_hz, b = r.modes[i].frequency_hz;
+            if (std::max(a, b) > 0) r.max_repeat_spread = std::max(r.max_repeat_spread, std::abs(a - b) / std::max(a, b));
+        }
+    }
+    return r;
+}
+
+// ---- tracking ---------------------------------------------------------------
+
+std::string ModeKey::text() const {
+    std::string s = type + " n=" + std::to_string(n) + " m=" + std::to_string(m);
+    if (occurrence > 1) s += " #" + std::to_string(occurrence);
+    return s;
+}
+
+std::vector<DistinctMode> distinct_modes(const std::vector<Mode>& modes) {
+    std::vector<DistinctMode> out;
+    for (const Mode& mode : modes) {
+        const ModeLabel& l = mode.label;
+        if (l.type == "rigid" || l.type == "mixed") continue;
+        // A partner: the latest distinct mode of the same label, within the tolerance.
+        DistinctMode* partner = nullptr;
+        int same_label = 0;
+        for (auto& d : out)
+            if (d.key.type == l.type && d.key.n == l.n && d.key.m == l.m) {
+                partner = &d;
+                ++same_label;
+            }
+        if (partner && std::abs(mode.frequency_hz - partner->frequency_hz) <=
+                           kDegenerateTolerance * std::max(mode.frequency_hz, partner->frequency_hz)) {
+            ++partner->multiplicity;
+            continue;
+        }
+        out.push_back({{l.type, l.n, l.m, same_label + 1}, mode.frequency_hz, mode.index, 1});
+    }
+    return out;
+}
+
+namespace {
+
+// (h1^p - h2^p) / (h2^p - h3^p), which grows with p from
+// ln(h1/h2)/ln(h2/h3) at p -> 0 to infinity.
+double ratio_of_differences(const double h[3], double p) {
+    return (std::pow(h[0], p) - std::pow(h[1], p)) / (std::pow(h[1], p) - std::pow(h[2], p));
+}
+
+constexpr double kMaxSearchedOrder = 30;
+
+}  // namespace
+
+Richardson richardson_three(const double h[3], const double f[3]) {
+    COREMODAL_ASSERT(h[0] > h[1] && h[1] > h[2] && h[2] > 0);
+    Richardson r;
+    const double d1 = f[0] - f[1], d2 = f[1] - f[2];
+    const double scale = std::max({std::abs(f[0]), std::abs(f[1]), std::abs(f[2])});
+    r.f0 = f[2];
+    if (std::abs(d2) <= kSolverNoise * scale) {
+        r.error_estimate = std::max(std::abs(d2), kSolverNoise * scale);
+        r.asymptotic = true;
+        r.note = "converged to solver precision";
+        return r;
+    }
+    if (d1 * d2 <= 0) {
+        r.error_estimate = std::max(std::abs(d1), std::abs(d2));
+        r.note = "not monotone (the changes alternate in sign): no order; error estimate = largest change";
+        return r;
+    }
+    const double target = d1 / d2;
+    const double at_zero = std::log(h[0] / h[1]) / std::log(h[1] / h[2]);
+    if (target <= at_zero) {
+        r.error_estimate = std::abs(d2) * 10;  // no bound exists; a generous stand-in
+        r.note = "changes do not shrink with h (order <= 0): not in the asymptotic range; "
+                 "error estimate = 10 x the last change";
+        return r;
+    }
+    double lo = 0, hi = kMaxSearchedOrder;
+    if (ratio_of_differences(h, hi) < target) {
+        lo = hi;  // beyond any plausible order: extrapolate with the cap
+    } else {
+        for (int i = 0; i < 200 && hi - lo > 1e-13; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (ratio_of_differences(h, mid) < target ? lo : hi) = mid;
+        }
+    }
+    const double p = 0.5 * (lo + hi);
+    const double c = d2 / (std::pow(h[1], p) - std::pow(h[2], p));
+    r.extrapolated = true;
+    r.order = p;
+    r.f0 = f[2] - c * std::pow(h[2], p);
+    r.error_estimate = std::abs(f[2] - r.f0);
+    r.asymptotic = p >= kMinPlausibleOrder && p <= kMaxPlausibleOrder;
+    r.note = r.asymptotic ? "observed order " + fmt("%.2f", p)
+                          : "observed order " + fmt("%.2f", p) + " outside [" + fmt("%.1f", kMinPlausibleOrder) +
+                                ", " + fmt("%.0f", kMaxPlausibleOrder) + "]: not in the asymptotic range";
+    return r;
+}
+
+Richardson richardson(const std::vector<double>& h, const std::vector<double>& f) {
+    COREMODAL_ASSERT(h.size() == f.size() && h.size() >= 3);
+    const std::size_t n = h.size();
+    Richardson r = richardson_three(&h[n - 3], &f[n - 3]);
+    if (n < 4) {
+        if (r.extrapolated) r.note += "; only three levels: order not cross-checked";
+        return r;
+    }
+    const Richardson previous = richardson_three(&h[n - 4], &f[n - 4]);
+    if (previous.extrapolated) {
+        r.previous_order = previous.order;
+        r.previous_f0 = previous.f0;
+    }
+    if (!r.extrapolated) return r;
+    if (previous.extrapolated) r.f0_uncertainty = std::abs(r.f0 - previous.f0);
+    if (r.asymptotic && previous.extrapolated) {
+        const bool consistent =
+            std::abs(r.order - previous.order) <= kOrderConsistency * std::max(r.order, previous.order);
+        if (!consistent) {
+            r.asymptotic = false;
+            r.note += "; the coarser triple gives " + fmt("%.2f", previous.order) +
+                      ": order not settled, not yet asymptotic";
+        } else {
+            r.note += " (coarser triple " + fmt("%.2f", previous.order) + ")";
+        }
+    } else if (r.asymptotic) {
+        r.asymptotic = false;
+        r.note += "; the coarser triple has no order (" + previous.note + "): not yet asymptotic";
+    }
+    return r;
+}
+
+std::vector<TrackedMode> track_modes(const std::vector<LevelResult>& levels) {
+    std::vector<TrackedMode> tracked;
+    if (levels.empty()) return tracked;
+    std::vector<std::vector<DistinctMode>> distinct;
+    for (const auto& level : levels) distinct.push_back(distinct_modes(level.modes));
+    auto find = [](const std::vector<DistinctMode>& modes, const ModeKey& key) -> const DistinctMode* {
+        for (const auto& d : modes)
+            if (d.key == key) return &d;
+        return nullptr;
+    };
+
+    const auto& finest = distinct.back();
+    for (const auto& d : finest) {
+        const bool everywhere = std::all_of(distinct.begin(), distinct.end(),
+                                            [&](const auto& level) { return find(level, d.key) != nullptr; });
+        std::string role;
+        for (const auto& [name, type] : kModeRoles) {
+            const auto first_of_type =
+                std::find_if(finest.begin(), finest.end(), [&](const DistinctMode& x) { return x.key.type == type; });
+            if (first_of_type != finest.end() && first_of_type->key == d.key) role = name;
+        }
+        if (!everywhere && role.empty()) continue;
+        TrackedMode t;
+        t.key = d.key;
+        t.role = role;
+        for (const auto& level : distinct) {
+            const DistinctMode* x = find(level, d.key);
+            t.frequency_hz.push_back(x ? std::optional<double>(x->frequency_hz) : std::nullopt);
+        }
+        tracked.push_back(std::move(t));
+    }
+
+    for (auto& t : tracked) {
+        // The finest levels that all have the mode, for the extrapolation.
+        std::vector<double> h, f;
+        for (std::size_t i = levels.size(); i-- > 0 && t.frequency_hz[i];) {
+            h.insert(h.begin(), levels[i].step.h);
+            f.insert(f.begin(), *t.frequency_hz[i]);
+        }
+        if (f.size() >= 3) t.richardson = richardson(h, f);
+        for (const auto& value : t.frequency_hz)
+            t.relative_error.push_back(value && t.richardson
+                                           ? std::optional<double>(std::abs(*value - t.richardson->f0) /
+                                                                   std::abs(t.richardson->f0))
+                                           : std::nullopt);
+    }
+    return tracked;
+}
+
+std::optional<double> power_law_exponent(const std::vector<double>& x, const std::vector<double>& y) {
+    std::vector<double> lx, ly;
+    for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i)
+        if (x[i] > 0 && y[i] > 0) lx.push_back(std::log(x[i])), ly.push_back(std::log(y[i]));
+    if (lx.size() < 2) return std::nullopt;
+    const double n = static_cast<double>(lx.size());
+    const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / n;
+    const double my = std::accumulate(ly.begin(), ly.end(), 0.0) / n;
+    double sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < lx.size(); ++i) sxy += (lx[i] - mx) * (ly[i] - my), sxx += (lx[i] - mx) * (lx[i] - mx);
+    if (sxx <= 0) return std::nullopt;
+    return sxy / sxx;
+}
+
+// ---- the study --------------------------------------------------------------
+
+ModelStudy analyse_levels(std::string model, std::string ladder_note, std::vector<LevelResult> levels) {
+    ModelStudy s;
+    s.model = std::move(model);
+    s.ladder_note = std::move(ladder_note);
+    s.levels = std::move(levels);
+    s.modes = track_modes(s.levels);
+    // The coarsest level's time is mostly fixed costs (start-up, gmsh): leave
+    // it out of the scaling fit when there are enough levels without it.
+    const std::size_t skip = s.levels.size() >= 3 ? 1 : 0;
+    std::vector<double> dofs, time, memory;
+    for (std::size_t i = skip; i < s.levels.size(); ++i) {
+        dofs.push_back(double(s.levels[i].n_dofs));
+        time.push_back(s.levels[i].median_s.total);
+        memory.push_back(s.levels[i].peak_memory_mb);
+    }
+    s.time_exponent = power_law_exponent(dofs, time);
+    s.memory_exponent = power_law_exponent(dofs, memory);
+    return s;
+}
+
+std::optional<std::size_t> first_level_within(const TrackedMode& mode, double target) {
+    if (!mode.richardson) return std::nullopt;
+    const double f0 = std::abs(mode.richardson->f0);
+    const double uncertainty = mode.richardson->f0_uncertainty.value_or(0.0) / f0;
+    for (std::size_t i = 0; i < mode.relative_error.size(); ++i)
+        if (mode.relative_error[i] && *mode.relative_error[i] + uncertainty <= target) return i;
+    return std::nullopt;
+}
+
+std::optional<TargetPrediction> predict_level_for(const ModelStudy& model, const TrackedMode& mode, double target) {
+    if (!mode.richardson || !mode.richardson->extrapolated || !mode.richardson->asymptotic || model.levels.empty())
+        return std::nullopt;
+    const Richardson& r = *mode.richardson;
+    const double f0 = std::abs(r.f0);
+    const double room = target - r.f0_uncertainty.value_or(0.0) / f0;
+    const double finest_error = r.error_estimate / f0;
+    if (room <= 0 || finest_error <= 0) return std::nullopt;
+    const LevelResult& finest = model.levels.back();
+    TargetPrediction p;
+    p.k = finest.step.k * std::pow(finest_error / room, 1.0 / r.order);
+    p.n_dofs = double(finest.n_dofs) * std::pow(p.k / finest.step.k, 3);
+    if (model.time_exponent)
+        p.time_s = finest.median_s.total * std::pow(p.n_dofs / double(finest.n_dofs), *model.time_exponent);
+    return p;
+}
+
+// ---- writers ----------------------------------------------------------------
+
+namespace {
+
+const TrackedMode* role_mode(const ModelStudy& m, const std::string& role) {
+    for (const auto& t : m.modes)
+        if (t.role == role) return &t;
+    return nullptr;
+}
+
+std::string csv_quote(const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string out = "\"";
+    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string opt(const std::optional<double>& v, const char* format = "%.10g") { return v ? fmt(format, *v) : ""; }
+
+toml::table timing_table(const Timing& t) {
+    return toml::table{{"mesh", t.mesh},
+                       {"assemble", t.assemble},
+                       {"factor_and_solve", t.factor_and_solve},
+                       {"classify", t.classify},
+                       {"total", t.total}};
+}
+
+toml::table richardson_table(const Richardson& r) {
+    toml::table t{{"extrapolated", r.extrapolated},
+                  {"order", r.order},
+                  {"f0_hz", r.f0},
+                  {"error_estimate_hz", r.error_estimate},
+                  {"relative_error_estimate", r.error_estimate / std::abs(r.f0)},
+                  {"asymptotic", r.asymptotic},
+                  {"note", r.note}};
+    if (r.previous_order) t.insert("previous_order", *r.previous_order);
+    if (r.previous_f0) t.insert("previous_f0_hz", *r.previous_f0);
+    if (r.f0_uncertainty) t.insert("f0_uncertainty_hz", *r.f0_uncertainty);
+    return t;
+}
+
+std::string percent(double fraction) {
+    if (fraction >= 0.1) return fmt("%.0f %%", fraction * 100);
+    if (fraction >= 0.01) return fmt("%.1f %%", fraction * 100);
+    if (fraction >= 1e-3) return fmt("%.2f %%", fraction * 100);
+    return fmt("%.2g %%", fraction * 100);
+}
+
+std::string seconds(double s) { return s < 10 ? fmt("%.2f", s) : fmt("%.1f", s); }
+
+std::string role_title(const std::string& role) {
+    if (role == "f1") return "f1 (first bending)";
+    if (role.empty()) return "";
+    return "first " + role;
+}
+
+}  // namespace
+
+std::string converge_csv(const ConvergeStudy& study) {
+    std::ostringstream s;
+    s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,cpu_s,factorizations_s,"
+         "triangular_solves_s,orthogonalization_s,peak_memory_mb,"
+         "mode,role,type,n,m,occurrence,frequency_hz,extrapolated_hz,error_estimate_hz,observed_order,asymptotic,"
+         "relative_error\n";
+    for (const auto& model : study.models)
+        for (std::size_t i = 0; i < model.levels.size(); ++i) {
+            const LevelResult& l = model.levels[i];
+            const Timing& t = l.median_s;
+            for (const auto& mode : model.modes) {
+                s << model.model << ',' << l.step.k << ',' << l.step.counts << ','
+                  << fmt("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << fmt("%.4f", t.mesh) << ','
+                  << fmt("%.4f", t.assemble) << ',' << fmt("%.4f", t.factor_and_solve) << ','
+                  << fmt("%.4f", t.classify) << ',' << fmt("%.4f", t.total) << ',' << fmt("%.4f", l.median_cpu_s)
+                  << ',' << fmt("%.4f", l.median_solver_s.factor_s) << ',' << fmt("%.4f", l.median_solver_s.solve_s)
+                  << ',' << fmt("%.4f", l.median_solver_s.orthogonalize_s) << ',' << fmt("%.1f", l.peak_memory_mb)
+                  << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
+                  << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
+                  << opt(mode.frequency_hz[i]) << ',';
+                if (mode.richardson) {
+                    const Richardson& r = *mode.richardson;
+                    s << fmt("%.10g", r.f0) << ',' << fmt("%.4g", r.error_estimate) << ','
+                      << (r.extrapolated ? fmt("%.4g", r.order) : std::string()) << ','
+                      << (r.asymptotic ? "yes" : "no");
+                } else {
+                    s << ",,,";
+                }
+                s << ',' << opt(mode.relative_error[i], "%.4g") << '\n';
+            }
+        }
+    return s.str();
+}
+
+std::string converge_json(const ConvergeStudy& study) {
+    toml::array models;
+    for (const auto& model : study.models) {
+        toml::array levels, modes;
+        for (const auto& l : model.levels)
+            levels.push_back(toml::table{{"k", l.step.k},
+                                         {"h", l.step.h},
+                                         {"mesh", l.step.counts},
+                                         {"n_dofs", l.n_dofs},
+                                         {"runs", l.runs},
+                                         {"timing_s", timing_table(l.median_s)},
+                                         {"cpu_s", l.median_cpu_s},
+                                         {"solver_s", toml::table{{"factorizations", l.median_solver_s.factor_s},
+                                                                  {"triangular_solves", l.median_solver_s.solve_s},
+                                                                  {"orthogonalization", l.median_solver_s.orthogonalize_s}}},
+                                         {"peak_memory_mb", l.peak_memory_mb},
+                                         {"complete", l.complete},
+                                         {"repeat_spread", l.max_repeat_spread}});
+        for (const auto& mode : model.modes) {
+            toml::array values;
+            for (std::size_t i = 0; i < model.levels.size(); ++i) {
+                if (!mode.frequency_hz[i]) continue;
+                toml::table v{{"level", static_cast<int64_t>(i)}, {"frequency_hz", *mode.frequency_hz[i]}};
+                if (mode.relative_error[i]) v.insert("relative_error", *mode.relative_error[i]);
+                values.push_back(v);
+            }
+            toml::table t{{"id", mode.key.text()}, {"type", mode.key.type},         {"n", mode.key.n},
+                          {"m", mode.key.m},       {"occurrence", mode.key.occurrence}, {"role", mode.role},
+                          {"values", values}};
+            if (mode.richardson) t.insert("richardson", richardson_table(*mode.richardson));
+            modes.push_back(t);
+        }
+        toml::table m{{"model", model.model}, {"ladder", model.ladder_note}, {"levels", levels}, {"modes", modes}};
+        if (model.time_exponent) m.insert("time_exponent", *model.time_exponent);
+        if (model.memory_exponent) m.insert("memory_exponent", *model.memory_exponent);
+        models.push_back(m);
+    }
+    toml::array checks;
+    for (const auto& c : study.checks) {
+        const ModelStudy* solid = nullptr;
+        for (const auto& m : study.models)
+            if (m.model == "solid") solid = &m;
+        toml::array modes;
+        for (const auto& d : distinct_modes(c.result.modes)) {
+            toml::table v{{"id", d.key.text()}, {"frequency_hz", d.frequency_hz}};
+            if (solid)
+                for (const auto& t : solid->modes)
+                    if (t.key == d.key && t.richardson) {
+                        v.insert("relative_error", std::abs(d.frequency_hz - t.richardson->f0) / t.richardson->f0);
+                        v.insert("role", t.role);
+                    }
+            modes.push_back(v);
+        }
+        checks.push_back(toml::table{{"name", c.name},
+                                     {"mesh", c.mesh},
+                                     {"n_dofs", c.result.n_dofs},
+                                     {"timing_s", timing_table(c.result.median_s)},
+                                     {"peak_memory_mb", c.result.peak_memory_mb},
+                                     {"modes", modes}});
+    }
+    toml::array notes;
+    for (const auto& n : study.notes) notes.push_back(n);
+    toml::table root{{"program", "coremodal " COREMODAL_VERSION},
+                     {"case", study.case_name},
+                     {"source_file", study.source_file},
+                     {"n_modes", study.n_modes},
+                     {"repeats", study.repeats},
+                     {"repeat_limit_s", study.repeat_limit_s},
+                     {"total_time_s", study.total_time_s},
+                     {"ladder_time_s", study.ladder_time_s},
+                     {"load_average", toml::array{study.load_start, study.load_end}},
+                     {"n_cores", study.n_cores},
+                     {"models", models},
+                     {"checks", checks},
+                     {"notes", notes}};
+    std::ostringstream s;
+    s << toml::json_formatter{root} << "\n";
+    return s.str();
+}
+
+namespace {
+
+void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
+    const TrackedMode* f1 = role_mode(m, "f1");
+    const TrackedMode* oval = role_mode(m, "ovalling");
+    s << "| k | mesh (wall/paper/around/along) | DOFs | runs | mesh [s] | assemble [s] | factor+solve [s] | "
+         "total [s] | CPU [s] | peak memory [MiB] |";
+    if (f1) s << " f1 [Hz] | error f1 |";
+    if (oval) s << " ovalling [Hz] | error ovalling |";
+    s << "\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|";
+    if (f1) s << "---:|---:|";
+    if (oval) s << "---:|---:|";
+    s << "\n";
+    for (std::size_t i = 0; i < m.levels.size(); ++i) {
+        const LevelResult& l = m.levels[i];
+        const Timing& t = l.median_s;
+        s << "| " << l.step.k << " | " << l.step.counts << " | " << l.n_dofs
+          << " | " << l.runs << " | " << seconds(t.mesh) << " | " << seconds(t.assemble) << " | "
+          << seconds(t.factor_and_solve) << " | " << seconds(t.total) << " | " << seconds(l.median_cpu_s) << " | "
+          << fmt("%.0f", l.peak_memory_mb) << " |";
+        for (const TrackedMode* t : {f1, oval}) {
+            if (!t) continue;
+            s << ' ' << opt(t->frequency_hz[i], "%.4f") << " | "
+              << (t->relative_error[i] ? percent(*t->relative_error[i]) : std::string("–")) << " |";
+        }
+        s << "\n";
+        if (!l.complete) s << "\n(k = " << l.step.k << ": the inertia count found missing modes)\n";
+    }
+}
+
+void markdown_extrapolation(std::ostringstream& s, const ModelStudy& m) {
+    s << "\n| mode | role | finest [Hz] | extrapolated f0 [Hz] | error estimate | f0 known to | order p | "
+         "asymptotic | note |\n|---|---|---:|---:|---:|---:|---:|---|---|\n";
+    for (const auto& t : m.modes) {
+        s << "| " << t.key.text() << " | " << role_title(t.role) << " | " << opt(t.frequency_hz.back(), "%.4f")
+          << " | ";
+        if (!t.richardson) {
+            s << "– | – | – | – | – | missing at some level (labels differ) |\n";
+            continue;
+        }
+        const Richardson& r = *t.richardson;
+        s << fmt("%.4f", r.f0) << " | " << percent(r.error_estimate / std::abs(r.f0)) << " | "
+          << (r.f0_uncertainty ? percent(*r.f0_uncertainty / std::abs(r.f0)) : std::string("–")) << " | "
+          << (r.extrapolated ? fmt("%.2f", r.order) : std::string("–")) << " | " << (r.asymptotic ? "yes" : "no")
+          << " | " << r.note << " |\n";
+    }
+    s << "\nerror estimate = |f(finest) − f0| / f0; \"f0 known to\" = |f0 − f0 of the triple one level coarser| / f0.\n";
+}
+
+void markdown_targets(std::ostringstream& s, const ModelStudy& m) {
+    s << "\n| mode | target | cheapest level reaching it | DOFs | time [s] |\n|---|---:|---|---:|---:|\n";
+    for (const std::string role : {"f1", "ovalling"}) {
+        const TrackedMode* t = role_mode(m, role);
+        if (!t) continue;
+        for (double target : kAccuracyTargets) {
+            s << "| " << role_title(role) << " | " << percent(target) << " | ";
+            const auto i = first_level_within(*t, target);
+            if (i) {
+                const LevelResult& l = m.levels[*i];
+                s << l.step.label << " | " << l.n_dofs << " | " << seconds(l.median_s.total) << " |\n";
+            } else if (const auto p = predict_level_for(m, *t, target)) {
+                s << "none of the ladder; predicted k ≈ " << fmt("%.1f", p->k) << " | ≈ " << fmt("%.3g", p->n_dofs)
+                  << " | " << (p->time_s ? "≈ " + fmt("%.3g", *p->time_s) : std::string("–")) << " |\n";
+            } else {
+                s << "none of the ladder (not asymptotic, or below what f0 is known to) | – | – |\n";
+            }
+        }
+    }
+    s << "\nA level reaches a target when its error against f0 plus the uncertainty of f0 is within it. "
+         "Predictions extend the observed order and time scaling beyond the ladder (uniform refinement).\n";
+}
+
+void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
+    if (m.levels.empty()) return;
+    const LevelResult& l = m.levels.back();
+    const Timing& t = l.median_s;
+    const double total = t.total > 0 ? t.total : 1;
+    s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
+      << l.runs << (l.runs == 1 ? " run" : " runs") << "): mesh " << seconds(t.mesh) << " s ("
+      << percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s (" << percent(t.assemble / total)
+      << "), factorization and solve " << seconds(t.factor_and_solve) << " s (" << percent(t.factor_and_solve / total)
+      << "), classification " << seconds(t.classify) << " s (" << percent(t.classify / total) << "); total "
+      << seconds(t.total) << " s, peak memory " << fmt("%.0f", l.peak_memory_mb) << " MiB.\n";
+    const SolverBreakdown& b = l.median_solver_s;
+    if (b.factor_s + b.solve_s + b.orthogonalize_s > 0) {
+        const double rest = std::max(0.0, t.factor_and_solve - b.factor_s - b.solve_s - b.orthogonalize_s);
+        s << "\nInside factorization and solve (PETSc event log): factorizations " << seconds(b.factor_s) << " s ("
+          << percent(b.factor_s / total) << " of the total), triangular solves " << seconds(b.solve_s) << " s ("
+          << percent(b.solve_s / total) << "), orthogonalization of the Krylov basis " << seconds(b.orthogonalize_s)
+          << " s (" << percent(b.orthogonalize_s / total) << "), the rest of the eigensolver (M products, projected "
+          << "problem, residual checks) " << seconds(rest) << " s (" << percent(rest / total) << ").\n";
+    }
+    if (m.time_exponent && m.memory_exponent)
+        s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^" << fmt("%.2f", *m.time_exponent)
+          << ", peak memory ~ DOFs^" << fmt("%.2f", *m.memory_exponent) << ".\n";
+}
+
+}  // namespace
+
+std::string converge_markdown(const ConvergeStudy& study, const std::string& plot_note) {
+    std::ostringstream s;
+    s << "# Convergence study: " << study.case_name << "\n\n";
+    s << "Case file `" << study.source_file << "`; " << study.n_modes << " modes asked per run; timings are medians of "
+      << study.repeats << " runs per level (levels whose first run took longer than "
+      << fmt("%.0f", study.repeat_limit_s) << " s run once). Model levels: ";
+    for (std::size_t i = 0; i < study.models.size(); ++i) s << (i ? ", " : "") << study.models[i].model;
+    s << ". Ladders: " << seconds(study.ladder_time_s) << " s; whole study (with named-level checks): "
+      << seconds(study.total_time_s) << " s on " << study.n_cores
+      << " cores, load average " << fmt("%.1f", study.load_start) << " at the start and "
+      << fmt("%.1f", study.load_end) << " at the end (a load above the number of cores means other processes "
+      << "shared the machine and the wall times are longer than on an idle one; CPU time is less affected).\n";
+    for (const auto& m : study.models) {
+        s << "\n## Model level: " << m.model << "\n\n" << m.ladder_note << "\n\n";
+        markdown_levels(s, m);
+        s << "\n### Extrapolated frequencies (Richardson, three finest levels)\n";
+        markdown_extrapolation(s, m);
+        s << "\n### Accuracy targets\n";
+        markdown_targets(s, m);
+        s << "\n### Cost\n";
+        markdown_cost(s, m);
+    }
+    if (!study.checks.empty()) {
+        s << "\n## Named mesh levels against the extrapolated values (solid)\n\n"
+             "| level | mesh (wall/paper/around/along) | DOFs | total [s] | peak memory [MiB] | f1 [Hz] | error f1 | "
+             "ovalling [Hz] | error ovalling |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        const ModelStudy* solid = nullptr;
+        for (const auto& m : study.models)
+            if (m.model == "solid") solid = &m;
+        for (const auto& c : study.checks) {
+            s << "| " << c.name << " | " << c.mesh << " | " << c.result.n_dofs << " | "
+              << seconds(c.result.median_s.total) << " | " << fmt("%.0f", c.result.peak_memory_mb) << " |";
+            const auto distinct = distinct_modes(c.result.modes);
+            for (const std::string role : {"f1", "ovalling"}) {
+                const TrackedMode* t = solid ? role_mode(*solid, role) : nullptr;
+                const DistinctMode* d = nullptr;
+                if (t)
+                    for (const auto& x : distinct)
+                        if (x.key == t->key) d = &x;
+                if (!d || !t->richardson) {
+                    s << " – | – |";
+                    continue;
+                }
+                s << ' ' << fmt("%.4f", d->frequency_hz) << " | "
+                  << percent(std::abs(d->frequency_hz - t->richardson->f0) / t->richardson->f0) << " |";
+            }
+            s << "\n";
+        }
+    }
+    if (!study.notes.empty()) {
+        s << "\n## Notes\n\n";
+        for (const auto& n : study.notes) s << "- " << n << "\n";
+    }
+    s << "\n## Error against time\n\n";
+    if (plot_note.empty())
+        s << "![relative error of f1 and of the first ovalling mode against run time](error_vs_time.png)\n";
+    else
+        s << "(no picture: " << plot_note << ")\n";
+    return s.str();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,481 @@
+// `coremodal converge CASE.toml`: what accuracy costs in time. Runs a
+// refinement ladder for every model level the scene allows, times each level
+// (median of repeated runs), tracks the modes across levels by label,
+// extrapolates their frequencies (Richardson, observed order) and writes
+// converge.csv, converge.json, converge.md and error_vs_time.png.
+#include "app/commands.hpp"
+#include "app/converge.hpp"
+#include "app/run_case.hpp"
+#include "common/argv.hpp"
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
+#include "common/stopwatch.hpp"
+#include "output/results_folder.hpp"
+#include "scene/case_file.hpp"
+#include "scene/mesh_levels.hpp"
+
+#include <malloc.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace coremodal {
+namespace {
+
+std::string fmt(const char* format, double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, v);
+    return buffer;
+}
+
+// ---- 1. model levels and their ladders ---------------------------------------
+
+// Processor time of this process so far (user + system, all its threads).
+double cpu_seconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    auto s = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return s(usage.ru_utime) + s(usage.ru_stime);
+}
+
+// PETSc's cumulative event times (main stage, this rank) of the events that
+// make up a solve; their differences over a run give SolverBreakdown. An
+// event not registered yet (no matrix factored so far) counts 0.
+double event_seconds(std::initializer_list<const char*> names) {
+    double total = 0;
+    for (const char* name : names) {
+        PetscLogEvent id = -1;
+        PetscEventPerfInfo info{};
+        if (PetscLogEventGetId(name, &id) || id < 0) continue;
+        if (PetscLogEventGetPerfInfo(0, id, &info)) continue;
+        total += info.time;
+    }
+    return total;
+}
+
+SolverBreakdown solver_event_seconds() {
+    return {event_seconds({"MatCholFctrSym", "MatCholFctrNum", "MatLUFactorSym", "MatLUFactorNum"}),
+            event_seconds({"MatSolve"}), event_seconds({"BVOrthogonalizeV"})};
+}
+
+// The 1-minute load average (0 when unknown).
+double load_average() {
+    double load[1] = {0};
+    return getloadavg(load, 1) == 1 ? load[0] : 0.0;
+}
+
+// One run of the solid model on one mesh of the ladder. The peak memory is
+// the process's peak during this run (summed over ranks); freed memory is
+// handed back to the system afterwards so that a level does not inherit the
+// previous level's heap.
+LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
+    Scene s = scene;
+    s.mesh = mesh;
+    s.analysis.n_modes = n_modes;
+    RunOptions options;
+    options.quiet = true;
+    options.write_results = false;
+    const bool reset = reset_peak_memory();
+    const double cpu_start = cpu_seconds();
+    const SolverBreakdown events_start = solver_event_seconds();
+    RunReport report = run_scene(std::move(s), options);
+    const SolverBreakdown events_end = solver_event_seconds();
+    LevelRun run;
+    run.n_dofs = report.model.n_dofs;
+    run.timing_s = report.timing_s;
+    run.cpu_s = cpu_seconds() - cpu_start;
+    run.solver_s = {events_end.factor_s - events_start.factor_s, events_end.solve_s - events_start.solve_s,
+                    events_end.orthogonalize_s - events_start.orthogonalize_s};
+    double peak = reset ? peak_memory_since_reset_mb() : peak_memory_mb();
+    MPI_Allreduce(&peak, &run.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    run.complete = report.modes.verification.complete;
+    run.modes = std::move(report.modes.modes);
+    for (Mode& m : run.modes) std::vector<double>().swap(m.shape);
+    malloc_trim(0);
+    return run;
+}
+
+ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes) {
+    std::string budget_note;
+    UnitMesh unit;
+    if (o.unit) {
+        unit = parse_unit(*o.unit, "--unit");  // the user's unit is taken as given
+    } else {
+        unit = fit_unit_to_budget(scene, default_unit(scene), o.first, o.levels, o.max_dofs, budget_note);
+    }
+    ModelLadder ladder;
+    ladder.model = "solid";
+    ladder.steps = refinement_ladder(scene, unit, o.first, o.levels);
+    const long finest = estimate_dofs(ladder.steps.back().mesh, scene.rest_paper.has_value());
+    if (o.unit && o.max_dofs > 0 && finest > o.max_dofs)
+        budget_note = "the finest level (estimated " + std::to_string(finest) + " DOFs) exceeds --max-dofs " +
+                      std::to_string(o.max_dofs) + "; --unit was taken as given";
+    // The unit's counts per axial segment, as the ladder multiplies them.
+    std::string segments;
+    for (int n : ladder.steps.front().mesh.along_per_segment)
+        segments += (segments.empty() ? "" : "+") + std::to_string(n / ladder.steps.front().k);
+    const std::string paper = scene.rest_paper ? std::to_string(unit.n_rest_paper) : std::string("-");
+    ladder.note = "Ladder: level k has k times the elements of the unit mesh " + std::to_string(unit.n_wall) + "/" +
+                  paper + "/" + std::to_string(unit.n_around) + "/" + std::to_string(ladder.steps.front().mesh.n_along /
+                  ladder.steps.front().k) + " (through the wall / through the rest paper / around / along; along "
+                  "per axial segment " + segments + ") in every direction and in every axial segment, so h = 1/k "
+                  "exactly (ratios (k+1)/k between levels; graded segments keep their size ratio). Hexahedra " +
+                  scene.mesh.element + (budget_note.empty() ? "." : "; " + budget_note + ".");
+    ladder.run_once = [&scene, &n_modes](const MeshStep& step) { return run_solid_once(scene, step.mesh, n_modes); };
+    return ladder;
+}
+
+// The beam model level (a Timoshenko beam in src/beam/, being built in
+// parallel) joins the study here: when `run_beam_model` exists, return its
+// ladder (elements along 10, 20, 40, 80: MeshStep k = 1, 2, 4, 8, h = 1/k,
+// mesh.n_along = 10 k) with run_once calling it. Until then the study lists
+// only "solid".
+std::optional<ModelLadder> beam_ladder(const Scene&, const ConvergeOptions&) { return std::nullopt; }
+
+// ---- 2. the number of modes -------------------------------------------------
+
+bool has_ovalling(const std::vector<Mode>& modes) {
+    for (const auto& d : distinct_modes(modes))
+        if (d.key.type == "ovalling") return true;
+    return false;
+}
+
+// The study reports on the first ovalling mode, which beam theory cannot see;
+// it often lies above the case's own request (case 03: mode 17). Doubles
+// n_modes on the coarsest level (cheap) until an ovalling mode shows, up to
+// kMaxModesForOvalling. Returns the last coarsest run, which counts as that
+// level's first run; nothing when the count is given (--modes, a band).
+std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder& solid, const ConvergeOptions& o,
+                                          int& n_modes, std::ostream& progress, std::vector<std::string>& notes) {
+    if (o.n_modes || scene.analysis.f_max_hz) return std::nullopt;
+    const bool root = mpi_rank() == 0;
+    for (;;) {
+        LevelRun run = solid.run_once(solid.steps.front());
+        int found = root ? has_ovalling(run.modes) : 0;
+        MPI_Bcast(&found, 1, MPI_INT, 0, PETSC_COMM_WORLD);  // labels live on rank 0
+        if (found) return run;
+        if (n_modes >= kMaxModesForOvalling) {
+            notes.push_back("no ovalling mode among the first " + std::to_string(n_modes) +
+                            " modes at the coarsest level: the study tracks the others");
+            return run;
+        }
+        const int more = std::min(2 * n_modes, kMaxModesForOvalling);
+        if (root && !o.quiet)
+            progress << "  no ovalling mode among the first " << n_modes << " modes at " << solid.steps.front().label
+                     << ": asking for " << more << std::endl;
+        n_modes = more;
+    }
+}
+
+// ---- 3. running a ladder ------------------------------------------------------
+
+std::string role_values(const LevelRun& run) {
+    std::string s;
+    bool f1 = false, oval = false;
+    for (const auto& d : distinct_modes(run.modes)) {
+        if (!f1 && d.key.type == "bending") s += ", f1 " + fmt("%.4f", d.frequency_hz) + " Hz", f1 = true;
+        if (!oval && d.key.type == "ovalling") s += ", first ovalling " + fmt("%.4f", d.frequency_hz) + " Hz", oval = true;
+    }
+    return s;
+}
+
+LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<LevelRun> first_run,
+                      const ConvergeOptions& o, std::ostream& progress) {
+    const bool say = mpi_rank() == 0 && !o.quiet;
+    const MeshStep& step = ladder.steps[i];
+    if (say)
+        progress << "  " << ladder.model << " [" << i + 1 << "/" << ladder.steps.size() << "] " << step.label << ":"
+                 << std::flush;
+    std::vector<LevelRun> runs;
+    if (first_run) runs.push_back(std::move(*first_run));
+    auto show = [&] {
+        if (!say) return;
+        if (runs.size() == 1) progress << " " << runs[0].n_dofs << " DOFs,";
+        progress << " " << fmt("%.1f", runs.back().timing_s.total) << " s" << std::flush;
+    };
+    if (!runs.empty()) show();
+    while (static_cast<int>(runs.size()) < o.repeats) {
+        runs.push_back(ladder.run_once(step));
+        show();
+        // A slow level is timed once: its run-to-run noise is small against
+        // its time, and the study must fit in minutes (docs/performance.md).
+        // The timing is agreed on rank 0 so that every rank runs alike.
+        int stop = runs.front().timing_s.total > o.repeat_limit_s;
+        MPI_Bcast(&stop, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+        if (stop) break;
+    }
+    LevelResult result = summarize_runs(step, runs);
+    if (say)
+        progress << " -> median " << fmt("%.2f", result.median_s.total) << " s, "
+                 << fmt("%.0f", result.peak_memory_mb) << " MiB" << role_values(runs.front())
+                 << (result.complete ? "" : "  [INCOMPLETE: modes missing]") << std::endl;
+    return result;
+}
+
+NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int n_modes, const ConvergeOptions& o,
+                                std::ostream& progress) {
+    Scene s = scene;
+    s.mesh.along_per_segment.clear();
+    apply_mesh_level(s, name);
+    NamedLevelCheck check;
+    check.name = name;
+    check.mesh = std::to_string(s.mesh.n_wall) + "/" +
+                 (s.rest_paper ? std::to_string(s.mesh.n_rest_paper) : std::string("-")) + "/" +
+                 std::to_string(s.mesh.n_around) + "/" + std::to_string(s.mesh.n_along);
+    const bool say = mpi_rank() == 0 && !o.quiet;
+    if (say) progress << "  named level " << name << " " << check.mesh << ":" << std::flush;
+    MeshStep step;
+    step.mesh = s.mesh;
+    step.counts = check.mesh;
+    step.label = name + " " + check.mesh;
+    const LevelRun run = run_solid_once(scene, s.mesh, n_modes);
+    check.result = summarize_runs(step, {run});
+    if (say)
+        progress << " " << run.n_dofs << " DOFs, " << fmt("%.1f", run.timing_s.total) << " s" << role_values(run)
+                 << std::endl;
+    return check;
+}
+
+// ---- 4. the picture ------------------------------------------------------------
+
+// The interpreter for the plot: $COREMODAL_PYTHON, else Debian's
+// /usr/bin/python3 (the one with python3-matplotlib and python3-h5py, as the
+// docs and the test suite use), else python3 on the PATH.
+std::string python_interpreter() {
+    if (const char* own = std::getenv("COREMODAL_PYTHON")) return own;
+    std::error_code ec;
+    if (std::filesystem::exists("/usr/bin/python3", ec)) return "/usr/bin/python3";
+    return "python3";
+}
+
+// Draws error_vs_time.png with the python package of this source tree
+// (`python3 -m coremodal converge-plot DIR`, PYTHONPATH = $COREMODAL_PYTHON_DIR
+// or the source's python/ folder). Returns "" on success, else why there is
+// no picture: the numbers never depend on python or matplotlib.
+std::string draw_plot(const std::filesystem::path& dir) {
+    const char* own = std::getenv("COREMODAL_PYTHON_DIR");
+    std::string python_dir = own ? own : COREMODAL_SOURCE_DIR "/python";
+    std::vector<std::string> env;
+    for (char** e = environ; e && *e; ++e) {
+        const std::string v = *e;
+        if (v.rfind("PYTHONPATH=", 0) == 0) python_dir += ":" + v.substr(11);
+        else if (v.rfind("MPLBACKEND=", 0) != 0) env.push_back(v);
+    }
+    env.push_back("PYTHONPATH=" + python_dir);
+    env.push_back("MPLBACKEND=Agg");
+    const std::string python = python_interpreter();
+    std::vector<std::string> args = {python, "-m", "coremodal", "converge-plot", dir.string(), "--quiet"};
+    auto argv = c_strings(args);
+    auto envp = c_strings(env);
+    pid_t pid = 0;
+    const int spawned = posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), envp.data());
+    if (spawned != 0) return "cannot start " + python + " (" + std::string(std::strerror(spawned)) + ")";
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return "lost the python3 process";
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return python + " -m coremodal converge-plot failed (status " +
+               std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+               "; its message is above; are python3-matplotlib and python3-h5py installed?)";
+    return "";
+}
+
+void write_text(const std::string& path, const std::string& text) {
+    std::ofstream f(path);
+    f << text;
+    if (!f) throw std::runtime_error("cannot write " + path);
+}
+
+void write_study(const ConvergeStudy& study, const std::filesystem::path& out, bool quiet, std::ostream& progress) {
+    ResultsFolder folder(out);
+    write_text(folder.file("converge.csv"), converge_csv(study));
+    write_text(folder.file("converge.json"), converge_json(study));
+    const std::string plot_note = draw_plot(std::filesystem::path(folder.file("converge.json")).parent_path());
+    if (!plot_note.empty()) std::cerr << "coremodal: warning: no error_vs_time.png: " << plot_note << std::endl;
+    write_text(folder.file("converge.md"), converge_markdown(study, plot_note));
+    folder.commit();
+    if (!quiet) progress << "results: " << out.string() << " (converge.md, converge.csv, converge.json"
+                         << (plot_note.empty() ? ", error_vs_time.png" : "") << ")" << std::endl;
+}
+
+void print_summary(const ConvergeStudy& study, std::ostream& out) {
+    for (const auto& m : study.models) {
+        out << "\n" << m.model << ": extrapolated frequencies (three finest levels)\n";
+        for (const auto& t : m.modes) {
+            if (t.role.empty() || !t.richardson) continue;
+            const Richardson& r = *t.richardson;
+            char line[256];
+            std::snprintf(line, sizeof line, "  %-10s %-24s f0 %12.4f Hz  error of finest %9.2e  order %s  %s\n",
+                          t.role.c_str(), t.key.text().c_str(), r.f0, r.error_estimate / std::abs(r.f0),
+                          r.extrapolated ? fmt("%.2f", r.order).c_str() : "-",
+                          r.asymptotic ? "asymptotic" : "NOT asymptotic");
+            out << line;
+        }
+        for (const std::string role : {"f1", "ovalling"})
+            for (const auto& t : m.modes) {
+                if (t.role != role) continue;
+                out << "  " << role << " within";
+                for (double target : kAccuracyTargets) {
+                    const auto i = first_level_within(t, target);
+                    out << "  " << fmt("%g", target * 100) << " %: ";
+                    if (i) {
+                        out << m.levels[*i].step.label << " (" << fmt("%.1f", m.levels[*i].median_s.total) << " s)";
+                    } else if (const auto p = predict_level_for(m, t, target)) {
+                        out << "not in the ladder (k ~ " << fmt("%.1f", p->k) << ", ~" << fmt("%.2g", p->n_dofs)
+                            << " DOFs" << (p->time_s ? ", ~" + fmt("%.2g", *p->time_s) + " s" : std::string()) << ")";
+                    } else {
+                        out << "not in the ladder";
+                    }
+                }
+                out << "\n";
+            }
+    }
+    out << "\nladders " << fmt("%.1f", study.ladder_time_s) << " s, whole study " << fmt("%.1f", study.total_time_s)
+        << " s" << std::endl;
+}
+
+}  // namespace
+
+// ---- 5. the study, in order ------------------------------------------------------
+
+ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
+    Stopwatch clock;
+    const bool root = mpi_rank() == 0;
+    if (o.repeats < 1) throw InputError("--repeats " + std::to_string(o.repeats) + ": expected at least 1");
+    if (o.n_modes && *o.n_modes < 1) throw InputError("--modes " + std::to_string(*o.n_modes) + ": expected at least 1");
+    for (const auto& name : o.check_levels)
+        if (!find_mesh_level(name))
+            throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
+
+    // PETSc's event log (cheap) splits the solver time into factorizations,
+    // triangular solves and products; -log_view may have started it already.
+    PetscBool logging = PETSC_FALSE;
+    PetscLogIsActive(&logging);
+    if (!logging) PetscLogDefaultBegin();
+
+    // 1. The scene and its model levels.
+    const Scene scene = parse_case_file(o.case_file);
+    ConvergeStudy study;
+    study.load_start = load_average();
+    study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
+    study.case_name = scene.name;
+    study.source_file = o.case_file;
+    study.repeats = o.repeats;
+    study.repeat_limit_s = o.repeat_limit_s;
+    int n_modes = o.n_modes.value_or(scene.analysis.n_modes);
+    std::vector<ModelLadder> ladders = {solid_ladder(scene, o, n_modes)};
+    if (auto beam = beam_ladder(scene, o)) ladders.push_back(std::move(*beam));
+    if (root && !o.quiet) {
+        progress << "converge: " << scene.name << " (" << o.case_file << "), model levels:";
+        for (const auto& l : ladders) progress << " " << l.model;
+        progress << "; " << o.levels << " levels, " << o.repeats << (o.repeats == 1 ? " run" : " runs")
+                 << " per level (one when the first takes over "
+                 << fmt("%.0f", o.repeat_limit_s) << " s)" << std::endl;
+    }
+
+    // 2. How many modes each run asks for (enough to hold the first ovalling mode).
+    std::optional<LevelRun> first_run = choose_mode_count(scene, ladders.front(), o, n_modes, progress, study.notes);
+    study.n_modes = n_modes;
+
+    // 3. Every level of every ladder, coarse to fine, then the analysis.
+    for (auto& ladder : ladders) {
+        std::vector<LevelResult> levels;
+        for (std::size_t i = 0; i < ladder.steps.size(); ++i) {
+            std::optional<LevelRun> reuse;
+            if (i == 0 && ladder.model == "solid") reuse = std::move(first_run);
+            levels.push_back(run_level(ladder, i, std::move(reuse), o, progress));
+        }
+        study.models.push_back(analyse_levels(ladder.model, ladder.note, std::move(levels)));
+    }
+
+    study.ladder_time_s = clock.seconds();
+
+    // 4. Named mesh levels, for choosing the default.
+    for (const auto& name : o.check_levels) study.checks.push_back(run_named_level(scene, name, n_modes, o, progress));
+
+    for (const auto& m : study.models)
+        for (const auto& l : m.levels) {
+            if (!l.complete)
+                study.notes.push_back(m.model + " " + l.step.label + ": the inertia count found modes missing");
+            if (l.max_repeat_spread > 1e-8)
+                study.notes.push_back(m.model + " " + l.step.label + ": repeated runs differ by " +
+                                      fmt("%.1e", l.max_repeat_spread) + " in frequency");
+        }
+    study.total_time_s = clock.seconds();
+    study.load_end = load_average();
+
+    // 5. Write (rank 0): numbers first, then the picture, then the report.
+    if (root && o.write_results) {
+        const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
+                                                       : std::filesystem::path("results") / (scene.name + "-converge");
+        write_study(study, out, o.quiet, progress);
+    }
+    if (root && !o.quiet) print_summary(study, progress);
+    return study;
+}
+
+Command add_converge_command(CLI::App& app) {
+    auto options = std::make_shared<ConvergeOptions>();
+    auto output = std::make_shared<std::string>();
+    auto unit = std::make_shared<std::string>();
+    auto n_modes = std::make_shared<int>(0);
+    CLI::App* cmd = app.add_subcommand(
+        "converge",
+        "What accuracy costs in time: a mesh refinement ladder per model level, timed (median of repeated runs), "
+        "modes tracked by label, Richardson-extrapolated frequencies with error estimates, error-vs-time plot");
+    cmd->add_option("case", options->case_file, "case file (TOML) with a generated mesh")->required();
+    cmd->add_option("-o,--output", *output,
+                    "results folder (default results/<case name>-converge): converge.md, converge.csv, "
+                    "converge.json, error_vs_time.png");
+    cmd->add_option("--levels", options->levels, "levels of the ladder, k = first ... first + levels - 1 (at least 3)")
+        ->capture_default_str()
+        ->check(CLI::Range(3, 12));
+    cmd->add_option("--first", options->first, "multiple k of the coarsest level")->capture_default_str()->check(
+        CLI::Range(1, 64));
+    cmd->add_option("--unit", *unit,
+                    "element counts of the k = 1 mesh, WALL/PAPER/AROUND/ALONG (default: 1/1/8 and along keeping the "
+                    "case's element aspect)");
+    cmd->add_option("--repeats", options->repeats, "runs per level; the median time is reported")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
+    cmd->add_option("--repeat-limit", options->repeat_limit_s, "seconds: a level whose first run is slower runs once")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--max-dofs", options->max_dofs,
+                    "bound on the finest level's DOFs: the default unit's elements along are lowered to stay "
+                    "within it (0: no bound; an explicit --unit is taken as given)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--modes", *n_modes,
+                    "modes per run (default: the case's, doubled until the coarsest level shows an ovalling mode)")
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--check-levels", options->check_levels,
+                    "named mesh levels (coarse, default, fine, very_fine) to run once and compare with the "
+                    "extrapolated frequencies")
+        ->delimiter(',');
+    cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or summary");
+    cmd->footer("Model levels: solid (a beam level joins when it exists). Level k refines the unit mesh k times in "
+                "every direction (h = 1/k); the three finest levels give the Richardson extrapolation and its "
+                "observed order, the level before them checks that order. PETSc/SLEPc options pass through as for "
+                "`run`. See docs/accuracy-vs-cost.md.");
+    auto run = [options, output, unit, n_modes] {
+        if (!output->empty()) options->output_dir = *output;
+        if (!unit->empty()) options->unit = *unit;
+        if (*n_modes > 0) options->n_modes = *n_modes;
+        run_converge(*options, std::cout);
+        return 0;
+    };
+    return {cmd, run, true};
+}
+
+}  // namespace coremodal

@@ -1,0 +1,377 @@
+// `coremodal converge`, the pieces without a solver: Richardson extrapolation
+// on synthetic sequences, tracking modes by label, the refinement ladder,
+// medians, power laws and the report writers.
+#include "app/converge.hpp"
+
+#include "app/batch.hpp"  // json_number, json_string: read back converge.json
+#include "common/error.hpp"
+#include "geometry/tube_section.hpp"
+#include "scene/case_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace coremodal;
+
+namespace {
+
+std::vector<double> synthetic(const std::vector<double>& h, double f0, double c, double p) {
+    std::vector<double> f;
+    for (double x : h) f.push_back(f0 + c * std::pow(x, p));
+    return f;
+}
+
+Mode mode(int index, double f, const std::string& type, int n, int m) {
+    Mode x;
+    x.index = index;
+    x.frequency_hz = f;
+    x.label.type = type;
+    x.label.n = n;
+    x.label.m = m;
+    return x;
+}
+
+LevelResult level(int k, std::vector<Mode> modes) {
+    LevelResult l;
+    l.step.k = k;
+    l.step.h = 1.0 / k;
+    l.step.counts = std::to_string(k) + "/" + std::to_string(k) + "/" + std::to_string(8 * k) + "/" +
+                    std::to_string(10 * k);
+    l.step.label = "k=" + std::to_string(k) + " " + l.step.counts;
+    l.n_dofs = 1000L * k * k * k;
+    l.runs = 3;
+    l.median_s = {0.01 * k, 0.1 * k, 1.0 * k * k * k, 0.01, 1.2 * k * k * k};
+    l.peak_memory_mb = 100.0 * k * k;
+    l.modes = std::move(modes);
+    return l;
+}
+
+std::string cases(const std::string& name) { return std::string(COREMODAL_SOURCE_DIR) + "/cases/" + name; }
+
+}  // namespace
+
+TEST_CASE("Richardson on f(h) = f0 + C h^p recovers f0 and p exactly", "[converge]") {
+    const std::vector<std::vector<double>> ladders = {{1.0 / 2, 1.0 / 3, 1.0 / 4}, {1, 0.5, 0.25}, {0.3, 0.2, 0.11}};
+    for (const auto& h : ladders)
+        for (double p : {1.0, 2.0, 4.0, 5.5})
+            for (double c : {250.0, -40.0}) {
+                const auto f = synthetic(h, 133.36, c, p);
+                const Richardson r = richardson_three(h.data(), f.data());
+                INFO("p = " << p << ", C = " << c << ", h1 = " << h[0]);
+                REQUIRE(r.extrapolated);
+                CHECK(r.order == Approx(p).epsilon(1e-8));
+                CHECK(r.f0 == Approx(133.36).epsilon(1e-11));
+                CHECK(r.error_estimate == Approx(std::abs(c) * std::pow(h[2], p)).epsilon(1e-6));
+                CHECK(r.asymptotic);
+            }
+}
+
+TEST_CASE("With four levels the order is cross-checked against the coarser triple", "[converge]") {
+    const std::vector<double> h = {1, 0.5, 1.0 / 3, 0.25};
+    SECTION("An exact power law is asymptotic and f0 is known to round-off") {
+        const Richardson r = richardson(h, synthetic(h, 32.1, 0.9, 4));
+        CHECK(r.asymptotic);
+        REQUIRE(r.previous_order);
+        CHECK(*r.previous_order == Approx(4).epsilon(1e-8));
+        REQUIRE(r.f0_uncertainty);
+        CHECK(*r.f0_uncertainty < 1e-10);
+    }
+    SECTION("Two error terms of different order make the triples disagree: not asymptotic") {
+        std::vector<double> f;
+        for (double x : h) f.push_back(100 + std::pow(x, 4) + 0.5 * x);  // orders ~2.9 and ~1.8
+        const Richardson r = richardson(h, f);
+        CHECK_FALSE(r.asymptotic);
+        CHECK_THAT(r.note, Catch::Contains("not yet asymptotic"));
+    }
+}
+
+TEST_CASE("Sequences Richardson cannot extrapolate say so and still bound the error", "[converge]") {
+    const double h[3] = {0.5, 1.0 / 3, 0.25};
+    SECTION("Alternating changes: no order, the largest change as the error estimate") {
+        const double f[3] = {10.0, 10.5, 10.2};
+        const Richardson r = richardson_three(h, f);
+        CHECK_FALSE(r.extrapolated);
+        CHECK_FALSE(r.asymptotic);
+        CHECK(r.f0 == 10.2);
+        CHECK(r.error_estimate == Approx(0.5));
+        CHECK_THAT(r.note, Catch::Contains("not monotone"));
+    }
+    SECTION("Changes that grow as h shrinks: order <= 0, not asymptotic") {
+        const double f[3] = {10.0, 10.1, 10.3};
+        const Richardson r = richardson_three(h, f);
+        CHECK_FALSE(r.extrapolated);
+        CHECK_FALSE(r.asymptotic);
+        CHECK(r.error_estimate > 0.2);
+        CHECK_THAT(r.note, Catch::Contains("not in the asymptotic range"));
+    }
+    SECTION("A mode that no longer changes has converged to solver precision") {
+        const double f[3] = {466.25, 466.25, 466.25};
+        const Richardson r = richardson_three(h, f);
+        CHECK(r.asymptotic);
+        CHECK(r.f0 == 466.25);
+        CHECK(r.error_estimate <= 1e-9 * 466.25 * 1.0001);
+        CHECK_THAT(r.note, Catch::Contains("solver precision"));
+    }
+    SECTION("A first-order rate (a singular clamp edge) is plausible; order 12 is not") {
+        const std::vector<double> hh = {0.5, 1.0 / 3, 0.25};
+        const auto slow = synthetic(hh, 61.3, 1.5, 1.0);
+        CHECK(richardson_three(hh.data(), slow.data()).asymptotic);
+        const auto fast = synthetic(hh, 61.3, 1.5, 12.0);
+        const Richardson r = richardson_three(hh.data(), fast.data());
+        CHECK(r.order == Approx(12).epsilon(1e-6));
+        CHECK_FALSE(r.asymptotic);
+        CHECK_THAT(r.note, Catch::Contains("outside"));
+    }
+}
+
+TEST_CASE("The median of repeated runs", "[converge]") {
+    CHECK(median({3.0}) == 3.0);
+    CHECK(median({5.0, 1.0, 3.0}) == 3.0);
+    CHECK(median({4.0, 1.0, 3.0, 100.0}) == 3.5);
+
+    MeshStep step;
+    LevelRun a, b, c;
+    a.timing_s = {0.1, 1.0, 10.0, 0.2, 11.3};
+    b.timing_s = {0.2, 1.2, 30.0, 0.2, 31.6};  // a run disturbed by another process
+    c.timing_s = {0.1, 1.1, 11.0, 0.2, 12.4};
+    a.peak_memory_mb = 500, b.peak_memory_mb = 520, c.peak_memory_mb = 510;
+    a.modes = b.modes = c.modes = {mode(1, 32.1, "bending", 1, 0)};
+    const LevelResult r = summarize_runs(step, {a, b, c});
+    CHECK(r.runs == 3);
+    CHECK(r.median_s.factor_and_solve == 11.0);
+    CHECK(r.median_s.total == 12.4);
+    CHECK(r.peak_memory_mb == 520);
+    CHECK(r.max_repeat_spread == 0);
+}
+
+TEST_CASE("Degenerate partners are one mode; rigid and mixed modes are not tracked", "[converge]") {
+    const std::vector<Mode> modes = {
+        mode(1, 0.0, "rigid", 0, 0),          mode(2, 1e-4, "rigid", 0, 0),
+        mode(3, 133.36, "bending", 1, 2),     mode(4, 133.36 * (1 + 1e-9), "bending", 1, 2),
+        mode(5, 466.2, "torsion", 0, 1),      mode(6, 600.0, "mixed", 1, 0),
+        mode(7, 1030.83, "ovalling", 2, 0),   mode(8, 1030.84, "ovalling", 2, 0),
+        mode(9, 1400.0, "ovalling", 2, 0)};  // a second, distinct n=2 m=0 mode
+    const auto d = distinct_modes(modes);
+    REQUIRE(d.size() == 4);
+    CHECK(d[0].key == ModeKey{"bending", 1, 2, 1});
+    CHECK(d[0].multiplicity == 2);
+    CHECK(d[0].index == 3);
+    CHECK(d[1].key == ModeKey{"torsion", 0, 1, 1});
+    CHECK(d[2].key == ModeKey{"ovalling", 2, 0, 1});
+    CHECK(d[2].multiplicity == 2);
+    CHECK(d[3].key == ModeKey{"ovalling", 2, 0, 2});
+    CHECK(d[3].key.text() == "ovalling n=2 m=0 #2");
+}
+
+TEST_CASE("Modes are tracked by label, not by index, across levels", "[converge]") {
+    // The dense ovalling family swaps order between meshes (m = 1 below m = 0
+    // on the coarse mesh); the torsion mode drops below the second bending pair.
+    std::vector<LevelResult> levels;
+    const double f0_bend = 61.3, f0_oval = 430.0, f0_tors = 150.0;
+    for (int k = 1; k <= 4; ++k) {
+        const double e = std::pow(1.0 / k, 4);
+        std::vector<Mode> modes = {mode(1, f0_bend + 2 * e, "bending", 1, 0), mode(2, f0_bend + 2 * e, "bending", 1, 0)};
+        if (k == 1) {
+            modes.push_back(mode(3, 170.0, "bending", 1, 3));
+            modes.push_back(mode(4, 170.0, "bending", 1, 3));
+            modes.push_back(mode(5, f0_tors + 40 * e, "torsion", 0, 0));
+        } else {
+            modes.push_back(mode(3, f0_tors + 40 * e, "torsion", 0, 0));
+            modes.push_back(mode(4, 170.0 - e, "bending", 1, 3));
+            modes.push_back(mode(5, 170.0 - e, "bending", 1, 3));
+        }
+        const Mode m0 = mode(6, f0_oval + 100 * e, "ovalling", 2, 0);
+        const Mode m1 = mode(7, f0_oval + 0.5 + (k == 1 ? 80 : 100) * e, "ovalling", 2, 1);
+        if (k == 1) modes.insert(modes.end(), {m1, m0});
+        else modes.insert(modes.end(), {m0, m1});
+        if (k == 4) modes.push_back(mode(8, 900.0, "axial", 0, 0));  // only the finest level reaches it
+        levels.push_back(level(k, modes));
+    }
+    const auto tracked = track_modes(levels);
+    auto find = [&](const std::string& type, int m) -> const TrackedMode* {
+        for (const auto& t : tracked)
+            if (t.key.type == type && t.key.m == m) return &t;
+        return nullptr;
+    };
+    const TrackedMode* f1 = find("bending", 0);
+    const TrackedMode* oval = find("ovalling", 0);
+    const TrackedMode* tors = find("torsion", 0);
+    const TrackedMode* axial = find("axial", 0);
+    REQUIRE(f1);
+    REQUIRE(oval);
+    REQUIRE(tors);
+    CHECK(f1->role == "f1");
+    CHECK(oval->role == "ovalling");
+    CHECK(tors->role == "torsion");
+    REQUIRE(f1->richardson);
+    CHECK(f1->richardson->f0 == Approx(f0_bend).epsilon(1e-10));
+    CHECK(f1->richardson->order == Approx(4).epsilon(1e-6));
+    REQUIRE(oval->richardson);
+    CHECK(oval->richardson->f0 == Approx(f0_oval).epsilon(1e-10));
+    CHECK(*oval->frequency_hz[0] == Approx(f0_oval + 100));  // the m = 0 value, although second at k = 1
+    REQUIRE(tors->richardson);
+    CHECK(tors->richardson->f0 == Approx(f0_tors).epsilon(1e-10));
+    // A role mode that only the finest level has is listed, without extrapolation.
+    REQUIRE(axial);
+    CHECK(axial->role == "axial");
+    CHECK_FALSE(axial->richardson);
+    CHECK_FALSE(axial->frequency_hz[0]);
+    // Relative errors against f0, and the cheapest level within each target.
+    REQUIRE(f1->relative_error[1]);
+    CHECK(*f1->relative_error[1] == Approx(2 * std::pow(0.5, 4) / f0_bend).epsilon(1e-6));
+    const auto within = first_level_within(*f1, 1e-3);  // errors 3.3e-2, 2.0e-3, 4.0e-4, 1.3e-4
+    REQUIRE(within);
+    CHECK(*within == 2);
+    CHECK_FALSE(first_level_within(*f1, 1e-5));
+}
+
+TEST_CASE("The ladder refines every direction and every axial segment by k", "[converge]") {
+    const Scene scene = parse_case_file(cases("03-rest-roll-150x15.8-4320.toml"));
+    const UnitMesh unit = parse_unit("1/1/8/11", "--unit");
+    const auto steps = refinement_ladder(scene, unit, 1, 4);
+    REQUIRE(steps.size() == 4);
+    const auto& unit_segments = steps[0].mesh.along_per_segment;
+    REQUIRE(unit_segments.size() == 5);  // end, clamp, free span, clamp, end
+    for (const auto& s : steps) {
+        CAPTURE(s.label);
+        CHECK(s.h == Approx(1.0 / s.k));
+        CHECK(s.mesh.n_wall == s.k);
+        CHECK(s.mesh.n_rest_paper == s.k);
+        CHECK(s.mesh.n_around == 8 * s.k);
+        for (std::size_t i = 0; i < unit_segments.size(); ++i)
+            CHECK(s.mesh.along_per_segment[i] == s.k * unit_segments[i]);
+        // The mesher takes the counts as given.
+        Scene refined = scene;
+        refined.mesh = s.mesh;
+        const TubeSection section = make_tube_section(refined);
+        for (std::size_t i = 0; i < section.segments.size(); ++i)
+            CHECK(section.segments[i].n_elements == s.mesh.along_per_segment[i]);
+    }
+    CHECK(steps[3].label == "k=4 4/4/32/" + std::to_string(steps[3].mesh.n_along));
+
+    SECTION("The default unit keeps the case's axial element aspect") {
+        const UnitMesh d = default_unit(scene);
+        CHECK(d.n_wall == 1);
+        CHECK(d.n_around == kUnitElementsAround);
+        CHECK(d.n_along == (scene.mesh.n_along * 8 + scene.mesh.n_around - 1) / scene.mesh.n_around);
+    }
+}
+
+TEST_CASE("Bad ladder input is refused with the option and what is expected", "[converge]") {
+    CHECK_THROWS_WITH(parse_unit("1/1/8", "--unit"), Catch::Contains("--unit 1/1/8: 3 counts"));
+    CHECK_THROWS_WITH(parse_unit("1/x/8/10", "--unit"), Catch::Contains("'x' is not a positive whole number"));
+    CHECK_THROWS_WITH(parse_unit("1/1/10/10", "--unit"), Catch::Contains("multiple of 4"));
+    CHECK_THROWS_WITH(parse_unit("1/0/8/10", "--unit"), Catch::Contains("expected WALL/PAPER/AROUND/ALONG"));
+    const Scene free_core = parse_case_file(cases("01-iso-free-free-76x15.toml"));
+    CHECK_THROWS_WITH(refinement_ladder(free_core, UnitMesh{1, 1, 8, 10}, 1, 2), Catch::Contains("at least 3"));
+    const Scene user_mesh = parse_case_file(cases("04-user-mesh-76x15.toml"));
+    CHECK_THROWS_AS(refinement_ladder(user_mesh, UnitMesh{1, 1, 8, 10}, 1, 4), InputError);
+    CHECK_THROWS_WITH(refinement_ladder(user_mesh, UnitMesh{1, 1, 8, 10}, 1, 4),
+                      Catch::Contains("converge refines the generated mesh"));
+}
+
+TEST_CASE("Power laws of time and memory against DOFs", "[converge]") {
+    const std::vector<double> dofs = {1e4, 3e4, 1e5, 5e5};
+    std::vector<double> time;
+    for (double n : dofs) time.push_back(2e-4 * std::pow(n, 1.2));
+    CHECK(*power_law_exponent(dofs, time) == Approx(1.2).epsilon(1e-12));
+    CHECK_FALSE(power_law_exponent({1e4}, {2.0}));
+    CHECK_FALSE(power_law_exponent({1e4, 1e4}, {2.0, 3.0}));
+}
+
+TEST_CASE("The report files hold every level and tracked mode", "[converge]") {
+    std::vector<LevelResult> levels;
+    for (int k = 1; k <= 4; ++k) {
+        const double e = std::pow(1.0 / k, 4);
+        levels.push_back(level(k, {mode(1, 61.3 + e, "bending", 1, 0), mode(2, 61.3 + e, "bending", 1, 0),
+                                   mode(3, 430 + 50 * e, "ovalling", 2, 0)}));
+    }
+    ConvergeStudy study;
+    study.case_name = "synthetic";
+    study.source_file = "synthetic.toml";
+    study.n_modes = 3;
+    study.repeats = 3;
+    study.repeat_limit_s = 30;
+    study.models.push_back(analyse_levels("solid", "unit 1/1/8/10", levels));
+    study.total_time_s = 99;
+
+    const std::string csv = converge_csv(study);
+    std::istringstream lines(csv);
+    int n = 0;
+    for (std::string line; std::getline(lines, line);) ++n;
+    CHECK(n == 1 + 4 * 2);  // header + levels x tracked modes
+    CHECK_THAT(csv, Catch::StartsWith("model,k,mesh,h,dofs,runs,"));
+    CHECK_THAT(csv, Catch::Contains("solid,4,4/4/32/40,0.25,64000,3,"));
+
+    const std::string json = converge_json(study);
+    CHECK(json_string(json, "case") == "synthetic");
+    CHECK(*json_number(json, "total_time_s") == Approx(99));
+
+    const std::string md = converge_markdown(study, "");
+    CHECK_THAT(md, Catch::Contains("# Convergence study: synthetic"));
+    CHECK_THAT(md, Catch::Contains("| f1 (first bending) | 1.0 % | k=2"));
+    CHECK_THAT(md, Catch::Contains("| f1 (first bending) | 0.10 % | k=3"));
+    CHECK_THAT(md, Catch::Contains("![relative error"));
+    CHECK_THAT(converge_markdown(study, "python3 missing"), Catch::Contains("(no picture: python3 missing)"));
+    CHECK(study.models[0].time_exponent);
+    CHECK(*study.models[0].time_exponent == Approx(1.0).epsilon(1e-9));  // time ~ k^3, DOFs ~ k^3
+}
+
+TEST_CASE("The DOF estimate of a tube mesh and the study's cost bound", "[converge]") {
+    const Scene rest_roll = parse_case_file(cases("03-rest-roll-150x15.8-4320.toml"));
+    MeshSpec m = rest_roll.mesh;
+    m.n_wall = 4, m.n_rest_paper = 4, m.n_around = 32, m.n_along = 104;
+    // Measured: 346,944 DOFs after eliminating the clamped nodes (docs/accuracy-vs-cost.md).
+    CHECK(estimate_dofs(m, true) == 351936);
+    CHECK(estimate_dofs(m, true) > 346944);
+    CHECK(estimate_dofs(m, true) < 1.02 * 346944);
+
+    SECTION("A long rest roll's unit is shortened along until the finest level fits") {
+        std::string note;
+        const UnitMesh unit = fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 200000, note);
+        CHECK(unit.n_along < default_unit(rest_roll).n_along);
+        CHECK(estimate_dofs(refinement_ladder(rest_roll, unit, 1, 4).back().mesh, true) <= 200000);
+        CHECK_THAT(note, Catch::Contains("lowered from 21 to"));
+    }
+    SECTION("A scene that fits keeps its unit; no bound keeps every unit") {
+        const Scene free_core = parse_case_file(cases("01-iso-free-free-76x15.toml"));
+        std::string note;
+        CHECK(fit_unit_to_budget(free_core, default_unit(free_core), 1, 4, 200000, note).n_along ==
+              default_unit(free_core).n_along);
+        CHECK(note.empty());
+        CHECK(fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 0, note).n_along == 21);
+    }
+    SECTION("A bound that cannot be met says so") {
+        std::string note;
+        fit_unit_to_budget(rest_roll, default_unit(rest_roll), 1, 4, 1000, note);
+        CHECK_THAT(note, Catch::Contains("exceeds --max-dofs 1000"));
+    }
+}
+
+TEST_CASE("A target beyond the ladder is predicted from the observed order and time scaling", "[converge]") {
+    std::vector<LevelResult> levels;
+    for (int k = 1; k <= 4; ++k) {
+        const double e = std::pow(1.0 / k, 4);
+        levels.push_back(level(k, {mode(1, 100 + 10 * e, "ovalling", 2, 0)}));
+    }
+    const ModelStudy m = analyse_levels("solid", "", levels);
+    const TrackedMode& oval = m.modes.at(0);
+    REQUIRE(oval.richardson);
+    // Finest error 10/256/100 = 3.9e-4: 1e-4 needs k = 4 (3.9)^(1/4) = 5.59.
+    const auto p = predict_level_for(m, oval, 1e-4);
+    REQUIRE(p);
+    CHECK(p->k == Approx(4 * std::pow(10.0 / 256 / 100 / 1e-4, 0.25)).epsilon(1e-6));
+    CHECK(p->n_dofs == Approx(64000 * std::pow(p->k / 4, 3)).epsilon(1e-9));
+    REQUIRE(p->time_s);
+    CHECK(*p->time_s == Approx(1.2 * std::pow(p->k, 3)).epsilon(1e-6));  // time ~ DOFs here
+    const std::string md = [&] {
+        ConvergeStudy study;
+        study.models.push_back(m);
+        return converge_markdown(study, "");
+    }();
+    CHECK_THAT(md, Catch::Contains("predicted k ≈ 5.6"));
+}
