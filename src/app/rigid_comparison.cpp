@@ -13,6 +13,7 @@ Scene rigid_clamp_variant(const Scene& scene) {
     rigid.name = scene.name + "-rigid";
     rigid.supports = {};
     rigid.supports.kind = SupportKind::clamped;
+    rigid.mesh.along_per_segment.clear();  // the clamps make other segments than the chucks
     const double L = scene.core.length;
     for (const ChuckSpec& c : scene.supports.chucks) {
         double near = L, far = 0;  // from this chuck's core end

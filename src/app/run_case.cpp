@@ -157,6 +157,7 @@ Scene free_span_scene(const Scene& scene, double span) {
     free.supports = {};
     free.analysis = {};
     free.analysis.n_modes = 8;  // 6 rigid modes and the bending pair
+    free.mesh.along_per_segment.clear();  // a ladder's counts are for the scene's segments, not the span's
     const MeshLevel& coarse = *find_mesh_level("coarse");
     free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
     free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
