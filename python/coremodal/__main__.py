@@ -1,10 +1,13 @@
-"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``.
+"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
+``python3 -m coremodal study-plot STUDY_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
+    python3 -m coremodal study-plot results/06-study-safe-speed-study
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
-exist (with a one-line message on stderr), 2 for a usage error.
+exist, or the folder holds no study (with a one-line message on stderr), 2 for
+a usage error.
 """
 
 from __future__ import annotations
@@ -45,11 +48,31 @@ def _parser() -> argparse.ArgumentParser:
                       "of its smallest)")
     plot.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
                       help="picture size in pixels (default 1200x900)")
+    study = commands.add_parser(
+        "study-plot", help="draw the PNG plots of a study or calibration folder (study.csv, study.json)")
+    study.add_argument("folder", type=Path, help="results folder of coremodal study or coremodal calibrate")
     return parser
+
+
+def _study_plot(folder: Path) -> str:
+    from . import study_plot  # matplotlib only when drawing
+
+    paths = study_plot.draw_all(folder)
+    return "\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot (no successful point)"
 
 
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "study-plot":
+        from .study_plot import StudyFormatError
+
+        try:
+            output = _study_plot(args.folder)
+        except (StudyFormatError, OSError) as error:
+            print(f"coremodal: error: {error}", file=sys.stderr)
+            return 1
+        print(output)
+        return 0
     try:
         if not args.results.is_file():
             raise ResultsFormatError(f"{args.results}: no such file")
