@@ -17,7 +17,7 @@ from coremodal.study_plot import StudyFormatError, change_diameters, draw_all, l
 WEB_SPEED = 14.0
 HEADER = ("point,rest_paper.thickness_m,core.length_m,status,predecessor,track,label,type,n,m,multiplicity,"
           "frequency_hz,mac_previous,ambiguous,new_track,f1_hz,k,li_m,span_m,f_i7_hz,diameter_m,v_safe_m_s,"
-          "time_s,error")
+          "n_dofs,time_s,error")
 
 
 def png_size(path: Path) -> tuple[int, int]:
@@ -41,10 +41,10 @@ def write_study(folder: Path, *, failed_point: bool = False) -> Path:
             point += 1
             d = 0.106 + 2 * t
             f1 = v_safe(d, length) / (0.7 * np.pi * d)
-            common = f"{f1},0.8,0.1,{length - 0.2},{f1 / 0.8},{d},{v_safe(d, length)},1.0"
+            common = f"{f1},0.8,0.1,{length - 0.2},{f1 / 0.8},{d},{v_safe(d, length)},5000,1.0"
             prefix = f"{point},{t},{length}"
             if failed_point and point == 6:
-                rows.append(f"{prefix},failed,,,,,,,,,,,,{',' * 8}solve failed")
+                rows.append(f"{prefix},failed,,,,,,,,,,,,{',' * 9}solve failed")
                 continue
             pred = "" if point == 1 else str(point - 1)
             torsion = 30.0 + 10 * point  # crosses the bending frequency

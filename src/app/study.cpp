@@ -207,7 +207,8 @@ std::string parameter_cells(const CaseSweep& sweep, const StudyPoint& p) {
 
 std::string point_cells(const StudyPoint& p) {
     return number(p.f1_hz) + "," + number(p.k) + "," + number(p.li_m) + "," + number(p.span_m) + "," +
-           number(p.f_i7_hz) + "," + number(p.diameter_m) + "," + number(p.v_safe_m_s) + "," + number(p.time_s);
+           number(p.f_i7_hz) + "," + number(p.diameter_m) + "," + number(p.v_safe_m_s) + "," +
+           (p.ok ? std::to_string(p.n_dofs) : std::string()) + "," + number(p.time_s);
 }
 
 }  // namespace
@@ -219,7 +220,7 @@ std::string study_csv(const CaseSweep& sweep, const StudyResult& result) {
     out << "point";
     for (const SweepParameter& p : sweep.parameters()) out << "," << csv_field(parameter_column(p));
     out << ",status,predecessor,track,label,type,n,m,multiplicity,frequency_hz,mac_previous,ambiguous,new_track,"
-           "f1_hz,k,li_m,span_m,f_i7_hz,diameter_m,v_safe_m_s,time_s,error\n";
+           "f1_hz,k,li_m,span_m,f_i7_hz,diameter_m,v_safe_m_s,n_dofs,time_s,error\n";
     for (const StudyPoint& p : result.points) {
         const std::string head = std::to_string(p.index + 1) + parameter_cells(sweep, p);
         if (!p.ok) {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -89,6 +90,35 @@ struct CaseSweep::Impl {
 };
 
 namespace {
+
+// The unit range values are shown in: the one `from` was written in ("5 mm"
+// gives labels "5 mm", "12.5 mm", ...), else SI.
+struct RangeUnit {
+    std::string name;  // "" = SI via format_quantity
+    double factor = 1;
+    Dimension dimension = Dimension::dimensionless;
+    std::string label(double si) const {
+        if (name.empty()) return format_quantity(si, dimension);
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", si / factor);
+        return std::string(text) + " " + name;
+    }
+};
+
+RangeUnit range_unit(const toml::node& from, Dimension d) {
+    RangeUnit u{"", 1, d};
+    const std::optional<std::string_view> text = from.value<std::string_view>();
+    if (!text || d == Dimension::dimensionless) return u;
+    const size_t start = text->find_first_not_of("+-0123456789.eE ");
+    if (start == std::string_view::npos) return u;
+    const std::string name(text->substr(start));
+    try {
+        u.factor = parse_quantity("1 " + name, d);
+        u.name = name;
+    } catch (const std::invalid_argument&) {  // already refused with its own message
+    }
+    return u;
+}
 
 // Reads and checks the sweep table. Messages: FILE:LINE:COL: what; expected.
 class SweepReader {
@@ -452,6 +482,7 @@ private:
             if (spacing == "log" && !(lo > 0 && hi > 0))
                 fail(*s, what + " spacing = \"log\" needs from and to above zero");
         }
+        const RangeUnit unit = range_unit(*from, spec.dimension);
         for (int i = 0; i < n; ++i) {
             const double t = static_cast<double>(i) / (n - 1);
             double v = spacing == "log" ? lo * std::pow(hi / lo, t) : lo + t * (hi - lo);
@@ -468,7 +499,7 @@ private:
                 values.push_back(whole);
             } else {
                 p.si.push_back(v);
-                p.labels.push_back(format_quantity(v, spec.dimension));
+                p.labels.push_back(unit.label(v));
                 values.push_back(v);
             }
         }

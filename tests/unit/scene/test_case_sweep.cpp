@@ -227,3 +227,13 @@ TEST_CASE("[calibration] has its own options and defaults", "[scene][sweep]") {
         CHECK_THAT(std::string(e.what()), Catch::Contains("unknown key 'web_speed' in [calibration]"));
     }
 }
+
+TEST_CASE("The example study (case 06) reads: 4 widths x 10 thicknesses, every point a valid scene",
+          "[scene][sweep][cases]") {
+    const CaseSweep s = CaseSweep::read(std::string(COREMODAL_SOURCE_DIR) + "/cases/06-study-safe-speed.toml", "study");
+    REQUIRE(s.n_points() == 40);
+    CHECK(s.options().web_speed_m_s == Approx(14.0));
+    CHECK(s.options().modes == 8);
+    CHECK(s.parameters()[1].labels.front() == "10 mm");
+    for (int i = 0; i < s.n_points(); ++i) CHECK_NOTHROW(s.scene(i));
+}
