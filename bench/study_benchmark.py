@@ -10,8 +10,9 @@ The study: rest paper thickness 5 to 50 mm (10 values) x Li 150 to 350 mm
 included. With --supports clamped (today) the chucks are rigid clamps 100 mm
 long centred at Li; with --supports chucks, elastic chucks whose expanding
 element (100 mm wide) is centred at Li, for when the elastic-chuck solid model
-is in. Prints the wall time, the time per point and a markdown row for
-docs/performance.md.
+is in. Prints the wall time, the CPU time (user + system of the study process and
+its children: a check on a machine shared with other work), the time per point
+and a markdown row for docs/performance.md.
 """
 import argparse
 import csv
@@ -20,6 +21,7 @@ import os
 import pathlib
 import platform
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -108,6 +110,8 @@ def main():
                              capture_output=True, text=True)
         wall = time.monotonic() - start
         load_after = os.getloadavg()
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        cpu = usage.ru_utime + usage.ru_stime  # the study and its python plots: less disturbed by other load
         if run.returncode != 0:
             sys.stderr.write(run.stdout + run.stderr)
             sys.exit(f"the study failed with status {run.returncode}")
@@ -124,6 +128,7 @@ def main():
         "failed": meta["n_failed"],
         "wall_s": wall,
         "study_time_s": meta["time_s"],
+        "cpu_s": cpu,
         "point_time_median_s": statistics.median(times.values()),
         "point_time_max_s": max(times.values()),
         "f1_range_hz": [min(f1.values()), max(f1.values())],

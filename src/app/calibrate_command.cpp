@@ -6,10 +6,17 @@
 #include "common/petsc_handle.hpp"
 #include "output/results_folder.hpp"
 
+#include <cstdio>
 #include <iostream>
 
 namespace coremodal {
 namespace {
+
+std::string g(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
 
 struct CalibrateOptions {
     std::string case_file, output, mesh;
@@ -28,9 +35,10 @@ int run_calibrate_command(const CalibrateOptions& o) {
                   << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
                   << " each); results in " << out_dir.string() << std::endl;
     StudyResult result = run_sweep(sweep, {o.quiet}, std::cout);
+    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    if (!root) return 0;
     track_modes(sweep, result);
     const CalibrationOutcome outcome = calibrate_chuck_factor(sweep, result);
-    if (!root) return outcome.calibration.passed && !result.n_failed() ? 0 : 1;
 
     ResultsFolder folder(out_dir);
     const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
@@ -44,11 +52,11 @@ int run_calibrate_command(const CalibrateOptions& o) {
     folder.commit();
 
     const Calibration& c = outcome.calibration;
-    std::cout << "calibrate: 1/k^2 = " << c.law.c[0] << " + " << c.law.c[1] << " g1 + " << c.law.c[2] << " g2 + "
-              << c.law.c[3] << " g3; "
-              << c.n_fit << " points fitted (rms residual in k " << c.rms_residual_k << "), " << c.n_held_out
-              << " held out: largest f1 error " << 100 * c.max_error_held_out << " % (fitted " << 100 * c.max_error_fit
-              << " %), stated " << 100 * c.stated_error << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
+    std::cout << "calibrate: 1/k^2 = " << g(c.law.c[0]) << " + " << g(c.law.c[1]) << " g1 + " << g(c.law.c[2])
+              << " g2 + " << g(c.law.c[3]) << " g3; " << c.n_fit << " points fitted (rms residual in k "
+              << g(c.rms_residual_k) << "), " << c.n_held_out << " held out: largest f1 error "
+              << g(100 * c.max_error_held_out) << " % (fitted " << g(100 * c.max_error_fit) << " %), stated "
+              << g(100 * c.stated_error) << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
               << "calibrate: " << out_dir.string() << "/calibration.toml (apply with coremodal beam --calibration)"
               << std::endl;
     if (!c.passed)

@@ -100,7 +100,7 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
             scenes[static_cast<size_t>(i)] = sweep.scene(i);
         } catch (const InputError& e) {
             p.error = e.what();
-            if (say) progress << "  point " << i + 1 << " refused: " << p.error << std::endl;
+            if (say) progress << "  refused: " << p.error << std::endl;
         }
     }
     const int n_to_run = static_cast<int>(std::count_if(scenes.begin(), scenes.end(), [](auto& s) { return s.has_value(); }));

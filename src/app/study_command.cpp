@@ -5,10 +5,17 @@
 #include "common/petsc_handle.hpp"
 #include "output/results_folder.hpp"
 
+#include <cstdio>
 #include <iostream>
 
 namespace coremodal {
 namespace {
+
+std::string g(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
 
 struct StudyCommandOptions {
     std::string case_file, output, mesh;
@@ -20,8 +27,8 @@ void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
     if (!web) return;
     for (const SpeedCrossing& c : safe_speed_crossings(sweep, result, *web)) {
         if (c.change_diameters_m.empty()) continue;
-        std::cout << "  at " << *web << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
-                  << ": change the roll below D = " << c.change_diameters_m.back() * 1e3 << " mm\n";
+        std::cout << "  at " << g(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
+                  << ": change the roll below D = " << g(c.change_diameters_m.back() * 1e3) << " mm\n";
     }
 }
 
@@ -37,8 +44,9 @@ int run_study_command(const StudyCommandOptions& o) {
                   << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
                   << " each); results in " << out_dir.string() << std::endl;
     StudyResult result = run_sweep(sweep, {o.quiet}, std::cout);
+    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    if (!root) return 0;
     track_modes(sweep, result);
-    if (!root) return result.n_failed() ? 1 : 0;
 
     ResultsFolder folder(out_dir);
     const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
@@ -53,7 +61,7 @@ int run_study_command(const StudyCommandOptions& o) {
     const int failed = result.n_failed();
     if (!o.quiet) print_crossings(sweep, result);
     std::cout << "study: " << sweep.n_points() - failed << " of " << sweep.n_points() << " points ok in "
-              << result.time_s << " s; " << out_dir.string() << "/report.md" << std::endl;
+              << g(result.time_s) << " s; " << out_dir.string() << "/report.md" << std::endl;
     if (failed) std::cerr << "coremodal: " << failed << " point(s) failed; see report.md" << std::endl;
     return failed ? 1 : 0;
 }

@@ -141,7 +141,7 @@ TEST_CASE("A study writes its whole folder; a refused point is reported and the 
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.exit_code == 1);  // one point failed
     CHECK(r.out.find("[1/3] core.length = 0.5 m: f1 ") != std::string::npos);
-    CHECK(r.out.find("point 3 refused") != std::string::npos);
+    CHECK(r.out.find("refused: point 3 (core.length = 0.07 m)") != std::string::npos);
     CHECK(r.err.find("1 point(s) failed") != std::string::npos);
     for (const char* file : {"study.csv", "study.json", "report.md", "modes_vs_core_length.png",
                              "f1_vs_core_length.png", "k_vs_core_length.png"}) {
