@@ -332,6 +332,8 @@ private:
             fail(*list, what + " gives values and a range (from, to, steps); expected one of them");
         if (list) {
             read_values(*list, *spec, what, p, values);
+            if (spec->kind == ValueKind::text || spec->kind == ValueKind::material)
+                check_words(out, paths, values, *list->as_array(), what);
         } else if (from || item.get("to")) {
             read_range(item, *spec, what, p, values);
         } else {
@@ -340,6 +342,24 @@ private:
         out.parameters.push_back(std::move(p));
         out.paths.push_back(std::move(paths));
         out.values.push_back(std::move(values));
+    }
+
+    // A word (a mesh level, a support type, a library material) is checked by
+    // the case reader, which knows the words: each value alone, set in the
+    // case, must read, or the value's line is named.
+    void check_words(const CaseSweep::Impl& out, const std::vector<KeyPath>& paths, const std::vector<Value>& values,
+                     const toml::array& list, const std::string& what) const {
+        for (size_t v = 0; v < values.size(); ++v) {
+            toml::table doc = toml::parse(out.text, path_);
+            out.apply_options(doc);
+            for (const KeyPath& path : paths) CaseSweep::Impl::set(doc, path, values[v]);
+            try {
+                parse_case_table(doc, path_);
+            } catch (const InputError& e) {
+                fail(list[v], what + " = " + std::get<std::string>(values[v]) +
+                                  " is refused with the case's other values: " + e.what());
+            }
+        }
     }
 
     static std::string kind_name(const KeySpec& spec) {
@@ -561,9 +581,9 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
     auto impl = std::make_shared<Impl>();
     impl->path = path;
     impl->name = base.name;
-    const toml::table root = toml::parse(text, path);
-    SweepReader(path, table).read(root, *impl, mesh_override);
     impl->text = std::move(text);
+    const toml::table root = toml::parse(impl->text, path);
+    SweepReader(path, table).read(root, *impl, mesh_override);
     CaseSweep sweep;
     sweep.impl_ = std::move(impl);
     return sweep;

@@ -101,6 +101,15 @@ TEST_CASE("A mode that enters the window starts a new track; a mixed match is am
         CHECK(steps[0].track == 3);
         CHECK(steps[1].track == tracks_a[0]);
     }
+    SECTION("A good match with a rival close behind is still ambiguous") {
+        // MAC 0.9 to the bending track and 0.85 to a second current group: within 0.1.
+        const double best = std::sqrt(0.9), rival = std::sqrt(0.85);
+        const auto b = group_modes({mode(1, 95, "bending", 1, 0, {best, 0, 0, 0, std::sqrt(0.1), 0}),
+                                    mode(2, 99, "mixed", 1, 1, {rival, 0, 0, std::sqrt(0.15), 0, 0})});
+        const auto steps = follow_tracks(a, tracks_a, b, next);
+        CHECK(*steps[0].mac_previous == Approx(0.9));
+        CHECK(steps[0].ambiguous);
+    }
     SECTION("A mode that is half one and half the other") {
         Signature half = {std::sqrt(0.5), 0, std::sqrt(0.5), 0, 0, 0};
         const auto b = group_modes({mode(1, 150, "mixed", 0, 0, half)});

@@ -194,6 +194,12 @@ TEST_CASE("Bad [study] tables are refused with file, line, key and what is expec
         CHECK_THAT(error_of("\n[study]\nmesh = \"corse\"\nparameters = [{ key = \"core.length\", values = [1] }]\n"),
                    Catch::Contains("unknown mesh level"));
     }
+    SECTION("A word the case reader does not know is refused at its line") {
+        const std::string e =
+            error_of("\n[study]\nparameters = [{ key = \"mesh.level\", values = [\"coarse\", \"corse\"] }]\n");
+        CHECK_THAT(e, Catch::Contains("cases/s.toml:19:57: [study] parameters #1 (mesh.level) = corse is refused"));
+        CHECK_THAT(e, Catch::Contains("did you mean \"coarse\"?"));
+    }
     SECTION("A material value must be a library name") {
         CHECK_THAT(error_of("\n[study]\nparameters = [{ key = \"core.material\", values = [{ E = 1 }] }]\n"),
                    Catch::Contains("core.material.E_z"));
