@@ -3,7 +3,7 @@
 (150.5x15.8 core, Ilomäki's rotogravure example) must finish in under 10
 minutes on 2 cores.
 
-    /usr/bin/python3 bench/study_benchmark.py [--supports clamped|chucks] [--mesh coarse] [--out bench/results/study_50.json]
+    /usr/bin/python3 bench/study_benchmark.py [--supports clamped|chucks] [--jobs N] [--mesh coarse] [--out bench/results/study_50.json]
 
 The study: rest paper thickness 5 to 50 mm (10 values) x Li 150 to 350 mm
 (5 values), the study defaults otherwise (coarse mesh, 12 modes), plots
@@ -95,6 +95,7 @@ def machine():
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--supports", choices=["clamped", "chucks"], default="clamped")
+    parser.add_argument("--jobs", type=int, default=0, help="coremodal study --jobs (default: the study's, the cores)")
     parser.add_argument("--mesh", default="", help="[study] mesh level (default: the study default, coarse)")
     parser.add_argument("--out", type=pathlib.Path, default=ROOT / "bench" / "results" / "study_50.json")
     args = parser.parse_args()
@@ -106,8 +107,10 @@ def main():
         out = pathlib.Path(tmp) / "study"
         load_before = os.getloadavg()
         start = time.monotonic()
-        run = subprocess.run([str(BINARY), "study", str(case), "--output", str(out)], env=env,
-                             capture_output=True, text=True)
+        command = [str(BINARY), "study", str(case), "--output", str(out)]
+        if args.jobs:
+            command += ["--jobs", str(args.jobs)]
+        run = subprocess.run(command, env=env, capture_output=True, text=True)
         wall = time.monotonic() - start
         load_after = os.getloadavg()
         usage = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -124,6 +127,7 @@ def main():
     result = {
         "machine": machine(),
         "supports": args.supports,
+        "jobs": args.jobs or "default (cores)",
         "points": meta["n_points"],
         "failed": meta["n_failed"],
         "wall_s": wall,
@@ -140,7 +144,7 @@ def main():
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(result, indent=2) + "\n")
     print(json.dumps(result, indent=2))
-    print(f"\n| {args.supports} | {meta['n_points']} | {meta['options']['mesh']} | {meta['options']['modes']} | "
+    print(f"\n| {args.supports} | {args.jobs or 'cores'} | {meta['n_points']} | {meta['options']['mesh']} | {meta['options']['modes']} | "
           f"{min(dofs):,}-{max(dofs):,} | {wall:.0f} s ({wall / 60:.1f} min) | {result['point_time_median_s']:.1f} s | "
           f"{result['point_time_max_s']:.1f} s | {'yes' if result['under_limit'] else 'NO'} |")
 

@@ -71,7 +71,7 @@ def main(argv: list[str] | None = None) -> int:
         except (StudyFormatError, OSError) as error:
             print(f"coremodal: error: {error}", file=sys.stderr)
             return 1
-        print(output)
+        _print(output)
         return 0
     try:
         if not args.results.is_file():
@@ -88,11 +88,15 @@ def main(argv: list[str] | None = None) -> int:
     except (ResultsFormatError, IndexError, OSError) as error:
         print(f"coremodal: error: {error}", file=sys.stderr)
         return 1
+    _print(output)
+    return 0
+
+
+def _print(output: str) -> None:
     try:
         print(output)
     except BrokenPipeError:  # e.g. piped into head: not an error
         sys.stderr.close()
-    return 0
 
 
 if __name__ == "__main__":

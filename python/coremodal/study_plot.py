@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import matplotlib
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
@@ -179,6 +180,10 @@ def plot_tracked_modes(study: Study, out: Path) -> Path | None:
     for r in study.ok_rows():
         panels.setdefault(_group_key(study, r, {x_par.name}), []).append(r)
     keys = list(panels)[:MAX_PANELS]
+    # One colour per track in every panel: the same mode looks the same everywhere.
+    track_ids = sorted({int(r["track"]) for r in study.ok_rows()})
+    palette = matplotlib.colormaps["tab10"]
+    colour = {str(t): palette(i % 10) for i, t in enumerate(track_ids)}
     cols = 1 if len(keys) == 1 else 2
     rows_n = math.ceil(len(keys) / cols)
     figure, axes = _new_figure(rows_n, cols)
@@ -192,7 +197,7 @@ def plot_tracked_modes(study: Study, out: Path) -> Path | None:
             rs.sort(key=lambda r: _x_of(study, x_par, r))
             x = [_x_of(study, x_par, r) for r in rs]
             f = [number(r["frequency_hz"]) for r in rs]
-            line, = ax.plot(x, f, marker="o", markersize=3, label=f"{t}: {rs[0]['label']}")
+            ax.plot(x, f, marker="o", markersize=3, color=colour[t], label=f"{t}: {rs[0]['label']}")
             amb = [(xi, fi) for xi, fi, r in zip(x, f, rs) if r.get("ambiguous") == "1"]
             if amb:
                 ax.plot(*zip(*amb), linestyle="none", marker="o", markersize=9, markerfacecolor="none",

@@ -21,6 +21,7 @@ std::string g(double v) {
 struct CalibrateOptions {
     std::string case_file, output, mesh;
     bool quiet = false, no_plots = false;
+    unsigned jobs = 0;  // 0: the number of cores
 };
 
 int run_calibrate_command(const CalibrateOptions& o) {
@@ -33,8 +34,9 @@ int run_calibrate_command(const CalibrateOptions& o) {
         std::cout << "calibrate: " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
                   << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
                   << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
-                  << " each); results in " << out_dir.string() << std::endl;
-    StudyResult result = run_sweep(sweep, {o.quiet}, std::cout);
+                  << " each, " << jobs_for(o.jobs, sweep) << " at a time); results in " << out_dir.string()
+                  << std::endl;
+    StudyResult result = run_sweep(sweep, {o.quiet, jobs_for(o.jobs, sweep)}, std::cout);
     // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
     if (!root) return 0;
     track_modes(sweep, result);
@@ -80,6 +82,9 @@ Command add_calibrate_command(CLI::App& app) {
                     "mesh level of every point, overriding [calibration] mesh: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
+    cmd->add_option("-j,--jobs", o->jobs,
+                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
+                    "after the other in this process, as always under mpirun)");
     cmd->footer("Exit status 0 when every point ran and I-7 with the fitted k reproduces the FE f1 within "
                 "[calibration] max_error on fitted and held-out points; 1 otherwise (the results are written "
                 "either way). docs/calibration.md.");

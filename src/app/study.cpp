@@ -2,6 +2,7 @@
 #include "app/study.hpp"
 
 #include "app/run_case.hpp"
+#include "app/study_workers.hpp"
 #include "beam/chuck_calibration.hpp"
 #include "beam/formulas.hpp"
 #include "common/error.hpp"
@@ -18,6 +19,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <thread>
 
 namespace coremodal {
 namespace fs = std::filesystem;
@@ -45,25 +47,6 @@ double first_bending_hz(const RunReport& report) {
     return 0;
 }
 
-void record_run(StudyPoint& p, const RunReport& report, const SweepOptions& options) {
-    const Scene& scene = report.scene;
-    p.model_level = report.model.level;
-    p.n_dofs = report.model.n_dofs;
-    p.supports = scene.supports.kind == SupportKind::free      ? "free"
-                 : scene.supports.kind == SupportKind::clamped ? "clamped"
-                                                               : "chucks";
-    for (const Mode& m : report.modes.modes) p.modes.push_back({m.index, m.frequency_hz, m.label, m.signature});
-    p.diameter_m = scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
-    const double f1 = first_bending_hz(report);
-    if (f1 <= 0) return;
-    p.f1_hz = f1;
-    if (scene.supports.kind == SupportKind::free) return;  // not in a stand: no k, no safe speed
-    p.v_safe_m_s = safe_web_speed(f1, p.diameter_m, options.safe_factor);
-    if (const std::optional<ChuckFactor> c = chuck_factor_of(scene, f1)) {
-        p.li_m = c->li_m, p.span_m = c->span_m, p.f_i7_hz = c->f_i7_hz, p.k = c->k;
-        p.chuck_groups = calibration_groups(scene, c->li_m, c->span_m);
-    }
-}
 
 std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
     std::string line = "[" + std::to_string(p.index + 1) + "/" + std::to_string(n_points) + "] " + p.description + ": ";
@@ -80,6 +63,43 @@ std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
 }
 
 }  // namespace
+
+unsigned jobs_for(unsigned requested, const CaseSweep& sweep) {
+    if (mpi_size() > 1) return 1;
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    return std::max(1u, std::min<unsigned>(requested ? requested : cores, static_cast<unsigned>(sweep.n_points())));
+}
+
+void run_point(Scene scene, StudyPoint& p) {
+    Stopwatch watch;
+    try {
+        RunOptions run;
+        run.quiet = true;
+        run.write_results = false;
+        const RunReport report = run_scene(std::move(scene), run);
+        p.model_level = report.model.level;
+        p.n_dofs = report.model.n_dofs;
+        for (const Mode& m : report.modes.modes) p.modes.push_back({m.index, m.frequency_hz, m.label, m.signature});
+        if (const double f1 = first_bending_hz(report); f1 > 0) p.f1_hz = f1;
+        p.ok = true;
+    } catch (const std::exception& e) {  // InputError, SolveError, PETSc: the point fails, the study goes on
+        p.error = e.what();
+    }
+    p.time_s = watch.seconds();
+}
+
+void derive_point_values(StudyPoint& p, const Scene& scene, const SweepOptions& options) {
+    p.supports = scene.supports.kind == SupportKind::free      ? "free"
+                 : scene.supports.kind == SupportKind::clamped ? "clamped"
+                                                               : "chucks";
+    p.diameter_m = scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
+    if (!p.ok || !p.f1_hz || scene.supports.kind == SupportKind::free) return;  // not in a stand: no k, no v_safe
+    p.v_safe_m_s = safe_web_speed(*p.f1_hz, p.diameter_m, options.safe_factor);
+    if (const std::optional<ChuckFactor> c = chuck_factor_of(scene, *p.f1_hz)) {
+        p.li_m = c->li_m, p.span_m = c->span_m, p.f_i7_hz = c->f_i7_hz, p.k = c->k;
+        p.chuck_groups = calibration_groups(scene, c->li_m, c->span_m);
+    }
+}
 
 StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, std::ostream& progress) {
     const bool say = mpi_rank() == 0 && !options.quiet;
@@ -108,28 +128,30 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
         throw InputError("no point of the " + sweep.case_file() + " sweep can be read; the first: " +
                          result.points.front().error);
 
+    std::vector<int> todo;
+    for (int i = 0; i < n; ++i)
+        if (scenes[static_cast<size_t>(i)]) todo.push_back(i);
+    // Progress in the order the points finish; the time left from the mean
+    // time of a point so far, spread over the jobs.
     int n_done = 0;
-    double solve_time = 0;
-    for (int i = 0; i < n; ++i) {
-        if (!scenes[static_cast<size_t>(i)]) continue;
+    double point_time = 0;
+    const bool children = options.jobs > 1 && mpi_size() == 1 && todo.size() > 1 && sweep.from_file();
+    const unsigned jobs = children ? std::min<unsigned>(options.jobs, static_cast<unsigned>(todo.size())) : 1;
+    const auto finished = [&](int i) {
         StudyPoint& p = result.points[static_cast<size_t>(i)];
-        Stopwatch watch;
-        try {
-            RunOptions run;
-            run.quiet = true;
-            run.write_results = false;
-            const RunReport report = run_scene(std::move(*scenes[static_cast<size_t>(i)]), run);
-            record_run(p, report, sweep.options());
-            p.ok = true;
-        } catch (const std::exception& e) {  // InputError, SolveError, PETSc: the point fails, the study goes on
-            p.error = e.what();
-        }
-        scenes[static_cast<size_t>(i)].reset();
-        p.time_s = watch.seconds();
-        solve_time += p.time_s;
+        derive_point_values(p, *scenes[static_cast<size_t>(i)], sweep.options());
+        point_time += p.time_s;
         ++n_done;
-        const double left = solve_time / n_done * (n_to_run - n_done);
+        const double left = point_time / n_done * (n_to_run - n_done) / jobs;
         if (say) progress << "  " << progress_line(p, n, left) << std::endl;
+    };
+    if (children) {
+        run_points_in_children(sweep, todo, jobs, options.program, result.points, finished);
+    } else {
+        for (int i : todo) {
+            run_point(*scenes[static_cast<size_t>(i)], result.points[static_cast<size_t>(i)]);
+            finished(i);
+        }
     }
     result.time_s = total.seconds();
     return result;

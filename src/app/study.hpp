@@ -51,10 +51,30 @@ struct StudyResult {
 
 struct StudyRunOptions {
     bool quiet = false;  // no progress lines
+    // Points run at the same time, each in a child process of this program
+    // (`coremodal study --worker-point`, app/study_workers.hpp): one point's
+    // factor-and-solve keeps about one core busy, so two at a time use a
+    // 2-core machine. 1 = one after the other in this process (always so
+    // under MPI, and for a sweep read from text rather than a file).
+    unsigned jobs = 1;
+    std::string program = "/proc/self/exe";  // the coremodal executable for the children
 };
 
+// One point in this process: run_scene on its scene, and the run's part of
+// `p` filled (ok or error, modes, f1, model level, DOFs, time). This is
+// what a worker child does.
+void run_point(Scene scene, StudyPoint& p);
+
+// The values a point's scene gives with its f1: D, v_safe, Li, L, k and the
+// calibration groups (beam/chuck_calibration.hpp).
+void derive_point_values(StudyPoint& p, const Scene& scene, const SweepOptions& options);
+
+// The jobs a sweep runs with: `requested` (0: the number of cores), at most
+// the number of points, and 1 under MPI.
+unsigned jobs_for(unsigned requested, const CaseSweep& sweep);
+
 // Runs every point (collective over PETSC_COMM_WORLD), printing one progress
-// line per point on rank 0. A point whose input is refused or whose solve
+// line per point on rank 0, in the order the points finish. A point whose input is refused or whose solve
 // fails is recorded and the study goes on. Throws InputError only when no
 // point can be read at all.
 StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, std::ostream& progress);

@@ -78,7 +78,8 @@ std::string support_type_of(const toml::table& root) {
 }  // namespace
 
 struct CaseSweep::Impl {
-    std::string path, text, name;
+    std::string path, text, name, table;
+    bool from_file = false;
     std::vector<SweepParameter> parameters;
     std::vector<std::vector<KeyPath>> paths;  // per parameter, per key
     std::vector<std::vector<Value>> values;   // per parameter, per value
@@ -571,7 +572,9 @@ void CaseSweep::Impl::set(toml::table& doc, const KeyPath& path, const Value& va
 
 CaseSweep CaseSweep::read(const std::string& path, std::string_view table,
                           const std::optional<std::string>& mesh_override) {
-    return from_text(read_text_file(path), path, table, mesh_override);
+    CaseSweep sweep = from_text(read_text_file(path), path, table, mesh_override);
+    std::const_pointer_cast<Impl>(sweep.impl_)->from_file = true;
+    return sweep;
 }
 
 CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::string_view table,
@@ -581,6 +584,7 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
     auto impl = std::make_shared<Impl>();
     impl->path = path;
     impl->name = base.name;
+    impl->table = std::string(table);
     impl->text = std::move(text);
     const toml::table root = toml::parse(impl->text, path);
     SweepReader(path, table).read(root, *impl, mesh_override);
@@ -591,6 +595,8 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
 
 const std::string& CaseSweep::case_file() const { return impl_->path; }
 const std::string& CaseSweep::case_name() const { return impl_->name; }
+const std::string& CaseSweep::table() const { return impl_->table; }
+bool CaseSweep::from_file() const { return impl_->from_file; }
 const std::vector<SweepParameter>& CaseSweep::parameters() const { return impl_->parameters; }
 const SweepOptions& CaseSweep::options() const { return impl_->options; }
 

@@ -63,6 +63,8 @@ public:
                                const std::optional<std::string>& mesh_override = std::nullopt);
 
     const std::string& case_file() const;
+    const std::string& table() const;  // "study" or "calibration"
+    bool from_file() const;            // read(), not from_text(): a child process can read it again
     const std::string& case_name() const;  // the case's name (file stem unless given)
     const std::vector<SweepParameter>& parameters() const;
     const SweepOptions& options() const;

@@ -54,7 +54,14 @@ StudyResult filled(const CaseSweep& sweep) {
         } else {
             p.v_safe_m_s = v_of(length, p.diameter_m);
             p.f1_hz = *p.v_safe_m_s / (0.7 * M_PI * p.diameter_m);
-            p.modes = {{1, *p.f1_hz, {"bending", 1, 0, 1.0}, {}}, {2, *p.f1_hz, {"bending", 1, 0, 1.0}, {}}};
+            ModeSummary m;
+            m.frequency_hz = *p.f1_hz;
+            m.label.type = "bending";
+            m.label.n = 1;
+            for (int k : {1, 2}) {
+                m.index = k;
+                p.modes.push_back(m);
+            }
         }
         r.points.push_back(p);
     }
