@@ -1,12 +1,15 @@
-"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...`` and
-``python3 -m coremodal converge-plot CONVERGE_DIR``.
+"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
+``python3 -m coremodal converge-plot CONVERGE_DIR`` and
+``python3 -m coremodal study-plot STUDY_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
     python3 -m coremodal converge-plot results/CASE-converge     # error_vs_time.png from converge.json
+    python3 -m coremodal study-plot results/06-study-safe-speed-study
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
-exist (with a one-line message on stderr), 2 for a usage error.
+exist, or the folder holds no study (with a one-line message on stderr), 2 for
+a usage error.
 """
 
 from __future__ import annotations
@@ -56,6 +59,9 @@ def _parser() -> argparse.ArgumentParser:
     converge.add_argument("--size", type=_size, default=(1000, 700), metavar="WxH",
                           help="picture size in pixels (default 1000x700)")
     converge.add_argument("--quiet", action="store_true", help="print nothing on success")
+    study = commands.add_parser(
+        "study-plot", help="draw the PNG plots of a study or calibration folder (study.csv, study.json)")
+    study.add_argument("folder", type=Path, help="results folder of coremodal study or coremodal calibrate")
     return parser
 
 
@@ -74,10 +80,27 @@ def _converge_plot(args: argparse.Namespace) -> int:
     return 0
 
 
+def _study_plot(folder: Path) -> str:
+    from . import study_plot  # matplotlib only when drawing
+
+    paths = study_plot.draw_all(folder)
+    return "\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot (no successful point)"
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     if args.command == "converge-plot":
         return _converge_plot(args)
+    if args.command == "study-plot":
+        from .study_plot import StudyFormatError
+
+        try:
+            output = _study_plot(args.folder)
+        except (StudyFormatError, OSError) as error:
+            print(f"coremodal: error: {error}", file=sys.stderr)
+            return 1
+        _print(output)
+        return 0
     try:
         if not args.results.is_file():
             raise ResultsFormatError(f"{args.results}: no such file")
@@ -93,11 +116,15 @@ def main(argv: list[str] | None = None) -> int:
     except (ResultsFormatError, IndexError, OSError) as error:
         print(f"coremodal: error: {error}", file=sys.stderr)
         return 1
+    _print(output)
+    return 0
+
+
+def _print(output: str) -> None:
     try:
         print(output)
     except BrokenPipeError:  # e.g. piped into head: not an error
         sys.stderr.close()
-    return 0
 
 
 if __name__ == "__main__":

@@ -4,6 +4,7 @@
 // it answers in milliseconds. Formulas: beam/formulas.hpp; docs/beam.md.
 #include "app/commands.hpp"
 #include "beam/beam_theory.hpp"
+#include "beam/chuck_calibration.hpp"
 #include "beam/formulas.hpp"
 #include "common/error.hpp"
 #include "scene/case_file.hpp"
@@ -28,6 +29,7 @@ namespace {
 struct BeamOptions {
     std::string case_file;
     std::map<std::string, std::string> raw;  // option name ("li") -> text as given
+    std::string calibration;                 // --calibration FILE (coremodal calibrate)
     bool json = false;
 };
 
@@ -105,6 +107,8 @@ struct Report {
     double Lc = 0, Li = 0, L = 0;
     std::string li_source;
     double k = 1, f1 = 0;
+    std::string k_source;  // "" for --k or the default
+    std::optional<CalibrationGroups> groups;
     double eb_cc = 0, eb_ff = 0, timo_cc = 0, timo_ff = 0;
     std::string koenig_formula;
     double koenig_factor = 0.66, koenig_l = 0, paper_thickness = 0;
@@ -114,6 +118,24 @@ struct Report {
     std::optional<double> f_free, f_clamped, f2, Q, Ec_measured, Ep_measured, k_measured;
     std::vector<std::string> notes;
 };
+
+// k from a calibration file (coremodal calibrate; docs/calibration.md).
+void apply_calibration(const std::string& file, bool k_given, Report& r) {
+    if (k_given) throw InputError("--k and --calibration both give the chuck factor; expected one of them");
+    const Calibration c = read_calibration(file);
+    if (!c.passed)
+        throw InputError(file + ": this calibration failed its own check (largest f1 error " +
+                         g(100 * std::max(c.max_error_fit, c.max_error_held_out)) + " % against the stated " +
+                         g(100 * c.stated_error) + " %); expected a calibration that passed (docs/calibration.md)");
+    r.groups = calibration_groups(r.beam, r.section.Ec * r.Ic, r.Li, r.L);
+    r.k = calibrated_k(c, *r.groups, r.L, r.Li, r.section.Dp, r.notes);
+    if (r.k > 1) {
+        r.notes.push_back("calibrated k = " + g(r.k) + " > 1 taken as 1 (the rigid clamp)");
+        r.k = 1;
+    }
+    r.k_source = "calibration " + file + " (case '" + c.case_name + "', " + std::to_string(c.n_fit) +
+                 " points, I-7 within " + g(100 * c.stated_error) + " % of FE)";
+}
 
 Report compute(const BeamOptions& options) {
     const Inputs in(options);
@@ -191,6 +213,7 @@ Report compute(const BeamOptions& options) {
     r.L = free_span(r.Lc, r.Li);
 
     r.k = in.get("k").value_or(1.0);
+    if (!options.calibration.empty()) apply_calibration(options.calibration, in.get("k").has_value(), r);
     r.f1 = ilomaki_first_bending_hz(bending_stiffness(sec), mass_per_length(sec), r.L, r.k);
     r.eb_cc = euler_bernoulli_first_bending_hz(r.beam, r.L);
     r.eb_ff = euler_bernoulli_first_bending_hz(r.beam, r.Lc);
@@ -285,6 +308,9 @@ void print_text(const Report& r, std::ostream& out) {
     out << "\nFirst bending frequency\n";
     out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << g(r.k) << ":  "
         << g(r.f1) << " Hz\n";
+    if (!r.k_source.empty())
+        out << "       k from the " << r.k_source << ": g1 = " << g(r.groups->g1) << ", g2 = " << g(r.groups->g2)
+            << ", g3 = " << g(r.groups->g3) << "\n";
     out << "                      Euler-Bernoulli   Timoshenko\n";
     char line[160];
     std::snprintf(line, sizeof line, "  clamped-clamped, L   %9.4g Hz   %9.4g Hz\n", r.eb_cc, r.timo_cc);
@@ -334,12 +360,19 @@ void print_json(const Report& r, std::ostream& out) {
         section.insert("Ap_m2", r.Ap);
         section.insert("rest_paper_thickness_m", r.paper_thickness);
     }
+    toml::table i7{{"k", r.k}, {"f1_hz", r.f1}};
+    if (!r.k_source.empty()) {
+        i7.insert("k_source", r.k_source);
+        i7.insert("g1", r.groups->g1);
+        i7.insert("g2", r.groups->g2);
+        i7.insert("g3", r.groups->g3);
+    }
     toml::table t{
         {"case", s.name},
         {"source_file", s.source_file},
         {"section", section},
         {"span", toml::table{{"Lc_m", r.Lc}, {"Li_m", r.Li}, {"Li_source", r.li_source}, {"L_m", r.L}}},
-        {"i7", toml::table{{"k", r.k}, {"f1_hz", r.f1}}},
+        {"i7", i7},
         {"euler_bernoulli", toml::table{{"clamped_clamped_L_hz", r.eb_cc}, {"free_free_Lc_hz", r.eb_ff}}},
         {"timoshenko", toml::table{{"clamped_clamped_L_hz", r.timo_cc}, {"free_free_Lc_hz", r.timo_ff}}},
         {"koenig", toml::table{{"formula", r.koenig_formula},
@@ -380,6 +413,9 @@ Command add_beam_command(CLI::App& app) {
                "--" + name, [options, name](const std::string& v) { options->raw[name] = v; }, q.help)
             ->type_name("VALUE");
     }
+    cmd->add_option("--calibration", options->calibration,
+                    "chuck factor k from a calibration.toml written by coremodal calibrate (instead of --k)")
+        ->type_name("FILE");
     cmd->add_flag("--json", options->json, "print the results as one JSON object");
     cmd->footer("Values carry units (\"--li 250mm\", \"--f-free 52Hz\", \"--ep 1.8GPa\"); options override the "
                 "case file. Formulas and limits: docs/beam.md.");

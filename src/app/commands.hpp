@@ -20,5 +20,7 @@ Command add_run_command(CLI::App& app);    // app/run_command.cpp
 Command add_beam_command(CLI::App& app);   // app/beam_command.cpp
 Command add_batch_command(CLI::App& app);  // app/batch_command.cpp
 Command add_converge_command(CLI::App& app);  // app/converge_command.cpp
+Command add_study_command(CLI::App& app);  // app/study_command.cpp
+Command add_calibrate_command(CLI::App& app);  // app/calibrate_command.cpp
 
 }  // namespace coremodal

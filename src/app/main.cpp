@@ -4,6 +4,8 @@
 //   coremodal beam ...      (beam formulas, no mesh)
 //   coremodal batch ...     (many cases, in parallel processes)
 //   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
+//   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
+//   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
 //
 // PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
 // mumps, -eps_view) may follow anywhere; they are applied after coremodal's
@@ -80,8 +82,9 @@ int main(int argc, char** argv) {
                  ": natural modes of paper-roll cores, rest rolls and chucks (gmsh, PETSc, SLEPc)"};
     app.require_subcommand(1);
     const std::vector<coremodal::Command> commands = {
-        coremodal::add_run_command(app), coremodal::add_beam_command(app), coremodal::add_batch_command(app),
-        coremodal::add_converge_command(app)};
+        coremodal::add_run_command(app),      coremodal::add_beam_command(app),
+        coremodal::add_batch_command(app),    coremodal::add_converge_command(app),
+        coremodal::add_study_command(app),    coremodal::add_calibrate_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

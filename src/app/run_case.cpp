@@ -14,6 +14,7 @@
 #include "mesh/connectivity.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "modes/classify.hpp"
+#include "modes/mac.hpp"
 #include "modes/mode_shapes.hpp"
 #include "output/modes_h5.hpp"
 #include "output/results_folder.hpp"
@@ -317,6 +318,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     // 6. Name every mode and compute its effective masses.
     say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
     const ModeClassifier classifier(mesh, scene.supports.kind == SupportKind::chucks ? roll_nodes(mesh) : std::vector<int>{});
+    const std::optional<ModeSignatureSampler> signature =
+        root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
     const EffectiveMassCalculator effective_mass(system.M, mesh, dofs);
     const double lambda_band_min = request.lambda_min.value_or(-1e300);
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
@@ -331,6 +334,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
         mode.effective_mass = effective_mass(solved.vectors[i]);
         mode.shape = gather_node_displacements(solved.vectors[i], mesh, dofs);
         if (root) mode.label = classifier.classify(mode.shape, lambda, request.lambda_scale);
+        if (root) mode.signature = (*signature)(mode.shape);
         report.modes.modes.push_back(std::move(mode));
     }
     report.timing_s.classify = stage.lap();

@@ -32,6 +32,10 @@ struct Mode {
     // Displacement of every mesh node (n_nodes x 3, node-major), M-normalised;
     // zero at clamped nodes. Held on rank 0 only.
     std::vector<double> shape;
+    // Mesh-independent signature for MAC tracking across study points
+    // (modes/mac.hpp: layout and meaning); empty when the model gives none.
+    // Held on rank 0 only.
+    std::vector<double> signature;
 };
 
 struct Verification {

@@ -8,6 +8,7 @@
 
 #include "common/error.hpp"
 #include "scene/case_schema.hpp"
+#include "scene/case_table.hpp"
 #include "scene/chuck_contact.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
@@ -30,9 +31,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kDefaultCoreMaterial = "paperboard_core";
-constexpr std::string_view kDefaultRestPaperMaterial = "rest_paper";
-constexpr std::string_view kDefaultChuckMaterial = "steel";
 // Chuck defaults when the file does not say (each echoed as an assumption):
 // a sliding fit of a fraction of a millimetre, and a short stub to the bearing.
 constexpr double kDefaultChuckClearance = 0.5e-3;  // m, radial
@@ -303,6 +301,9 @@ private:
                 if (!value.is_array_of_tables())
                     fail(value, what + "expected tables written [[" + s.schema + "." + std::string(spec.key) +
                                     "]] (double brackets), one per item");
+                return;
+            case ValueKind::list:
+                if (!value.is_array()) fail(value, what + "expected a list in brackets, e.g. [1, 2]");
                 return;
             case ValueKind::band:
                 if (!value.is_array())
@@ -1010,6 +1011,8 @@ private:
 
 }  // namespace
 
+Scene parse_case_table(const toml::table& root, const std::string& path) { return CaseReader(path).read(root); }
+
 Scene parse_case_text(std::string_view text, const std::string& path) {
     toml::table root;
     try {
@@ -1020,7 +1023,7 @@ Scene parse_case_text(std::string_view text, const std::string& path) {
                          ": TOML syntax error: " + printable(e.description()) +
                          "; expected a valid TOML case file (docs/case-files.md)");
     }
-    return CaseReader(path).read(root);
+    return parse_case_table(root, path);
 }
 
 Scene parse_case_file(const std::string& path) {

@@ -19,4 +19,6 @@ Scene parse_case_file(const std::string& path);
 // relative mesh file names.
 Scene parse_case_text(std::string_view text, const std::string& path);
 
+// parse_case_table (a document already parsed): scene/case_table.hpp.
+
 }  // namespace coremodal

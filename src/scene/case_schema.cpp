@@ -17,6 +17,8 @@ constexpr double kMaxDensity = 1e5;   // kg/m^3, above osmium
 constexpr int kMaxModes = 10000;
 constexpr int kMaxElementsThrough = 100;
 constexpr int kMaxElementsAround = 4096;
+constexpr double kMaxWebSpeed = 100.0;  // m/s; presses run up to ~20 m/s
+constexpr int kMaxSweepSteps = 10000;
 
 KeySpec length_key(std::string_view table, std::string_view key, double max) {
     return {table, key, ValueKind::quantity, Dimension::length, 0.0, max, true};
@@ -48,6 +50,10 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "supports", ValueKind::table),
         plain_key("", "analysis", ValueKind::table),
         plain_key("", "mesh", ValueKind::table),
+        // Read by `coremodal study` and `coremodal calibrate` (scene/case_sweep.hpp,
+        // docs/studies.md, docs/calibration.md); `coremodal run` ignores them.
+        plain_key("", "study", ValueKind::table),
+        plain_key("", "calibration", ValueKind::table),
 
         length_key("core", "inner_diameter", kMaxDiameter),
         length_key("core", "outer_diameter", kMaxDiameter),
@@ -119,8 +125,44 @@ const std::vector<KeySpec>& case_schema() {
         integer_key("mesh", "along", 2, 100000),
         plain_key("mesh", "element", ValueKind::text),
         plain_key("mesh", "file", ValueKind::text),
+
+        // [study]: a sweep over case-file keys, with the modes tracked by MAC.
+        plain_key("study", "parameters", ValueKind::tables),
+        plain_key("study", "mesh", ValueKind::text),
+        integer_key("study", "modes", 1, kMaxModes),
+        {"study", "safe_factor", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true},
+        {"study", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed, true},
+
+        // [calibration]: a sweep whose chuck factors are fitted (docs/calibration.md).
+        plain_key("calibration", "parameters", ValueKind::tables),
+        plain_key("calibration", "mesh", ValueKind::text),
+        integer_key("calibration", "modes", 1, kMaxModes),
+        integer_key("calibration", "holdout_every", 2, 1000),
+        {"calibration", "max_error", ValueKind::quantity, Dimension::dimensionless, 0.0, 0.5, true},
+
+        // One item of parameters = [...]: key (a dotted path, or a list of
+        // paths set together) and either values or a range from/to/steps.
+        plain_key("parameter", "key", ValueKind::text),
+        plain_key("parameter", "values", ValueKind::list),
+        plain_key("parameter", "from", ValueKind::quantity),
+        plain_key("parameter", "to", ValueKind::quantity),
+        integer_key("parameter", "steps", 2, kMaxSweepSteps),
+        plain_key("parameter", "spacing", ValueKind::text),
     };
     return schema;
+}
+
+std::string_view default_material(std::string_view owner) {
+    if (owner == "core") return kDefaultCoreMaterial;
+    if (owner == "rest_paper") return kDefaultRestPaperMaterial;
+    if (owner == "chuck") return kDefaultChuckMaterial;
+    return "";
+}
+
+std::string child_table(std::string_view parent, std::string_view key, std::string_view support_type) {
+    if (key == "material") return "material";
+    if (parent == "supports" && (key == "left" || key == "right")) return support_type == "chucks" ? "chuck" : "clamp";
+    return std::string(key);
 }
 
 const KeySpec* find_key(std::string_view table, std::string_view key) {

@@ -22,6 +22,7 @@ enum class ValueKind {
     band,      // array of two frequencies
     boolean,   // true or false
     tables,    // array of tables, [[...]]
+    list,      // array of values, [a, b, ...]
 };
 
 // Schema tables. Material tables ([core.material], [rest_paper.material]) share
@@ -36,7 +37,20 @@ struct KeySpec {
     bool min_exclusive = false;  // value must be > min rather than >= min
 };
 
+// The library material of a part whose file gives no material (each use is
+// echoed as an assumption).
+inline constexpr std::string_view kDefaultCoreMaterial = "paperboard_core";
+inline constexpr std::string_view kDefaultRestPaperMaterial = "rest_paper";
+inline constexpr std::string_view kDefaultChuckMaterial = "steel";
+// The default material of the schema table that owns a material key
+// ("core", "rest_paper", "chuck"); "" for other tables.
+std::string_view default_material(std::string_view owner_table);
+
 const std::vector<KeySpec>& case_schema();
+// The schema table of the table at `key` inside schema table `parent`: the
+// key itself, except [supports.left]/[supports.right] ("clamp" or "chuck" as
+// `support_type` says) and every material table ("material").
+std::string child_table(std::string_view parent, std::string_view key, std::string_view support_type);
 const KeySpec* find_key(std::string_view table, std::string_view key);
 std::vector<std::string_view> keys_of(std::string_view table);
 

@@ -1,0 +1,190 @@
+#include "app/calibrate.hpp"
+
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+// Four coefficients and at least one degree of freedom for the residuals.
+constexpr int kMinFitPoints = kCalibrationGroups + 2;
+
+std::string g(double v, int digits = 4) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    return b;
+}
+
+std::string percent(double share) { return g(100 * share, 3) + " %"; }
+
+Range range_of(const std::vector<double>& v) {
+    return {*std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end())};
+}
+
+// "clamped" or "chucks"; "mixed" when the sweep varies the kind of support.
+std::string supports_of(const std::vector<CalibrationRow>& rows) {
+    std::string kind;
+    for (const CalibrationRow& r : rows)
+        if (r.used) kind = kind.empty() || kind == r.point->supports ? r.point->supports : "mixed";
+    return kind;
+}
+
+void select_rows(const StudyResult& result, int holdout_every, std::vector<CalibrationRow>& rows) {
+    int usable = 0;
+    for (const StudyPoint& p : result.points) {
+        CalibrationRow row;
+        row.point = &p;
+        if (!p.ok) {
+            row.note = "failed";
+        } else if (!p.f1_hz) {
+            row.note = "no bending mode among the modes computed; raise [calibration] modes";
+        } else if (!p.k) {
+            row.note = "no chuck factor: the scene is not held in a stand";
+        } else {
+            row.used = true;
+            row.groups = *p.chuck_groups;
+            row.k_fe = *p.k;
+            row.held_out = ++usable % holdout_every == 0;
+        }
+        rows.push_back(row);
+    }
+}
+
+}  // namespace
+
+CalibrationOutcome calibrate_chuck_factor(const CaseSweep& sweep, const StudyResult& result) {
+    CalibrationOutcome out;
+    select_rows(result, sweep.options().holdout_every, out.rows);
+    std::vector<CalibrationSample> fit;
+    int n_held = 0;
+    for (const CalibrationRow& r : out.rows) {
+        if (r.used && !r.held_out) fit.push_back({r.groups, r.k_fe});
+        n_held += r.used && r.held_out;
+    }
+    if (static_cast<int>(fit.size()) < kMinFitPoints || n_held == 0)
+        throw InputError(sweep.case_file() + ": [calibration] gave " + std::to_string(fit.size()) +
+                         " points to fit and " + std::to_string(n_held) + " to hold out (holdout_every = " +
+                         std::to_string(sweep.options().holdout_every) + "); expected at least " +
+                         std::to_string(kMinFitPoints) + " to fit and 1 held out: more values or a smaller "
+                         "holdout_every");
+    Calibration& c = out.calibration;
+    c.law = fit_chuck_factor(fit);
+    c.case_name = sweep.case_name();
+    c.case_file = sweep.case_file();
+    c.stated_error = sweep.options().max_error;
+    std::vector<double> g1, g2, g3, span, li, diameter;
+    double sum_square = 0;
+    for (CalibrationRow& r : out.rows) {
+        if (!r.used) continue;
+        const StudyPoint& p = *r.point;
+        r.k_fit = c.law.k(r.groups);
+        r.f1_calibrated_hz = r.k_fit * *p.f_i7_hz;
+        r.error = std::abs(r.f1_calibrated_hz - *p.f1_hz) / *p.f1_hz;
+        g1.push_back(r.groups.g1), g2.push_back(r.groups.g2), g3.push_back(r.groups.g3), span.push_back(*p.span_m), li.push_back(*p.li_m);
+        diameter.push_back(p.diameter_m);
+        if (r.held_out) {
+            ++c.n_held_out;
+            c.max_error_held_out = std::max(c.max_error_held_out, r.error);
+        } else {
+            ++c.n_fit;
+            const double residual = r.k_fit - r.k_fe;
+            sum_square += residual * residual;
+            c.max_residual_k = std::max(c.max_residual_k, std::abs(residual));
+            c.max_error_fit = std::max(c.max_error_fit, r.error);
+        }
+    }
+    c.rms_residual_k = std::sqrt(sum_square / c.n_fit);
+    c.g1 = range_of(g1), c.g2 = range_of(g2), c.g3 = range_of(g3), c.span_m = range_of(span), c.li_m = range_of(li);
+    c.diameter_m = range_of(diameter);
+    c.supports = supports_of(out.rows);
+    c.passed = c.max_error_fit <= c.stated_error && c.max_error_held_out <= c.stated_error;
+    return out;
+}
+
+std::string calibration_csv(const CaseSweep& sweep, const CalibrationOutcome& outcome) {
+    std::ostringstream out;
+    out << "point";
+    for (const SweepParameter& p : sweep.parameters()) out << "," << parameter_column(p);
+    out << ",status,held_out,li_m,span_m,diameter_m,g1,g2,g3,f1_fe_hz,f_i7_k1_hz,k_fe,k_fit,residual_k,"
+           "f1_calibrated_hz,error,note\n";
+    const auto num = [](double v) { return g(v, 10); };
+    for (const CalibrationRow& r : outcome.rows) {
+        const StudyPoint& p = *r.point;
+        out << p.index + 1;
+        for (size_t j = 0; j < sweep.parameters().size(); ++j) {
+            const SweepParameter& par = sweep.parameters()[j];
+            const auto v = static_cast<size_t>(p.value_index[j]);
+            out << "," << (par.numeric ? num(par.si[v]) : csv_field(par.labels[v]));
+        }
+        if (!r.used) {
+            out << "," << (p.ok ? "unused" : "failed") << ",,,,,,,,,,,,,,," << csv_field(r.note) << "\n";
+            continue;
+        }
+        out << ",ok," << (r.held_out ? 1 : 0) << "," << num(*p.li_m) << "," << num(*p.span_m) << ","
+            << num(p.diameter_m) << "," << num(r.groups.g1) << "," << num(r.groups.g2) << "," << num(r.groups.g3) << "," << num(*p.f1_hz)
+            << "," << num(*p.f_i7_hz) << "," << num(r.k_fe) << "," << num(r.k_fit) << "," << num(r.k_fit - r.k_fe)
+            << "," << num(r.f1_calibrated_hz) << "," << num(r.error) << ",\n";
+    }
+    return out.str();
+}
+
+std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResult& result,
+                                        const CalibrationOutcome& outcome, const std::vector<std::string>& pngs,
+                                        const std::string& plot_problem) {
+    const Calibration& c = outcome.calibration;
+    std::ostringstream out;
+    out << "# Chuck factor calibration: " << sweep.case_name() << "\n\n";
+    out << "Case file `" << sweep.case_file() << "`; " << sweep.n_points() << " points ("
+        << sweep.n_points() - result.n_failed() << " ok), " << c.n_fit << " fitted, " << c.n_held_out
+        << " held out (one usable point in " << sweep.options().holdout_every << "); mesh "
+        << (sweep.options().mesh_level.empty() ? std::string("as the case's [mesh]") : sweep.options().mesh_level)
+        << ". Written by coremodal " COREMODAL_VERSION ".\n\n";
+    out << "## The law\n\n    1/k^2 = c0 + c1 g1 + c2 g2 + c3 g3\n"
+           "    g1 = (EI/(Ec Ic)) (Li/L)     support rotation\n"
+           "    g2 = EI/(kappa G A L^2)     shear flexibility of the span\n"
+           "    g3 = Ep Ip / EI             share of the bending stiffness in the rest paper\n\n"
+           "k = f1_FE / f_I-7(k = 1) over L = Lc - 2 Li; EI = Ec Ic + Ep Ip (docs/calibration.md).\n\n";
+    out << "| coefficient | value |\n|---|---|\n| c0 | " << g(c.law.c[0], 6) << " |\n| c1 | " << g(c.law.c[1], 6)
+        << " |\n| c2 | " << g(c.law.c[2], 6) << " |\n| c3 | " << g(c.law.c[3], 6) << " |\n\n";
+    for (int i = 0; i < kCalibrationGroups; ++i)
+        if (!c.law.fitted[static_cast<size_t>(i)])
+            out << "g" << i + 1 << " is the same at every point: not fitted (c" << i + 1
+                << " = 0); the law holds only at that value.\n\n";
+    out << "## Residuals and check\n\n";
+    out << "- fitted points: rms residual in k " << g(c.rms_residual_k, 3) << ", largest " << g(c.max_residual_k, 3)
+        << "; largest error of I-7 with the fitted k against the FE f1: " << percent(c.max_error_fit) << "\n";
+    out << "- held-out points (not in the fit): largest error " << percent(c.max_error_held_out) << "\n";
+    out << "- stated error: " << percent(c.stated_error) << " ([calibration] max_error): **"
+        << (c.passed ? "PASSED" : "FAILED") << "**\n\n";
+    out << "Valid for: L " << g(c.span_m.min, 4) << " to " << g(c.span_m.max, 4) << " m, Li " << g(c.li_m.min * 1e3, 4)
+        << " to " << g(c.li_m.max * 1e3, 4) << " mm, D " << g(c.diameter_m.min * 1e3, 4) << " to "
+        << g(c.diameter_m.max * 1e3, 4) << " mm, g1 " << g(c.g1.min, 3) << " to " << g(c.g1.max, 3) << ", g2 "
+        << g(c.g2.min, 3) << " to " << g(c.g2.max, 3) << ", g3 " << g(c.g3.min, 3) << " to " << g(c.g3.max, 3)
+        << ". `coremodal beam --calibration calibration.toml` "
+        << "notes any value outside these ranges.\n\n";
+    out << "## Table of k\n\n| # | point | held out | L [m] | D [mm] | g1 | g2 | g3 | f1 FE [Hz] | k FE | "
+           "k fit | f1 I-7 [Hz] | error |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const CalibrationRow& r : outcome.rows) {
+        const StudyPoint& p = *r.point;
+        out << "| " << p.index + 1 << " | " << p.description << " | ";
+        if (!r.used) {
+            out << "- | | | | | | | | | | " << r.note << " |\n";
+            continue;
+        }
+        out << (r.held_out ? "yes" : "") << " | " << g(*p.span_m) << " | " << g(p.diameter_m * 1e3) << " | "
+            << g(r.groups.g1, 3) << " | " << g(r.groups.g2, 3) << " | " << g(r.groups.g3, 3) << " | " << g(*p.f1_hz) << " | " << g(r.k_fe, 4)
+            << " | " << g(r.k_fit, 4) << " | " << g(r.f1_calibrated_hz) << " | " << percent(r.error) << " |\n";
+    }
+    out << "\n## Plots\n\n";
+    if (!plot_problem.empty()) out << "Plots were not drawn: " << plot_problem << ".\n\n";
+    for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
+    out << "Files: `calibration.toml` (keep it; apply with `coremodal beam --calibration`), `calibration.csv` "
+           "(the table of k), `study.csv` and `study.json` (the sweep, modes tracked), this report.\n";
+    return out.str();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,94 @@
+// `coremodal calibrate CASE.toml [--output DIR]`: the [calibration] sweep,
+// the table of k, the fitted law and its check; calibration.toml for
+// `coremodal beam --calibration` (docs/calibration.md).
+#include "app/calibrate.hpp"
+#include "app/commands.hpp"
+#include "common/petsc_handle.hpp"
+#include "output/results_folder.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+namespace coremodal {
+namespace {
+
+std::string g(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+struct CalibrateOptions {
+    std::string case_file, output, mesh;
+    bool quiet = false, no_plots = false;
+    unsigned jobs = 0;  // 0: the number of cores
+};
+
+int run_calibrate_command(const CalibrateOptions& o) {
+    const bool root = mpi_rank() == 0;
+    const CaseSweep sweep = CaseSweep::read(o.case_file, "calibration",
+                                            o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh));
+    const std::filesystem::path out_dir =
+        o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
+    if (root && !o.quiet)
+        std::cout << "calibrate: " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
+                  << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
+                  << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
+                  << " each, " << jobs_for(o.jobs, sweep) << " at a time); results in " << out_dir.string()
+                  << std::endl;
+    StudyResult result = run_sweep(sweep, {o.quiet, jobs_for(o.jobs, sweep)}, std::cout);
+    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    if (!root) return 0;
+    track_modes(sweep, result);
+    const CalibrationOutcome outcome = calibrate_chuck_factor(sweep, result);
+
+    ResultsFolder folder(out_dir);
+    const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
+    write_calibration((dir / "calibration.toml").string(), outcome.calibration);
+    write_text_file(dir / "calibration.csv", calibration_csv(sweep, outcome));
+    const StudyFiles files = write_study_files(dir, sweep, result, "calibration", !o.no_plots);
+    if (!files.plot_problem.empty() && !o.no_plots)
+        std::cerr << "coremodal: warning: plots not drawn: " << files.plot_problem << std::endl;
+    write_text_file(dir / "report.md",
+                    calibration_report_markdown(sweep, result, outcome, files.pngs, files.plot_problem));
+    folder.commit();
+
+    const Calibration& c = outcome.calibration;
+    std::cout << "calibrate: 1/k^2 = " << g(c.law.c[0]) << " + " << g(c.law.c[1]) << " g1 + " << g(c.law.c[2])
+              << " g2 + " << g(c.law.c[3]) << " g3; " << c.n_fit << " points fitted (rms residual in k "
+              << g(c.rms_residual_k) << "), " << c.n_held_out << " held out: largest f1 error "
+              << g(100 * c.max_error_held_out) << " % (fitted " << g(100 * c.max_error_fit) << " %), stated "
+              << g(100 * c.stated_error) << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
+              << "calibrate: " << out_dir.string() << "/calibration.toml (apply with coremodal beam --calibration)"
+              << std::endl;
+    if (!c.passed)
+        std::cerr << "coremodal: the calibration does not reproduce the FE f1 within the stated error; see "
+                  << out_dir.string() << "/report.md" << std::endl;
+    if (result.n_failed()) std::cerr << "coremodal: " << result.n_failed() << " point(s) failed; see report.md" << std::endl;
+    return c.passed && !result.n_failed() ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_calibrate_command(CLI::App& app) {
+    auto o = std::make_shared<CalibrateOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "calibrate", "Run the case's [calibration] table, tabulate the chuck factor k, fit it as a function of "
+                     "dimensionless groups and check it on held-out points; writes calibration.toml for "
+                     "`coremodal beam --calibration`");
+    cmd->add_option("case", o->case_file, "case file (TOML) with a [calibration] table")->required();
+    cmd->add_option("-o,--output", o->output, "results folder (default results/<case name>-calibration)");
+    cmd->add_option("-m,--mesh", o->mesh,
+                    "mesh level of every point, overriding [calibration] mesh: coarse, default, fine, very_fine");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+    cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
+    cmd->add_option("-j,--jobs", o->jobs,
+                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
+                    "after the other in this process, as always under mpirun)");
+    cmd->footer("Exit status 0 when every point ran and I-7 with the fitted k reproduces the FE f1 within "
+                "[calibration] max_error on fitted and held-out points; 1 otherwise (the results are written "
+                "either way). docs/calibration.md.");
+    return {cmd, [o] { return run_calibrate_command(*o); }, true};
+}
+
+}  // namespace coremodal

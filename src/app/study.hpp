@@ -1,0 +1,128 @@
+// Running a sweep ([study] or [calibration]): every point in this process
+// through run_scene, modes tracked from point to point by MAC, then the
+// study's files (docs/studies.md).
+//
+// A point is "the case's document with some keys changed -> Scene ->
+// run_scene -> RunReport": whatever model level or support the scene asks for
+// (rigid clamps, elastic chucks, a beam model) is what the point runs.
+#pragma once
+
+#include "beam/chuck_calibration.hpp"
+#include "modes/tracking.hpp"
+#include "scene/case_sweep.hpp"
+
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+struct StudyPoint {
+    int index = 0;  // 0-based; printed 1-based
+    std::vector<int> value_index;  // per parameter
+    std::string description;       // "core.length = 3 m, ..."
+    bool ok = false;
+    std::string error;             // why the point failed (refused input or solve)
+    double time_s = 0;
+    std::string model_level;       // RunReport model.level
+    std::string supports;          // "free", "clamped" or "chucks"
+    long n_dofs = 0;
+
+    std::vector<ModeSummary> modes;  // the run's modes without their shapes
+    std::optional<double> f1_hz;     // first bending mode
+    std::optional<double> li_m, span_m, f_i7_hz, k;  // chuck factor (beam/chuck_calibration.hpp)
+    double diameter_m = 0;           // rest roll outer diameter (the core's without rest paper)
+    std::optional<double> v_safe_m_s;  // safe_factor * pi * D * f1 (supported scenes)
+    std::optional<CalibrationGroups> chuck_groups;  // g1, g2, g3 of the calibration law (supported scenes)
+
+    // Tracking: the groups of `modes` and their tracks.
+    std::optional<int> predecessor;  // the point tracked from (nearest earlier successful one)
+    std::vector<ModeGroup> groups;
+    std::vector<TrackStep> tracks;
+};
+
+struct StudyResult {
+    std::vector<StudyPoint> points;
+    double time_s = 0;
+    int n_failed() const;
+};
+
+struct StudyRunOptions {
+    bool quiet = false;  // no progress lines
+    // Points run at the same time, each in a child process of this program
+    // (`coremodal study --worker-point`, app/study_workers.hpp): one point's
+    // factor-and-solve keeps about one core busy, so two at a time use a
+    // 2-core machine. 1 = one after the other in this process (always so
+    // under MPI, and for a sweep read from text rather than a file).
+    unsigned jobs = 1;
+    std::string program = "/proc/self/exe";  // the coremodal executable for the children
+};
+
+// One point in this process: run_scene on its scene, and the run's part of
+// `p` filled (ok or error, modes, f1, model level, DOFs, time). This is
+// what a worker child does.
+void run_point(Scene scene, StudyPoint& p);
+
+// The values a point's scene gives with its f1: D, v_safe, Li, L, k and the
+// calibration groups (beam/chuck_calibration.hpp).
+void derive_point_values(StudyPoint& p, const Scene& scene, const SweepOptions& options);
+
+// The jobs a sweep runs with: `requested` (0: the number of cores), at most
+// the number of points, and 1 under MPI.
+unsigned jobs_for(unsigned requested, const CaseSweep& sweep);
+
+// Runs every point (collective over PETSC_COMM_WORLD), printing one progress
+// line per point on rank 0, in the order the points finish. A point whose input is refused or whose solve
+// fails is recorded and the study goes on. Throws InputError only when no
+// point can be read at all.
+StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, std::ostream& progress);
+
+// Assigns track ids along the sweep's predecessor tree (modes/tracking.hpp).
+void track_modes(const CaseSweep& sweep, StudyResult& result);
+
+// The column of a parameter in study.csv: its name and SI unit ("core.length_m").
+std::string parameter_column(const SweepParameter& p);
+
+// A CSV field, quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text);
+
+// One row per point and tracked mode group; a failed point has one row with its error.
+std::string study_csv(const CaseSweep& sweep, const StudyResult& result);
+// Metadata for the plotting script (python/coremodal/study_plot.py).
+std::string study_json(const CaseSweep& sweep, const StudyResult& result, const std::string& kind);
+
+// Where a safe-speed curve crosses the web speed: the rest roll diameter
+// below which the roll must be changed (docs/studies.md, König's chart).
+struct SpeedCrossing {
+    std::string curve;           // "core.length = 3 m" ("" for a single curve)
+    std::vector<double> change_diameters_m;  // v_safe = web speed, v_safe falling as D falls
+    double d_min_m = 0, d_max_m = 0;
+    double v_min_m_s = 0, v_max_m_s = 0;
+};
+std::vector<SpeedCrossing> safe_speed_crossings(const CaseSweep& sweep, const StudyResult& result, double web_speed_m_s);
+
+// Indices of the parameters that change the rest roll diameter (found from the results).
+std::vector<int> diameter_parameters(const CaseSweep& sweep, const StudyResult& result);
+
+// Runs `python3 -m coremodal study-plot DIR`; returns "" on success, else
+// why not (the study stays complete without its plots).
+std::string draw_study_plots(const std::filesystem::path& dir);
+
+// Writes study.csv and study.json into `dir` and, with `plots`, the PNGs;
+// returns the PNG file names found in `dir` afterwards and, if the plots
+// could not be drawn, why.
+struct StudyFiles {
+    std::vector<std::string> pngs;
+    std::string plot_problem;
+};
+StudyFiles write_study_files(const std::filesystem::path& dir, const CaseSweep& sweep, const StudyResult& result,
+                             const std::string& kind, bool plots);
+
+void write_text_file(const std::filesystem::path& path, const std::string& text);
+
+std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& result,
+                                  const std::vector<std::string>& pngs, const std::string& plot_problem);
+
+}  // namespace coremodal

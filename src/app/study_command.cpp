@@ -1,0 +1,121 @@
+// `coremodal study CASE.toml [--output DIR]`: the case's [study] table run
+// point by point, modes tracked by MAC, results in one folder (docs/studies.md).
+#include "app/commands.hpp"
+#include "app/study.hpp"
+#include "app/study_workers.hpp"
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
+#include "output/results_folder.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+namespace coremodal {
+namespace {
+
+std::string g(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
+struct StudyCommandOptions {
+    std::string case_file, output, mesh;
+    bool quiet = false, no_plots = false;
+    unsigned jobs = 0;  // 0: the number of cores
+    // A worker child of a study (app/study_workers.hpp): hidden options.
+    int worker_point = -1;
+    std::string worker_table = "study", worker_output;
+};
+
+std::optional<std::string> mesh_option(const std::string& mesh) {
+    return mesh.empty() ? std::nullopt : std::optional<std::string>(mesh);
+}
+
+// One point, for a parent study running its points in child processes.
+int run_worker(const StudyCommandOptions& o) {
+    const CaseSweep sweep = CaseSweep::read(o.case_file, o.worker_table, mesh_option(o.mesh));
+    if (o.worker_point < 0 || o.worker_point >= sweep.n_points())
+        throw InputError("--worker-point " + std::to_string(o.worker_point) + " is not a point of " + o.case_file);
+    StudyPoint p;
+    p.index = o.worker_point;
+    try {
+        run_point(sweep.scene(o.worker_point), p);
+    } catch (const InputError& e) {
+        p.error = e.what();
+    }
+    if (mpi_rank() == 0) write_text_file(o.worker_output, point_record(p));
+    return 0;
+}
+
+void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
+    const std::optional<double> web = sweep.options().web_speed_m_s;
+    if (!web) return;
+    for (const SpeedCrossing& c : safe_speed_crossings(sweep, result, *web)) {
+        if (c.change_diameters_m.empty()) continue;
+        std::cout << "  at " << g(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
+                  << ": change the roll below D = " << g(c.change_diameters_m.back() * 1e3) << " mm\n";
+    }
+}
+
+int run_study_command(const StudyCommandOptions& o) {
+    if (!o.worker_output.empty()) return run_worker(o);
+    const bool root = mpi_rank() == 0;
+    const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
+    const std::filesystem::path out_dir =
+        o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
+    if (root && !o.quiet)
+        std::cout << "study: " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
+                  << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
+                  << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
+                  << " each, " << jobs_for(o.jobs, sweep) << " at a time); results in " << out_dir.string()
+                  << std::endl;
+    StudyResult result = run_sweep(sweep, {o.quiet, jobs_for(o.jobs, sweep)}, std::cout);
+    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    if (!root) return 0;
+    track_modes(sweep, result);
+
+    ResultsFolder folder(out_dir);
+    const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
+    const StudyFiles files = write_study_files(dir, sweep, result, "study", !o.no_plots);
+    if (!files.plot_problem.empty() && !o.no_plots)
+        std::cerr << "coremodal: warning: plots not drawn: " << files.plot_problem
+                  << "; study.csv and report.md are complete (draw the plots later with "
+                     "python3 -m coremodal study-plot DIR)" << std::endl;
+    write_text_file(dir / "report.md", study_report_markdown(sweep, result, files.pngs, files.plot_problem));
+    folder.commit();
+
+    const int failed = result.n_failed();
+    if (!o.quiet) print_crossings(sweep, result);
+    std::cout << "study: " << sweep.n_points() - failed << " of " << sweep.n_points() << " points ok in "
+              << g(result.time_s) << " s; " << out_dir.string() << "/report.md" << std::endl;
+    if (failed) std::cerr << "coremodal: " << failed << " point(s) failed; see report.md" << std::endl;
+    return failed ? 1 : 0;
+}
+
+}  // namespace
+
+Command add_study_command(CLI::App& app) {
+    auto o = std::make_shared<StudyCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "study", "Run the case's [study] table: every point of a grid of case-file values, the modes tracked from "
+                 "point to point by MAC; study.csv, plots and report.md");
+    cmd->add_option("case", o->case_file, "case file (TOML) with a [study] table, e.g. cases/06-study-safe-speed.toml")
+        ->required();
+    cmd->add_option("-o,--output", o->output, "results folder (default results/<case name>-study)");
+    cmd->add_option("-m,--mesh", o->mesh,
+                    "mesh level of every point, overriding [study] mesh: coarse, default, fine, very_fine");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+    cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
+    cmd->add_option("-j,--jobs", o->jobs,
+                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
+                    "after the other in this process, as always under mpirun)");
+    cmd->add_option("--worker-point", o->worker_point)->group("");  // a study's child process
+    cmd->add_option("--worker-table", o->worker_table)->group("");
+    cmd->add_option("--worker-output", o->worker_output)->group("");
+    cmd->footer("Exit status 0 when every point ran, 1 when any failed (its error is in report.md and study.csv) "
+                "or the input is wrong. The [study] table: docs/studies.md.");
+    return {cmd, [o] { return run_study_command(*o); }, true};
+}
+
+}  // namespace coremodal

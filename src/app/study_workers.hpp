@@ -1,0 +1,31 @@
+// Study points in child processes, several at a time (as `coremodal batch`
+// runs cases): each child is this program run as
+//   coremodal study CASE --worker-table T --worker-point I --worker-output FILE [--mesh L] -q
+// which reads the same sweep, runs point I in its own process (run_point) and
+// writes the run's part of the point to FILE (point_record). A crash or an
+// out-of-memory in one point cannot take down the study.
+#pragma once
+
+#include "app/study.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// The run's part of a point as text: ok/error, time, model level, DOFs, f1,
+// every mode with its label and signature (17 significant digits).
+std::string point_record(const StudyPoint& p);
+// Reads it back into `p`. Throws std::runtime_error for text that is not a record.
+void read_point_record(const std::string& text, StudyPoint& p);
+
+// Runs the points `todo` of the sweep, at most `jobs` at a time, each in a
+// child process of `program`; calls `finished(i)` (one at a time) as each
+// ends. A child that fails to start, crashes or writes no record leaves its
+// point failed with the reason (the first error line of its output).
+void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo, unsigned jobs,
+                            const std::string& program, std::vector<StudyPoint>& points,
+                            const std::function<void(int)>& finished);
+
+}  // namespace coremodal
