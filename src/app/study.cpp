@@ -95,7 +95,7 @@ void derive_point_values(StudyPoint& p, const Scene& scene, const SweepOptions& 
     p.diameter_m = scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
     if (!p.ok || !p.f1_hz || scene.supports.kind == SupportKind::free) return;  // not in a stand: no k, no v_safe
     p.v_safe_m_s = safe_web_speed(*p.f1_hz, p.diameter_m, options.safe_factor);
-    if (const std::optional<ChuckFactor> c = chuck_factor_of(scene, *p.f1_hz)) {
+    if (const std::optional<ChuckFactorI7> c = chuck_factor_of(scene, *p.f1_hz)) {
         p.li_m = c->li_m, p.span_m = c->span_m, p.f_i7_hz = c->f_i7_hz, p.k = c->k;
         p.chuck_groups = calibration_groups(scene, c->li_m, c->span_m);
     }

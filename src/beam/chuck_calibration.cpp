@@ -49,10 +49,10 @@ double core_bending_stiffness(const Scene& scene) {
     return scene.core.material.E_z * tube_inertia(scene.core.outer_diameter, scene.core.inner_diameter);
 }
 
-std::optional<ChuckFactor> chuck_factor_of(const Scene& scene, double f1_hz) {
+std::optional<ChuckFactorI7> chuck_factor_of(const Scene& scene, double f1_hz) {
     const std::optional<double> li = scene_li(scene);
     if (!li || !(scene.core.length - 2 * *li > 0) || !(f1_hz > 0)) return std::nullopt;
-    ChuckFactor c;
+    ChuckFactorI7 c;
     c.li_m = *li;
     c.span_m = scene.core.length - 2 * *li;
     c.f_i7_hz = euler_bernoulli_first_bending_hz(beam_section(scene), c.span_m);

@@ -42,13 +42,15 @@ std::optional<double> scene_li(const Scene& scene);
 // Ec Ic of the core alone (N m^2).
 double core_bending_stiffness(const Scene& scene);
 
-struct ChuckFactor {
+// k against formula I-7 with k = 1 over L = Lc - 2 Li (the calibration
+// quantity; the run report's ChuckFactor divides by f2 of the free span instead).
+struct ChuckFactorI7 {
     double li_m = 0, span_m = 0;  // Li and L = Lc - 2 Li
     double f_i7_hz = 0;           // I-7 with k = 1 over L
     double k = 0;                 // f1 / f_i7
 };
 // None for a free scene, or when Li leaves no span.
-std::optional<ChuckFactor> chuck_factor_of(const Scene& scene, double f1_hz);
+std::optional<ChuckFactorI7> chuck_factor_of(const Scene& scene, double f1_hz);
 
 constexpr int kCalibrationGroups = 3;
 

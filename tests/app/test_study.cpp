@@ -180,7 +180,7 @@ TEST_CASE("Calibrated k reproduces FE f1 within the stated error on points that 
         run.quiet = true;
         run.write_results = false;
         const RunReport report = run_scene(scene, run);
-        const ChuckFactor k = *chuck_factor_of(report.scene, report.beam.fe_first_bending_hz);
+        const ChuckFactorI7 k = *chuck_factor_of(report.scene, report.beam.fe_first_bending_hz);
         std::vector<std::string> notes;
         const double k_fit =
             calibrated_k(c, calibration_groups(report.scene, k.li_m, k.span_m), k.span_m, k.li_m, 0.15, notes);

@@ -54,7 +54,7 @@ TEST_CASE("Li of a clamped scene is the mean of the clamp centres, each from its
           "[beam][calibration]") {
     const Scene s = parse_case_text(kClamped, "c.toml");
     CHECK(*scene_li(s) == Approx(0.12));
-    const ChuckFactor c = *chuck_factor_of(s, 50.0);
+    const ChuckFactorI7 c = *chuck_factor_of(s, 50.0);
     CHECK(c.span_m == Approx(2 - 0.24));
     CHECK(c.f_i7_hz == Approx(euler_bernoulli_first_bending_hz(beam_section(s), 1.76)));
     CHECK(c.k == Approx(50.0 / c.f_i7_hz));
