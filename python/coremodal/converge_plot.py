@@ -102,10 +102,11 @@ def draw_error_vs_time(study: dict[str, Any], out: Path | str, size_px: tuple[in
             if finest:  # the finest level's error is the extrapolation's estimate
                 ax.plot([t], [e], marker, color="white", markeredgecolor=colours[c["model"]], zorder=3)
             ax.annotate(f"{dofs:,}", (t, e), textcoords="offset points", xytext=(4, 4), fontsize=7, color="0.3")
-    for p in check_points(study):
-        ax.plot([p["time_s"]], [max(p["error"], floor)], "*", color="black", markersize=10, zorder=4)
-        ax.annotate(p["name"], (p["time_s"], max(p["error"], floor)), textcoords="offset points",
-                    xytext=(5, -10), fontsize=8)
+    for i, p in enumerate(check_points(study)):
+        ax.plot([p["time_s"]], [max(p["error"], floor)], "*", color="black", markersize=10, zorder=4,
+                label="named mesh levels (--check-levels)" if i == 0 else None)
+        ax.annotate(f"{p['name']} ({p['role']})", (p["time_s"], max(p["error"], floor)),
+                    textcoords="offset points", xytext=(5, -10), fontsize=8)
     for target in TARGETS:
         ax.axhline(target, color="0.6", linewidth=0.8, linestyle=":")
         ax.annotate(f"{target * 100:g} %", (1, target), xycoords=("axes fraction", "data"), xytext=(-30, 2),
