@@ -149,8 +149,12 @@ LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& ru
         for (const auto& run : runs) v.push_back(run.timing_s.*part);
         return median(v);
     };
-    r.median_s = {med(&Timing::mesh), med(&Timing::assemble), med(&Timing::factor_and_solve),
-                  med(&Timing::classify), med(&Timing::total)};
+    r.median_s = {.mesh = med(&Timing::mesh),
+                  .assemble = med(&Timing::assemble),
+                  .factor_and_solve = med(&Timing::factor_and_solve),
+                  .classify = med(&Timing::classify),
+                  .chuck_factor = med(&Timing::chuck_factor),
+                  .total = med(&Timing::total)};
     std::vector<double> cpu;
     for (const auto& run : runs) cpu.push_back(run.cpu_s);
     r.median_cpu_s = median(cpu);

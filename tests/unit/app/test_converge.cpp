@@ -135,9 +135,9 @@ TEST_CASE("The median of repeated runs", "[converge]") {
 
     MeshStep step;
     LevelRun a, b, c;
-    a.timing_s = {0.1, 1.0, 10.0, 0.2, 11.3};
-    b.timing_s = {0.2, 1.2, 30.0, 0.2, 31.6};  // a run disturbed by another process
-    c.timing_s = {0.1, 1.1, 11.0, 0.2, 12.4};
+    a.timing_s = {.mesh = 0.1, .assemble = 1.0, .factor_and_solve = 10.0, .classify = 0.2, .total = 11.3};
+    b.timing_s = {.mesh = 0.2, .assemble = 1.2, .factor_and_solve = 30.0, .classify = 0.2, .total = 31.6};  // disturbed
+    c.timing_s = {.mesh = 0.1, .assemble = 1.1, .factor_and_solve = 11.0, .classify = 0.2, .total = 12.4};
     a.peak_memory_mb = 500, b.peak_memory_mb = 520, c.peak_memory_mb = 510;
     a.modes = b.modes = c.modes = {mode(1, 32.1, "bending", 1, 0)};
     const LevelResult r = summarize_runs(step, {a, b, c});
