@@ -205,15 +205,17 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
         progress << " " << fmt("%.1f", runs.back().timing_s.total) << " s" << std::flush;
     };
     if (!runs.empty()) show();
-    while (static_cast<int>(runs.size()) < o.repeats) {
-        runs.push_back(ladder.run_once(step));
-        show();
-        // A slow level is timed once: its run-to-run noise is small against
-        // its time, and the study must fit in minutes (docs/performance.md).
-        // The timing is agreed on rank 0 so that every rank runs alike.
+    // A slow level is timed once: its run-to-run noise is small against its
+    // time, and the study must fit in minutes (docs/performance.md). The
+    // decision is rank 0's, so that every rank runs alike.
+    auto slow = [&] {
         int stop = runs.front().timing_s.total > o.repeat_limit_s;
         MPI_Bcast(&stop, 1, MPI_INT, 0, PETSC_COMM_WORLD);
-        if (stop) break;
+        return stop != 0;
+    };
+    while (static_cast<int>(runs.size()) < o.repeats && (runs.empty() || !slow())) {
+        runs.push_back(ladder.run_once(step));
+        show();
     }
     LevelResult result = summarize_runs(step, runs);
     if (say)
@@ -358,7 +360,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
             throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
 
     // PETSc's event log (cheap) splits the solver time into factorizations,
-    // triangular solves and products; -log_view may have started it already.
+    // triangular solves and orthogonalization; -log_view may have started it.
     PetscBool logging = PETSC_FALSE;
     PetscLogIsActive(&logging);
     if (!logging) PetscLogDefaultBegin();

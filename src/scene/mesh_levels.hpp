@@ -19,8 +19,8 @@ struct MeshLevel {
 // docs/accuracy-vs-cost.md): "default" is the cheapest level that puts both
 // f1 and the first ovalling mode within 1 % of the extrapolated frequency in
 // all three example scenes (worst: f1 of the clamped case 02, 0.6 %; ovalling
-// 0.2-0.4 %). "coarse" keeps f1 within 1 % but not ovalling (2-3 %: two
-// elements through the wall and 16 around are too stiff in ring bending).
+// 0.2-0.4 %). "coarse" keeps f1 within about 1 % but not ovalling (2-3 %:
+// two elements through the wall and 16 around are too stiff in ring bending).
 // Change them only with a new run of that study.
 inline constexpr std::array<MeshLevel, 4> kMeshLevels = {{
     {"coarse", 2, 1, 16, 4.0},
