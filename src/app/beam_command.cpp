@@ -3,6 +3,7 @@
 // Euler–Bernoulli and Timoshenko beam frequencies. No mesh, no PETSc:
 // it answers in milliseconds. Formulas: beam/formulas.hpp; docs/beam.md.
 #include "app/commands.hpp"
+#include "common/format.hpp"
 #include "beam/beam_theory.hpp"
 #include "beam/chuck_calibration.hpp"
 #include "beam/formulas.hpp"
@@ -85,13 +86,8 @@ private:
     const BeamOptions& options_;
 };
 
-std::string g(double v, int digits = 4) {
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
-}
 
-std::string mm(double metres) { return g(metres * 1e3, 5) + " mm"; }
+std::string mm(double metres) { return significant(metres * 1e3, 5) + " mm"; }
 
 OrthotropicMaterial library(const char* name) {
     const LibraryMaterial* m = find_library_material(name);
@@ -125,16 +121,16 @@ void apply_calibration(const std::string& file, bool k_given, Report& r) {
     const Calibration c = read_calibration(file);
     if (!c.passed)
         throw InputError(file + ": this calibration failed its own check (largest f1 error " +
-                         g(100 * std::max(c.max_error_fit, c.max_error_held_out)) + " % against the stated " +
-                         g(100 * c.stated_error) + " %); expected a calibration that passed (docs/calibration.md)");
+                         significant(100 * std::max(c.max_error_fit, c.max_error_held_out)) + " % against the stated " +
+                         significant(100 * c.stated_error) + " %); expected a calibration that passed (docs/calibration.md)");
     r.groups = calibration_groups(r.beam, r.section.Ec * r.Ic, r.Li, r.L);
     r.k = calibrated_k(c, *r.groups, r.L, r.Li, r.section.Dp, r.notes);
     if (r.k > 1) {
-        r.notes.push_back("calibrated k = " + g(r.k) + " > 1 taken as 1 (the rigid clamp)");
+        r.notes.push_back("calibrated k = " + significant(r.k) + " > 1 taken as 1 (the rigid clamp)");
         r.k = 1;
     }
     r.k_source = "calibration " + file + " (case '" + c.case_name + "', " + std::to_string(c.n_fit) +
-                 " points, I-7 within " + g(100 * c.stated_error) + " % of FE)";
+                 " points, I-7 within " + significant(100 * c.stated_error) + " % of FE)";
 }
 
 Report compute(const BeamOptions& options) {
@@ -248,7 +244,7 @@ Report compute(const BeamOptions& options) {
 
     r.safe = in.get("safe").value_or(0.7);
     r.v_safe = safe_web_speed(r.f1, sec.Dp, r.safe);
-    if (r.safe > 0.8) r.notes.push_back("safe = " + g(r.safe) + " is above Ilomäki's range 0.7-0.8");
+    if (r.safe > 0.8) r.notes.push_back("safe = " + significant(r.safe) + " is above Ilomäki's range 0.7-0.8");
 
     r.f_free = in.get("f-free");
     r.f_clamped = in.get("f-clamped");
@@ -283,7 +279,7 @@ std::vector<std::string> beam_assumptions(const Scene& s) {
     return out;
 }
 
-std::string speed(double v) { return g(v) + " m/s (" + g(v * 60) + " m/min)"; }
+std::string speed(double v) { return significant(v) + " m/s (" + significant(v * 60) + " m/min)"; }
 
 void print_text(const Report& r, std::ostream& out) {
     const Scene& s = r.scene;
@@ -291,26 +287,26 @@ void print_text(const Report& r, std::ostream& out) {
     out << "coremodal beam: " << s.name;
     if (!s.source_file.empty()) out << " (" << s.source_file << ")";
     out << "\n\nSection\n";
-    out << "  core        Di " << mm(sec.Di) << ", Do " << mm(sec.Do) << ", Lc " << g(r.Lc) << " m, Ec "
-        << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c " << g(sec.rho_c) << " kg/m^3\n";
-    out << "              Ic " << g(r.Ic) << " m^4, Ac " << g(r.Ac) << " m^2\n";
+    out << "  core        Di " << mm(sec.Di) << ", Do " << mm(sec.Do) << ", Lc " << significant(r.Lc) << " m, Ec "
+        << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c " << significant(sec.rho_c) << " kg/m^3\n";
+    out << "              Ic " << significant(r.Ic) << " m^4, Ac " << significant(r.Ac) << " m^2\n";
     if (s.rest_paper) {
         out << "  rest paper  Dp " << mm(sec.Dp) << " (" << mm(r.paper_thickness) << " thick), Ep "
-            << format_quantity(sec.Ep, Dimension::pressure) << ", rho_p " << g(sec.rho_p) << " kg/m^3\n";
-        out << "              Ip " << g(r.Ip) << " m^4, Ap " << g(r.Ap) << " m^2\n";
+            << format_quantity(sec.Ep, Dimension::pressure) << ", rho_p " << significant(sec.rho_p) << " kg/m^3\n";
+        out << "              Ip " << significant(r.Ip) << " m^4, Ap " << significant(r.Ap) << " m^2\n";
     } else {
         out << "  rest paper  none (bare core, Dp = Do)\n";
     }
-    out << "  EcIc + EpIp = " << g(r.beam.EI) << " N m^2, rho_c Ac + rho_p Ap = " << g(r.beam.rho_A)
-        << " kg/m, kappa G A = " << g(r.beam.kappa_GA) << " N (Cowper; for Timoshenko)\n";
+    out << "  EcIc + EpIp = " << significant(r.beam.EI) << " N m^2, rho_c Ac + rho_p Ap = " << significant(r.beam.rho_A)
+        << " kg/m, kappa G A = " << significant(r.beam.kappa_GA) << " N (Cowper; for Timoshenko)\n";
     out << "\nSpan\n";
-    out << "  Li = " << mm(r.Li) << " (" << r.li_source << "), free span L = Lc - 2 Li = " << g(r.L) << " m\n";
+    out << "  Li = " << mm(r.Li) << " (" << r.li_source << "), free span L = Lc - 2 Li = " << significant(r.L) << " m\n";
     out << "\nFirst bending frequency\n";
-    out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << g(r.k) << ":  "
-        << g(r.f1) << " Hz\n";
+    out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << significant(r.k) << ":  "
+        << significant(r.f1) << " Hz\n";
     if (!r.k_source.empty())
-        out << "       k from the " << r.k_source << ": g1 = " << g(r.groups->g1) << ", g2 = " << g(r.groups->g2)
-            << ", g3 = " << g(r.groups->g3) << "\n";
+        out << "       k from the " << r.k_source << ": g1 = " << significant(r.groups->g1) << ", g2 = " << significant(r.groups->g2)
+            << ", g3 = " << significant(r.groups->g3) << "\n";
     out << "                      Euler-Bernoulli   Timoshenko\n";
     char line[160];
     std::snprintf(line, sizeof line, "  clamped-clamped, L   %9.4g Hz   %9.4g Hz\n", r.eb_cc, r.timo_cc);
@@ -319,19 +315,19 @@ void print_text(const Report& r, std::ostream& out) {
     out << line;
     out << "\nSpeeds\n";
     out << "  König " << r.koenig_formula << " (rest paper " << mm(r.paper_thickness)
-        << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor " << g(r.koenig_factor)
-        << ", l = " << g(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
-    out << "      f_krit = " << g(r.koenig.f_krit_hz) << " Hz, v_krit = " << speed(r.koenig.v_krit_m_s) << "\n";
-    out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << g(r.safe) << ": " << speed(r.v_safe) << "\n";
+        << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor " << significant(r.koenig_factor)
+        << ", l = " << significant(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
+    out << "      f_krit = " << significant(r.koenig.f_krit_hz) << " Hz, v_krit = " << speed(r.koenig.v_krit_m_s) << "\n";
+    out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << significant(r.safe) << ": " << speed(r.v_safe) << "\n";
     if (r.f_free) {
-        out << "\nFree-hanging measurement f_free = " << g(*r.f_free) << " Hz at Lc = " << g(r.Lc) << " m\n";
-        out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << g(*r.f2) << " Hz\n";
+        out << "\nFree-hanging measurement f_free = " << significant(*r.f_free) << " Hz at Lc = " << significant(r.Lc) << " m\n";
+        out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << significant(*r.f2) << " Hz\n";
         if (r.k_measured)
-            out << "  I-6  k = f1/f2 = " << g(*r.f_clamped) << "/" << g(*r.f2) << " = " << g(*r.k_measured) << "\n";
+            out << "  I-6  k = f1/f2 = " << significant(*r.f_clamped) << "/" << significant(*r.f2) << " = " << significant(*r.k_measured) << "\n";
         if (r.Ec_measured)
-            out << "  I-13/14  Q = 82.66 Ic/(Ac L^2) + 1 = " << g(*r.Q, 5)
+            out << "  I-13/14  Q = 82.66 Ic/(Ac L^2) + 1 = " << significant(*r.Q, 5)
                 << ", Ec = 7.88e-8 f^2 M L^4 Q/Ic = " << format_quantity(*r.Ec_measured, Dimension::pressure)
-                << " (M = rho_c Ac = " << g(sec.rho_c * r.Ac) << " kg/m)\n";
+                << " (M = rho_c Ac = " << significant(sec.rho_c * r.Ac) << " kg/m)\n";
         if (r.Ep_measured)
             out << "  I-15  Ep (I-7 with k = 1 at Lc, solved for Ep) = "
                 << format_quantity(*r.Ep_measured, Dimension::pressure) << "\n";

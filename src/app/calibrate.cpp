@@ -1,4 +1,5 @@
 #include "app/calibrate.hpp"
+#include "common/format.hpp"
 
 #include "common/error.hpp"
 
@@ -13,13 +14,8 @@ namespace {
 // Four coefficients and at least one degree of freedom for the residuals.
 constexpr int kMinFitPoints = kCalibrationGroups + 2;
 
-std::string g(double v, int digits = 4) {
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
-}
 
-std::string percent(double share) { return g(100 * share, 3) + " %"; }
+std::string percent(double share) { return significant(100 * share, 3) + " %"; }
 
 Range range_of(const std::vector<double>& v) {
     return {*std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end())};
@@ -111,7 +107,7 @@ std::string calibration_csv(const CaseSweep& sweep, const CalibrationOutcome& ou
     for (const SweepParameter& p : sweep.parameters()) out << "," << parameter_column(p);
     out << ",status,held_out,li_m,span_m,diameter_m,g1,g2,g3,f1_fe_hz,f_i7_k1_hz,k_fe,k_fit,residual_k,"
            "f1_calibrated_hz,error,note\n";
-    const auto num = [](double v) { return g(v, 10); };
+    const auto num = [](double v) { return significant(v, 10); };
     for (const CalibrationRow& r : outcome.rows) {
         const StudyPoint& p = *r.point;
         out << p.index + 1;
@@ -148,22 +144,22 @@ std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResul
            "    g2 = EI/(kappa G A L^2)     shear flexibility of the span\n"
            "    g3 = Ep Ip / EI             share of the bending stiffness in the rest paper\n\n"
            "k = f1_FE / f_I-7(k = 1) over L = Lc - 2 Li; EI = Ec Ic + Ep Ip (docs/calibration.md).\n\n";
-    out << "| coefficient | value |\n|---|---|\n| c0 | " << g(c.law.c[0], 6) << " |\n| c1 | " << g(c.law.c[1], 6)
-        << " |\n| c2 | " << g(c.law.c[2], 6) << " |\n| c3 | " << g(c.law.c[3], 6) << " |\n\n";
+    out << "| coefficient | value |\n|---|---|\n| c0 | " << significant(c.law.c[0], 6) << " |\n| c1 | " << significant(c.law.c[1], 6)
+        << " |\n| c2 | " << significant(c.law.c[2], 6) << " |\n| c3 | " << significant(c.law.c[3], 6) << " |\n\n";
     for (int i = 0; i < kCalibrationGroups; ++i)
         if (!c.law.fitted[static_cast<size_t>(i)])
             out << "g" << i + 1 << " is the same at every point: not fitted (c" << i + 1
                 << " = 0); the law holds only at that value.\n\n";
     out << "## Residuals and check\n\n";
-    out << "- fitted points: rms residual in k " << g(c.rms_residual_k, 3) << ", largest " << g(c.max_residual_k, 3)
+    out << "- fitted points: rms residual in k " << significant(c.rms_residual_k, 3) << ", largest " << significant(c.max_residual_k, 3)
         << "; largest error of I-7 with the fitted k against the FE f1: " << percent(c.max_error_fit) << "\n";
     out << "- held-out points (not in the fit): largest error " << percent(c.max_error_held_out) << "\n";
     out << "- stated error: " << percent(c.stated_error) << " ([calibration] max_error): **"
         << (c.passed ? "PASSED" : "FAILED") << "**\n\n";
-    out << "Valid for: L " << g(c.span_m.min, 4) << " to " << g(c.span_m.max, 4) << " m, Li " << g(c.li_m.min * 1e3, 4)
-        << " to " << g(c.li_m.max * 1e3, 4) << " mm, D " << g(c.diameter_m.min * 1e3, 4) << " to "
-        << g(c.diameter_m.max * 1e3, 4) << " mm, g1 " << g(c.g1.min, 3) << " to " << g(c.g1.max, 3) << ", g2 "
-        << g(c.g2.min, 3) << " to " << g(c.g2.max, 3) << ", g3 " << g(c.g3.min, 3) << " to " << g(c.g3.max, 3)
+    out << "Valid for: L " << significant(c.span_m.min, 4) << " to " << significant(c.span_m.max, 4) << " m, Li " << significant(c.li_m.min * 1e3, 4)
+        << " to " << significant(c.li_m.max * 1e3, 4) << " mm, D " << significant(c.diameter_m.min * 1e3, 4) << " to "
+        << significant(c.diameter_m.max * 1e3, 4) << " mm, g1 " << significant(c.g1.min, 3) << " to " << significant(c.g1.max, 3) << ", g2 "
+        << significant(c.g2.min, 3) << " to " << significant(c.g2.max, 3) << ", g3 " << significant(c.g3.min, 3) << " to " << significant(c.g3.max, 3)
         << ". `coremodal beam --calibration calibration.toml` "
         << "notes any value outside these ranges.\n\n";
     out << "## Table of k\n\n| # | point | held out | L [m] | D [mm] | g1 | g2 | g3 | f1 FE [Hz] | k FE | "
@@ -175,9 +171,9 @@ std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResul
             out << "- | | | | | | | | | | " << r.note << " |\n";
             continue;
         }
-        out << (r.held_out ? "yes" : "") << " | " << g(*p.span_m) << " | " << g(p.diameter_m * 1e3) << " | "
-            << g(r.groups.g1, 3) << " | " << g(r.groups.g2, 3) << " | " << g(r.groups.g3, 3) << " | " << g(*p.f1_hz) << " | " << g(r.k_fe, 4)
-            << " | " << g(r.k_fit, 4) << " | " << g(r.f1_calibrated_hz) << " | " << percent(r.error) << " |\n";
+        out << (r.held_out ? "yes" : "") << " | " << significant(*p.span_m) << " | " << significant(p.diameter_m * 1e3) << " | "
+            << significant(r.groups.g1, 3) << " | " << significant(r.groups.g2, 3) << " | " << significant(r.groups.g3, 3) << " | " << significant(*p.f1_hz) << " | " << significant(r.k_fe, 4)
+            << " | " << significant(r.k_fit, 4) << " | " << significant(r.f1_calibrated_hz) << " | " << percent(r.error) << " |\n";
     }
     out << "\n## Plots\n\n";
     if (!plot_problem.empty()) out << "Plots were not drawn: " << plot_problem << ".\n\n";

@@ -2,6 +2,7 @@
 // the table of k, the fitted law and its check; calibration.toml for
 // `coremodal beam --calibration` (docs/calibration.md).
 #include "app/calibrate.hpp"
+#include "common/format.hpp"
 #include "app/commands.hpp"
 #include "common/petsc_handle.hpp"
 #include "output/results_folder.hpp"
@@ -12,11 +13,6 @@
 namespace coremodal {
 namespace {
 
-std::string g(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
 
 struct CalibrateOptions {
     std::string case_file, output, mesh;
@@ -54,11 +50,11 @@ int run_calibrate_command(const CalibrateOptions& o) {
     folder.commit();
 
     const Calibration& c = outcome.calibration;
-    std::cout << "calibrate: 1/k^2 = " << g(c.law.c[0]) << " + " << g(c.law.c[1]) << " g1 + " << g(c.law.c[2])
-              << " g2 + " << g(c.law.c[3]) << " g3; " << c.n_fit << " points fitted (rms residual in k "
-              << g(c.rms_residual_k) << "), " << c.n_held_out << " held out: largest f1 error "
-              << g(100 * c.max_error_held_out) << " % (fitted " << g(100 * c.max_error_fit) << " %), stated "
-              << g(100 * c.stated_error) << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
+    std::cout << "calibrate: 1/k^2 = " << significant(c.law.c[0]) << " + " << significant(c.law.c[1]) << " g1 + " << significant(c.law.c[2])
+              << " g2 + " << significant(c.law.c[3]) << " g3; " << c.n_fit << " points fitted (rms residual in k "
+              << significant(c.rms_residual_k) << "), " << c.n_held_out << " held out: largest f1 error "
+              << significant(100 * c.max_error_held_out) << " % (fitted " << significant(100 * c.max_error_fit) << " %), stated "
+              << significant(100 * c.stated_error) << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
               << "calibrate: " << out_dir.string() << "/calibration.toml (apply with coremodal beam --calibration)"
               << std::endl;
     if (!c.passed)

@@ -1,4 +1,5 @@
 #include "app/converge.hpp"
+#include "common/format.hpp"
 
 #include "common/error.hpp"
 #include "geometry/tube_section.hpp"
@@ -15,11 +16,6 @@
 namespace coremodal {
 namespace {
 
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
 
 std::string counts_text(const MeshSpec& m, bool rest_paper) {
     return std::to_string(m.n_wall) + "/" + (rest_paper ? std::to_string(m.n_rest_paper) : std::string("-")) +
@@ -261,9 +257,9 @@ Richardson richardson_three(const double h[3], const double f[3]) {
     r.f0 = f[2] - c * std::pow(h[2], p);
     r.error_estimate = std::abs(f[2] - r.f0);
     r.asymptotic = p >= kMinPlausibleOrder && p <= kMaxPlausibleOrder;
-    r.note = r.asymptotic ? "observed order " + fmt("%.2f", p)
-                          : "observed order " + fmt("%.2f", p) + " outside [" + fmt("%.1f", kMinPlausibleOrder) +
-                                ", " + fmt("%.0f", kMaxPlausibleOrder) + "]: not in the asymptotic range";
+    r.note = r.asymptotic ? "observed order " + formatted("%.2f", p)
+                          : "observed order " + formatted("%.2f", p) + " outside [" + formatted("%.1f", kMinPlausibleOrder) +
+                                ", " + formatted("%.0f", kMaxPlausibleOrder) + "]: not in the asymptotic range";
     return r;
 }
 
@@ -287,10 +283,10 @@ Richardson richardson(const std::vector<double>& h, const std::vector<double>& f
             std::abs(r.order - previous.order) <= kOrderConsistency * std::max(r.order, previous.order);
         if (!consistent) {
             r.asymptotic = false;
-            r.note += "; the coarser triple gives " + fmt("%.2f", previous.order) +
+            r.note += "; the coarser triple gives " + formatted("%.2f", previous.order) +
                       ": order not settled, not yet asymptotic";
         } else {
-            r.note += " (coarser triple " + fmt("%.2f", previous.order) + ")";
+            r.note += " (coarser triple " + formatted("%.2f", previous.order) + ")";
         }
     } else if (r.asymptotic) {
         r.asymptotic = false;
@@ -427,7 +423,7 @@ std::string csv_quote(const std::string& s) {
     return out + "\"";
 }
 
-std::string opt(const std::optional<double>& v, const char* format = "%.10g") { return v ? fmt(format, *v) : ""; }
+std::string opt(const std::optional<double>& v, const char* format = "%.10g") { return v ? formatted(format, *v) : ""; }
 
 toml::table timing_table(const Timing& t) {
     return toml::table{{"mesh", t.mesh},
@@ -452,13 +448,13 @@ toml::table richardson_table(const Richardson& r) {
 }
 
 std::string percent(double fraction) {
-    if (fraction >= 0.1) return fmt("%.0f %%", fraction * 100);
-    if (fraction >= 0.01) return fmt("%.1f %%", fraction * 100);
-    if (fraction >= 1e-3) return fmt("%.2f %%", fraction * 100);
-    return fmt("%.2g %%", fraction * 100);
+    if (fraction >= 0.1) return formatted("%.0f %%", fraction * 100);
+    if (fraction >= 0.01) return formatted("%.1f %%", fraction * 100);
+    if (fraction >= 1e-3) return formatted("%.2f %%", fraction * 100);
+    return formatted("%.2g %%", fraction * 100);
 }
 
-std::string seconds(double s) { return s < 10 ? fmt("%.2f", s) : fmt("%.1f", s); }
+std::string seconds(double s) { return s < 10 ? formatted("%.2f", s) : formatted("%.1f", s); }
 
 std::string role_title(const std::string& role) {
     if (role == "f1") return "f1 (first bending)";
@@ -480,18 +476,18 @@ std::string converge_csv(const ConvergeStudy& study) {
             const Timing& t = l.median_s;
             for (const auto& mode : model.modes) {
                 s << model.model << ',' << l.step.k << ',' << l.step.counts << ','
-                  << fmt("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << fmt("%.4f", t.mesh) << ','
-                  << fmt("%.4f", t.assemble) << ',' << fmt("%.4f", t.factor_and_solve) << ','
-                  << fmt("%.4f", t.classify) << ',' << fmt("%.4f", t.total) << ',' << fmt("%.4f", l.median_cpu_s)
-                  << ',' << fmt("%.4f", l.median_solver_s.factor_s) << ',' << fmt("%.4f", l.median_solver_s.solve_s)
-                  << ',' << fmt("%.4f", l.median_solver_s.orthogonalize_s) << ',' << fmt("%.1f", l.peak_memory_mb)
+                  << formatted("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << formatted("%.4f", t.mesh) << ','
+                  << formatted("%.4f", t.assemble) << ',' << formatted("%.4f", t.factor_and_solve) << ','
+                  << formatted("%.4f", t.classify) << ',' << formatted("%.4f", t.total) << ',' << formatted("%.4f", l.median_cpu_s)
+                  << ',' << formatted("%.4f", l.median_solver_s.factor_s) << ',' << formatted("%.4f", l.median_solver_s.solve_s)
+                  << ',' << formatted("%.4f", l.median_solver_s.orthogonalize_s) << ',' << formatted("%.1f", l.peak_memory_mb)
                   << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
                   << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
                   << opt(mode.frequency_hz[i]) << ',';
                 if (mode.richardson) {
                     const Richardson& r = *mode.richardson;
-                    s << fmt("%.10g", r.f0) << ',' << fmt("%.4g", r.error_estimate) << ','
-                      << (r.extrapolated ? fmt("%.4g", r.order) : std::string()) << ','
+                    s << formatted("%.10g", r.f0) << ',' << formatted("%.4g", r.error_estimate) << ','
+                      << (r.extrapolated ? formatted("%.4g", r.order) : std::string()) << ','
                       << (r.asymptotic ? "yes" : "no");
                 } else {
                     s << ",,,";
@@ -601,7 +597,7 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
         s << "| " << l.step.k << " | " << l.step.counts << " | " << l.n_dofs
           << " | " << l.runs << " | " << seconds(t.mesh) << " | " << seconds(t.assemble) << " | "
           << seconds(t.factor_and_solve) << " | " << seconds(t.total) << " | " << seconds(l.median_cpu_s) << " | "
-          << fmt("%.0f", l.peak_memory_mb) << " |";
+          << formatted("%.0f", l.peak_memory_mb) << " |";
         for (const TrackedMode* t : {f1, oval}) {
             if (!t) continue;
             s << ' ' << opt(t->frequency_hz[i], "%.4f") << " | "
@@ -623,9 +619,9 @@ void markdown_extrapolation(std::ostringstream& s, const ModelStudy& m) {
             continue;
         }
         const Richardson& r = *t.richardson;
-        s << fmt("%.4f", r.f0) << " | " << percent(r.error_estimate / std::abs(r.f0)) << " | "
+        s << formatted("%.4f", r.f0) << " | " << percent(r.error_estimate / std::abs(r.f0)) << " | "
           << (r.f0_uncertainty ? percent(*r.f0_uncertainty / std::abs(r.f0)) : std::string("–")) << " | "
-          << (r.extrapolated ? fmt("%.2f", r.order) : std::string("–")) << " | " << (r.asymptotic ? "yes" : "no")
+          << (r.extrapolated ? formatted("%.2f", r.order) : std::string("–")) << " | " << (r.asymptotic ? "yes" : "no")
           << " | " << r.note << " |\n";
     }
     s << "\nerror estimate = |f(finest) − f0| / f0; \"f0 known to\" = |f0 − f0 of the triple one level coarser| / f0.\n";
@@ -643,8 +639,8 @@ void markdown_targets(std::ostringstream& s, const ModelStudy& m) {
                 const LevelResult& l = m.levels[*i];
                 s << l.step.label << " | " << l.n_dofs << " | " << seconds(l.median_s.total) << " |\n";
             } else if (const auto p = predict_level_for(m, *t, target)) {
-                s << "none of the ladder; predicted k ≈ " << fmt("%.1f", p->k) << " | ≈ " << fmt("%.3g", p->n_dofs)
-                  << " | " << (p->time_s ? "≈ " + fmt("%.3g", *p->time_s) : std::string("–")) << " |\n";
+                s << "none of the ladder; predicted k ≈ " << formatted("%.1f", p->k) << " | ≈ " << formatted("%.3g", p->n_dofs)
+                  << " | " << (p->time_s ? "≈ " + formatted("%.3g", *p->time_s) : std::string("–")) << " |\n";
             } else {
                 s << "none of the ladder (not asymptotic, or below what f0 is known to) | – | – |\n";
             }
@@ -664,7 +660,7 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
       << percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s (" << percent(t.assemble / total)
       << "), factorization and solve " << seconds(t.factor_and_solve) << " s (" << percent(t.factor_and_solve / total)
       << "), classification " << seconds(t.classify) << " s (" << percent(t.classify / total) << "); total "
-      << seconds(t.total) << " s, peak memory " << fmt("%.0f", l.peak_memory_mb) << " MiB.\n";
+      << seconds(t.total) << " s, peak memory " << formatted("%.0f", l.peak_memory_mb) << " MiB.\n";
     const SolverBreakdown& b = l.median_solver_s;
     if (b.factor_s + b.solve_s + b.orthogonalize_s > 0) {
         const double rest = std::max(0.0, t.factor_and_solve - b.factor_s - b.solve_s - b.orthogonalize_s);
@@ -675,8 +671,8 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
           << "problem, residual checks) " << seconds(rest) << " s (" << percent(rest / total) << ").\n";
     }
     if (m.time_exponent && m.memory_exponent)
-        s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^" << fmt("%.2f", *m.time_exponent)
-          << ", peak memory ~ DOFs^" << fmt("%.2f", *m.memory_exponent) << ".\n";
+        s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^" << formatted("%.2f", *m.time_exponent)
+          << ", peak memory ~ DOFs^" << formatted("%.2f", *m.memory_exponent) << ".\n";
 }
 
 }  // namespace
@@ -686,12 +682,12 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
     s << "# Convergence study: " << study.case_name << "\n\n";
     s << "Case file `" << study.source_file << "`; " << study.n_modes << " modes asked per run; timings are medians of "
       << study.repeats << " runs per level (levels whose first run took longer than "
-      << fmt("%.0f", study.repeat_limit_s) << " s run once). Model levels: ";
+      << formatted("%.0f", study.repeat_limit_s) << " s run once). Model levels: ";
     for (std::size_t i = 0; i < study.models.size(); ++i) s << (i ? ", " : "") << study.models[i].model;
     s << ". Ladders: " << seconds(study.ladder_time_s) << " s; whole study (with named-level checks): "
       << seconds(study.total_time_s) << " s on " << study.n_cores
-      << " cores, load average " << fmt("%.1f", study.load_start) << " at the start and "
-      << fmt("%.1f", study.load_end) << " at the end (a load above the number of cores means other processes "
+      << " cores, load average " << formatted("%.1f", study.load_start) << " at the start and "
+      << formatted("%.1f", study.load_end) << " at the end (a load above the number of cores means other processes "
       << "shared the machine and the wall times are longer than on an idle one; CPU time is less affected).\n";
     for (const auto& m : study.models) {
         s << "\n## Model level: " << m.model << "\n\n" << m.ladder_note << "\n\n";
@@ -712,7 +708,7 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
             if (m.model == "solid") solid = &m;
         for (const auto& c : study.checks) {
             s << "| " << c.name << " | " << c.mesh << " | " << c.result.n_dofs << " | "
-              << seconds(c.result.median_s.total) << " | " << fmt("%.0f", c.result.peak_memory_mb) << " |";
+              << seconds(c.result.median_s.total) << " | " << formatted("%.0f", c.result.peak_memory_mb) << " |";
             const auto distinct = distinct_modes(c.result.modes);
             for (const std::string role : {"f1", "ovalling"}) {
                 const TrackedMode* t = solid ? role_mode(*solid, role) : nullptr;
@@ -724,7 +720,7 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
                     s << " – | – |";
                     continue;
                 }
-                s << ' ' << fmt("%.4f", d->frequency_hz) << " | "
+                s << ' ' << formatted("%.4f", d->frequency_hz) << " | "
                   << percent(std::abs(d->frequency_hz - t->richardson->f0) / t->richardson->f0) << " |";
             }
             s << "\n";

@@ -4,6 +4,7 @@
 // extrapolates their frequencies (Richardson, observed order) and writes
 // converge.csv, converge.json, converge.md and error_vs_time.png.
 #include "app/commands.hpp"
+#include "common/format.hpp"
 #include "app/converge.hpp"
 #include "app/run_case.hpp"
 #include "common/argv.hpp"
@@ -33,11 +34,6 @@ extern char** environ;
 namespace coremodal {
 namespace {
 
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
 
 // ---- 1. model levels and their ladders ---------------------------------------
 
@@ -184,8 +180,8 @@ std::string role_values(const LevelRun& run) {
     std::string s;
     bool f1 = false, oval = false;
     for (const auto& d : distinct_modes(run.modes)) {
-        if (!f1 && d.key.type == "bending") s += ", f1 " + fmt("%.4f", d.frequency_hz) + " Hz", f1 = true;
-        if (!oval && d.key.type == "ovalling") s += ", first ovalling " + fmt("%.4f", d.frequency_hz) + " Hz", oval = true;
+        if (!f1 && d.key.type == "bending") s += ", f1 " + formatted("%.4f", d.frequency_hz) + " Hz", f1 = true;
+        if (!oval && d.key.type == "ovalling") s += ", first ovalling " + formatted("%.4f", d.frequency_hz) + " Hz", oval = true;
     }
     return s;
 }
@@ -202,7 +198,7 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     auto show = [&] {
         if (!say) return;
         if (runs.size() == 1) progress << " " << runs[0].n_dofs << " DOFs,";
-        progress << " " << fmt("%.1f", runs.back().timing_s.total) << " s" << std::flush;
+        progress << " " << formatted("%.1f", runs.back().timing_s.total) << " s" << std::flush;
     };
     if (!runs.empty()) show();
     // A slow level is timed once: its run-to-run noise is small against its
@@ -219,8 +215,8 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     }
     LevelResult result = summarize_runs(step, runs);
     if (say)
-        progress << " -> median " << fmt("%.2f", result.median_s.total) << " s, "
-                 << fmt("%.0f", result.peak_memory_mb) << " MiB" << role_values(runs.front())
+        progress << " -> median " << formatted("%.2f", result.median_s.total) << " s, "
+                 << formatted("%.0f", result.peak_memory_mb) << " MiB" << role_values(runs.front())
                  << (result.complete ? "" : "  [INCOMPLETE: modes missing]") << std::endl;
     return result;
 }
@@ -244,7 +240,7 @@ NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int
     const LevelRun run = run_solid_once(scene, s.mesh, n_modes);
     check.result = summarize_runs(step, {run});
     if (say)
-        progress << " " << run.n_dofs << " DOFs, " << fmt("%.1f", run.timing_s.total) << " s" << role_values(run)
+        progress << " " << run.n_dofs << " DOFs, " << formatted("%.1f", run.timing_s.total) << " s" << role_values(run)
                  << std::endl;
     return check;
 }
@@ -319,7 +315,7 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
             char line[256];
             std::snprintf(line, sizeof line, "  %-10s %-24s f0 %12.4f Hz  error of finest %9.2e  order %s  %s\n",
                           t.role.c_str(), t.key.text().c_str(), r.f0, r.error_estimate / std::abs(r.f0),
-                          r.extrapolated ? fmt("%.2f", r.order).c_str() : "-",
+                          r.extrapolated ? formatted("%.2f", r.order).c_str() : "-",
                           r.asymptotic ? "asymptotic" : "NOT asymptotic");
             out << line;
         }
@@ -329,12 +325,12 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "  " << role << " within";
                 for (double target : kAccuracyTargets) {
                     const auto i = first_level_within(t, target);
-                    out << "  " << fmt("%g", target * 100) << " %: ";
+                    out << "  " << formatted("%g", target * 100) << " %: ";
                     if (i) {
-                        out << m.levels[*i].step.label << " (" << fmt("%.1f", m.levels[*i].median_s.total) << " s)";
+                        out << m.levels[*i].step.label << " (" << formatted("%.1f", m.levels[*i].median_s.total) << " s)";
                     } else if (const auto p = predict_level_for(m, t, target)) {
-                        out << "not in the ladder (k ~ " << fmt("%.1f", p->k) << ", ~" << fmt("%.2g", p->n_dofs)
-                            << " DOFs" << (p->time_s ? ", ~" + fmt("%.2g", *p->time_s) + " s" : std::string()) << ")";
+                        out << "not in the ladder (k ~ " << formatted("%.1f", p->k) << ", ~" << formatted("%.2g", p->n_dofs)
+                            << " DOFs" << (p->time_s ? ", ~" + formatted("%.2g", *p->time_s) + " s" : std::string()) << ")";
                     } else {
                         out << "not in the ladder";
                     }
@@ -342,7 +338,7 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "\n";
             }
     }
-    out << "\nladders " << fmt("%.1f", study.ladder_time_s) << " s, whole study " << fmt("%.1f", study.total_time_s)
+    out << "\nladders " << formatted("%.1f", study.ladder_time_s) << " s, whole study " << formatted("%.1f", study.total_time_s)
         << " s" << std::endl;
 }
 
@@ -382,7 +378,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
         for (const auto& l : ladders) progress << " " << l.model;
         progress << "; " << o.levels << " levels, " << o.repeats << (o.repeats == 1 ? " run" : " runs")
                  << " per level (one when the first takes over "
-                 << fmt("%.0f", o.repeat_limit_s) << " s)" << std::endl;
+                 << formatted("%.0f", o.repeat_limit_s) << " s)" << std::endl;
     }
 
     // 2. How many modes each run asks for (enough to hold the first ovalling mode).
@@ -411,7 +407,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
                 study.notes.push_back(m.model + " " + l.step.label + ": the inertia count found modes missing");
             if (l.max_repeat_spread > 1e-8)
                 study.notes.push_back(m.model + " " + l.step.label + ": repeated runs differ by " +
-                                      fmt("%.1e", l.max_repeat_spread) + " in frequency");
+                                      formatted("%.1e", l.max_repeat_spread) + " in frequency");
         }
     study.total_time_s = clock.seconds();
     study.load_end = load_average();

@@ -317,7 +317,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 6. Name every mode and compute its effective masses.
     say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
-    const ModeClassifier classifier(mesh, scene.supports.kind == SupportKind::chucks ? roll_nodes(mesh) : std::vector<int>{});
+    const ModeClassifier classifier(mesh, roll_nodes(mesh));
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
     const EffectiveMassCalculator effective_mass(system.M, mesh, dofs);

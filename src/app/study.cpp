@@ -1,5 +1,6 @@
 // The study driver: points in, tracked modes and the study's files out.
 #include "app/study.hpp"
+#include "common/format.hpp"
 
 #include "app/run_case.hpp"
 #include "app/study_workers.hpp"
@@ -30,13 +31,8 @@ int StudyResult::n_failed() const {
 
 namespace {
 
-std::string g(double v, int digits = 4) {
-    char b[48];
-    std::snprintf(b, sizeof b, "%.*g", digits, v);
-    return b;
-}
 
-std::string minutes_or_seconds(double s) { return s < 120 ? g(s, 3) + " s" : g(s / 60, 3) + " min"; }
+std::string minutes_or_seconds(double s) { return s < 120 ? significant(s, 3) + " s" : significant(s / 60, 3) + " min"; }
 
 // ---- running the points ----------------------------------------------------
 
@@ -53,11 +49,11 @@ std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
     if (!p.ok) {
         line += "FAILED: " + p.error;
     } else {
-        line += p.f1_hz ? "f1 " + g(*p.f1_hz) + " Hz" : "no bending mode";
-        if (p.k) line += ", k " + g(*p.k, 3);
-        if (p.v_safe_m_s) line += ", v_safe " + g(*p.v_safe_m_s, 3) + " m/s";
+        line += p.f1_hz ? "f1 " + significant(*p.f1_hz) + " Hz" : "no bending mode";
+        if (p.k) line += ", k " + significant(*p.k, 3);
+        if (p.v_safe_m_s) line += ", v_safe " + significant(*p.v_safe_m_s, 3) + " m/s";
     }
-    line += "  (" + g(p.time_s, 3) + " s";
+    line += "  (" + significant(p.time_s, 3) + " s";
     if (left_s > 0) line += ", ~" + minutes_or_seconds(left_s) + " left";
     return line + ")";
 }
@@ -213,7 +209,7 @@ std::string csv_field(const std::string& s) {
 
 namespace {
 
-std::string number(double v) { return g(v, 10); }
+std::string number(double v) { return significant(v, 10); }
 std::string number(const std::optional<double>& v) { return v ? number(*v) : ""; }
 
 std::string parameter_cells(const CaseSweep& sweep, const StudyPoint& p) {
@@ -423,7 +419,7 @@ StudyFiles write_study_files(const fs::path& dir, const CaseSweep& sweep, const 
 
 namespace {
 
-std::string cell(const std::optional<double>& v, int digits = 4) { return v ? g(*v, digits) : "-"; }
+std::string cell(const std::optional<double>& v, int digits = 4) { return v ? significant(*v, digits) : "-"; }
 
 void report_points(std::ostream& out, const CaseSweep& sweep, const StudyResult& r) {
     out << "## Points\n\n| # |";
@@ -436,12 +432,12 @@ void report_points(std::ostream& out, const CaseSweep& sweep, const StudyResult&
         for (size_t j = 0; j < sweep.parameters().size(); ++j)
             out << " " << sweep.parameters()[j].labels[static_cast<size_t>(p.value_index[j])] << " |";
         out << " " << (p.ok ? "ok" : "FAILED") << " | " << cell(p.f1_hz) << " | " << cell(p.k, 3) << " | "
-            << g(p.diameter_m * 1e3, 4) << " | " << cell(p.v_safe_m_s, 3) << " | " << g(p.time_s, 3) << " |\n";
+            << significant(p.diameter_m * 1e3, 4) << " | " << cell(p.v_safe_m_s, 3) << " | " << significant(p.time_s, 3) << " |\n";
     }
     out << "\nf1: first bending mode. k = f1 / f_I-7(k = 1) over the free span L = Lc - 2 Li (Li: clamp zone "
            "centres or the chucks' furthest expanding elements). D: rest roll outer diameter (the core's without "
            "rest paper). v_safe = "
-        << g(sweep.options().safe_factor) << " pi D f1 (I-5).\n\n";
+        << significant(sweep.options().safe_factor) << " pi D f1 (I-5).\n\n";
 }
 
 struct TrackSummary {
@@ -469,7 +465,7 @@ void report_tracks(std::ostream& out, const StudyResult& r) {
                 ++s.n_ambiguous;
                 ambiguous.push_back("point " + std::to_string(p.index + 1) + " (from point " +
                                     std::to_string(*p.predecessor + 1) + "): track " + std::to_string(t.track) + " " +
-                                    label_text(p.groups[k].label) + " at " + g(p.groups[k].frequency_hz) +
+                                    label_text(p.groups[k].label) + " at " + significant(p.groups[k].frequency_hz) +
                                     " Hz, MAC " + cell(t.mac_previous, 3));
             }
         }
@@ -479,7 +475,7 @@ void report_tracks(std::ostream& out, const StudyResult& r) {
            "subspace (docs/studies.md).\n\n| track | label (first point) | points | f min [Hz] | f max [Hz] | "
            "ambiguous steps |\n|---|---|---|---|---|---|\n";
     for (const auto& [id, s] : tracks)
-        out << "| " << id << " | " << s.label << " | " << s.n_points << " | " << g(s.f_min) << " | " << g(s.f_max)
+        out << "| " << id << " | " << s.label << " | " << s.n_points << " | " << significant(s.f_min) << " | " << significant(s.f_max)
             << " | " << s.n_ambiguous << " |\n";
     out << "\n";
     if (ambiguous.empty()) {
@@ -498,19 +494,19 @@ void report_safe_speed(std::ostream& out, const CaseSweep& sweep, const StudyRes
     if (!web) return;
     const std::vector<SpeedCrossing> crossings = safe_speed_crossings(sweep, r, *web);
     if (crossings.empty()) return;
-    out << "## When to change the roll (König's chart)\n\nWeb speed " << g(*web, 3) << " m/s (" << g(*web * 60, 4)
-        << " m/min), v_safe = " << g(sweep.options().safe_factor) << " pi D f1:\n\n";
+    out << "## When to change the roll (König's chart)\n\nWeb speed " << significant(*web, 3) << " m/s (" << significant(*web * 60, 4)
+        << " m/min), v_safe = " << significant(sweep.options().safe_factor) << " pi D f1:\n\n";
     for (const SpeedCrossing& c : crossings) {
         out << "- " << (c.curve.empty() ? std::string("the roll") : c.curve) << ": ";
         if (!c.change_diameters_m.empty()) {
-            out << "change the roll when its diameter falls below **" << g(c.change_diameters_m.back() * 1e3, 4)
+            out << "change the roll when its diameter falls below **" << significant(c.change_diameters_m.back() * 1e3, 4)
                 << " mm**";
         } else if (c.v_min_m_s >= *web) {
-            out << "safe over the whole range studied (v_safe >= " << g(c.v_min_m_s, 3) << " m/s down to D = "
-                << g(c.d_min_m * 1e3, 4) << " mm)";
+            out << "safe over the whole range studied (v_safe >= " << significant(c.v_min_m_s, 3) << " m/s down to D = "
+                << significant(c.d_min_m * 1e3, 4) << " mm)";
         } else {
-            out << "too fast over the whole range studied (v_safe <= " << g(c.v_max_m_s, 3) << " m/s even at D = "
-                << g(c.d_max_m * 1e3, 4) << " mm)";
+            out << "too fast over the whole range studied (v_safe <= " << significant(c.v_max_m_s, 3) << " m/s even at D = "
+                << significant(c.d_max_m * 1e3, 4) << " mm)";
         }
         out << "\n";
     }

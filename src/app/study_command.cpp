@@ -1,6 +1,7 @@
 // `coremodal study CASE.toml [--output DIR]`: the case's [study] table run
 // point by point, modes tracked by MAC, results in one folder (docs/studies.md).
 #include "app/commands.hpp"
+#include "common/format.hpp"
 #include "app/study.hpp"
 #include "app/study_workers.hpp"
 #include "common/error.hpp"
@@ -13,11 +14,6 @@
 namespace coremodal {
 namespace {
 
-std::string g(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
 
 struct StudyCommandOptions {
     std::string case_file, output, mesh;
@@ -53,8 +49,8 @@ void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
     if (!web) return;
     for (const SpeedCrossing& c : safe_speed_crossings(sweep, result, *web)) {
         if (c.change_diameters_m.empty()) continue;
-        std::cout << "  at " << g(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
-                  << ": change the roll below D = " << g(c.change_diameters_m.back() * 1e3) << " mm\n";
+        std::cout << "  at " << significant(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
+                  << ": change the roll below D = " << significant(c.change_diameters_m.back() * 1e3) << " mm\n";
     }
 }
 
@@ -88,7 +84,7 @@ int run_study_command(const StudyCommandOptions& o) {
     const int failed = result.n_failed();
     if (!o.quiet) print_crossings(sweep, result);
     std::cout << "study: " << sweep.n_points() - failed << " of " << sweep.n_points() << " points ok in "
-              << g(result.time_s) << " s; " << out_dir.string() << "/report.md" << std::endl;
+              << significant(result.time_s) << " s; " << out_dir.string() << "/report.md" << std::endl;
     if (failed) std::cerr << "coremodal: " << failed << " point(s) failed; see report.md" << std::endl;
     return failed ? 1 : 0;
 }

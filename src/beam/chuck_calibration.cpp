@@ -1,4 +1,5 @@
 #include "beam/chuck_calibration.hpp"
+#include "common/format.hpp"
 
 #include "beam/formulas.hpp"
 #include "common/error.hpp"
@@ -20,11 +21,6 @@ namespace {
 // independently over the samples.
 constexpr double kCollinearShare = 1e-8;
 
-std::string g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
-}
 
 }  // namespace
 
@@ -74,9 +70,9 @@ double ChuckFactorLaw::k(const CalibrationGroups& g) const {
     double inverse_square = c[0];
     for (int i = 0; i < kCalibrationGroups; ++i) inverse_square += c[static_cast<size_t>(i + 1)] * g[i];
     if (!(inverse_square > 0))
-        throw InputError("the calibrated law 1/k^2 = c0 + c1 g1 + c2 g2 + c3 g3 gives " + coremodal::g(inverse_square) +
-                         " at g1 = " + coremodal::g(g.g1) + ", g2 = " + coremodal::g(g.g2) + ", g3 = " +
-                         coremodal::g(g.g3) + ", far outside the calibrated range; expected a core and span like "
+        throw InputError("the calibrated law 1/k^2 = c0 + c1 g1 + c2 g2 + c3 g3 gives " + significant(inverse_square) +
+                         " at g1 = " + significant(g.g1) + ", g2 = " + significant(g.g2) + ", g3 = " +
+                         significant(g.g3) + ", far outside the calibrated range; expected a core and span like "
                          "those calibrated");
     return 1 / std::sqrt(inverse_square);
 }
@@ -253,9 +249,9 @@ double calibrated_k(const Calibration& c, const CalibrationGroups& g, double spa
                     std::vector<std::string>& notes) {
     const auto check = [&](const Range& r, double v, const std::string& name, double unit, const char* unit_name) {
         if (!r.contains(v))
-            notes.push_back("calibration: " + name + " = " + coremodal::g(v * unit) + unit_name +
-                            " lies outside the calibrated range " + coremodal::g(r.min * unit) + " to " +
-                            coremodal::g(r.max * unit) + unit_name + ": k is extrapolated");
+            notes.push_back("calibration: " + name + " = " + significant(v * unit) + unit_name +
+                            " lies outside the calibrated range " + significant(r.min * unit) + " to " +
+                            significant(r.max * unit) + unit_name + ": k is extrapolated");
     };
     check(c.span_m, span_m, "free span L", 1, " m");
     check(c.li_m, li_m, "Li", 1e3, " mm");

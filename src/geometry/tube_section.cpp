@@ -22,13 +22,7 @@ std::vector<std::pair<double, double>> held_zones(const Scene& scene) {
     std::vector<std::pair<double, double>> zones;
     for (const auto& c : scene.supports.clamps) zones.push_back({c.z_start, c.z_end});
     for (const auto& chuck : scene.supports.chucks)
-        for (const auto& e : chuck.expanding) {
-            const double a = e.center - e.width / 2, b = e.center + e.width / 2;
-            if (chuck.name == "right")
-                zones.push_back({scene.core.length - b, scene.core.length - a});
-            else
-                zones.push_back({a, b});
-        }
+        for (const auto& e : chuck.expanding) zones.push_back(chuck.z_range(e, scene.core.length));
     return zones;
 }
 
@@ -95,10 +89,7 @@ void add_chucks(const Scene& scene, TubeSection& section) {
         body.shaft_length = c.shaft_length;
         body.n_shaft = shaft_elements(c.shaft_length, body.shaft_radius, scene.mesh.n_around);
         section.chucks.push_back(body);
-        for (const auto& e : c.expanding) {
-            const double a = e.center - e.width / 2, b = e.center + e.width / 2;
-            section.interfaces.push_back({c.name, body.shaft_below ? std::pair{a, b} : std::pair{L - b, L - a}});
-        }
+        for (const auto& e : c.expanding) section.interfaces.push_back({c.name, c.z_range(e, L)});
     }
 }
 

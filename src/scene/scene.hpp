@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coremodal {
@@ -79,6 +80,9 @@ struct ChuckSpec {
 
     // Li: core end to the middle of the furthest expanding element (Ilomäki).
     double li() const;
+    // z range of an expanding element from the left core end (the right
+    // chuck measures from the right end).
+    std::pair<double, double> z_range(const ExpandingElement& e, double core_length) const;
 };
 
 enum class SupportKind { free, clamped, chucks };

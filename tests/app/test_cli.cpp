@@ -2,6 +2,8 @@
 // files written to a temporary folder. Bad input must stop it with a located
 // message on stderr and leave no results behind; good input must produce the
 // whole results folder, serially and under mpirun.
+#include "support/program_run.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -16,53 +18,9 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using namespace coremodal::testing;
 
 namespace {
-
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        static int counter = 0;
-        path = fs::temp_directory_path() /
-               ("coremodal_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    void write(const std::string& name, const std::string& text) const { std::ofstream(path / name) << text; }
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-struct Run {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-// Runs `prefix coremodal args` inside dir, so that case files are named
-// relatively ("bad.toml:4:18: ..."). The test binary itself is an MPI
-// singleton; the Open MPI and PMIx variables that puts in our environment
-// must not reach the child, or its MPI_Init (and mpirun) would try to join
-// this process's job.
-Run run_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
-    const std::string command = "cd '" + dir.path.string() +
-                                "' && unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
-                                "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1) && " +
-                                prefix + "'" COREMODAL_BINARY "' " + args + " >stdout.txt 2>stderr.txt";
-    const int status = std::system(command.c_str());
-    Run r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(dir.path / "stdout.txt");
-    r.err = slurp(dir.path / "stderr.txt");
-    fs::remove(dir.path / "stdout.txt");
-    fs::remove(dir.path / "stderr.txt");
-    return r;
-}
 
 // Anything a run left in dir besides the case and mesh files it was given.
 std::vector<std::string> leftovers(const TempDir& dir) {

@@ -7,6 +7,8 @@
 #include "beam/beam_theory.hpp"
 #include "scene/case_file.hpp"
 
+#include "support/program_run.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -21,6 +23,7 @@
 
 using namespace coremodal;
 namespace fs = std::filesystem;
+using namespace coremodal::testing;
 
 namespace {
 
@@ -29,41 +32,16 @@ namespace {
 // (docs/validation.md); the gap is model form, not mesh.
 constexpr double kSolidVersusTimoshenko = 0.005;
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        path = fs::temp_directory_path() / ("coremodal_test_converge_" + std::to_string(::getpid()));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
 struct Output {
     int exit_code = -1;
-    std::string text;
+    std::string text;  // stdout and stderr
 };
 
-// The real program, without this test process's MPI environment (see test_cli.cpp).
+// The real program, in a scratch folder (support/program_run.hpp).
 Output run_program(const std::string& arguments) {
-    const std::string command = "unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
-                                "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1); '" COREMODAL_BINARY "' " +
-                                arguments + " 2>&1";
-    Output out;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.text.append(buf, n);
-    const int status = pclose(pipe);
-    out.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return out;
+    const TempDir scratch("converge");
+    const Run r = run_coremodal(scratch, arguments);
+    return {r.exit_code, r.out + r.err};
 }
 
 std::string case_file(const std::string& name) { return std::string(COREMODAL_SOURCE_DIR) + "/cases/" + name; }

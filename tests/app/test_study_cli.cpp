@@ -1,6 +1,8 @@
 // `coremodal study` and `coremodal calibrate` as a user meets them: the real
 // binary on small case files in a temporary folder; then `coremodal beam
 // --calibration` on what calibrate wrote.
+#include "support/program_run.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>
@@ -14,51 +16,9 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using namespace coremodal::testing;
 
 namespace {
-
-// The same helpers as tests/app/test_cli.cpp (kept apart so that the two
-// files can change independently).
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        static int counter = 0;
-        path = fs::temp_directory_path() /
-               ("coremodal_test_study_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-    void write(const std::string& name, const std::string& text) const { std::ofstream(path / name) << text; }
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-struct Run {
-    int exit_code = -1;
-    std::string out, err;
-};
-
-// As in test_cli.cpp: the child must not inherit this MPI singleton's job variables.
-Run run_coremodal(const TempDir& dir, const std::string& args) {
-    const std::string command = "cd '" + dir.path.string() +
-                                "' && unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
-                                "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1) && '" COREMODAL_BINARY "' " +
-                                args + " >stdout.txt 2>stderr.txt";
-    const int status = std::system(command.c_str());
-    Run r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(dir.path / "stdout.txt");
-    r.err = slurp(dir.path / "stderr.txt");
-    fs::remove(dir.path / "stdout.txt");
-    fs::remove(dir.path / "stderr.txt");
-    return r;
-}
 
 bool written(const fs::path& p) { return fs::is_regular_file(p) && fs::file_size(p) > 0; }
 
