@@ -26,16 +26,8 @@ int run_calibrate_command(const CalibrateOptions& o) {
                                             o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh));
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
-    if (root && !o.quiet)
-        std::cout << "calibrate: " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
-                  << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
-                  << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
-                  << " each, " << jobs_for(o.jobs, sweep) << " at a time); results in " << out_dir.string()
-                  << std::endl;
-    StudyResult result = run_sweep(sweep, {o.quiet, jobs_for(o.jobs, sweep)}, std::cout);
-    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    StudyResult result = run_and_track(sweep, "calibrate", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
-    track_modes(sweep, result);
     const CalibrationOutcome outcome = calibrate_chuck_factor(sweep, result);
 
     ResultsFolder folder(out_dir);

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <ostream>
 #include <sstream>
@@ -150,6 +151,20 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
         }
     }
     result.time_s = total.seconds();
+    return result;
+}
+
+StudyResult run_and_track(const CaseSweep& sweep, const std::string& command, const std::filesystem::path& out_dir,
+                          bool quiet, unsigned jobs) {
+    const bool root = mpi_rank() == 0;
+    const unsigned n_jobs = jobs_for(jobs, sweep);
+    if (root && !quiet)
+        std::cout << command << ": " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
+                  << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
+                  << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
+                  << " each, " << n_jobs << " at a time); results in " << out_dir.string() << std::endl;
+    StudyResult result = run_sweep(sweep, {quiet, n_jobs}, std::cout);
+    if (root) track_modes(sweep, result);
     return result;
 }
 

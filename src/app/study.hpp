@@ -82,6 +82,12 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
 // Assigns track ids along the sweep's predecessor tree (modes/tracking.hpp).
 void track_modes(const CaseSweep& sweep, StudyResult& result);
 
+// What `study` and `calibrate` share: the plan printed on rank 0 ("study: 40
+// points of ... results in DIR") unless quiet, every point run, and on rank 0
+// the modes tracked (labels and signatures live there).
+StudyResult run_and_track(const CaseSweep& sweep, const std::string& command, const std::filesystem::path& out_dir,
+                          bool quiet, unsigned jobs);
+
 // The column of a parameter in study.csv: its name and SI unit ("core.length_m").
 std::string parameter_column(const SweepParameter& p);
 

@@ -60,16 +60,8 @@ int run_study_command(const StudyCommandOptions& o) {
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
-    if (root && !o.quiet)
-        std::cout << "study: " << sweep.n_points() << " points of " << sweep.case_file() << " (mesh "
-                  << (sweep.options().mesh_level.empty() ? "of the case" : sweep.options().mesh_level) << ", "
-                  << (sweep.options().modes ? std::to_string(sweep.options().modes) + " modes" : std::string("modes of the case"))
-                  << " each, " << jobs_for(o.jobs, sweep) << " at a time); results in " << out_dir.string()
-                  << std::endl;
-    StudyResult result = run_sweep(sweep, {o.quiet, jobs_for(o.jobs, sweep)}, std::cout);
-    // Labels and signatures live on rank 0 (run_scene); the rest is rank 0's work.
+    StudyResult result = run_and_track(sweep, "study", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
-    track_modes(sweep, result);
 
     ResultsFolder folder(out_dir);
     const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
