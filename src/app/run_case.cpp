@@ -253,7 +253,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const std::filesystem::path out_dir =
         options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / scene.name;
 
-    // 2. Mesh: the r–z section revolved into quadratic hexahedra (or the user's mesh).
+    // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).
     say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
     const Mesh mesh = make_mesh(scene);
     const std::string mesh_source = scene.mesh.file ? *scene.mesh.file : "generated mesh";

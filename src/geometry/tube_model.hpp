@@ -1,10 +1,13 @@
-// Builds the gmsh model of a tube-like scene: the r–z section revolved about
-// the z axis in four quarter turns (gmsh's built-in kernel revolves by less
-// than pi), seams merged, structured and recombined into quadratic hexahedra.
-// Physical groups (the names the rest of coremodal uses, and that a user mesh
-// must carry, see docs/case-files.md):
-//   volumes  "core", "rest_paper"
-//   surfaces "core_inner", "core_outer", "rest_paper_outer", "clamp_<name>"
+// Builds the gmsh model of a tube-like scene: structured cross-sections (the
+// core wall and rest paper as annuli, chuck bodies and shafts as O-grid
+// discs) extruded along z segment by segment in explicitly graded layers,
+// recombined into quadratic hexahedra. Every part shares the layers and the
+// count around, so chuck nodes face core nodes (docs/chucks.md).
+// Physical groups (the names the rest of coremodal uses; a user mesh must
+// carry the first ones, see docs/case-files.md):
+//   volumes  "core", "rest_paper", "chuck_left", "chuck_right"
+//   surfaces "core_inner", "core_outer", "rest_paper_outer", "clamp_<name>",
+//            "interface_<chuck>_core", "interface_<chuck>_chuck", "bearing_<chuck>"
 #pragma once
 
 #include "geometry/tube_section.hpp"

@@ -1,8 +1,8 @@
 // The r–z section of a tube-like scene: radial layers (core wall, rest paper)
-// times axial segments whose ends fall on every clamp-zone edge, so that clamp
-// zones are unions of whole element faces. The section is what gets revolved
-// about the z axis into hexahedra; a later axisymmetric-harmonic level meshes
-// the same section in 2D.
+// times axial segments whose ends fall on every clamp-zone and expanding-
+// element edge and at chuck body ends, so that held zones are unions of whole
+// element faces; plus the chucks' solid parts. tube_model.hpp extrudes it into
+// hexahedra; a later axisymmetric-harmonic level can mesh the section in 2D.
 #pragma once
 
 #include "scene/scene.hpp"
