@@ -2,6 +2,8 @@
 // modes as a RunReport, compare with beam theory, write.
 #include "app/run_beam.hpp"
 
+#include "app/run_case.hpp"
+
 #include "beam/beam_model.hpp"
 #include "beam/formulas.hpp"
 #include "common/petsc_handle.hpp"
@@ -131,6 +133,8 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     for (const BeamMode& m : beam.modes) report.modes.modes.push_back(report_mode(m, int(report.modes.modes.size()) + 1));
     report.modes.verification = beam.verification;
     report.beam = compare_with_beam(report.scene, report.modes.modes);
+    if (report.scene.supports.kind == SupportKind::chucks)  // f2: the beam network of the free span
+        report.chuck = chuck_factor(report.scene, report.beam.fe_first_bending_hz, options.chuck_factor_by_fe);
     report.peak_memory_mb = peak_memory_mb();
     report.timing_s = timing(beam.timing_s, total.seconds());
 

@@ -172,7 +172,9 @@ Scene free_span_scene(const Scene& scene, double span) {
     return free;
 }
 
-ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_fe) {
+}  // namespace
+
+ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model) {
     const auto& chucks = scene.supports.chucks;
     ChuckFactor k;
     k.li_left_m = chucks.at(0).li();
@@ -180,7 +182,7 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_fe) {
     k.li_m = (k.li_left_m + k.li_right_m) / 2;
     k.free_span_m = scene.core.length - k.li_left_m - k.li_right_m;
     k.f1_hz = f1;
-    if (by_fe) {
+    if (by_model) {
         RunOptions quiet;
         quiet.quiet = true;
         quiet.write_results = false;
@@ -191,8 +193,6 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_fe) {
     k.chuck_factor_beam = f1 / k.f2_beam_hz;
     return k;
 }
-
-}  // namespace
 
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
     BeamComparison b;
@@ -291,7 +291,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 5. Solve, verify, prove complete. The beam estimate of the first bending
     //    mode sets the shift's scale (and what counts as rigid).
-    say("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert, MUMPS)");
+    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert, ") +
+        (mpi_size(PETSC_COMM_WORLD) == 1 ? "CHOLMOD" : "MUMPS") + "; MUMPS LDL^T for the count)");
     const BeamSection section = beam_section(scene);
     const double f_scale = euler_bernoulli_first_bending_hz(section, beam_span(scene));
     SolveRequest request;

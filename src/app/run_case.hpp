@@ -30,6 +30,12 @@ RunReport run_case(const RunOptions& options);
 // A scene with model = "beam" goes to run_beam_scene (app/run_beam.hpp).
 RunReport run_scene(Scene scene, const RunOptions& options);
 
+// Ilomäki's chuck factor of a scene with chucks whose first bending mode is
+// at f1: f2 by the scene's own model level on the free-free roll over the free
+// span (when by_model; a solid scene uses the coarse level there) and by
+// Timoshenko's formula, and k = f1 / f2.
+ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model);
+
 // The scene's first bending mode in `modes` against Euler-Bernoulli and
 // Timoshenko beam theory over beam_span (any model level).
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes);

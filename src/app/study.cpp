@@ -73,6 +73,9 @@ void run_point(Scene scene, StudyPoint& p) {
         RunOptions run;
         run.quiet = true;
         run.write_results = false;
+        // A point's k is f1 over I-7's f2 (derive_point_values): the FE
+        // free-span solve would cost a third of a chuck point for nothing.
+        run.chuck_factor_by_fe = false;
         const RunReport report = run_scene(std::move(scene), run);
         p.model_level = report.model.level;
         p.n_dofs = report.model.n_dofs;

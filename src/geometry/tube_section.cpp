@@ -70,10 +70,18 @@ bool is_clamp_edge(const Scene& scene, double z) {
     return false;
 }
 
-// Elements along a shaft: about as long as the core's elements are wide.
+// Elements along a shaft: five times as long as the elements are wide around
+// the shaft (about the shaft's radius at 32 around; finer levels refine it
+// with the circumference, so a refinement ladder refines the shaft too). The
+// shaft carries only end loads and its own inertia, so its bending moment
+// varies almost linearly and a few quadratic elements resolve it: on case 07
+// the earlier two widths (13 elements on the 250 mm shaft) gave the same f1
+// to 0.01 % (docs/performance.md).
+constexpr double kShaftElementAspect = 5.0;
+
 int shaft_elements(double length, double radius, int n_around) {
-    const double size = 2 * M_PI * radius / n_around * 2;
-    return std::max(kMinElementsPerSegment, static_cast<int>(std::ceil(length / size)));
+    const double size = kShaftElementAspect * 2 * M_PI * radius / n_around;
+    return std::max(kMinElementsPerSegment, static_cast<int>(std::ceil(length / size - 1e-9)));
 }
 
 void add_chucks(const Scene& scene, TubeSection& section) {

@@ -60,3 +60,28 @@ TEST_CASE("Case 05: the rest roll as a beam, written like a solid run", "[cases]
     CHECK_FALSE(fs::exists(out / "modes.h5"));  // the beam level writes no mesh results
     fs::remove_all(out);
 }
+
+TEST_CASE("The beam level on chucks reports the chuck factor with f2 from the beam of the free span",
+          "[cases][beam][chucks]") {
+    RunOptions options;
+    options.case_file = std::string(COREMODAL_SOURCE_DIR) + "/bench/beam_rest_roll_chucks.toml";
+    options.quiet = true;
+    options.write_results = false;
+    const RunReport r = run_case(options);
+    REQUIRE(r.model.level == "beam");
+    REQUIRE(r.chuck);
+    const ChuckFactor& k = *r.chuck;
+    // Li = 250 mm at both ends (the chuck mirrors): L = 4.32 - 2 x 0.25 = 3.82 m.
+    CHECK(k.li_m == Approx(0.25));
+    CHECK(k.free_span_m == Approx(3.82));
+    CHECK(k.f1_hz == Approx(r.beam.fe_first_bending_hz));
+    // The free-free beam network of the span is the Timoshenko beam the
+    // closed form solves: they agree to the network's discretisation (30
+    // elements: < 1e-3, test_beam_model's convergence check).
+    CHECK(k.f2_fe_hz == Approx(k.f2_beam_hz).epsilon(1e-3));
+    // A soft stand (bearings, frames) holds the roll below the free span's
+    // free-free frequency: 0 < k < 1 (DOMAIN.md section 3).
+    CHECK(k.chuck_factor > 0);
+    CHECK(k.chuck_factor < 1);
+    CHECK(k.chuck_factor == Approx(k.f1_hz / k.f2_fe_hz));
+}
