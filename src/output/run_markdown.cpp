@@ -33,27 +33,30 @@ std::string chuck_text(const ChuckSpec& c) {
         s += "bonded";
     else
         s += std::string(c.interface.expanded ? "expanded" : "not expanded") + " spring contact";
-    return s + "; " + bearing_text(c.bearing);
+    return s + ", " + bearing_text(c.bearing);
 }
 
 std::string supports_text(const Scene& s) {
+    std::ostringstream t;
+    const char* separator = " ";
     switch (s.supports.kind) {
     case SupportKind::free: return "free (free-free, six rigid-body modes)";
-    case SupportKind::clamped: {
-        std::string t = "clamped:";
-        for (const ClampSpec& c : s.supports.clamps)
-            t += " " + c.name + " z = " + significant(c.z_start) + "…" + significant(c.z_end) + " m;";
-        t.pop_back();
-        return t;
+    case SupportKind::clamped:
+        t << "clamped:";
+        for (const ClampSpec& c : s.supports.clamps) {
+            t << separator << c.name << " z = " << significant(c.z_start) << "…" << significant(c.z_end) << " m";
+            separator = "; ";
+        }
+        break;
+    case SupportKind::chucks:
+        t << "chucks:";
+        for (const ChuckSpec& c : s.supports.chucks) {
+            t << separator << chuck_text(c);
+            separator = "; ";
+        }
+        break;
     }
-    case SupportKind::chucks: {
-        std::string t = "chucks:";
-        for (const ChuckSpec& c : s.supports.chucks) t += " " + chuck_text(c) + ";";
-        t.pop_back();
-        return t;
-    }
-    }
-    return "";
+    return t.str();
 }
 
 void scene_section(std::ostream& out, const Scene& s) {

@@ -79,6 +79,7 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
     const std::string summary = slurp(dir.path / "out" / "summary.json");
     REQUIRE(!report.empty());
     CHECK(contains(report, "# clamped-tube\n\nA short clamped steel tube"));
+    CHECK(contains(report, "| supports | clamped: left z = 0…0.04 m; right z = 0.46…0.5 m |"));
 
     SECTION("The mode table has a row per mode with the frequency of summary.json") {
         const std::vector<double> f = json_numbers(summary, "frequency_hz");
