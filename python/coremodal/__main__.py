@@ -1,9 +1,11 @@
 """Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
+``python3 -m coremodal run-plot RESULTS_DIR --modes ...``,
 ``python3 -m coremodal converge-plot CONVERGE_DIR`` and
 ``python3 -m coremodal study-plot STUDY_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
+    python3 -m coremodal run-plot results/02-clamped-76x15 --modes 7,9   # the run report's PNGs
     python3 -m coremodal converge-plot results/CASE-converge     # error_vs_time.png from converge.json
     python3 -m coremodal study-plot results/06-study-safe-speed-study
 
@@ -51,6 +53,13 @@ def _parser() -> argparse.ArgumentParser:
     plot.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
                       help="picture size in pixels (default 1200x900)")
 
+    run = commands.add_parser(
+        "run-plot", help="draw the PNGs of a run's report.md (mode_NN.png, spectrum.png) into its folder")
+    run.add_argument("folder", type=Path, help="results folder of coremodal run (holding modes.h5)")
+    run.add_argument("--modes", default="", help="modes to draw, e.g. 7,9,13 (default: only spectrum.png)")
+    run.add_argument("--size", type=_size, default=(1000, 750), metavar="WxH",
+                     help="size of each mode picture in pixels (default 1000x750)")
+
     converge = commands.add_parser(
         "converge-plot", help="draw error against time (PNG) from a `coremodal converge` folder")
     converge.add_argument("results", type=Path, help="folder holding converge.json (or the file)")
@@ -87,8 +96,23 @@ def _study_plot(folder: Path) -> str:
     return "\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot (no successful point)"
 
 
+def _run_plot(args: argparse.Namespace) -> int:
+    from . import run_plot  # matplotlib only when drawing
+
+    try:
+        modes = run_plot.parse_modes(args.modes) if args.modes.strip() else []
+        paths = run_plot.draw_run_plots(args.folder, modes, args.size)
+    except (ValueError, IndexError, OSError) as error:  # ResultsFormatError is a ValueError
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    _print("\n".join(str(p) for p in paths))
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "run-plot":
+        return _run_plot(args)
     if args.command == "converge-plot":
         return _converge_plot(args)
     if args.command == "study-plot":

@@ -15,6 +15,7 @@ aspect and an ovalling section cannot be seen from outside:
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -83,6 +84,20 @@ def boundary_polygons(cells: np.ndarray, cell_type: str) -> np.ndarray:
         np.sort(face_corners, axis=1), axis=0, return_inverse=True, return_counts=True
     )
     return face_polygons[counts[inverse.reshape(-1)] == 1]
+
+
+#: Boundary faces per Results object: several pictures of one file (the run
+#: report draws up to six) find them once.
+_BOUNDARY_CACHE: "weakref.WeakKeyDictionary[Results, np.ndarray]" = weakref.WeakKeyDictionary()
+
+
+def results_boundary(results: Results) -> np.ndarray:
+    """boundary_polygons of the results' mesh, computed once per Results."""
+    polygons = _BOUNDARY_CACHE.get(results)
+    if polygons is None:
+        polygons = boundary_polygons(results.cells, results.cell_type)
+        _BOUNDARY_CACHE[results] = polygons
+    return polygons
 
 
 def auto_scale(nodes: np.ndarray, shape: np.ndarray) -> float:
@@ -336,7 +351,7 @@ def _draw_3d(figure: Figure, axes, results: Results, shape: np.ndarray, scale: f
     """The deformed boundary surface, coloured by |u|."""
     deformed = results.nodes + scale * shape
     magnitude = np.linalg.norm(shape, axis=1)
-    polygons = boundary_polygons(results.cells, results.cell_type)
+    polygons = results_boundary(results)
     # Plot axes (z, x, y): the core lies horizontally, as on a machine.
     vertices = deformed[polygons][:, :, [2, 0, 1]]
     face_values = magnitude[polygons].mean(axis=1)

@@ -34,7 +34,7 @@ def _run_program(binary: str, output: Path) -> Path:
     # Open MPI refuses to start as root without these (containers, CI).
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
     env.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    command = [binary, "run", str(case), "--output", str(output)]
+    command = [binary, "run", str(case), "--output", str(output), "--no-plots"]
     try:
         run = subprocess.run(command, capture_output=True, text=True, env=env,
                              timeout=RUN_TIMEOUT_S)

@@ -7,29 +7,25 @@
 #include "common/format.hpp"
 #include "app/converge.hpp"
 #include "app/run_case.hpp"
-#include "common/argv.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
+#include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
+#include "output/text_file.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 
 #include <malloc.h>
-#include <spawn.h>
 #include <sys/resource.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
-
-extern char** environ;
 
 namespace coremodal {
 namespace {
@@ -245,62 +241,16 @@ NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int
     return check;
 }
 
-// ---- 4. the picture ------------------------------------------------------------
-
-// The interpreter for the plot: $COREMODAL_PYTHON, else Debian's
-// /usr/bin/python3 (the one with python3-matplotlib and python3-h5py, as the
-// docs and the test suite use), else python3 on the PATH.
-std::string python_interpreter() {
-    if (const char* own = std::getenv("COREMODAL_PYTHON")) return own;
-    std::error_code ec;
-    if (std::filesystem::exists("/usr/bin/python3", ec)) return "/usr/bin/python3";
-    return "python3";
-}
-
-// Draws error_vs_time.png with the python package of this source tree
-// (`python3 -m coremodal converge-plot DIR`, PYTHONPATH = $COREMODAL_PYTHON_DIR
-// or the source's python/ folder). Returns "" on success, else why there is
-// no picture: the numbers never depend on python or matplotlib.
-std::string draw_plot(const std::filesystem::path& dir) {
-    const char* own = std::getenv("COREMODAL_PYTHON_DIR");
-    std::string python_dir = own ? own : COREMODAL_SOURCE_DIR "/python";
-    std::vector<std::string> env;
-    for (char** e = environ; e && *e; ++e) {
-        const std::string v = *e;
-        if (v.rfind("PYTHONPATH=", 0) == 0) python_dir += ":" + v.substr(11);
-        else if (v.rfind("MPLBACKEND=", 0) != 0) env.push_back(v);
-    }
-    env.push_back("PYTHONPATH=" + python_dir);
-    env.push_back("MPLBACKEND=Agg");
-    const std::string python = python_interpreter();
-    std::vector<std::string> args = {python, "-m", "coremodal", "converge-plot", dir.string(), "--quiet"};
-    auto argv = c_strings(args);
-    auto envp = c_strings(env);
-    pid_t pid = 0;
-    const int spawned = posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), envp.data());
-    if (spawned != 0) return "cannot start " + python + " (" + std::string(std::strerror(spawned)) + ")";
-    int status = 0;
-    if (waitpid(pid, &status, 0) < 0) return "lost the python3 process";
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return python + " -m coremodal converge-plot failed (status " +
-               std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-               "; its message is above; are python3-matplotlib and python3-h5py installed?)";
-    return "";
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    std::ofstream f(path);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + path);
-}
+// ---- 4. the results folder, with its picture ----------------------------------
 
 void write_study(const ConvergeStudy& study, const std::filesystem::path& out, bool quiet, std::ostream& progress) {
     ResultsFolder folder(out);
-    write_text(folder.file("converge.csv"), converge_csv(study));
-    write_text(folder.file("converge.json"), converge_json(study));
-    const std::string plot_note = draw_plot(std::filesystem::path(folder.file("converge.json")).parent_path());
+    write_text_file(folder.file("converge.csv"), converge_csv(study));
+    write_text_file(folder.file("converge.json"), converge_json(study));
+    const std::string plot_note =
+        run_python_plot("converge-plot", std::filesystem::path(folder.file("converge.json")).parent_path(), {"--quiet"});
     if (!plot_note.empty()) std::cerr << "coremodal: warning: no error_vs_time.png: " << plot_note << std::endl;
-    write_text(folder.file("converge.md"), converge_markdown(study, plot_note));
+    write_text_file(folder.file("converge.md"), converge_markdown(study, plot_note));
     folder.commit();
     if (!quiet) progress << "results: " << out.string() << " (converge.md, converge.csv, converge.json"
                          << (plot_note.empty() ? ", error_vs_time.png" : "") << ")" << std::endl;

@@ -9,7 +9,9 @@
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "output/results_folder.hpp"
+#include "output/run_markdown.hpp"
 #include "output/summary.hpp"
+#include "output/text_file.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -99,6 +101,9 @@ void write_beam_results(const RunReport& report, const BeamModelResult& beam, co
     write_summary_json(folder.file("summary.json"), report);
     write_modes_csv(folder.file("modes.csv"), report);
     write_beam_shapes_csv(folder.file("beam_shapes.csv"), beam);
+    RunPictures none;
+    none.problem = "the beam model level has no mesh to draw (its mode shapes are in beam_shapes.csv)";
+    write_text_file(folder.file("report.md"), run_report_markdown(report, none));
     folder.commit();
 }
 

@@ -18,7 +18,10 @@
 #include "modes/mode_shapes.hpp"
 #include "output/modes_h5.hpp"
 #include "output/results_folder.hpp"
+#include "output/run_markdown.hpp"
+#include "output/run_pictures.hpp"
 #include "output/summary.hpp"
+#include "output/text_file.hpp"
 #include "output/xdmf.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
@@ -216,7 +219,7 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
 
 namespace {
 
-void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir) {
+void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir, bool plots) {
     ResultsFolder folder(dir);
     write_summary_json(folder.file("summary.json"), report);
     write_modes_csv(folder.file("modes.csv"), report);
@@ -228,6 +231,13 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
         csv << side_by_side_csv(report.rigid_comparison);
         if (!csv) throw SolveError("cannot write " + folder.file("rigid_vs_elastic.csv"));
     }
+    // The pictures read modes.h5, so they come last; the report says why
+    // when there are none, and the run stays complete without them.
+    const std::filesystem::path partial = std::filesystem::path(folder.file("modes.h5")).parent_path();
+    const RunPictures pictures = draw_run_pictures(partial, report.modes.modes, plots);
+    if (plots && !pictures.problem.empty())
+        std::cerr << "coremodal: warning: no pictures in report.md: " << pictures.problem << std::endl;
+    write_text_file(folder.file("report.md"), run_report_markdown(report, pictures));
     folder.commit();
 }
 
@@ -369,7 +379,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     }
     if (root && options.write_results) {
         say("[7/7] writing " + out_dir.string());
-        write_results(report, mesh, out_dir);
+        write_results(report, mesh, out_dir, options.plots);
     }
     return report;
 }

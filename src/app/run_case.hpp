@@ -20,6 +20,9 @@ struct RunOptions {
     // Scenes with chucks: also run the rigid-clamp variant and pair the modes
     // (console table, rigid_vs_elastic.csv, summary.json "rigid_comparison").
     bool compare_rigid = false;
+    // report.md with pictures drawn by the python package (mode shapes,
+    // spectrum); false: the report says they were switched off.
+    bool plots = true;
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

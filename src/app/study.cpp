@@ -9,6 +9,7 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
+#include "output/python_plots.hpp"
 
 #include <toml++/toml.h>
 
@@ -375,60 +376,12 @@ std::vector<SpeedCrossing> safe_speed_crossings(const CaseSweep& sweep, const St
 
 // ---- plots and report ------------------------------------------------------
 
-namespace {
-
-std::string shell_quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-std::string last_line(const fs::path& file) {
-    std::ifstream in(file);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-    return last;
-}
-
-}  // namespace
-
-std::string draw_study_plots(const fs::path& dir) {
-    // COREMODAL_PYTHON in the environment names the interpreter, else the one
-    // CMake was given (Debian's /usr/bin/python3, which has matplotlib); the
-    // package is taken from this source tree, ahead of PYTHONPATH.
-    const char* python = std::getenv("COREMODAL_PYTHON");
-    if (!python || !*python) python = COREMODAL_PYTHON;
-    const char* path = std::getenv("PYTHONPATH");
-    const std::string pythonpath =
-        std::string(COREMODAL_SOURCE_DIR "/python") + (path && *path ? ":" + std::string(path) : "");
-    const fs::path log = dir / "plot.log";
-    const std::string command = "PYTHONPATH=" + shell_quote(pythonpath) + " MPLBACKEND=Agg " +
-                                shell_quote(python) +
-                                " -m coremodal study-plot " + shell_quote(dir.string()) + " >" +
-                                shell_quote(log.string()) + " 2>&1";
-    const int status = std::system(command.c_str());
-    if (status == 0) {
-        fs::remove(log);
-        return "";
-    }
-    const std::string why = last_line(log);
-    return "python3 -m coremodal study-plot failed" + (why.empty() ? std::string() : ": " + why) +
-           " (log: plot.log)";
-}
-
-void write_text_file(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 StudyFiles write_study_files(const fs::path& dir, const CaseSweep& sweep, const StudyResult& result,
                              const std::string& kind, bool plots) {
     write_text_file(dir / "study.csv", study_csv(sweep, result));
     write_text_file(dir / "study.json", study_json(sweep, result, kind));
     StudyFiles files;
-    files.plot_problem = plots ? draw_study_plots(dir) : "switched off (--no-plots)";
+    files.plot_problem = plots ? run_python_plot("study-plot", dir) : "switched off (--no-plots)";
     for (const auto& entry : fs::directory_iterator(dir))
         if (entry.path().extension() == ".png") files.pngs.push_back(entry.path().filename().string());
     std::sort(files.pngs.begin(), files.pngs.end());

@@ -9,6 +9,7 @@
 
 #include "beam/chuck_calibration.hpp"
 #include "modes/tracking.hpp"
+#include "output/text_file.hpp"  // write_text_file, for the study and calibrate commands
 #include "scene/case_sweep.hpp"
 
 #include <filesystem>
@@ -112,10 +113,6 @@ std::vector<SpeedCrossing> safe_speed_crossings(const CaseSweep& sweep, const St
 // Indices of the parameters that change the rest roll diameter (found from the results).
 std::vector<int> diameter_parameters(const CaseSweep& sweep, const StudyResult& result);
 
-// Runs `python3 -m coremodal study-plot DIR`; returns "" on success, else
-// why not (the study stays complete without its plots).
-std::string draw_study_plots(const std::filesystem::path& dir);
-
 // Writes study.csv and study.json into `dir` and, with `plots`, the PNGs;
 // returns the PNG file names found in `dir` afterwards and, if the plots
 // could not be drawn, why.
@@ -125,8 +122,6 @@ struct StudyFiles {
 };
 StudyFiles write_study_files(const std::filesystem::path& dir, const CaseSweep& sweep, const StudyResult& result,
                              const std::string& kind, bool plots);
-
-void write_text_file(const std::filesystem::path& path, const std::string& text);
 
 std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& result,
                                   const std::vector<std::string>& pngs, const std::string& plot_problem);

@@ -1,5 +1,7 @@
 #include "output/summary.hpp"
 
+#include "output/text_file.hpp"
+
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -126,12 +128,6 @@ toml::table mode_table(const Mode& m) {
                        {"dominant_share", finite(m.label.dominant_share)},
                        {"relative_residual", finite(m.relative_residual)},
                        {"effective_mass", toml::table{{"x_kg", e.x}, {"y_kg", e.y}, {"z_kg", e.z}, {"rz_kgm2", e.rz}}}};
-}
-
-void write_text_file(const std::string& path, const std::string& text) {
-    std::ofstream f(path);
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + path);
 }
 
 }  // namespace

@@ -158,11 +158,11 @@ TEST_CASE("A missing case file is an error naming it", "[app][cli]") {
 TEST_CASE("A good tiny case writes the whole results folder", "[app][cli]") {
     TempDir dir;
     dir.write("tiny.toml", kTinyCase);
-    const Run r = run_coremodal(dir, "run tiny.toml -o results -q");
+    const Run r = run_coremodal(dir, "run tiny.toml -o results -q --no-plots");
     INFO("stderr: " << r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.empty());
-    for (const char* file : {"summary.json", "modes.csv", "modes.h5", "modes.xdmf"}) {
+    for (const char* file : {"summary.json", "modes.csv", "modes.h5", "modes.xdmf", "report.md"}) {
         INFO(file);
         CHECK(fs::is_regular_file(dir.path / "results" / file));
         CHECK(fs::file_size(dir.path / "results" / file) > 0);
@@ -197,7 +197,7 @@ TEST_CASE("PETSc and SLEPc options pass through to the solver", "[app][cli]") {
     dir.write("tiny.toml", kTinyCase);
     // -eps_view prints SLEPc's description of the solver on stdout; -eps_tol
     // overrides the case's tolerance (1e-10 by default) and shows up in it.
-    const Run r = run_coremodal(dir, "run tiny.toml -o results -q -eps_tol 1e-9 -eps_view");
+    const Run r = run_coremodal(dir, "run tiny.toml -o results -q --no-plots -eps_tol 1e-9 -eps_view");
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("EPS Object") != std::string::npos);
@@ -208,10 +208,10 @@ TEST_CASE("PETSc and SLEPc options pass through to the solver", "[app][cli]") {
 TEST_CASE("Two MPI ranks give the serial frequencies", "[app][cli][mpi]") {
     TempDir dir;
     dir.write("tiny.toml", kTinyCase);
-    const Run serial = run_coremodal(dir, "run tiny.toml -o serial -q");
+    const Run serial = run_coremodal(dir, "run tiny.toml -o serial -q --no-plots");
     REQUIRE(serial.exit_code == 0);
     const Run parallel = run_coremodal(
-        dir, "run tiny.toml -o parallel -q",
+        dir, "run tiny.toml -o parallel -q --no-plots",
         "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe ");
     INFO("mpirun stdout: " << parallel.out << "\nstderr: " << parallel.err);
     REQUIRE(parallel.exit_code == 0);

@@ -1,0 +1,95 @@
+#include "output/python_plots.hpp"
+
+#include "common/argv.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+extern char** environ;
+
+namespace coremodal {
+namespace fs = std::filesystem;
+namespace {
+
+// The last line of the log that is not blank: python's one-line error
+// ("ModuleNotFoundError: No module named 'matplotlib'", "coremodal: error: ...").
+std::string last_line(const fs::path& file) {
+    std::ifstream in(file);
+    std::string line, last;
+    while (std::getline(in, line))
+        if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+    return last;
+}
+
+// Our environment with PYTHONPATH led by the package folder and the Agg
+// backend (no display: the pictures are files).
+std::vector<std::string> plot_environment() {
+    const char* own = std::getenv("COREMODAL_PYTHON_DIR");
+    std::string pythonpath = own && *own ? own : COREMODAL_SOURCE_DIR "/python";
+    std::vector<std::string> env;
+    for (char** e = environ; e && *e; ++e) {
+        const std::string v = *e;
+        if (v.rfind("PYTHONPATH=", 0) == 0) {
+            if (v.size() > 11) pythonpath.append(":").append(v, 11);
+        } else if (v.rfind("MPLBACKEND=", 0) != 0) {
+            env.push_back(v);
+        }
+    }
+    env.push_back("PYTHONPATH=" + pythonpath);
+    env.push_back("MPLBACKEND=Agg");
+    return env;
+}
+
+}  // namespace
+
+std::string python_interpreter() {
+    const char* own = std::getenv("COREMODAL_PYTHON");
+    return own && *own ? own : COREMODAL_PYTHON;
+}
+
+std::string run_python_plot(const std::string& subcommand, const fs::path& folder,
+                            const std::vector<std::string>& args) {
+    const std::string python = python_interpreter();
+    const std::string what = python + " -m coremodal " + subcommand;
+    const fs::path log = folder / "plot.log";
+    std::vector<std::string> argv_strings = {python, "-m", "coremodal", subcommand, folder.string()};
+    argv_strings.insert(argv_strings.end(), args.begin(), args.end());
+    std::vector<std::string> env = plot_environment();
+    auto argv = c_strings(argv_strings);
+    auto envp = c_strings(env);
+
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    pid_t pid = 0;
+    const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv.data(), envp.data());
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) {
+        std::error_code ignored;
+        fs::remove(log, ignored);
+        return what + " could not start: " + std::strerror(spawned);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return what + ": lost the python process";
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        std::error_code ignored;
+        fs::remove(log, ignored);
+        return "";
+    }
+    const std::string why = last_line(log);
+    const std::string how = WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                              : "signal " + std::to_string(WTERMSIG(status));
+    return what + " failed (" + how + ")" + (why.empty() ? std::string() : ": " + why) + " (log: plot.log)";
+}
+
+}  // namespace coremodal

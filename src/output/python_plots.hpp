@@ -1,0 +1,27 @@
+// The pictures of a results folder come from the python package in python/
+// (matplotlib); the numbers never depend on it. Every command that draws
+// (run, study, calibrate, converge) starts it through run_python_plot.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// The interpreter: $COREMODAL_PYTHON if set and not empty, else the one CMake
+// was configured with (COREMODAL_PYTHON, Debian's /usr/bin/python3, which has
+// numpy, h5py and matplotlib). A bare name is looked up on the PATH.
+std::string python_interpreter();
+
+// Runs `PYTHON -m coremodal SUBCOMMAND FOLDER ARGS...` with the package of
+// this source tree first on PYTHONPATH ($COREMODAL_PYTHON_DIR replaces the
+// source's python/ folder) and MPLBACKEND=Agg, and waits for it. Its output
+// goes to FOLDER/plot.log, which is removed when it succeeds.
+// Returns "" on success, else why there are no pictures, in words for a
+// report ("/nonexistent -m coremodal run-plot could not start: No such file
+// or directory"); never throws for a failed plot.
+std::string run_python_plot(const std::string& subcommand, const std::filesystem::path& folder,
+                            const std::vector<std::string>& args = {});
+
+}  // namespace coremodal

@@ -1,0 +1,43 @@
+// The pictures of a run's report.md: a few mode shapes and the spectrum,
+// drawn by the python package (`python3 -m coremodal run-plot DIR --modes ...`)
+// from the modes.h5 just written. A run without them is still complete.
+#pragma once
+
+#include "modes/mode_set.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// At most this many mode pictures: each costs about 0.6 s of CPU time on a
+// 300 k-DOF result (docs/results.md), and six cover the families a reader
+// looks for (bending, torsion, axial, ovalling, breathing, mixed).
+constexpr int kMaxModePictures = 6;
+
+struct ModePicture {
+    int mode = 0;      // 1-based, as in the mode table
+    std::string file;  // "mode_07.png", inside the results folder
+};
+
+struct RunPictures {
+    std::vector<ModePicture> modes;
+    std::string spectrum;  // "spectrum.png", or "" when not drawn
+    std::string problem;   // why there are no pictures ("" when drawn)
+    double time_s = 0;     // wall time of the python process
+};
+
+// The modes worth a picture: the lowest mode of each type other than rigid,
+// in order of frequency, at most `max`. The partner of a degenerate pair
+// (same type, n, m) is the same picture turned, so it is never chosen twice.
+std::vector<int> modes_to_picture(const std::vector<Mode>& modes, int max = kMaxModePictures);
+
+// "mode_07.png": the file name python's run-plot writes for mode 7.
+std::string mode_picture_file(int mode);
+
+// Draws the pictures into `dir` (which holds modes.h5). With `enabled`
+// false, or when python fails, returns no pictures and the reason.
+RunPictures draw_run_pictures(const std::filesystem::path& dir, const std::vector<Mode>& modes, bool enabled);
+
+}  // namespace coremodal
