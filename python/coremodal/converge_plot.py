@@ -131,7 +131,7 @@ def draw_error_vs_time(study: dict[str, Any], out: Path | str, size_px: tuple[in
         ax.axhline(target, color="0.6", linewidth=0.8, linestyle=":")
         ax.annotate(f"{target * 100:g} %", (1, target), xycoords=("axes fraction", "data"), xytext=(-30, 2),
                     textcoords="offset points", fontsize=8, color="0.4")
-    lines = [f"{e['model']} {e['role']}: {100 * e['model_error']:+.2f} % against the solid"
+    lines = [f"{e['model']} {e['role']}: {100 * e['model_error']:+.3g} % against the solid"
              for e in model_errors(study) if e.get("role") in ROLE_STYLES or e.get("role") in ("torsion", "axial")]
     if lines:
         ax.text(0.99, 0.99, "model error (extrapolated values)\n" + "\n".join(lines), transform=ax.transAxes,
@@ -144,7 +144,7 @@ def draw_error_vs_time(study: dict[str, Any], out: Path | str, size_px: tuple[in
                  "estimate)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     if curves:
-        ax.legend(fontsize=8, loc="lower left")
+        ax.legend(fontsize=8, loc="best")  # two model levels fill the lower left
     else:
         ax.text(0.5, 0.5, "no tracked mode could be extrapolated", transform=ax.transAxes, ha="center")
     fig.tight_layout()

@@ -833,7 +833,7 @@ void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
             if (e != errors.end()) {
                 s << m.model << " level converges to " << formatted("%.4f", e->f0_hz) << " Hz (" << e->id
                   << "), the solid to " << formatted("%.4f", e->solid_f0_hz) << " Hz (" << e->solid_id
-                  << "): model error " << formatted("%+.2f", 100 * e->relative) << " % (both extrapolations known to "
+                  << "): model error " << formatted("%+.3g", 100 * e->relative) << " % (both extrapolations known to "
                   << percent(e->known_to) << ")\n";
                 continue;
             }

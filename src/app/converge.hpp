@@ -216,11 +216,12 @@ std::optional<double> power_law_exponent(const std::vector<double>& x, const std
 // The beam model level's ladder (beam_refinement_ladder): level k refines the
 // unit beam mesh (kBeamUnitElements along the core, BeamModelOptions) k times,
 // k = 1, 2, 4, 8, 16, so h = 1/k exactly in every gap between support edges
-// and in the chuck shafts. The three-node Timoshenko element converges
-// frequencies as h^4: with a unit of 4 elements, k = 2 and 4 are already in
-// the asymptotic range for f1, torsion and axial on cases 01, 03 and 07 (observed
-// orders 3.9 to 4.0, docs/accuracy-vs-cost.md), and k = 16 (64 elements)
-// stays clear of the solver's round-off (f1 error ~1e-8 there).
+// and in the chuck shafts. The three-node Timoshenko element (quadratic
+// interpolation) converges frequencies as h^4: with a unit of 4 elements the
+// triples from k = 2 on are in the asymptotic range for f1, torsion and axial
+// on cases 01, 03 and 07 (observed orders 3.98 to 4.00, docs/accuracy-vs-cost.md),
+// and the finest change (k = 8 to 16, ~1e-6 of f1) stays far above the
+// solver's round-off (kSolverNoise).
 inline constexpr int kBeamUnitElements = 4;
 inline constexpr int kBeamLevels = 5;
 // One beam evaluation takes about a millisecond: a level's time is the median

@@ -461,7 +461,7 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
     for (const ModelError& e : model_errors(study.models))
         out << "\nmodel error, " << e.model << " " << e.role << ": " << e.model << " converges to "
             << formatted("%.4f", e.f0_hz) << " Hz, the solid to " << formatted("%.4f", e.solid_f0_hz) << " Hz: "
-            << formatted("%+.2f", 100 * e.relative) << " %";
+            << formatted("%+.3g", 100 * e.relative) << " %";
     if (!model_errors(study.models).empty()) out << "\n";
     out << "\nladders " << formatted("%.1f", study.ladder_time_s) << " s, whole study " << formatted("%.1f", study.total_time_s)
         << " s" << std::endl;
