@@ -25,12 +25,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <thread>
-#include <ctime>
 
 extern char** environ;
 
@@ -521,6 +521,8 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     }
     if (want_beam)
         if (auto beam = beam_ladder(scene, o, progress, study.notes)) ladders.push_back(std::move(*beam));
+    if (ladders.empty())  // --models beam, and the beam cannot solve the scene
+        throw InputError(o.case_file + ": no model level to run (" + study.notes.back() + ")");
 
     // 2. How many modes each solid run asks for (enough to hold the first ovalling mode).
     std::optional<LevelRun> first_run;
