@@ -58,7 +58,8 @@ def study() -> dict:
 
 def test_curves_follow_the_roles_and_the_levels(study: dict) -> None:
     curves = converge_plot.error_curves(study)
-    assert [(c["model"], c["role"]) for c in curves] == [("solid", "f1"), ("solid", "ovalling")]
+    assert [(c["model"], c["role"], c["against"]) for c in curves] == [("solid", "f1", "own"),
+                                                                       ("solid", "ovalling", "own")]
     f1 = curves[0]
     assert f1["time_s"] == [1.2, 9.6, pytest.approx(32.4), 76.8]
     assert f1["dofs"] == [1000, 8000, 27000, 64000]
@@ -66,6 +67,56 @@ def test_curves_follow_the_roles_and_the_levels(study: dict) -> None:
     assert f1["error"][1] == pytest.approx(0.5 / 16 / 32.1)
     assert converge_plot.check_points(study) == [
         {"name": "default", "role": "f1", "time_s": 84.0, "error": 3e-4}]
+
+
+def beam_level(k: int) -> dict:
+    return {"k": k, "h": 1 / k, "mesh": f"{4 * k}/{4 * k}", "n_dofs": 48 * k, "runs": 200,
+            "timing_s": {"mesh": 1e-5 * k, "assemble": 0.0, "factor_and_solve": 2e-4 * k, "classify": 1e-5 * k,
+                         "total": 2.2e-4 * k},
+            "peak_memory_mb": 80, "complete": True, "repeat_spread": 0.0}
+
+
+@pytest.fixture()
+def two_levels(study: dict) -> dict:
+    """The study with a beam model level: five levels k = 1, 2, 4, 8, 16, f1
+    converging to 32.3 Hz against the solid's 32.1 Hz (model error +0.62 %)."""
+    ks = [1, 2, 4, 8, 16]
+    f0, solid_f0 = 32.3, 32.1
+    values = []
+    for i, k in enumerate(ks):
+        f = f0 + 0.8 * (1 / k) ** 4
+        values.append({"level": i, "frequency_hz": f, "relative_error": abs(f - f0) / f0,
+                       "error_vs_solid": abs(f - solid_f0) / solid_f0})
+    beam_f1 = {"id": "bending n=1 m=2", "type": "bending", "n": 1, "m": 2, "occurrence": 1, "role": "f1",
+               "values": values,
+               "richardson": {"extrapolated": True, "order": 4.0, "f0_hz": f0, "error_estimate_hz": 0.8 / 16**4,
+                              "relative_error_estimate": 0.8 / 16**4 / f0, "asymptotic": True, "note": ""}}
+    study["models"].append({"model": "beam", "ladder": "unit 4 elements", "refined_dimensions": 1,
+                            "levels": [beam_level(k) for k in ks], "modes": [beam_f1],
+                            "not_in_model": [{"role": "ovalling", "reason": "rigid cross-sections"}]})
+    study["model_errors"] = [{"model": "beam", "role": "f1", "id": "bending n=1 m=2", "solid_id": "bending n=1 m=0",
+                              "f0_hz": f0, "solid_f0_hz": solid_f0, "model_error": (f0 - solid_f0) / solid_f0,
+                              "known_to": 1e-6}]
+    return study
+
+
+def test_two_model_levels_give_a_curve_each_and_the_beam_one_against_the_solid(two_levels: dict) -> None:
+    curves = converge_plot.error_curves(two_levels)
+    assert [(c["model"], c["role"], c["against"]) for c in curves] == [
+        ("solid", "f1", "own"), ("solid", "ovalling", "own"), ("beam", "f1", "own"), ("beam", "f1", "solid")]
+    own, vs_solid = curves[2], curves[3]
+    assert own["dofs"] == [48, 96, 192, 384, 768]
+    assert own["time_s"] == pytest.approx([2.2e-4, 4.4e-4, 8.8e-4, 1.76e-3, 3.52e-3])
+    assert own["finest"] == [False, False, False, False, True]
+    assert own["error"][-1] < 1e-5  # converging to its own f0 ...
+    assert vs_solid["finest"] == [False] * 5
+    assert vs_solid["error"][-1] == pytest.approx(0.2 / 32.1, rel=1e-4)  # ... and levelling off at the model error
+    assert converge_plot.model_errors(two_levels)[0]["model_error"] == pytest.approx(0.2 / 32.1)
+
+
+def test_draws_two_model_levels(two_levels: dict, tmp_path: Path) -> None:
+    out = converge_plot.draw_error_vs_time(two_levels, tmp_path / "two.png", size_px=(900, 600))
+    assert png_size(out) == (900, 600)
 
 
 def test_draws_a_png_of_the_asked_size(study: dict, tmp_path: Path) -> None:

@@ -1,6 +1,7 @@
 #include "app/converge.hpp"
 #include "common/format.hpp"
 
+#include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "geometry/tube_section.hpp"
 #include "scene/mesh_levels.hpp"
@@ -118,6 +119,26 @@ std::vector<MeshStep> refinement_ladder(const Scene& scene, const UnitMesh& unit
         for (int n : unit_segments) step.mesh.along_per_segment.push_back(k * n);
         step.mesh.n_along = std::accumulate(step.mesh.along_per_segment.begin(), step.mesh.along_per_segment.end(), 0);
         step.counts = counts_text(step.mesh, scene.rest_paper.has_value());
+        step.label = "k=" + std::to_string(k) + " " + step.counts;
+        steps.push_back(std::move(step));
+    }
+    return steps;
+}
+
+std::vector<MeshStep> beam_refinement_ladder(const Scene& scene, int unit_elements, int levels) {
+    if (unit_elements < 1) throw InputError("beam unit: " + std::to_string(unit_elements) + " elements: expected at least 1");
+    if (levels < 3) throw InputError("--levels " + std::to_string(levels) + ": Richardson extrapolation needs at least 3");
+    std::vector<MeshStep> steps;
+    for (int i = 0, k = 1; i < levels; ++i, k *= 2) {
+        BeamModelOptions options;
+        options.core_elements = unit_elements;
+        options.refine = k;
+        const BeamNetwork net = build_beam_network(scene, options);
+        MeshStep step;
+        step.k = k;
+        step.h = 1.0 / k;
+        step.mesh = scene.mesh;  // unused by the beam
+        step.counts = std::to_string(net.beams.front().nodes.size() / 2) + "/" + std::to_string(net.n_elements());
         step.label = "k=" + std::to_string(k) + " " + step.counts;
         steps.push_back(std::move(step));
     }
@@ -400,10 +421,66 @@ std::optional<TargetPrediction> predict_level_for(const ModelStudy& model, const
     const LevelResult& finest = model.levels.back();
     TargetPrediction p;
     p.k = finest.step.k * std::pow(finest_error / room, 1.0 / r.order);
-    p.n_dofs = double(finest.n_dofs) * std::pow(p.k / finest.step.k, 3);
+    p.n_dofs = double(finest.n_dofs) * std::pow(p.k / finest.step.k, model.refined_dimensions);
     if (model.time_exponent)
         p.time_s = finest.median_s.total * std::pow(p.n_dofs / double(finest.n_dofs), *model.time_exponent);
     return p;
+}
+
+// ---- model error ---------------------------------------------------------------
+
+namespace {
+
+const ModelStudy* find_model(const std::vector<ModelStudy>& models, const std::string& name) {
+    for (const auto& m : models)
+        if (m.model == name) return &m;
+    return nullptr;
+}
+
+const TrackedMode* find_role(const ModelStudy& m, const std::string& role) {
+    for (const auto& t : m.modes)
+        if (t.role == role) return &t;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<ModelError> model_errors(const std::vector<ModelStudy>& models) {
+    std::vector<ModelError> out;
+    const ModelStudy* solid = find_model(models, "solid");
+    if (!solid) return out;
+    for (const auto& m : models) {
+        if (m.model == "solid") continue;
+        for (const auto& [role, type] : kModeRoles) {
+            const TrackedMode* a = find_role(m, role);
+            const TrackedMode* b = find_role(*solid, role);
+            if (!a || !b || !a->richardson || !b->richardson) continue;
+            const Richardson &ra = *a->richardson, &rb = *b->richardson;
+            ModelError e;
+            e.model = m.model;
+            e.role = role;
+            e.id = a->key.text();
+            e.solid_id = b->key.text();
+            e.f0_hz = ra.f0;
+            e.solid_f0_hz = rb.f0;
+            e.relative = (ra.f0 - rb.f0) / rb.f0;
+            e.known_to = (ra.error_estimate + ra.f0_uncertainty.value_or(0.0)) / std::abs(ra.f0) +
+                         (rb.error_estimate + rb.f0_uncertainty.value_or(0.0)) / std::abs(rb.f0);
+            out.push_back(std::move(e));
+        }
+    }
+    return out;
+}
+
+std::vector<std::optional<double>> error_against_solid(const TrackedMode& mode, const std::vector<ModelStudy>& models) {
+    const ModelStudy* solid = find_model(models, "solid");
+    const TrackedMode* reference = solid && !mode.role.empty() ? find_role(*solid, mode.role) : nullptr;
+    if (!reference || !reference->richardson) return {};
+    const double f0 = reference->richardson->f0;
+    std::vector<std::optional<double>> out;
+    for (const auto& f : mode.frequency_hz)
+        out.push_back(f ? std::optional<double>(std::abs(*f - f0) / std::abs(f0)) : std::nullopt);
+    return out;
 }
 
 // ---- writers ----------------------------------------------------------------
@@ -454,7 +531,16 @@ std::string percent(double fraction) {
     return formatted("%.2g %%", fraction * 100);
 }
 
-std::string seconds(double s) { return s < 10 ? formatted("%.2f", s) : formatted("%.1f", s); }
+// Seconds for the tables: two decimals, one from 10 s; below 0.01 s (a beam
+// level takes about a millisecond) two significant digits.
+std::string seconds(double s) {
+    if (s >= 10) return formatted("%.1f", s);
+    if (s >= 0.01 || s <= 0) return formatted("%.2f", s);
+    return formatted("%.2g", s);
+}
+
+// Timing columns of the CSV: six significant digits (beam levels take ~1e-3 s).
+std::string csv_seconds(double s) { return formatted("%.6g", s); }
 
 std::string role_title(const std::string& role) {
     if (role == "f1") return "f1 (first bending)";
@@ -469,18 +555,23 @@ std::string converge_csv(const ConvergeStudy& study) {
     s << "model,k,mesh,h,dofs,runs,mesh_s,assemble_s,factor_and_solve_s,classify_s,total_s,cpu_s,factorizations_s,"
          "triangular_solves_s,orthogonalization_s,peak_memory_mb,"
          "mode,role,type,n,m,occurrence,frequency_hz,extrapolated_hz,error_estimate_hz,observed_order,asymptotic,"
-         "relative_error\n";
-    for (const auto& model : study.models)
+         "relative_error,relative_error_vs_solid\n";
+    for (const auto& model : study.models) {
+        std::vector<std::vector<std::optional<double>>> vs_solid;
+        for (const auto& mode : model.modes)
+            vs_solid.push_back(model.model == "solid" ? std::vector<std::optional<double>>()
+                                                      : error_against_solid(mode, study.models));
         for (std::size_t i = 0; i < model.levels.size(); ++i) {
             const LevelResult& l = model.levels[i];
             const Timing& t = l.median_s;
-            for (const auto& mode : model.modes) {
+            for (std::size_t j = 0; j < model.modes.size(); ++j) {
+                const TrackedMode& mode = model.modes[j];
                 s << model.model << ',' << l.step.k << ',' << l.step.counts << ','
-                  << formatted("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << formatted("%.4f", t.mesh) << ','
-                  << formatted("%.4f", t.assemble) << ',' << formatted("%.4f", t.factor_and_solve) << ','
-                  << formatted("%.4f", t.classify) << ',' << formatted("%.4f", t.total) << ',' << formatted("%.4f", l.median_cpu_s)
-                  << ',' << formatted("%.4f", l.median_solver_s.factor_s) << ',' << formatted("%.4f", l.median_solver_s.solve_s)
-                  << ',' << formatted("%.4f", l.median_solver_s.orthogonalize_s) << ',' << formatted("%.1f", l.peak_memory_mb)
+                  << formatted("%.6g", l.step.h) << ',' << l.n_dofs << ',' << l.runs << ',' << csv_seconds(t.mesh) << ','
+                  << csv_seconds(t.assemble) << ',' << csv_seconds(t.factor_and_solve) << ','
+                  << csv_seconds(t.classify) << ',' << csv_seconds(t.total) << ',' << csv_seconds(l.median_cpu_s)
+                  << ',' << csv_seconds(l.median_solver_s.factor_s) << ',' << csv_seconds(l.median_solver_s.solve_s)
+                  << ',' << csv_seconds(l.median_solver_s.orthogonalize_s) << ',' << formatted("%.1f", l.peak_memory_mb)
                   << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
                   << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
                   << opt(mode.frequency_hz[i]) << ',';
@@ -492,9 +583,11 @@ std::string converge_csv(const ConvergeStudy& study) {
                 } else {
                     s << ",,,";
                 }
-                s << ',' << opt(mode.relative_error[i], "%.4g") << '\n';
+                s << ',' << opt(mode.relative_error[i], "%.4g") << ','
+                  << (vs_solid[j].empty() ? std::string() : opt(vs_solid[j][i], "%.4g")) << '\n';
             }
         }
+    }
     return s.str();
 }
 
@@ -517,11 +610,14 @@ std::string converge_json(const ConvergeStudy& study) {
                                          {"complete", l.complete},
                                          {"repeat_spread", l.max_repeat_spread}});
         for (const auto& mode : model.modes) {
+            const auto vs_solid = model.model == "solid" ? std::vector<std::optional<double>>()
+                                                         : error_against_solid(mode, study.models);
             toml::array values;
             for (std::size_t i = 0; i < model.levels.size(); ++i) {
                 if (!mode.frequency_hz[i]) continue;
                 toml::table v{{"level", static_cast<int64_t>(i)}, {"frequency_hz", *mode.frequency_hz[i]}};
                 if (mode.relative_error[i]) v.insert("relative_error", *mode.relative_error[i]);
+                if (!vs_solid.empty() && vs_solid[i]) v.insert("error_vs_solid", *vs_solid[i]);
                 values.push_back(v);
             }
             toml::table t{{"id", mode.key.text()}, {"type", mode.key.type},         {"n", mode.key.n},
@@ -530,11 +626,32 @@ std::string converge_json(const ConvergeStudy& study) {
             if (mode.richardson) t.insert("richardson", richardson_table(*mode.richardson));
             modes.push_back(t);
         }
-        toml::table m{{"model", model.model}, {"ladder", model.ladder_note}, {"levels", levels}, {"modes", modes}};
+        toml::table m{{"model", model.model},
+                      {"ladder", model.ladder_note},
+                      {"refined_dimensions", model.refined_dimensions},
+                      {"levels", levels},
+                      {"modes", modes}};
+        if (model.model == "beam")
+            m.insert("timing_parts", "mesh: building the beam network; factor_and_solve: assembly, eigensolve and "
+                                     "inertia count (assemble is inside it, 0 here); classify: labels and effective "
+                                     "masses");
+        toml::array unseen;
+        for (const auto& [role, why] : model.unseen_roles) unseen.push_back(toml::table{{"role", role}, {"reason", why}});
+        m.insert("not_in_model", unseen);
         if (model.time_exponent) m.insert("time_exponent", *model.time_exponent);
         if (model.memory_exponent) m.insert("memory_exponent", *model.memory_exponent);
         models.push_back(m);
     }
+    toml::array errors;
+    for (const ModelError& e : model_errors(study.models))
+        errors.push_back(toml::table{{"model", e.model},
+                                     {"role", e.role},
+                                     {"id", e.id},
+                                     {"solid_id", e.solid_id},
+                                     {"f0_hz", e.f0_hz},
+                                     {"solid_f0_hz", e.solid_f0_hz},
+                                     {"model_error", e.relative},
+                                     {"known_to", e.known_to}});
     toml::array checks;
     for (const auto& c : study.checks) {
         const ModelStudy* solid = nullptr;
@@ -571,6 +688,7 @@ std::string converge_json(const ConvergeStudy& study) {
                      {"load_average", toml::array{study.load_start, study.load_end}},
                      {"n_cores", study.n_cores},
                      {"models", models},
+                     {"model_errors", errors},
                      {"checks", checks},
                      {"notes", notes}};
     std::ostringstream s;
@@ -583,8 +701,15 @@ namespace {
 void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
     const TrackedMode* f1 = role_mode(m, "f1");
     const TrackedMode* oval = role_mode(m, "ovalling");
-    s << "| k | mesh (wall/paper/around/along) | DOFs | runs | mesh [s] | assemble [s] | factor+solve [s] | "
-         "total [s] | CPU [s] | peak memory [MiB] |";
+    // The beam builds a network instead of a mesh and assembles inside its
+    // solve (problem by problem): its columns say so.
+    const bool beam = m.model == "beam";
+    if (beam)
+        s << "| k | elements (core/network) | DOFs | runs | network [s] | assemble+solve [s] | labels [s] | "
+             "total [s] | CPU [s] | peak memory [MiB] |";
+    else
+        s << "| k | mesh (wall/paper/around/along) | DOFs | runs | mesh [s] | assemble [s] | factor+solve [s] | "
+             "total [s] | CPU [s] | peak memory [MiB] |";
     if (f1) s << " f1 [Hz] | error f1 |";
     if (oval) s << " ovalling [Hz] | error ovalling |";
     s << "\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|";
@@ -594,10 +719,10 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
     for (std::size_t i = 0; i < m.levels.size(); ++i) {
         const LevelResult& l = m.levels[i];
         const Timing& t = l.median_s;
-        s << "| " << l.step.k << " | " << l.step.counts << " | " << l.n_dofs
-          << " | " << l.runs << " | " << seconds(t.mesh) << " | " << seconds(t.assemble) << " | "
-          << seconds(t.factor_and_solve) << " | " << seconds(t.total) << " | " << seconds(l.median_cpu_s) << " | "
-          << formatted("%.0f", l.peak_memory_mb) << " |";
+        s << "| " << l.step.k << " | " << l.step.counts << " | " << l.n_dofs << " | " << l.runs << " | "
+          << seconds(t.mesh) << " | " << (beam ? seconds(t.factor_and_solve) : seconds(t.assemble)) << " | "
+          << (beam ? seconds(t.classify) : seconds(t.factor_and_solve)) << " | " << seconds(t.total) << " | "
+          << seconds(l.median_cpu_s) << " | " << formatted("%.0f", l.peak_memory_mb) << " |";
         for (const TrackedMode* t : {f1, oval}) {
             if (!t) continue;
             s << ' ' << opt(t->frequency_hz[i], "%.4f") << " | "
@@ -624,6 +749,8 @@ void markdown_extrapolation(std::ostringstream& s, const ModelStudy& m) {
           << (r.extrapolated ? formatted("%.2f", r.order) : std::string("–")) << " | " << (r.asymptotic ? "yes" : "no")
           << " | " << r.note << " |\n";
     }
+    for (const auto& [role, why] : m.unseen_roles)
+        if (!role_mode(m, role)) s << "| – | " << role_title(role) << " | – | not in this model | – | – | – | – | " << why << " |\n";
     s << "\nerror estimate = |f(finest) − f0| / f0; \"f0 known to\" = |f0 − f0 of the triple one level coarser| / f0.\n";
 }
 
@@ -655,6 +782,18 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
     const LevelResult& l = m.levels.back();
     const Timing& t = l.median_s;
     const double total = t.total > 0 ? t.total : 1;
+    if (m.model == "beam") {
+        s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
+          << l.runs << " runs): building the beam network " << seconds(t.mesh) << " s (" << percent(t.mesh / total)
+          << "), assembly, eigensolve and inertia count " << seconds(t.factor_and_solve) << " s ("
+          << percent(t.factor_and_solve / total) << "), labels and effective masses " << seconds(t.classify) << " s ("
+          << percent(t.classify / total) << "); total " << seconds(t.total) << " s. Peak memory "
+          << formatted("%.0f", l.peak_memory_mb) << " MiB is the whole process's resident set (PETSc, the "
+          << "solid ladder's freed heap): the beam itself needs well under a MiB.\n";
+        if (m.time_exponent) s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^"
+                               << formatted("%.2f", *m.time_exponent) << ".\n";
+        return;
+    }
     s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
       << l.runs << (l.runs == 1 ? " run" : " runs") << "): mesh " << seconds(t.mesh) << " s ("
       << percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s (" << percent(t.assemble / total)
@@ -675,14 +814,58 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
           << ", peak memory ~ DOFs^" << formatted("%.2f", *m.memory_exponent) << ".\n";
 }
 
+// One line per role: where each model level converges and how far apart.
+void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
+    const ModelStudy* solid = find_model(study.models, "solid");
+    if (!solid) return;
+    const std::vector<ModelError> errors = model_errors(study.models);
+    for (const auto& m : study.models) {
+        if (m.model == "solid") continue;
+        s << "\n## Model error: " << m.model << " against solid\n\n"
+          << "Each level converges to its own model's answer; the difference between the two extrapolated values is "
+             "the model error, which no refinement of the " << m.model << " removes.\n\n";
+        for (const auto& [role, type] : kModeRoles) {
+            const TrackedMode* own = role_mode(m, role);
+            const TrackedMode* ref = role_mode(*solid, role);
+            const auto e = std::find_if(errors.begin(), errors.end(),
+                                        [&](const ModelError& x) { return x.model == m.model && x.role == role; });
+            s << "- " << role_title(role) << ": ";
+            if (e != errors.end()) {
+                s << m.model << " level converges to " << formatted("%.4f", e->f0_hz) << " Hz (" << e->id
+                  << "), the solid to " << formatted("%.4f", e->solid_f0_hz) << " Hz (" << e->solid_id
+                  << "): model error " << formatted("%+.3g", 100 * e->relative) << " % (both extrapolations known to "
+                  << percent(e->known_to) << ")\n";
+                continue;
+            }
+            const auto unseen = std::find_if(m.unseen_roles.begin(), m.unseen_roles.end(),
+                                             [&](const auto& u) { return u.first == role; });
+            if (unseen != m.unseen_roles.end()) {
+                s << "not in this model (" << unseen->second << ")";
+                if (ref && ref->richardson) s << "; the solid converges to " << formatted("%.4f", ref->richardson->f0) << " Hz";
+                s << "\n";
+            } else if (!own || !own->richardson) {
+                s << "the " << m.model << " level has no extrapolated value (not among its modes, or not tracked at "
+                     "every level)\n";
+            } else {
+                s << m.model << " level converges to " << formatted("%.4f", own->richardson->f0)
+                  << " Hz; the solid has no extrapolated value (not among its modes)\n";
+            }
+        }
+    }
+}
+
 }  // namespace
 
 std::string converge_markdown(const ConvergeStudy& study, const std::string& plot_note) {
     std::ostringstream s;
     s << "# Convergence study: " << study.case_name << "\n\n";
-    s << "Case file `" << study.source_file << "`; " << study.n_modes << " modes asked per run; timings are medians of "
-      << study.repeats << " runs per level (levels whose first run took longer than "
-      << formatted("%.0f", study.repeat_limit_s) << " s run once). Model levels: ";
+    s << "Case file `" << study.source_file << "`; modes asked per run:";
+    for (std::size_t i = 0; i < study.models.size(); ++i)
+        s << (i ? ", " : " ") << study.models[i].model << " " << study.models[i].n_modes;
+    s << "; timings are medians of the runs in each table's \"runs\" column (" << study.repeats
+      << " per solid level, one for a level whose first run took longer than " << formatted("%.0f", study.repeat_limit_s)
+      << " s; " << kBeamRunsPerLevel << " per beam level, whose runs take about a millisecond, or as many as fit in "
+      << formatted("%g", kBeamLevelBudget) << " s). Model levels: ";
     for (std::size_t i = 0; i < study.models.size(); ++i) s << (i ? ", " : "") << study.models[i].model;
     s << ". Ladders: " << seconds(study.ladder_time_s) << " s; whole study (with named-level checks): "
       << seconds(study.total_time_s) << " s on " << study.n_cores
@@ -699,6 +882,7 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
         s << "\n### Cost\n";
         markdown_cost(s, m);
     }
+    markdown_model_errors(s, study);
     if (!study.checks.empty()) {
         s << "\n## Named mesh levels against the extrapolated values (solid)\n\n"
              "| level | mesh (wall/paper/around/along) | DOFs | total [s] | peak memory [MiB] | f1 [Hz] | error f1 | "

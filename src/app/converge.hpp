@@ -213,20 +213,48 @@ std::optional<double> power_law_exponent(const std::vector<double>& x, const std
 
 // ---- model levels -------------------------------------------------------------
 
+// The beam model level's ladder (beam_refinement_ladder): level k refines the
+// unit beam mesh (kBeamUnitElements along the core, BeamModelOptions) k times,
+// k = 1, 2, 4, 8, 16, so h = 1/k exactly in every gap between support edges
+// and in the chuck shafts. The three-node Timoshenko element (quadratic
+// interpolation) converges frequencies as h^4: with a unit of 4 elements the
+// triples from k = 2 on are in the asymptotic range for f1, torsion and axial
+// on cases 01, 03 and 07 (observed orders 3.98 to 4.00, docs/accuracy-vs-cost.md),
+// and the finest change (k = 8 to 16, ~1e-6 of f1) stays far above the
+// solver's round-off (kSolverNoise).
+inline constexpr int kBeamUnitElements = 4;
+inline constexpr int kBeamLevels = 5;
+// One beam evaluation takes about a millisecond: a level's time is the median
+// of this many runs (the solid's --repeats is far too few to beat the noise),
+// or of as many as fit in kBeamLevelBudget seconds (the finest chuck levels,
+// ~9000 DOFs, take ~50 ms a run).
+inline constexpr int kBeamRunsPerLevel = 200;
+inline constexpr double kBeamLevelBudget = 1.0;
+
+// Levels k = 1, 2, 4, ... (levels of them) of the unit beam mesh; step.mesh is
+// unused, step.counts is "core elements/network elements".
+std::vector<MeshStep> beam_refinement_ladder(const Scene& scene, int unit_elements, int levels);
+
 // A model level's refinement ladder and how to run one of its levels once.
-// The solid ladder is refinement_ladder(); a beam model level adds its own
-// (elements along 10, 20, 40, 80: h = 1/k with k = 1, 2, 4, 8) in one
-// function, beam_ladder() in app/converge_command.cpp.
+// The solid ladder is refinement_ladder(), the beam's
+// beam_refinement_ladder(); app/converge_command.cpp builds both.
 struct ModelLadder {
     std::string model;   // "solid", "beam", ...
     std::string note;    // how the ladder was built, for the report
     std::vector<MeshStep> steps;
     std::function<LevelRun(const MeshStep&)> run_once;  // collective over PETSC_COMM_WORLD
+    int n_modes = 0;             // modes asked per run (the solid's is fixed by choose_mode_count)
+    int runs_per_level = 0;      // 0: --repeats; the beam: kBeamRunsPerLevel
+    double level_budget_s = 0;   // > 0: no further run once a level's runs took this long in all
+    int refined_dimensions = 3;  // DOFs ~ k^this (3 for the solid, 1 for the beam)
+    // Roles (kModeRoles) this model cannot have, and why (the beam: ovalling
+    // and breathing, which deform the cross-section).
+    std::vector<std::pair<std::string, std::string>> unseen_roles;
 };
 
 // ---- the study --------------------------------------------------------------
 
-// All levels of one model level ("solid", later "beam") and what they say.
+// All levels of one model level ("solid", "beam") and what they say.
 struct ModelStudy {
     std::string model;
     std::string ladder_note;  // how the ladder was built, for the report
@@ -234,7 +262,29 @@ struct ModelStudy {
     std::vector<TrackedMode> modes;
     std::optional<double> time_exponent;    // total time ~ DOFs^e (levels after the coarsest)
     std::optional<double> memory_exponent;  // peak memory ~ DOFs^e
+    int n_modes = 0;                        // modes asked per run
+    int refined_dimensions = 3;             // DOFs ~ k^this, for predict_level_for
+    std::vector<std::pair<std::string, std::string>> unseen_roles;  // ModelLadder::unseen_roles
 };
+
+// A model level's converged value of a role against the solid's: the model
+// error, which no refinement of the simpler model removes (a beam never
+// converges to the 3D answer).
+struct ModelError {
+    std::string model, role;
+    std::string id, solid_id;  // the tracked modes' labels
+    double f0_hz = 0, solid_f0_hz = 0;
+    double relative = 0;        // (f0 - solid f0) / solid f0
+    double known_to = 0;        // both extrapolations' error estimates and f0 uncertainties, relative
+};
+
+// For every model level other than the solid and every role both have
+// extrapolated (kModeRoles order).
+std::vector<ModelError> model_errors(const std::vector<ModelStudy>& models);
+
+// |f - f0 of the solid's mode of the same role| / that f0, per level of a
+// tracked mode of another model level; empty when the solid has no such f0.
+std::vector<std::optional<double>> error_against_solid(const TrackedMode& mode, const std::vector<ModelStudy>& models);
 
 // A named mesh level (--check-levels) run once and compared with the study's
 // extrapolated values: how good is "default"?
@@ -246,7 +296,7 @@ struct NamedLevelCheck {
 
 struct ConvergeStudy {
     std::string case_name, source_file;
-    int n_modes = 0;           // modes asked per run
+    int n_modes = 0;           // modes asked per solid run (ModelStudy::n_modes per model level)
     int repeats = 0;           // runs per level asked (levels slower than repeat_limit_s run once)
     double repeat_limit_s = 0;
     std::vector<ModelStudy> models;
@@ -288,6 +338,7 @@ struct ConvergeOptions {
     std::optional<int> n_modes;             // modes per run; default: the case's, raised
                                             // until the coarsest level shows an ovalling mode
     std::vector<std::string> check_levels;  // named mesh levels to compare with f0
+    std::vector<std::string> models = {"solid", "beam"};  // model levels to run (those the scene allows)
     bool quiet = false;
     bool write_results = true;
 };
@@ -300,7 +351,8 @@ inline constexpr int kMaxModesForOvalling = 64;
 ConvergeStudy run_converge(const ConvergeOptions& options, std::ostream& progress);
 
 // Where the ladder would have to go for a target it does not reach, from the
-// observed order (error ~ (1/k)^p from the finest level), DOFs ~ k^3 and the
+// observed order (error ~ (1/k)^p from the finest level), DOFs ~ k^d (d =
+// ModelStudy::refined_dimensions: 3 for the solid, 1 for the beam) and the
 // observed time exponent. Nothing when the mode is not asymptotic or when f0
 // itself is not known to better than the target.
 struct TargetPrediction {

@@ -7,6 +7,7 @@
 #include "common/format.hpp"
 #include "app/converge.hpp"
 #include "app/run_case.hpp"
+#include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
@@ -19,8 +20,10 @@
 #include <malloc.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -128,12 +131,112 @@ ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int
     return ladder;
 }
 
-// The beam model level (a Timoshenko beam in src/beam/, being built in
-// parallel) joins the study here: when `run_beam_model` exists, return its
-// ladder (elements along 10, 20, 40, 80: MeshStep k = 1, 2, 4, 8, h = 1/k,
-// mesh.n_along = 10 k) with run_once calling it. Until then the study lists
-// only "solid".
-std::optional<ModelLadder> beam_ladder(const Scene&, const ConvergeOptions&) { return std::nullopt; }
+// Processor time of this process in seconds, to the nanosecond (a beam run
+// takes about a millisecond: getrusage's ticks would be too coarse).
+double process_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// One run of the beam model at refinement k of the unit. Every rank solves
+// the same small problem (serial Eigen, no PETSc). Timing: `mesh` is building
+// the network, `factor_and_solve` assembly, eigensolve and inertia count (the
+// beam assembles problem by problem inside its solve: `assemble` stays 0),
+// `classify` the labels, `total` the whole call.
+LevelRun run_beam_once(const Scene& scene, const MeshStep& step, int unit_elements, int n_modes) {
+    Scene s = scene;
+    s.analysis.n_modes = n_modes;
+    BeamModelOptions options;
+    options.core_elements = unit_elements;
+    options.refine = step.k;
+    const bool reset = reset_peak_memory();
+    const double cpu_start = process_cpu_seconds();
+    Stopwatch clock;
+    const BeamModelResult beam = solve_beam_model(s, options);
+    LevelRun run;
+    run.timing_s.total = clock.seconds();
+    run.cpu_s = process_cpu_seconds() - cpu_start;
+    run.timing_s.mesh = beam.timing_s.build;
+    run.timing_s.factor_and_solve = beam.timing_s.solve;
+    run.timing_s.classify = beam.timing_s.classify;
+    run.n_dofs = beam.n_dofs;
+    double peak = reset ? peak_memory_since_reset_mb() : peak_memory_mb();
+    MPI_Allreduce(&peak, &run.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    run.complete = beam.verification.complete;
+    for (std::size_t i = 0; i < beam.modes.size(); ++i) {
+        const BeamMode& b = beam.modes[i];
+        Mode m;
+        m.index = static_cast<int>(i) + 1;
+        m.eigenvalue = b.eigenvalue;
+        m.frequency_hz = b.frequency_hz;
+        m.label = b.label;
+        m.relative_residual = b.relative_residual;
+        m.effective_mass = b.effective_mass;
+        run.modes.push_back(std::move(m));
+    }
+    return run;
+}
+
+bool has_type(const std::vector<Mode>& modes, const std::string& type) {
+    for (const auto& d : distinct_modes(modes))
+        if (d.key.type == type) return true;
+    return false;
+}
+
+// The beam model level: kBeamLevels levels of the unit beam mesh (h = 1/k,
+// k = 1, 2, 4, ...), each run kBeamRunsPerLevel times. The modes asked per
+// run start from --modes or the case's and double (up to
+// kMaxModesForOvalling) until the coarsest level shows the first torsion and
+// axial modes, as the solid's do for ovalling. A scene the beam model cannot
+// solve is skipped with its reason in the notes, not an error.
+std::optional<ModelLadder> beam_ladder(const Scene& scene, const ConvergeOptions& o, std::ostream& progress,
+                                       std::vector<std::string>& notes) {
+    ModelLadder ladder;
+    ladder.model = "beam";
+    ladder.runs_per_level = kBeamRunsPerLevel;
+    ladder.level_budget_s = kBeamLevelBudget;
+    ladder.refined_dimensions = 1;
+    ladder.unseen_roles = {{"ovalling", "a beam's cross-sections are rigid: no ovalling, n >= 2"},
+                           {"breathing", "a beam's cross-sections are rigid: no breathing, n = 0 radial"}};
+    ladder.n_modes = o.n_modes.value_or(scene.analysis.n_modes);
+    const bool say = mpi_rank() == 0 && !o.quiet;
+    try {
+        ladder.steps = beam_refinement_ladder(scene, kBeamUnitElements, kBeamLevels);
+        if (!o.n_modes && !scene.analysis.f_max_hz)
+            for (;;) {
+                const LevelRun run = run_beam_once(scene, ladder.steps.front(), kBeamUnitElements, ladder.n_modes);
+                if ((has_type(run.modes, "torsion") && has_type(run.modes, "axial")) ||
+                    ladder.n_modes >= kMaxModesForOvalling)
+                    break;
+                const int more = std::min(2 * ladder.n_modes, kMaxModesForOvalling);
+                if (say)
+                    progress << "  beam: no torsion or no axial mode among the first " << ladder.n_modes
+                             << " modes at " << ladder.steps.front().label << ": asking for " << more << std::endl;
+                ladder.n_modes = more;
+            }
+        else
+            run_beam_once(scene, ladder.steps.front(), kBeamUnitElements, ladder.n_modes);  // can it solve the scene?
+    } catch (const std::runtime_error& e) {  // InputError, SolveError: the beam cannot solve this scene
+        notes.push_back("beam model level skipped: " + std::string(e.what()));
+        if (say) progress << "  beam model level skipped: " << e.what() << std::endl;
+        return std::nullopt;
+    }
+    std::string shafts;
+    if (scene.supports.kind == SupportKind::chucks) shafts = ", every chuck shaft";
+    ladder.note = "Ladder: level k has k times the elements of the unit beam mesh (" +
+                  std::to_string(kBeamUnitElements) + " three-node Timoshenko elements along the core, at least " +
+                  "two per gap between support edges) in every such gap" + shafts + ", so h = 1/k exactly (k = 1, 2, 4, "
+                  "..., ratio 2 between levels). Elements: the core's / the whole network's. Each level runs " +
+                  std::to_string(kBeamRunsPerLevel) + " times (about a millisecond each), or as often as fits in " +
+                  formatted("%g", kBeamLevelBudget) + " s: times are medians. Network = "
+                  "building the beam network; assemble+solve = assembly, eigensolve and inertia count; labels = "
+                  "labels and effective masses.";
+    ladder.run_once = [&scene, modes = ladder.n_modes](const MeshStep& step) {
+        return run_beam_once(scene, step, kBeamUnitElements, modes);
+    };
+    return ladder;
+}
 
 // ---- 2. the number of modes -------------------------------------------------
 
@@ -172,6 +275,11 @@ std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder&
 
 // ---- 3. running a ladder ------------------------------------------------------
 
+// Seconds in the progress lines; a beam run (~1e-3 s) gets two significant digits.
+std::string progress_seconds(double s, const char* format) {
+    return s > 0 && s < 0.1 ? formatted("%.2g", s) : formatted(format, s);
+}
+
 std::string role_values(const LevelRun& run) {
     std::string s;
     bool f1 = false, oval = false;
@@ -194,7 +302,7 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     auto show = [&] {
         if (!say) return;
         if (runs.size() == 1) progress << " " << runs[0].n_dofs << " DOFs,";
-        progress << " " << formatted("%.1f", runs.back().timing_s.total) << " s" << std::flush;
+        progress << " " << progress_seconds(runs.back().timing_s.total, "%.1f") << " s" << std::flush;
     };
     if (!runs.empty()) show();
     // A slow level is timed once: its run-to-run noise is small against its
@@ -205,13 +313,24 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
         MPI_Bcast(&stop, 1, MPI_INT, 0, PETSC_COMM_WORLD);
         return stop != 0;
     };
-    while (static_cast<int>(runs.size()) < o.repeats && (runs.empty() || !slow())) {
+    // A ladder with a time budget per level (the beam) stops repeating when
+    // its runs have used it; again rank 0 decides.
+    auto spent = [&] {
+        double total = 0;
+        for (const auto& r : runs) total += r.timing_s.total;
+        int stop = ladder.level_budget_s > 0 && total >= ladder.level_budget_s;
+        MPI_Bcast(&stop, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+        return stop != 0;
+    };
+    const int repeats = ladder.runs_per_level > 0 ? ladder.runs_per_level : o.repeats;
+    while (static_cast<int>(runs.size()) < repeats && (runs.empty() || (!slow() && !spent()))) {
         runs.push_back(ladder.run_once(step));
-        show();
+        if (repeats <= 10 || runs.size() == 1) show();
     }
+    if (repeats > 10 && say) progress << " ... " << runs.size() << " runs," << std::flush;
     LevelResult result = summarize_runs(step, runs);
     if (say)
-        progress << " -> median " << formatted("%.2f", result.median_s.total) << " s, "
+        progress << " -> median " << progress_seconds(result.median_s.total, "%.2f") << " s, "
                  << formatted("%.0f", result.peak_memory_mb) << " MiB" << role_values(runs.front())
                  << (result.complete ? "" : "  [INCOMPLETE: modes missing]") << std::endl;
     return result;
@@ -277,7 +396,8 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                     const auto i = first_level_within(t, target);
                     out << "  " << formatted("%g", target * 100) << " %: ";
                     if (i) {
-                        out << m.levels[*i].step.label << " (" << formatted("%.1f", m.levels[*i].median_s.total) << " s)";
+                        out << m.levels[*i].step.label << " (" << progress_seconds(m.levels[*i].median_s.total, "%.1f")
+                            << " s)";
                     } else if (const auto p = predict_level_for(m, t, target)) {
                         out << "not in the ladder (k ~ " << formatted("%.1f", p->k) << ", ~" << formatted("%.2g", p->n_dofs)
                             << " DOFs" << (p->time_s ? ", ~" + formatted("%.2g", *p->time_s) + " s" : std::string()) << ")";
@@ -288,8 +408,17 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "\n";
             }
     }
+    for (const ModelError& e : model_errors(study.models))
+        out << "\nmodel error, " << e.model << " " << e.role << ": " << e.model << " converges to "
+            << formatted("%.4f", e.f0_hz) << " Hz, the solid to " << formatted("%.4f", e.solid_f0_hz) << " Hz: "
+            << formatted("%+.3g", 100 * e.relative) << " %";
+    if (!model_errors(study.models).empty()) out << "\n";
     out << "\nladders " << formatted("%.1f", study.ladder_time_s) << " s, whole study " << formatted("%.1f", study.total_time_s)
         << " s" << std::endl;
+}
+
+bool wants_model(const ConvergeOptions& o, const std::string& model) {
+    return std::find(o.models.begin(), o.models.end(), model) != o.models.end();
 }
 
 }  // namespace
@@ -304,6 +433,12 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     for (const auto& name : o.check_levels)
         if (!find_mesh_level(name))
             throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
+    if (o.models.empty()) throw InputError("--models: no model level; expected solid, beam or both");
+    for (const auto& name : o.models)
+        if (name != "solid" && name != "beam")
+            throw InputError("--models " + name + ": unknown model level; expected solid, beam or both");
+    if (!o.check_levels.empty() && !wants_model(o, "solid"))
+        throw InputError("--check-levels: named mesh levels are solid meshes; add solid to --models");
 
     // PETSc's event log (cheap) splits the solver time into factorizations,
     // triangular solves and orthogonalization; -log_view may have started it.
@@ -321,19 +456,29 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.repeats = o.repeats;
     study.repeat_limit_s = o.repeat_limit_s;
     int n_modes = o.n_modes.value_or(scene.analysis.n_modes);
-    std::vector<ModelLadder> ladders = {solid_ladder(scene, o, n_modes)};
-    if (auto beam = beam_ladder(scene, o)) ladders.push_back(std::move(*beam));
+    const bool want_solid = wants_model(o, "solid"), want_beam = wants_model(o, "beam");
+    std::vector<ModelLadder> ladders;
+    if (want_solid) ladders.push_back(solid_ladder(scene, o, n_modes));
     if (root && !o.quiet) {
         progress << "converge: " << scene.name << " (" << o.case_file << "), model levels:";
-        for (const auto& l : ladders) progress << " " << l.model;
-        progress << "; " << o.levels << " levels, " << o.repeats << (o.repeats == 1 ? " run" : " runs")
-                 << " per level (one when the first takes over "
-                 << formatted("%.0f", o.repeat_limit_s) << " s)" << std::endl;
+        if (want_solid)
+            progress << " solid (" << o.levels << " levels, " << o.repeats << (o.repeats == 1 ? " run" : " runs")
+                     << " per level, one when the first takes over " << formatted("%.0f", o.repeat_limit_s) << " s)";
+        if (want_beam)
+            progress << (want_solid ? "," : "") << " beam (" << kBeamLevels << " levels, " << kBeamRunsPerLevel
+                     << " runs per level)";
+        progress << std::endl;
     }
+    if (want_beam)
+        if (auto beam = beam_ladder(scene, o, progress, study.notes)) ladders.push_back(std::move(*beam));
+    if (ladders.empty())  // --models beam, and the beam cannot solve the scene
+        throw InputError(o.case_file + ": no model level to run (" + study.notes.back() + ")");
 
-    // 2. How many modes each run asks for (enough to hold the first ovalling mode).
-    std::optional<LevelRun> first_run = choose_mode_count(scene, ladders.front(), o, n_modes, progress, study.notes);
+    // 2. How many modes each solid run asks for (enough to hold the first ovalling mode).
+    std::optional<LevelRun> first_run;
+    if (want_solid) first_run = choose_mode_count(scene, ladders.front(), o, n_modes, progress, study.notes);
     study.n_modes = n_modes;
+    if (want_solid) ladders.front().n_modes = n_modes;
 
     // 3. Every level of every ladder, coarse to fine, then the analysis.
     for (auto& ladder : ladders) {
@@ -343,7 +488,11 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
             if (i == 0 && ladder.model == "solid") reuse = std::move(first_run);
             levels.push_back(run_level(ladder, i, std::move(reuse), o, progress));
         }
-        study.models.push_back(analyse_levels(ladder.model, ladder.note, std::move(levels)));
+        ModelStudy model = analyse_levels(ladder.model, ladder.note, std::move(levels));
+        model.n_modes = ladder.n_modes;
+        model.refined_dimensions = ladder.refined_dimensions;
+        model.unseen_roles = ladder.unseen_roles;
+        study.models.push_back(std::move(model));
     }
 
     study.ladder_time_s = clock.seconds();
@@ -411,11 +560,18 @@ Command add_converge_command(CLI::App& app) {
                     "named mesh levels (coarse, default, fine, very_fine) to run once and compare with the "
                     "extrapolated frequencies")
         ->delimiter(',');
+    cmd->add_option("--models", options->models,
+                    "model levels to run, comma-separated: solid, beam (default both; the beam is skipped, with the "
+                    "reason in converge.md, for a scene it cannot solve)")
+        ->delimiter(',');
     cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or summary");
-    cmd->footer("Model levels: solid (a beam level joins when it exists). Level k refines the unit mesh k times in "
-                "every direction (h = 1/k); the three finest levels give the Richardson extrapolation and its "
-                "observed order, the level before them checks that order. PETSc/SLEPc options pass through as for "
-                "`run`. See docs/accuracy-vs-cost.md.");
+    cmd->footer("Model levels: solid and beam. Solid level k refines the unit mesh k times in every direction "
+                "(h = 1/k; --levels, --first, --unit, --max-dofs, --repeats apply to it); the beam ladder is its own: "
+                "5 levels of 4, 8, 16, 32, 64 three-node Timoshenko elements along the core (every gap between "
+                "support edges refined alike), each level run 200 times or for 1 s (median time). The three finest levels of "
+                "each give the Richardson extrapolation and its observed order, the level before them checks that "
+                "order; converge.md sets the beam's extrapolated frequencies against the solid's (the model error). "
+                "PETSc/SLEPc options pass through as for `run`. See docs/accuracy-vs-cost.md.");
     auto run = [options, output, unit, n_modes] {
         if (!output->empty()) options->output_dir = *output;
         if (!unit->empty()) options->unit = *unit;

@@ -69,13 +69,15 @@ std::vector<double> support_edges(const Scene& scene) {
 }
 
 // The core's element ends: the support edges, and between them uniform
-// elements of about Lc / n_elements (at least kMinElementsPerGap per gap).
-std::vector<double> core_stations(const Scene& scene, int n_elements) {
+// elements of about Lc / n_elements (at least kMinElementsPerGap per gap),
+// each gap's count then multiplied by `refine`.
+std::vector<double> core_stations(const Scene& scene, int n_elements, int refine) {
     const std::vector<double> edges = support_edges(scene);
     std::vector<double> z;
     for (size_t i = 0; i + 1 < edges.size(); ++i) {
         const double gap = edges[i + 1] - edges[i];
-        const int n = std::max(kMinElementsPerGap, static_cast<int>(std::lround(gap / scene.core.length * n_elements)));
+        const int n = refine * std::max(kMinElementsPerGap,
+                                        static_cast<int>(std::lround(gap / scene.core.length * n_elements)));
         for (int k = 0; k < n; ++k) z.push_back(edges[i] + gap * k / n);
     }
     z.push_back(edges.back());
@@ -116,11 +118,11 @@ void hold_clamp_zones(BeamNetwork& net, const Scene& scene, const CoreNodes& cor
 // Element ends of a chuck, ascending: the core's stations over the body,
 // then the shaft's own out to the bearing (or the reverse on the right).
 std::vector<double> chuck_stations(const Scene& scene, const ChuckSpec& chuck, const std::vector<double>& core_stations,
-                                   int n_elements) {
+                                   int n_elements, int refine) {
     const double tol = kStationTolerance * scene.core.length;
     const Range body = body_range(scene, chuck);
     const double h = scene.core.length / n_elements;
-    const int n_shaft = std::max(kMinShaftElements, static_cast<int>(std::ceil(chuck.shaft_length / h)));
+    const int n_shaft = refine * std::max(kMinShaftElements, static_cast<int>(std::ceil(chuck.shaft_length / h)));
     std::vector<double> z;
     for (double zc : core_stations)
         if (body.holds(zc, tol)) z.push_back(zc);
@@ -178,12 +180,12 @@ void add_bearing(BeamNetwork& net, const ChuckSpec& chuck, int shaft_end, std::v
 }
 
 void add_chuck(BeamNetwork& net, const Scene& scene, const ChuckSpec& chuck, const std::vector<double>& core_stations,
-               const CoreNodes& core, int n_elements, std::vector<std::string>& notes) {
+               const CoreNodes& core, int n_elements, int refine, std::vector<std::string>& notes) {
     const double tol = kStationTolerance * scene.core.length;
     const Range body = body_range(scene, chuck);
     const BeamSection body_section = tube_beam_section(chuck.body_diameter, 0, chuck.material);
     const BeamSection shaft_section = tube_beam_section(chuck.shaft_diameter, 0, chuck.material);
-    const std::vector<double> z = chuck_stations(scene, chuck, core_stations, n_elements);
+    const std::vector<double> z = chuck_stations(scene, chuck, core_stations, n_elements, refine);
     std::vector<BeamSection> sections;
     for (size_t e = 0; e + 1 < z.size(); ++e)
         sections.push_back(body.holds(0.5 * (z[e] + z[e + 1]), tol) ? body_section : shaft_section);
@@ -350,15 +352,15 @@ Matrix6 spring_layer_per_length(const ExpandingElement& element, double R, doubl
 
 BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& options,
                                std::vector<std::string>* assumptions) {
-    COREMODAL_ASSERT(options.core_elements >= 1);
+    COREMODAL_ASSERT(options.core_elements >= 1 && options.refine >= 1);
     std::vector<std::string> notes;
     BeamNetwork net;
-    const std::vector<double> stations = core_stations(scene, options.core_elements);
+    const std::vector<double> stations = core_stations(scene, options.core_elements, options.refine);
     const CoreNodes core = add_core(net, scene, stations);
     if (scene.supports.kind == SupportKind::clamped) hold_clamp_zones(net, scene, core);
     if (scene.supports.kind == SupportKind::chucks)
         for (const ChuckSpec& chuck : scene.supports.chucks)
-            add_chuck(net, scene, chuck, stations, core, options.core_elements, notes);
+            add_chuck(net, scene, chuck, stations, core, options.core_elements, options.refine, notes);
     if (assumptions) assumptions->insert(assumptions->end(), notes.begin(), notes.end());
     return net;
 }

@@ -34,6 +34,11 @@ struct BeamModelOptions {
     // 05's rest roll, clamped or on chucks, within 0.1 % of a mesh ten times
     // finer (tests/unit/beam/test_beam_model.cpp).
     int core_elements = 30;
+    // Uniform refinement of that mesh (`coremodal converge`'s beam ladder):
+    // every gap between support edges and every chuck shaft gets exactly
+    // `refine` times the elements core_elements gives it (minimums included),
+    // so the element lengths are exactly 1/refine of the unrefined ones.
+    int refine = 1;
     bool force_dense = false;  // tests: dense eigensolver whatever the size
 };
 

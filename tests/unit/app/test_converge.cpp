@@ -376,3 +376,94 @@ TEST_CASE("A target beyond the ladder is predicted from the observed order and t
     }();
     CHECK_THAT(md, Catch::Contains("predicted k ≈ 5.6"));
 }
+
+TEST_CASE("The beam ladder doubles the elements in every gap between support edges", "[converge][beam]") {
+    const Scene scene = parse_case_file(cases("03-rest-roll-150x15.8-4320.toml"));
+    const auto steps = beam_refinement_ladder(scene, kBeamUnitElements, kBeamLevels);
+    REQUIRE(steps.size() == static_cast<std::size_t>(kBeamLevels));
+    REQUIRE(kBeamLevels >= 4);
+    // Unit: 4 elements along the core; the gaps (overhang, clamp zone, free
+    // span, clamp zone, overhang) get max(2, round(4 gap / Lc)) = 2, 2, 3, 2, 2.
+    CHECK(steps[0].counts == "11/11");
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const int k = 1 << i;
+        CAPTURE(steps[i].label);
+        CHECK(steps[i].k == k);
+        CHECK(steps[i].h == Approx(1.0 / k));
+        CHECK(steps[i].counts == std::to_string(11 * k) + "/" + std::to_string(11 * k));
+        CHECK(steps[i].label == "k=" + std::to_string(k) + " " + steps[i].counts);
+    }
+    // Chucks: the chuck beams (body on the core's stations, shaft) refine too.
+    const Scene chucked = parse_case_file(cases("07-rotogravure-chucks-150x15.8-4320.toml"));
+    const auto chuck_steps = beam_refinement_ladder(chucked, kBeamUnitElements, 3);
+    const auto elements = [](const MeshStep& s) { return std::stoi(s.counts.substr(s.counts.find('/') + 1)); };
+    CHECK(elements(chuck_steps[1]) == 2 * elements(chuck_steps[0]));
+    CHECK(elements(chuck_steps[2]) == 4 * elements(chuck_steps[0]));
+    CHECK_THROWS_WITH(beam_refinement_ladder(scene, kBeamUnitElements, 2), Catch::Contains("at least 3"));
+}
+
+TEST_CASE("Model error: a beam level's extrapolated values against the solid's, role by role", "[converge][beam]") {
+    std::vector<LevelResult> solid_levels, beam_levels;
+    for (int k = 1; k <= 4; ++k) {
+        const double e = std::pow(1.0 / k, 4);
+        solid_levels.push_back(level(k, {mode(1, 61.3 + e, "bending", 1, 0), mode(2, 61.3 + e, "bending", 1, 0),
+                                         mode(3, 200 + 3 * e, "torsion", 0, 0), mode(4, 430 + 50 * e, "ovalling", 2, 0)}));
+    }
+    for (int k = 1; k <= 16; k *= 2) {
+        const double e = std::pow(1.0 / k, 4);
+        LevelResult l = level(k, {mode(1, 62.0 + e, "bending", 1, 0), mode(2, 62.0 + e, "bending", 1, 0),
+                                  mode(3, 199 + 2 * e, "torsion", 0, 0)});
+        l.n_dofs = 48L * k;
+        l.median_s.total = 1e-3 * k;
+        beam_levels.push_back(std::move(l));
+    }
+    ConvergeStudy study;
+    study.case_name = "synthetic";
+    study.source_file = "synthetic.toml";
+    study.models.push_back(analyse_levels("solid", "solid ladder", solid_levels));
+    study.models.push_back(analyse_levels("beam", "beam ladder", beam_levels));
+    study.models[1].refined_dimensions = 1;
+    study.models[1].unseen_roles = {{"ovalling", "rigid cross-sections"}};
+
+    const std::vector<ModelError> errors = model_errors(study.models);
+    REQUIRE(errors.size() == 2);  // f1 and torsion: the beam has no ovalling
+    CHECK(errors[0].role == "f1");
+    CHECK(errors[0].f0_hz == Approx(62.0).epsilon(1e-9));
+    CHECK(errors[0].solid_f0_hz == Approx(61.3).epsilon(1e-9));
+    CHECK(errors[0].relative == Approx(0.7 / 61.3).epsilon(1e-7));
+    CHECK(errors[1].role == "torsion");
+    CHECK(errors[1].relative == Approx(-1.0 / 200).epsilon(1e-7));
+
+    // Each beam level against the solid's f0: it levels off at the model error.
+    const TrackedMode* beam_f1 = nullptr;
+    for (const auto& t : study.models[1].modes)
+        if (t.role == "f1") beam_f1 = &t;
+    REQUIRE(beam_f1);
+    const auto vs_solid = error_against_solid(*beam_f1, study.models);
+    REQUIRE(vs_solid.size() == 5);
+    CHECK(*vs_solid.back() == Approx((62.0 + std::pow(1.0 / 16, 4) - 61.3) / 61.3));
+    CHECK(error_against_solid(*beam_f1, {study.models[1]}).empty());  // no solid level, nothing to set against
+
+    // Predictions scale the beam's DOFs with k, not k^3.
+    const auto p = predict_level_for(study.models[1], *beam_f1, 1e-9);
+    REQUIRE(p);
+    CHECK(p->n_dofs == Approx(48 * p->k).epsilon(1e-9));
+
+    const std::string md = converge_markdown(study, "");
+    CHECK_THAT(md, Catch::Contains("## Model level: beam"));
+    CHECK_THAT(md, Catch::Contains("| k | elements (core/network) | DOFs | runs | network [s] |"));
+    CHECK_THAT(md, Catch::Contains("| – | first ovalling | – | not in this model |"));
+    CHECK_THAT(md, Catch::Contains("## Model error: beam against solid"));
+    CHECK_THAT(md, Catch::Contains("- f1 (first bending): beam level converges to 62.0000 Hz (bending n=1 m=0), the "
+                                   "solid to 61.3000 Hz (bending n=1 m=0): model error +1.14 %"));
+    CHECK_THAT(md, Catch::Contains("- first ovalling: not in this model (rigid cross-sections); the solid converges to "
+                                   "430.0000 Hz"));
+    CHECK_THAT(md, Catch::Contains("0.001 |"));  // a beam level's time (1e-3 s) is not rounded to 0.00
+    const std::string csv = converge_csv(study);
+    CHECK_THAT(csv, Catch::Contains(",relative_error,relative_error_vs_solid\n"));
+    CHECK_THAT(csv, Catch::Contains("beam,16,"));
+    const std::string json = converge_json(study);
+    CHECK_THAT(json, Catch::Contains("\"model_errors\""));
+    CHECK_THAT(json, Catch::Contains("\"error_vs_solid\""));
+    CHECK_THAT(json, Catch::Contains("\"not_in_model\""));
+}
