@@ -7,10 +7,9 @@ minutes on 2 cores.
 
 The study: rest paper thickness 5 to 50 mm (10 values) x Li 150 to 350 mm
 (5 values), the study defaults otherwise (coarse mesh, 12 modes), plots
-included. With --supports clamped (today) the chucks are rigid clamps 100 mm
-long centred at Li; with --supports chucks, elastic chucks whose expanding
-element (100 mm wide) is centred at Li, for when the elastic-chuck solid model
-is in. Prints the wall time, the CPU time (user + system of the study process and
+included. With --supports chucks (the issue's scene) each end has an elastic
+steel chuck inserted 400 mm whose expanding element (100 mm wide) is centred
+at Li; with --supports clamped, rigid clamps 100 mm long centred at Li. Prints the wall time, the CPU time (user + system of the study process and
 its children: a check on a machine shared with other work), the time per point
 and a markdown row for docs/performance.md.
 """
