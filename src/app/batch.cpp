@@ -1,12 +1,10 @@
 #include "app/batch.hpp"
 
-#include "common/argv.hpp"
+#include "common/child_process.hpp"
 #include "common/error.hpp"
 
 #include <toml++/toml.h>
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,7 +26,6 @@
 #include <thread>
 #include <utility>
 
-extern char** environ;
 
 namespace coremodal {
 namespace fs = std::filesystem;
@@ -202,22 +199,6 @@ std::string read_text(const std::string& path) {
     return s.str();
 }
 
-// The environment of every child: ours, and with several cases at once one
-// thread per BLAS/OpenMP library (unless the user set it), so that J
-// processes do not each start one thread per core.
-std::vector<std::string> child_environment(bool single_threaded) {
-    std::vector<std::string> env;
-    std::set<std::string> names;
-    for (char** e = environ; e && *e; ++e) {
-        env.emplace_back(*e);
-        names.insert(env.back().substr(0, env.back().find('=')));
-    }
-    if (single_threaded)
-        for (const char* name : {"OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"})
-            if (!names.count(name)) env.push_back(std::string(name) + "=1");
-    return env;
-}
-
 std::string program_name(const std::string& program) {
     std::error_code ec;
     const fs::path real = fs::read_symlink(program, ec);
@@ -232,27 +213,13 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
         else
             args.insert(args.end(), {"--mesh", *o.mesh_level});
     }
-    auto argv = c_strings(args);
-    auto envp = c_strings(env);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, c.log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-
-    const auto start = std::chrono::steady_clock::now();
-    pid_t pid = 0;
-    const int spawn_error = posix_spawn(&pid, o.program.c_str(), &actions, nullptr, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawn_error != 0) {
-        c.error = "cannot start " + args[0] + ": " + std::strerror(spawn_error);
+    const ChildExit child = run_child(o.program, args, env, c.log_file);
+    if (!child.started()) {
+        c.error = "cannot start " + args[0] + ": " + std::strerror(child.spawn_error);
         return;
     }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    c.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int status = child.status;
+    c.time_s = child.wall_s;
 
     const std::string message = first_error_line(read_text(c.log_file));
     if (WIFSIGNALED(status)) {

@@ -1,10 +1,8 @@
 #include "app/study_workers.hpp"
 
 #include "app/batch.hpp"  // first_error_line
-#include "common/argv.hpp"
+#include "common/child_process.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,7 +19,6 @@
 #include <stdexcept>
 #include <thread>
 
-extern char** environ;
 
 namespace coremodal {
 namespace fs = std::filesystem;
@@ -108,34 +105,6 @@ void read_point_record(const std::string& text, StudyPoint& p) {
 
 namespace {
 
-// Variables an MPI singleton (this process, after MPI_Init) puts in its own
-// environment: a child that inherits them would try to join this process's
-// MPI job instead of starting its own.
-bool belongs_to_our_mpi_job(const std::string& name) {
-    if (name.rfind("OMPI_ALLOW_RUN_AS_ROOT", 0) == 0) return false;
-    for (const char* prefix : {"OMPI_", "PMIX_", "OPAL_", "ORTE_"})
-        if (name.rfind(prefix, 0) == 0) return true;
-    return false;
-}
-
-// The children run one point each; with several at a time, one BLAS/OpenMP
-// thread each (unless the user set it), so that J processes do not each
-// start one thread per core.
-std::vector<std::string> child_environment() {
-    std::vector<std::string> env;
-    std::set<std::string> names;
-    for (char** e = environ; e && *e; ++e) {
-        const std::string entry = *e;
-        const std::string name = entry.substr(0, entry.find('='));
-        if (belongs_to_our_mpi_job(name)) continue;
-        env.push_back(entry);
-        names.insert(name);
-    }
-    for (const char* name : {"OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS"})
-        if (!names.count(name)) env.push_back(std::string(name) + "=1");
-    return env;
-}
-
 std::string read_file(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream s;
@@ -166,25 +135,13 @@ struct Child {
                                          record.string(),
                                          "--quiet"};
         if (!sweep.options().mesh_level.empty()) args.insert(args.end(), {"--mesh", sweep.options().mesh_level});
-        auto argv = c_strings(args);
-        auto envp = c_strings(env);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&actions, 1, 2);
-        const auto start = std::chrono::steady_clock::now();
-        pid_t pid = 0;
-        const int spawn_error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
-        posix_spawn_file_actions_destroy(&actions);
-        if (spawn_error != 0) {
-            p.error = "cannot start " + program + ": " + std::strerror(spawn_error);
+        const ChildExit child = run_child(program, args, env, log);
+        if (!child.started()) {
+            p.error = "cannot start " + program + ": " + std::strerror(child.spawn_error);
             return;
         }
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const int status = child.status;
+        const double wall = child.wall_s;
         read_outcome(status, record, log, p);
         p.time_s = wall;  // the child's whole life: start-up included
     }
@@ -219,7 +176,7 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
     const fs::path folder = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(::getpid()));
     fs::remove_all(folder);
     fs::create_directories(folder);
-    std::vector<std::string> env = child_environment();
+    std::vector<std::string> env = child_environment(/*single_threaded=*/true);
     const Child child{sweep, program, env, folder};
     std::atomic<size_t> next{0};
     std::mutex lock;

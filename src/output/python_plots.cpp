@@ -1,11 +1,8 @@
 #include "output/python_plots.hpp"
 
-#include "common/argv.hpp"
+#include "common/child_process.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
@@ -61,27 +58,14 @@ std::string run_python_plot(const std::string& subcommand, const fs::path& folde
     const fs::path log = folder / "plot.log";
     std::vector<std::string> argv_strings = {python, "-m", "coremodal", subcommand, folder.string()};
     argv_strings.insert(argv_strings.end(), args.begin(), args.end());
-    std::vector<std::string> env = plot_environment();
-    auto argv = c_strings(argv_strings);
-    auto envp = c_strings(env);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    pid_t pid = 0;
-    const int spawned = posix_spawnp(&pid, python.c_str(), &actions, nullptr, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) {
+    const ChildExit child = run_child(python, argv_strings, plot_environment(), log, /*search_path=*/true);
+    if (!child.started()) {
         std::error_code ignored;
         fs::remove(log, ignored);
-        return what + " could not start: " + std::strerror(spawned);
+        return what + " could not start: " + std::strerror(child.spawn_error);
     }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR) return what + ": lost the python process";
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    const int status = child.status;
+    if (child.succeeded()) {
         std::error_code ignored;
         fs::remove(log, ignored);
         return "";
