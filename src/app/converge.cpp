@@ -66,13 +66,23 @@ long estimate_dofs(const MeshSpec& m, bool rest_paper) {
     return 3 * nodes;
 }
 
+long estimate_dofs(const Scene& scene, const MeshSpec& mesh) {
+    Scene meshed = scene;
+    meshed.mesh = mesh;
+    const TubeSection section = make_tube_section(meshed);
+    MeshSpec tube = mesh;
+    tube.n_along = 0;
+    for (const AxialSegment& seg : section.segments) tube.n_along += seg.n_elements;
+    // Chucks are meshed with hex20 (docs/chucks.md).
+    return estimate_dofs(tube, scene.rest_paper.has_value()) + 3 * count_chuck_hex20_nodes(section);
+}
+
 UnitMesh fit_unit_to_budget(const Scene& scene, UnitMesh unit, int first, int levels, long max_dofs,
                             std::string& note) {
     note.clear();
     if (max_dofs <= 0 || scene.mesh.file) return unit;
-    const bool paper = scene.rest_paper.has_value();
     auto finest_dofs = [&](const UnitMesh& u) {
-        return estimate_dofs(refinement_ladder(scene, u, first, levels).back().mesh, paper);
+        return estimate_dofs(scene, refinement_ladder(scene, u, first, levels).back().mesh);
     };
     const int asked = unit.n_along;
     while (finest_dofs(unit) > max_dofs && unit.n_along > kMinUnitElementsAlong) --unit.n_along;

@@ -61,6 +61,10 @@ struct MeshStep {
 // eliminated (an upper bound within a few per cent): hex20 has corner nodes
 // and mid-edge nodes, hex27 every node of the doubled grid.
 long estimate_dofs(const MeshSpec& mesh, bool rest_paper);
+// The same for the scene meshed with `mesh`: its axial segments as the mesher
+// cuts them, and its chuck bodies and shafts (which can double a chuck
+// scene's DOFs), counted without meshing.
+long estimate_dofs(const Scene& scene, const MeshSpec& mesh);
 
 // Fewest elements along the whole core in a unit mesh (level k = 1) that
 // fit_unit_to_budget goes down to. Every axial segment keeps at least two

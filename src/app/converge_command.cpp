@@ -112,7 +112,7 @@ ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int
     ModelLadder ladder;
     ladder.model = "solid";
     ladder.steps = refinement_ladder(scene, unit, o.first, o.levels);
-    const long finest = estimate_dofs(ladder.steps.back().mesh, scene.rest_paper.has_value());
+    const long finest = estimate_dofs(scene, ladder.steps.back().mesh);
     if (o.unit && o.max_dofs > 0 && finest > o.max_dofs)
         budget_note = "the finest level (estimated " + std::to_string(finest) + " DOFs) exceeds --max-dofs " +
                       std::to_string(o.max_dofs) + "; --unit was taken as given";

@@ -27,18 +27,6 @@ constexpr double kGeometryTolerance = 1e-6;
 // with ~80, and keeps the middle elements short enough for higher modes.
 constexpr double kClampEdgeGradingRatio = 8.0;
 
-// Half-width of the O-grid's centre square (corner distance from the axis)
-// as a share of the innermost ring radius: 0.5 keeps the ring elements and
-// the square's elements of similar size and shape.
-constexpr double kOGridCoreShare = 0.5;
-
-// Radial over circumferential size allowed in the chuck disc's rings. Steel
-// 100-1000 times stiffer than the paper deforms smoothly: its section stays
-// nearly plane, so one quadratic element across each ring carries it. On
-// case 07 this halves the rings' cells (224 -> 128 a layer) and moves f1 by
-// less than 0.01 % (docs/performance.md).
-constexpr double kChuckRingAspect = 3.0;
-
 // n element sizes growing geometrically by `ratio` end to end, from small to large.
 std::vector<double> geometric_sizes(int n, double ratio) {
     std::vector<double> sizes(n);
@@ -149,11 +137,7 @@ void chuck_disc(const ChuckBody& c, int n_around, int center, double z, CrossSec
         geo::mesh::setTransfiniteCurve(square.arcs[q], n_quarter + 1);
     }
     out.disc_shaft.push_back(structured_quad({square.arcs[0], square.arcs[1], square.arcs[2], square.arcs[3]}));
-    // Ring elements up to kChuckRingAspect times as wide radially as around.
-    const auto n_across = [&](double r0, double r1) {
-        const double around = M_PI / 2 * r1 / n_quarter;
-        return std::max(1, static_cast<int>(std::ceil((r1 - r0) / (kChuckRingAspect * around) - 1e-9)));
-    };
+    const auto n_across = [&](double r0, double r1) { return chuck_ring_elements(r0, r1, n_around); };
     const Ring shaft = make_ring(center, c.shaft_radius, z, n_quarter);
     for (int tag : annulus(square, shaft, n_across(a, c.shaft_radius))) out.disc_shaft.push_back(tag);
     if (c.body_radius > c.shaft_radius + kGeometryTolerance) {

@@ -70,6 +70,13 @@ bool is_clamp_edge(const Scene& scene, double z) {
     return false;
 }
 
+// Radial over circumferential size allowed in a chuck disc's rings. Steel
+// 100-1000 times stiffer than the paper deforms smoothly: its section stays
+// nearly plane, so one quadratic element across each ring carries it. On
+// case 07 this halves the rings' cells (224 -> 128 a layer) and moves f1 by
+// 0.04 % (docs/chucks.md).
+constexpr double kChuckRingAspect = 3.0;
+
 // Elements along a shaft: five times as long as the elements are wide around
 // the shaft (about the shaft's radius at 32 around; finer levels refine it
 // with the circumference, so a refinement ladder refines the shaft too). The
@@ -112,6 +119,32 @@ AxialGrading grading(const Scene& scene, double z0, double z1) {
 }
 
 }  // namespace
+
+int chuck_ring_elements(double r0, double r1, int n_around) {
+    const double around = 2 * M_PI * r1 / n_around;
+    return std::max(1, static_cast<int>(std::ceil((r1 - r0) / (kChuckRingAspect * around) - 1e-9)));
+}
+
+long count_chuck_hex20_nodes(const TubeSection& s) {
+    // A hex20 layer of a 2D quad mesh with V vertices and E edges has V + E
+    // nodes on its faces and V at its middle (the vertical edges' midpoints).
+    const long t = s.n_around, q = t / 4;
+    long nodes = 0;
+    for (const ChuckBody& c : s.chucks) {
+        const long n_shaft_ring = chuck_ring_elements(kOGridCoreShare * c.shaft_radius, c.shaft_radius, s.n_around);
+        const long n_body_ring = c.body_radius > c.shaft_radius + 1e-9
+                                     ? chuck_ring_elements(c.shaft_radius, c.body_radius, s.n_around)
+                                     : 0;
+        const long v_shaft = (q + 1) * (q + 1) + n_shaft_ring * t, e_shaft = 2 * q * (q + 1) + 2 * n_shaft_ring * t;
+        const long v_body = v_shaft + n_body_ring * t, e_body = e_shaft + 2 * n_body_ring * t;
+        long z_body = 0;
+        for (const AxialSegment& seg : s.segments)
+            if (seg.z_start >= c.z_body_start - 1e-9 && seg.z_end <= c.z_body_end + 1e-9) z_body += seg.n_elements;
+        nodes += (z_body + 1) * (v_body + e_body) + z_body * v_body;
+        nodes += c.n_shaft * (v_shaft + e_shaft) + c.n_shaft * v_shaft;  // its face at the body is the body's
+    }
+    return nodes;
+}
 
 TubeSection make_tube_section(const Scene& scene) {
     TubeSection section;

@@ -53,6 +53,20 @@ struct TubeSection {
     std::vector<std::pair<std::string, std::pair<double, double>>> interfaces;
 };
 
+// Half-width of the O-grid's centre square (corner distance from the axis)
+// as a share of the shaft radius: 0.5 keeps the ring elements and the
+// square's elements of similar size and shape.
+inline constexpr double kOGridCoreShare = 0.5;
+
+// Elements across a ring of a chuck's O-grid between radii r0 < r1, with
+// n_around elements around: one unless the ring is more than
+// kChuckRingAspect times as wide radially as around at r1.
+int chuck_ring_elements(double r0, double r1, int n_around);
+
+// Nodes of the chucks' bodies and shafts in the hex20 mesh tube_model builds
+// from the section, counted without meshing (converge's DOF budget).
+long count_chuck_hex20_nodes(const TubeSection& section);
+
 // Builds the section of the scene's core (and rest paper) with the mesh
 // density of scene.mesh. Segments get elements in proportion to their length,
 // at least kMinElementsPerSegment each, unless scene.mesh.along_per_segment

@@ -38,3 +38,21 @@ TEST_CASE("Clamps at the core ends leave no graded overhang; a free core is unif
     REQUIRE(free.segments.size() == 1);
     CHECK(free.segments[0].grading == AxialGrading::uniform);
 }
+
+TEST_CASE("The chucks' node count without meshing equals gmsh's", "[geometry][chucks]") {
+    // At 48 around the shaft's ring of the O-grid needs two elements across
+    // (half the shaft radius wide, > 3 x the 3.9 mm around); fewer, one.
+    for (int around : {8, 16, 48}) {
+        const Scene s = testing::with_chucks(testing::paper_core(0.5, around, 12), InterfaceKind::spring);
+        const TubeSection section = make_tube_section(s);
+        // The tube by hand: hex20 layers of r elements through, t around and
+        // z along: corner-layer nodes (vertices and mid-edges of the section)
+        // and mid-layer nodes (vertices only).
+        long z = 0;
+        for (const AxialSegment& seg : section.segments) z += seg.n_elements;
+        const long r = section.layers.front().n_elements, t = around;
+        const long tube = t * ((r + 1) * (z + 1) + r * (z + 1) + (r + 1) * (z + 1) + (r + 1) * z);
+        INFO("around " << around);
+        CHECK(tube + count_chuck_hex20_nodes(section) == testing::generated_mesh(s).n_nodes());
+    }
+}
