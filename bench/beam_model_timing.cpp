@@ -67,7 +67,7 @@ double first_bending_hz(const BeamModelResult& r) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     int repeats = 2000, modes = 0;
     BeamModelOptions options;
     std::vector<std::string> files;
@@ -76,7 +76,11 @@ int main(int argc, char** argv) {
         if (a == "--repeats" && i + 1 < argc) repeats = std::atoi(argv[++i]);
         else if (a == "--modes" && i + 1 < argc) modes = std::atoi(argv[++i]);
         else if (a == "--elements" && i + 1 < argc) options.core_elements = std::atoi(argv[++i]);
-        else files.push_back(a);
+        else if (a == "-h" || a == "--help") {
+            std::printf("usage: coremodal_bench_beam [--repeats N] [--modes N] [--elements N] CASE.toml...\n"
+                        "Times the beam model level's evaluation of each case (docs/performance.md).\n");
+            return 0;
+        } else files.push_back(a);
     }
     std::printf("%-40s %5s %5s %8s | %28s | %8s | %s\n", "case", "DOFs", "modes", "f1 [Hz]",
                 "wall p10 / median / p90 [ms]", "CPU [ms]", "modes = 2: wall / CPU [ms]");
@@ -92,4 +96,13 @@ int main(int argc, char** argv) {
                     pair.median, pair.cpu_median);
     }
     return 0;
+}
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "coremodal_bench_beam: %s\n", e.what());
+        return 2;
+    }
 }
