@@ -108,6 +108,30 @@ std::vector<BadCase> bad_cases() {
     };
 }
 
+// The type column of modes.csv, every row.
+std::vector<std::string> mode_types(const fs::path& csv) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);  // header
+    std::vector<std::string> types;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        std::string index, freq, type;
+        std::getline(row, index, ',');
+        std::getline(row, freq, ',');
+        std::getline(row, type, ',');
+        types.push_back(type);
+    }
+    return types;
+}
+
+// The number after "key" : in a summary.json (NaN when the key is missing).
+double json_number(const std::string& json, const std::string& key) {
+    const auto at = json.find("\"" + key + "\"");
+    if (at == std::string::npos) return std::nan("");
+    return std::stod(json.substr(json.find(':', at) + 1));
+}
+
 // Elastic frequencies (Hz) from modes.csv: index,frequency_hz,type,...
 // Rigid modes are left out: their frequencies are round-off (~1e-3 Hz).
 std::vector<double> elastic_frequencies(const fs::path& csv) {
@@ -205,13 +229,15 @@ TEST_CASE("PETSc and SLEPc options pass through to the solver", "[app][cli]") {
     CHECK(r.out.find("tolerance: 1e-09") != std::string::npos);
 }
 
-TEST_CASE("Two MPI ranks give the serial frequencies", "[app][cli][mpi]") {
+TEST_CASE("Two MPI ranks give the serial frequencies", "[app][cli][mpi][hard]") {
+    // Hard case 09: the scene is cases/hard/09-parallel.toml.
     TempDir dir;
-    dir.write("tiny.toml", kTinyCase);
-    const Run serial = run_coremodal(dir, "run tiny.toml -o serial -q --no-plots");
+    const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/hard/09-parallel.toml'";
+    const Run serial = run_coremodal(dir, "run " + case_file + " -o serial -q --no-plots");
+    INFO("serial stdout: " << serial.out << "\nstderr: " << serial.err);
     REQUIRE(serial.exit_code == 0);
     const Run parallel = run_coremodal(
-        dir, "run tiny.toml -o parallel -q --no-plots",
+        dir, "run " + case_file + " -o parallel -q --no-plots",
         "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe ");
     INFO("mpirun stdout: " << parallel.out << "\nstderr: " << parallel.err);
     REQUIRE(parallel.exit_code == 0);
@@ -223,6 +249,16 @@ TEST_CASE("Two MPI ranks give the serial frequencies", "[app][cli][mpi]") {
     // the Krylov basis differ, so the eigenvalues agree to the solver's
     // residual (1e-10 relative in lambda), not bitwise; 1e-8 in f leaves room.
     for (size_t i = 0; i < f1.size(); ++i) CHECK(f2[i] == Approx(f1[i]).epsilon(1e-8));
+    // Both runs proved complete (inertia count) and verified to 1e-8, and
+    // name the modes alike.
+    for (const char* run : {"serial", "parallel"}) {
+        INFO(run);
+        const std::string summary = slurp(dir.path / run / "summary.json");
+        CHECK(summary.find("\"complete\" : true") != std::string::npos);
+        CHECK(json_number(summary, "max_relative_residual") <= 1e-8);
+        CHECK(json_number(summary, "max_orthonormality_error") <= 1e-8);
+    }
+    CHECK(mode_types(dir.path / "parallel" / "modes.csv") == mode_types(dir.path / "serial" / "modes.csv"));
     const std::string summary = slurp(dir.path / "parallel" / "summary.json");
     CHECK(summary.find("\"mpi_ranks\" : 2") != std::string::npos);
 }

@@ -1,6 +1,7 @@
 // Hard cases: strong orthotropy must not make the answer depend on how the
 // unknowns are numbered or how the mesh is turned about the axis, and dense
-// clusters of ovalling modes must come out whole.
+// clusters of ovalling modes must come out whole. Scenes: cases/hard/03 and 06.
+#include "hard/hard_checks.hpp"
 #include "hard/mesh_transforms.hpp"
 #include "verification/tube_scenes.hpp"
 
@@ -20,25 +21,18 @@ using namespace coremodal::testing;
 
 namespace {
 
-// E_z / E_r = 650 and transverse shear 100x below the in-plane shear: far
-// beyond paperboard's already strong orthotropy.
-OrthotropicMaterial extreme_paperboard() {
-    OrthotropicMaterial m;
-    m.name = "extreme";
-    m.E_r = 10e6, m.E_theta = 4e9, m.E_z = 6.5e9;
-    m.G_rtheta = 18e6, m.G_rz = 18e6, m.G_thetaz = 1.8e9;
-    m.nu_rtheta = 0.001, m.nu_rz = 0.001, m.nu_thetaz = 0.3;
-    m.density = 920;
-    return m;
-}
-
 Mesh clamped_tube_mesh(const Scene& s) {
     GmshSession gmsh;
-    build_tube_model(make_tube_section(s), s.supports.clamps, "hex20");
+    build_tube_model(make_tube_section(s), s.supports.clamps, s.mesh.element);
     return read_current_gmsh_mesh("test");
 }
 
-std::vector<double> lowest_eigenvalues(const Mesh& mesh, const OrthotropicMaterial& material, int n) {
+struct Spectrum {
+    std::vector<double> eigenvalues;
+    std::vector<ModeLabel> labels;
+};
+
+Spectrum lowest_modes(const Mesh& mesh, const OrthotropicMaterial& material, int n) {
     std::vector<int> clamped;
     for (const auto& name : {"clamp_left", "clamp_right"})
         for (int node : mesh.node_groups.at(name)) clamped.push_back(node);
@@ -50,40 +44,50 @@ std::vector<double> lowest_eigenvalues(const Mesh& mesh, const OrthotropicMateri
     request.n_modes = n;
     request.lambda_scale = std::pow(2 * M_PI * 100.0, 2);
     const auto solved = solve_modes(sys.K, sys.M, request, [](const std::string&) {});
-    CHECK(solved.verification.complete);
-    CHECK(solved.verification.max_relative_residual < 1e-8);
-    return solved.eigenvalues;
+    check_verified(solved.verification);
+    CHECK(solved.eigenvalues.size() >= static_cast<size_t>(n));
+    return {solved.eigenvalues, labels_of(solved, mesh, dofs, request.lambda_scale)};
 }
 
 }  // namespace
 
 TEST_CASE("Strong orthotropy: frequencies do not depend on the numbering of unknowns or the mesh's rotation",
           "[hard]") {
-    Scene s = clamp_both_ends(steel_tube(0.106, 0.076, 1.0, 2, 16, 16, 8), 0.07);
+    const Scene s = hard_case("03-strong-orthotropy.toml");
+    const auto& material = s.core.material;
+    REQUIRE(material.E_z / material.E_r >= 500);             // the E_z/E_r >= 500
+    REQUIRE(material.G_thetaz / material.G_rz >= 100 - 1e-9);  // transverse shear 100 x below in-plane
     const Mesh mesh = clamped_tube_mesh(s);
-    const auto material = extreme_paperboard();
-    const auto reference = lowest_eigenvalues(mesh, material, 8);
+    const int n = s.analysis.n_modes;
+    const auto reference = lowest_modes(mesh, material, n);
     // The problem is identical; only round-off differs (conditioning ~1e8
     // times machine epsilon leaves eigenvalues equal to ~1e-10).
-    const auto renumbered = lowest_eigenvalues(shuffled(mesh, 7), material, 8);
-    const auto turned = lowest_eigenvalues(rotated(mesh, 0.3), material, 8);
-    REQUIRE(renumbered.size() == reference.size());
-    REQUIRE(turned.size() == reference.size());
-    for (size_t i = 0; i < reference.size(); ++i) {
-        CHECK(renumbered[i] == Approx(reference[i]).epsilon(1e-8));
-        CHECK(turned[i] == Approx(reference[i]).epsilon(1e-8));
+    const auto renumbered = lowest_modes(shuffled(mesh, 7), material, n);
+    const auto turned = lowest_modes(rotated(mesh, 0.3), material, n);
+    REQUIRE(renumbered.eigenvalues.size() == reference.eigenvalues.size());
+    REQUIRE(turned.eigenvalues.size() == reference.eigenvalues.size());
+    for (size_t i = 0; i < reference.eigenvalues.size(); ++i) {
+        CHECK(renumbered.eigenvalues[i] == Approx(reference.eigenvalues[i]).epsilon(1e-8));
+        CHECK(turned.eigenvalues[i] == Approx(reference.eigenvalues[i]).epsilon(1e-8));
     }
+    // Classification stable: the same names whatever the numbering or turn.
+    check_same_labels(renumbered.labels, reference.labels);
+    check_same_labels(turned.labels, reference.labels);
 }
 
 TEST_CASE("Clusters: asking for a number of modes that cuts a degenerate pair returns the whole pair", "[hard]") {
     // A thin free tube: 6 rigid modes, then the n = 2 ovalling pair. Seven
     // modes asked cuts the pair; the solver must return both members.
-    const auto r = solve_quietly(steel_tube(0.100, 0.096, 0.6, 2, 32, 8, 7));
+    const Scene s = hard_case("06-ovalling-clusters.toml");
+    REQUIRE(s.analysis.n_modes == 7);
+    const auto r = solve_quietly(s);
     REQUIRE(r.modes.modes.size() == 8);
-    CHECK(r.modes.verification.complete);
+    check_verified(r.modes.verification);
+    for (int i = 0; i < 6; ++i) CHECK(r.modes.modes[i].label.type == "rigid");
     CHECK(r.modes.modes[6].label.type == "ovalling");
     CHECK(r.modes.modes[7].label.type == "ovalling");
     CHECK(r.modes.modes[6].label.n == 2);
     CHECK(r.modes.modes[7].label.n == 2);
+    CHECK(r.modes.modes[6].label.m == r.modes.modes[7].label.m);
     CHECK(r.modes.modes[7].frequency_hz == Approx(r.modes.modes[6].frequency_hz).epsilon(1e-8));
 }

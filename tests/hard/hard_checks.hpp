@@ -1,0 +1,72 @@
+// What every hard case (issue 5) asserts, and where its scene comes from: a
+// case file in cases/hard/, the same file a user can run.
+#pragma once
+
+#include "assembly/dof_map.hpp"
+#include "eigensolve/modal_solver.hpp"
+#include "mesh/mesh.hpp"
+#include "modes/classify.hpp"
+#include "modes/mode_set.hpp"
+#include "modes/mode_shapes.hpp"
+#include "scene/case_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+namespace coremodal::testing {
+
+// The scene of cases/hard/<file>.
+inline Scene hard_case(const std::string& file) {
+    return parse_case_file(std::string(COREMODAL_SOURCE_DIR) + "/cases/hard/" + file);
+}
+
+// The solver's proof of its answer: no mode missed (the inertia count of the
+// shifted factor equals the modes found below the shift), every pair
+// converged (relative residual) and the set M-orthonormal, both to 1e-8.
+inline void check_verified(const Verification& v) {
+    CHECK(v.complete);
+    CHECK(v.negative_pivots_at_shift == v.modes_below_shift);
+    CHECK(v.max_relative_residual <= 1e-8);
+    CHECK(v.max_orthonormality_error <= 1e-8);
+}
+
+// The nodes of the core and rest paper cells (what run_scene classifies).
+inline std::vector<int> roll_nodes_of(const Mesh& mesh) {
+    std::vector<char> take(mesh.n_nodes(), 0);
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        const std::string& part = mesh.part_names[mesh.cell_part[c]];
+        if (part != "core" && part != "rest_paper") continue;
+        for (int a = 0; a < mesh.nodes_per_cell(); ++a) take[mesh.cell(c)[a]] = 1;
+    }
+    std::vector<int> nodes;
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (take[n]) nodes.push_back(n);
+    return nodes;
+}
+
+// The labels run_scene would give the solved modes on this mesh.
+inline std::vector<ModeLabel> labels_of(const SolvedModes& solved, const Mesh& mesh, const DofMap& dofs,
+                                        double lambda_scale) {
+    const ModeClassifier classifier(mesh, roll_nodes_of(mesh));
+    std::vector<ModeLabel> labels;
+    for (size_t i = 0; i < solved.eigenvalues.size(); ++i)
+        labels.push_back(classifier.classify(gather_node_displacements(solved.vectors[i], mesh, dofs),
+                                             solved.eigenvalues[i], lambda_scale));
+    return labels;
+}
+
+// Two label lists name the same modes: type, wave number n and axial m.
+inline void check_same_labels(const std::vector<ModeLabel>& a, const std::vector<ModeLabel>& b) {
+    REQUIRE(a.size() == b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        INFO("mode " << i + 1 << ": " << a[i].type << " n=" << a[i].n << " m=" << a[i].m << " against " << b[i].type
+                     << " n=" << b[i].n << " m=" << b[i].m);
+        CHECK(a[i].type == b[i].type);
+        CHECK(a[i].n == b[i].n);
+        CHECK(a[i].m == b[i].m);
+    }
+}
+
+}  // namespace coremodal::testing
