@@ -48,9 +48,12 @@ std::vector<double> layer_fractions(const AxialSegment& seg) {
         std::reverse(sizes.begin(), sizes.end());
         break;
     case AxialGrading::toward_both: {
-        // Small at both ends, largest in the middle: two mirrored halves.
+        // Small at both ends, largest in the middle: two mirrored halves,
+        // each graded by the full ratio (as gmsh's "Bump" 1/8 did before the
+        // extruded rebuild; grading each half by only sqrt(8) cost case 02's
+        // default mesh 0.07 % in f1: 61.4823 against 61.4397 Hz).
         const int half = (n + 1) / 2;
-        sizes = geometric_sizes(half, std::sqrt(kClampEdgeGradingRatio));
+        sizes = geometric_sizes(half, kClampEdgeGradingRatio);
         std::vector<double> back(sizes.rbegin() + (n % 2), sizes.rend());
         sizes.insert(sizes.end(), back.begin(), back.end());
         break;
