@@ -119,20 +119,6 @@ double expected_mass(const Scene& s) {
     return m;
 }
 
-// The nodes the classifier looks at: those of the core and rest paper cells.
-std::vector<int> roll_nodes(const Mesh& mesh) {
-    std::vector<char> take(mesh.n_nodes(), 0);
-    for (int c = 0; c < mesh.n_cells(); ++c) {
-        const std::string& part = mesh.part_names[mesh.cell_part[c]];
-        if (part != "core" && part != "rest_paper") continue;
-        for (int a = 0; a < mesh.nodes_per_cell(); ++a) take[mesh.cell(c)[a]] = 1;
-    }
-    std::vector<int> nodes;
-    for (int n = 0; n < mesh.n_nodes(); ++n)
-        if (take[n]) nodes.push_back(n);
-    return nodes;
-}
-
 // Nodes held by the ground (eliminated, or on springs to the ground) and the
 // links that join parts (spring layers, ties): for the "part not held" check.
 struct Holding {

@@ -161,4 +161,17 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
     return label;
 }
 
+std::vector<int> roll_nodes(const Mesh& mesh) {
+    std::vector<char> take(mesh.n_nodes(), 0);
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        const std::string& part = mesh.part_names[mesh.cell_part[c]];
+        if (part != "core" && part != "rest_paper") continue;
+        for (int a = 0; a < mesh.nodes_per_cell(); ++a) take[mesh.cell(c)[a]] = 1;
+    }
+    std::vector<int> nodes;
+    for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (take[n]) nodes.push_back(n);
+    return nodes;
+}
+
 }  // namespace coremodal

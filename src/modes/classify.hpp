@@ -24,6 +24,10 @@ namespace coremodal {
 
 constexpr int kMaxWaveNumber = 8;
 
+// The nodes the classifier looks at: those of the core and rest paper cells
+// (a chuck or shaft bends with the roll but is not what the labels describe).
+std::vector<int> roll_nodes(const Mesh& mesh);
+
 // Geometric data of the nodes reused for every mode of a mesh.
 struct ModeClassifier {
     // Only the nodes in `nodes` (all when empty) are looked at: with chucks,

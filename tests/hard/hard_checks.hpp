@@ -32,24 +32,10 @@ inline void check_verified(const Verification& v) {
     CHECK(v.max_orthonormality_error <= 1e-8);
 }
 
-// The nodes of the core and rest paper cells (what run_scene classifies).
-inline std::vector<int> roll_nodes_of(const Mesh& mesh) {
-    std::vector<char> take(mesh.n_nodes(), 0);
-    for (int c = 0; c < mesh.n_cells(); ++c) {
-        const std::string& part = mesh.part_names[mesh.cell_part[c]];
-        if (part != "core" && part != "rest_paper") continue;
-        for (int a = 0; a < mesh.nodes_per_cell(); ++a) take[mesh.cell(c)[a]] = 1;
-    }
-    std::vector<int> nodes;
-    for (int n = 0; n < mesh.n_nodes(); ++n)
-        if (take[n]) nodes.push_back(n);
-    return nodes;
-}
-
 // The labels run_scene would give the solved modes on this mesh.
 inline std::vector<ModeLabel> labels_of(const SolvedModes& solved, const Mesh& mesh, const DofMap& dofs,
                                         double lambda_scale) {
-    const ModeClassifier classifier(mesh, roll_nodes_of(mesh));
+    const ModeClassifier classifier(mesh, roll_nodes(mesh));
     std::vector<ModeLabel> labels;
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i)
         labels.push_back(classifier.classify(gather_node_displacements(solved.vectors[i], mesh, dofs),
