@@ -171,10 +171,7 @@ Report compute(const BeamOptions& options) {
     }
 
     RestRollSection& sec = r.section;
-    sec.Di = s.core.inner_diameter, sec.Do = s.core.outer_diameter;
-    sec.Ec = s.core.material.E_z, sec.rho_c = s.core.material.density;
-    sec.Dp = s.rest_paper ? s.rest_paper->outer_diameter : sec.Do;
-    if (s.rest_paper) sec.Ep = s.rest_paper->material.E_z, sec.rho_p = s.rest_paper->material.density;
+    sec = rest_roll_section(s);
     if (s.rest_paper && !(sec.Dp > sec.Do))
         throw InputError("rest roll diameter Dp = " + mm(sec.Dp) + " must exceed the core outer diameter Do = " +
                          mm(sec.Do));
@@ -231,13 +228,9 @@ Report compute(const BeamOptions& options) {
         r.koenig_l = r.L, r.koenig_l_source = "insertion depth taken as Li (give --chuck-depth)";
     }
     r.paper_thickness = 0.5 * (sec.Dp - sec.Do);
-    if (r.paper_thickness <= kKoenigThinLimit + 1e-12) {
-        r.koenig_formula = "K-1";
-        r.koenig = koenig_thin_rest_paper(sec.Do, sec.Di, r.koenig_l, sec.Ec, sec.rho_c, r.koenig_factor);
-    } else {
-        r.koenig_formula = "K-2";
-        r.koenig = koenig_thick_rest_paper(sec, r.koenig_l, r.koenig_factor);
-    }
+    const KoenigEstimate koenig = koenig_critical_speed(sec, r.koenig_l, r.koenig_factor);
+    r.koenig_formula = koenig.thin_paper ? "K-1" : "K-2";
+    r.koenig = koenig.speed;
     if (sec.Di > 0.12 && !options.raw.count("koenig-factor"))
         r.notes.push_back("König recommends the experience factor 0.55 for the 150/176 core "
                           "(give --koenig-factor 0.55); 0.66 was fitted to 76 mm cores");

@@ -663,10 +663,10 @@ std::string converge_json(const ConvergeStudy& study) {
                                      {"model_error", e.relative},
                                      {"known_to", e.known_to}});
     toml::array checks;
+    const ModelStudy* solid = nullptr;
+    for (const auto& m : study.models)
+        if (m.model == "solid") solid = &m;
     for (const auto& c : study.checks) {
-        const ModelStudy* solid = nullptr;
-        for (const auto& m : study.models)
-            if (m.model == "solid") solid = &m;
         toml::array modes;
         for (const auto& d : distinct_modes(c.result.modes)) {
             toml::table v{{"id", d.key.text()}, {"frequency_hz", d.frequency_hz}};

@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "common/format.hpp"
 #include "app/converge.hpp"
+#include "app/run_beam.hpp"
 #include "app/run_case.hpp"
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
@@ -164,17 +165,7 @@ LevelRun run_beam_once(const Scene& scene, const MeshStep& step, int unit_elemen
     double peak = reset ? peak_memory_since_reset_mb() : peak_memory_mb();
     MPI_Allreduce(&peak, &run.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     run.complete = beam.verification.complete;
-    for (std::size_t i = 0; i < beam.modes.size(); ++i) {
-        const BeamMode& b = beam.modes[i];
-        Mode m;
-        m.index = static_cast<int>(i) + 1;
-        m.eigenvalue = b.eigenvalue;
-        m.frequency_hz = b.frequency_hz;
-        m.label = b.label;
-        m.relative_residual = b.relative_residual;
-        m.effective_mass = b.effective_mass;
-        run.modes.push_back(std::move(m));
-    }
+    for (std::size_t i = 0; i < beam.modes.size(); ++i) run.modes.push_back(report_mode(beam.modes[i], int(i) + 1));
     return run;
 }
 
@@ -408,11 +399,12 @@ void print_summary(const ConvergeStudy& study, std::ostream& out) {
                 out << "\n";
             }
     }
-    for (const ModelError& e : model_errors(study.models))
+    const std::vector<ModelError> errors = model_errors(study.models);
+    for (const ModelError& e : errors)
         out << "\nmodel error, " << e.model << " " << e.role << ": " << e.model << " converges to "
             << formatted("%.4f", e.f0_hz) << " Hz, the solid to " << formatted("%.4f", e.solid_f0_hz) << " Hz: "
             << formatted("%+.3g", 100 * e.relative) << " %";
-    if (!model_errors(study.models).empty()) out << "\n";
+    if (!errors.empty()) out << "\n";
     out << "\nladders " << formatted("%.1f", study.ladder_time_s) << " s, whole study " << formatted("%.1f", study.total_time_s)
         << " s" << std::endl;
 }

@@ -49,20 +49,6 @@ ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
             "beam network (" + std::to_string(beam.network.beams.size()) + " beams)"};
 }
 
-// A mode as the writers know it; shape: the translations of the network nodes.
-Mode report_mode(const BeamMode& b, int index) {
-    Mode m;
-    m.index = index;
-    m.eigenvalue = b.eigenvalue;
-    m.frequency_hz = b.frequency_hz;
-    m.label = b.label;
-    m.relative_residual = b.relative_residual;
-    m.effective_mass = b.effective_mass;
-    for (Eigen::Index node = 0; node < b.shape.size() / beam_dof::per_node; ++node)
-        for (int d : {beam_dof::ux, beam_dof::uy, beam_dof::uz}) m.shape.push_back(b.shape(beam_dof::per_node * node + d));
-    return m;
-}
-
 Timing timing(const BeamModelTiming& t, double total) {
     Timing out;
     out.mesh = t.build;
@@ -108,6 +94,19 @@ void write_beam_results(const RunReport& report, const BeamModelResult& beam, co
 }
 
 }  // namespace
+
+Mode report_mode(const BeamMode& b, int index) {
+    Mode m;
+    m.index = index;
+    m.eigenvalue = b.eigenvalue;
+    m.frequency_hz = b.frequency_hz;
+    m.label = b.label;
+    m.relative_residual = b.relative_residual;
+    m.effective_mass = b.effective_mass;
+    for (Eigen::Index node = 0; node < b.shape.size() / beam_dof::per_node; ++node)
+        for (int d : {beam_dof::ux, beam_dof::uy, beam_dof::uz}) m.shape.push_back(b.shape(beam_dof::per_node * node + d));
+    return m;
+}
 
 RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     const bool root = mpi_rank() == 0;

@@ -5,8 +5,13 @@
 #pragma once
 
 #include "app/run_case.hpp"
+#include "beam/beam_model.hpp"
 
 namespace coremodal {
+
+// A beam mode as the writers know a mode (index from 1); shape: the
+// translations of the network's nodes.
+Mode report_mode(const BeamMode& mode, int index);
 
 RunReport run_beam_scene(Scene scene, const RunOptions& options);
 

@@ -287,8 +287,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 5. Solve, verify, prove complete. The beam estimate of the first bending
     //    mode sets the shift's scale (and what counts as rigid).
-    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert, ") +
-        (mpi_size(PETSC_COMM_WORLD) == 1 ? "CHOLMOD" : "MUMPS") + "; MUMPS LDL^T for the count)");
+    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
+        shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const BeamSection section = beam_section(scene);
     const double f_scale = euler_bernoulli_first_bending_hz(section, beam_span(scene));
     SolveRequest request;

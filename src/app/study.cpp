@@ -4,6 +4,7 @@
 
 #include "app/run_case.hpp"
 #include "app/study_workers.hpp"
+#include "beam/beam_theory.hpp"
 #include "beam/chuck_calibration.hpp"
 #include "beam/formulas.hpp"
 #include "common/error.hpp"
@@ -93,7 +94,7 @@ void derive_point_values(StudyPoint& p, const Scene& scene, const SweepOptions& 
     p.supports = scene.supports.kind == SupportKind::free      ? "free"
                  : scene.supports.kind == SupportKind::clamped ? "clamped"
                                                                : "chucks";
-    p.diameter_m = scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
+    p.diameter_m = rest_roll_section(scene).Dp;
     if (!p.ok || !p.f1_hz || scene.supports.kind == SupportKind::free) return;  // not in a stand: no k, no v_safe
     p.v_safe_m_s = safe_web_speed(*p.f1_hz, p.diameter_m, options.safe_factor);
     if (const std::optional<ChuckFactorI7> c = chuck_factor_of(scene, *p.f1_hz)) {

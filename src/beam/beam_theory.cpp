@@ -42,6 +42,15 @@ BeamSection tube_beam_section(double d_out, double d_in, const OrthotropicMateri
     return s;
 }
 
+RestRollSection rest_roll_section(const Scene& s) {
+    RestRollSection sec;
+    sec.Di = s.core.inner_diameter, sec.Do = s.core.outer_diameter;
+    sec.Ec = s.core.material.E_z, sec.rho_c = s.core.material.density;
+    sec.Dp = s.rest_paper ? s.rest_paper->outer_diameter : sec.Do;
+    if (s.rest_paper) sec.Ep = s.rest_paper->material.E_z, sec.rho_p = s.rest_paper->material.density;
+    return sec;
+}
+
 BeamSection beam_section(const Scene& scene) {
     BeamSection s = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material);
     if (scene.rest_paper)

@@ -2,6 +2,7 @@
 // set against (DOMAIN.md section 3, formula I-7 with k = 1).
 #pragma once
 
+#include "beam/formulas.hpp"
 #include "scene/scene.hpp"
 
 #include <vector>
@@ -34,6 +35,9 @@ BeamSection tube_beam_section(double d_out, double d_in, const OrthotropicMateri
 
 // The core, plus the rest paper when the scene has one.
 BeamSection beam_section(const Scene& scene);
+
+// The scene's rest roll as the quick formulas see it (Dp = Do without rest paper).
+RestRollSection rest_roll_section(const Scene& scene);
 
 // Cowper's shear coefficient of a hollow circular section (ri/ro = ratio).
 double cowper_hollow_circle(double nu, double radius_ratio);

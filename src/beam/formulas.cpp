@@ -183,6 +183,14 @@ CriticalSpeed koenig_thick_rest_paper(const RestRollSection& s, double l, double
     return c;
 }
 
+KoenigEstimate koenig_critical_speed(const RestRollSection& s, double l, double experience) {
+    KoenigEstimate e;
+    e.thin_paper = 0.5 * (s.Dp - s.Do) <= kKoenigThinLimit + 1e-12;
+    e.speed = e.thin_paper ? koenig_thin_rest_paper(s.Do, s.Di, l, s.Ec, s.rho_c, experience)
+                           : koenig_thick_rest_paper(s, l, experience);
+    return e;
+}
+
 // I-1..I-4.
 double damping_ratio_from_decay(double X0, double XN, double N) {
     require_positive(XN, "amplitude X_N", "");

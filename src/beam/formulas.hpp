@@ -75,6 +75,13 @@ CriticalSpeed koenig_thin_rest_paper(double da, double di, double l, double E, d
 CriticalSpeed koenig_thick_rest_paper(const RestRollSection& s, double l, double experience = 0.66);
 // The rest paper thickness up to which K-1 applies (König): 10 mm.
 constexpr double kKoenigThinLimit = 0.010;
+// König's formula for the section: K-1 up to kKoenigThinLimit of rest paper,
+// else K-2 (thin_paper says which was used).
+struct KoenigEstimate {
+    CriticalSpeed speed;
+    bool thin_paper = true;
+};
+KoenigEstimate koenig_critical_speed(const RestRollSection& s, double l, double experience = 0.66);
 
 // I-1..I-4, damping: relative damping from a free decay over N cycles,
 // zeta = ln(X0/XN)/(2 pi N); requires X0 >= XN > 0 and N > 0.

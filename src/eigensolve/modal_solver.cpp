@@ -47,9 +47,7 @@ PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, cons
     // factor serves. In one process CHOLMOD's METIS ordering gives a smaller
     // factor than Debian's MUMPS (PORD): 30 % less time on a 181k-DOF rest
     // roll (docs/performance.md). In parallel, MUMPS.
-    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, mpi_size(PetscObjectComm((PetscObject)K)) == 1
-                                                     ? MATSOLVERCHOLMOD
-                                                     : MATSOLVERMUMPS));
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PetscObjectComm((PetscObject)K))));
     // Experts override any of the above from the command line (-eps_*, -st_*).
     COREMODAL_PETSC(EPSSetFromOptions(eps));
     return eps;
@@ -158,6 +156,8 @@ std::string format_count_mismatch(long pivots, long found, double sigma) {
 }
 
 }  // namespace
+
+const char* shift_invert_factor_package(MPI_Comm comm) { return mpi_size(comm) == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS; }
 
 long count_eigenvalues_below(Mat K, Mat M, double sigma) {
     PetscMatrix A, F;

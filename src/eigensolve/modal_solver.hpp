@@ -40,6 +40,11 @@ using Progress = std::function<void(const std::string&)>;
 // mode are always included, so a pair is never cut in half.
 SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progress& progress);
 
+// The package that factors K - sigma M for shift-and-invert on `comm`:
+// CHOLMOD in one process (a smaller factor than Debian's MUMPS), MUMPS in
+// parallel. The completeness count always uses MUMPS's LDL^T.
+const char* shift_invert_factor_package(MPI_Comm comm);
+
 // Number of eigenvalues of K x = lambda M x below sigma (Sylvester's law of
 // inertia: negative pivots of the LDL^T factor of K - sigma M).
 long count_eigenvalues_below(Mat K, Mat M, double sigma);

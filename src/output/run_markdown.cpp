@@ -1,5 +1,6 @@
 #include "output/run_markdown.hpp"
 
+#include "beam/beam_theory.hpp"
 #include "beam/formulas.hpp"
 #include "common/format.hpp"
 
@@ -170,18 +171,10 @@ double koenig_length(const Scene& s) {
     return s.supports.clamps[1].z_start - s.supports.clamps[0].z_end;
 }
 
-RestRollSection rest_roll_section(const Scene& s) {
-    RestRollSection sec;
-    sec.Di = s.core.inner_diameter, sec.Do = s.core.outer_diameter, sec.Dp = roll_outer_diameter(s);
-    sec.Ec = s.core.material.E_z, sec.rho_c = s.core.material.density;
-    if (s.rest_paper) sec.Ep = s.rest_paper->material.E_z, sec.rho_p = s.rest_paper->material.density;
-    return sec;
-}
-
 void speed_section(std::ostream& out, const RunReport& r) {
     const Scene& s = r.scene;
     const double f1 = r.beam.fe_first_bending_hz;
-    const double dp = roll_outer_diameter(s);
+    const double dp = rest_roll_section(s).Dp;
     out << "## Speeds\n\n";
     if (s.supports.kind == SupportKind::free) {
         out << "Not given: the scene is free–free, and the safe and critical speeds are for the roll in its "
@@ -203,12 +196,10 @@ void speed_section(std::ostream& out, const RunReport& r) {
 
     const double l = koenig_length(s);
     if (!(l > 0)) return;
-    const RestRollSection sec = rest_roll_section(s);
-    const double thickness = 0.5 * (dp - s.core.outer_diameter);
-    const bool thin = thickness <= kKoenigThinLimit + 1e-12;
     constexpr double kExperience = 0.66;
-    const CriticalSpeed c = thin ? koenig_thin_rest_paper(sec.Do, sec.Di, l, sec.Ec, sec.rho_c, kExperience)
-                                 : koenig_thick_rest_paper(sec, l, kExperience);
+    const KoenigEstimate koenig = koenig_critical_speed(rest_roll_section(s), l, kExperience);
+    const bool thin = koenig.thin_paper;
+    const CriticalSpeed& c = koenig.speed;
     out << "König's critical speed (" << (thin ? "K-1, rest paper up to 10 mm" : "K-2, rest paper over 10 mm")
         << "; experience factor " << significant(kExperience) << ", l = " << significant(l)
         << " m between the " << (s.supports.kind == SupportKind::chucks ? "chucks' inserted ends" : "clamp zones")
@@ -277,10 +268,6 @@ void notes_section(std::ostream& out, const RunReport& r) {
 }
 
 }  // namespace
-
-double roll_outer_diameter(const Scene& scene) {
-    return scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
-}
 
 std::string run_report_markdown(const RunReport& r, const RunPictures& pictures) {
     std::ostringstream out;

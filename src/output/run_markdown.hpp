@@ -16,10 +16,6 @@ namespace coremodal {
 // range, 0.7 without a safety cage, at most 0.8.
 constexpr double kReportSafeFactors[] = {0.7, 0.8};
 
-// The roll's outer diameter Dp of the speed formulas: the rest paper's outer
-// diameter, or the core's when there is no rest paper.
-double roll_outer_diameter(const Scene& scene);
-
 std::string run_report_markdown(const RunReport& report, const RunPictures& pictures);
 
 }  // namespace coremodal

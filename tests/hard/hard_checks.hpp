@@ -55,4 +55,19 @@ inline void check_same_labels(const std::vector<ModeLabel>& a, const std::vector
     }
 }
 
+// The same problem renumbered and turned about the axis: only round-off
+// differs, so the eigenvalues agree to 1e-8 and the modes keep their names.
+// Solved: anything with .eigenvalues and .labels.
+template <class Solved>
+void check_invariant(const Solved& reference, const Solved& renumbered, const Solved& turned) {
+    REQUIRE(renumbered.eigenvalues.size() == reference.eigenvalues.size());
+    REQUIRE(turned.eigenvalues.size() == reference.eigenvalues.size());
+    for (size_t i = 0; i < reference.eigenvalues.size(); ++i) {
+        CHECK(renumbered.eigenvalues[i] == Approx(reference.eigenvalues[i]).epsilon(1e-8));
+        CHECK(turned.eigenvalues[i] == Approx(reference.eigenvalues[i]).epsilon(1e-8));
+    }
+    check_same_labels(renumbered.labels, reference.labels);
+    check_same_labels(turned.labels, reference.labels);
+}
+
 }  // namespace coremodal::testing

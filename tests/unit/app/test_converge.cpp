@@ -8,6 +8,8 @@
 #include "geometry/tube_section.hpp"
 #include "scene/case_file.hpp"
 
+#include "support/test_modes.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -16,6 +18,7 @@
 #include <vector>
 
 using namespace coremodal;
+using coremodal::testing::mode;
 
 namespace {
 
@@ -23,16 +26,6 @@ std::vector<double> synthetic(const std::vector<double>& h, double f0, double c,
     std::vector<double> f;
     for (double x : h) f.push_back(f0 + c * std::pow(x, p));
     return f;
-}
-
-Mode mode(int index, double f, const std::string& type, int n, int m) {
-    Mode x;
-    x.index = index;
-    x.frequency_hz = f;
-    x.label.type = type;
-    x.label.n = n;
-    x.label.m = m;
-    return x;
 }
 
 LevelResult level(int k, std::vector<Mode> modes) {

@@ -1,20 +1,13 @@
 #include "app/rigid_comparison.hpp"
 
+#include "support/test_modes.hpp"
+
 #include <catch2/catch.hpp>
 
 using namespace coremodal;
+using coremodal::testing::mode;
 
 namespace {
-
-Mode mode(int index, double f, const std::string& type, int n, int m) {
-    Mode x;
-    x.index = index;
-    x.frequency_hz = f;
-    x.label.type = type;
-    x.label.n = n;
-    x.label.m = m;
-    return x;
-}
 
 }  // namespace
 

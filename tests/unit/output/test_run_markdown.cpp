@@ -5,6 +5,8 @@
 #include "output/run_markdown.hpp"
 #include "output/run_pictures.hpp"
 
+#include "support/test_modes.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
@@ -12,19 +14,9 @@
 #include <string>
 
 using namespace coremodal;
+using coremodal::testing::mode;
 
 namespace {
-
-Mode mode(int index, double f, const std::string& type, int n = 1, int m = 0) {
-    Mode x;
-    x.index = index;
-    x.frequency_hz = f;
-    x.label.type = type;
-    x.label.n = n;
-    x.label.m = m;
-    x.label.dominant_share = 0.9;
-    return x;
-}
 
 RunReport free_tube() {
     RunReport r;
