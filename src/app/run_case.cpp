@@ -4,6 +4,8 @@
 
 #include "app/rigid_comparison.hpp"
 #include "app/run_beam.hpp"
+#include "app/run_harmonic.hpp"
+#include "app/run_steps.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
@@ -35,13 +37,6 @@
 
 namespace coremodal {
 namespace {
-
-struct Printer {
-    bool on;
-    void operator()(const std::string& line) const {
-        if (on) std::cout << "  " << line << std::endl;
-    }
-};
 
 std::vector<std::string> clamp_group_names(const Scene& scene) {
     std::vector<std::string> names;
@@ -83,9 +78,12 @@ Mesh make_mesh(const Scene& scene) {
     return mesh;
 }
 
-std::vector<PartMaterial> part_materials(const Scene& scene, const Mesh& mesh, const std::string& source) {
+}  // namespace
+
+std::vector<PartMaterial> part_materials(const Scene& scene, const std::vector<std::string>& part_names,
+                                         const std::string& source) {
     std::vector<PartMaterial> materials;
-    for (const auto& part : mesh.part_names) {
+    for (const auto& part : part_names) {
         const OrthotropicMaterial* m = nullptr;
         if (part == "core") m = &scene.core.material;
         if (part == "rest_paper" && scene.rest_paper) m = &scene.rest_paper->material;
@@ -99,12 +97,16 @@ std::vector<PartMaterial> part_materials(const Scene& scene, const Mesh& mesh, c
     return materials;
 }
 
+namespace {
+
 std::vector<int> clamped_nodes(const Scene& scene, const Mesh& mesh) {
     std::set<int> nodes;
     for (const auto& name : clamp_group_names(scene))
         for (int n : mesh.node_groups.at(name)) nodes.insert(n);
     return {nodes.begin(), nodes.end()};
 }
+
+}  // namespace
 
 double expected_mass(const Scene& s) {
     auto ring = [](double d_out, double d_in) { return M_PI / 4 * (d_out * d_out - d_in * d_in); };
@@ -118,6 +120,8 @@ double expected_mass(const Scene& s) {
     }
     return m;
 }
+
+namespace {
 
 // Nodes held by the ground (eliminated, or on springs to the ground) and the
 // links that join parts (spring layers, ties): for the "part not held" check.
@@ -239,6 +243,7 @@ RunReport run_case(const RunOptions& options) {
 
 RunReport run_scene(Scene scene_in, const RunOptions& options) {
     if (scene_in.model == "beam") return run_beam_scene(std::move(scene_in), options);  // app/run_beam.cpp
+    if (scene_in.model == "harmonic") return run_harmonic_scene(std::move(scene_in), options);  // app/run_harmonic.cpp
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;
@@ -246,8 +251,6 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     report.mpi_ranks = mpi_size();
     report.scene = std::move(scene_in);
     const Scene& scene = report.scene;
-    const std::filesystem::path out_dir =
-        options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / scene.name;
 
     // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).
     say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
@@ -281,7 +284,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 4. Assemble K and M.
     say("[3/7] assembling stiffness and mass");
-    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh, mesh_source), dofs, chucks.couplings);
+    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh.part_names, mesh_source), dofs, chucks.couplings);
     report.model.mass_kg = system.model_mass;
     report.timing_s.assemble = stage.lap();
 
@@ -336,6 +339,17 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     }
     report.timing_s.classify = stage.lap();
 
+    finish_run(report, mesh, options, total, stage);
+    return report;
+}
+
+void finish_run(RunReport& report, const Mesh& mesh, const RunOptions& options, const Stopwatch& total,
+                Stopwatch& stage) {
+    const bool root = mpi_rank() == 0;
+    const Printer say{root && !options.quiet};
+    const Scene& scene = report.scene;
+    const std::filesystem::path out_dir =
+        options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / scene.name;
     // 7. Compare with beam theory.
     say("[6/7] comparing with beam theory");
     report.beam = compare_with_beam(scene, report.modes.modes);
@@ -367,7 +381,6 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
         say("[7/7] writing " + out_dir.string());
         write_results(report, mesh, out_dir, options.plots);
     }
-    return report;
 }
 
 }  // namespace coremodal

@@ -18,56 +18,6 @@ namespace geo = gmsh::model::geo;
 // Cores are millimetres thick; a micrometre separates every real boundary.
 constexpr double kGeometryTolerance = 1e-6;
 
-// Size ratio of the largest to the smallest element of a segment graded
-// towards clamp edges. Measured on case 02 (3 through the wall, 32 around;
-// f1 with 24 / 48 / 96 elements along): uniform 62.018 / 61.687 / 61.479 Hz,
-// ratio 4: 61.649 / 61.493 / 61.391 Hz, ratio 8: 61.545 / 61.455 / 61.377 Hz,
-// ratio 16: 61.489 / 61.439 Hz. The clamp edge is singular, so every mesh
-// converges slowly; grading by 8 gives with 24 elements what uniform gives
-// with ~80, and keeps the middle elements short enough for higher modes.
-constexpr double kClampEdgeGradingRatio = 8.0;
-
-// n element sizes growing geometrically by `ratio` end to end, from small to large.
-std::vector<double> geometric_sizes(int n, double ratio) {
-    std::vector<double> sizes(n);
-    const double step = n > 1 ? std::pow(ratio, 1.0 / (n - 1)) : 1.0;
-    for (int i = 0; i < n; ++i) sizes[i] = std::pow(step, i);
-    return sizes;
-}
-
-// Element boundaries of a segment as fractions of its length (after the
-// start, ending with 1): what gmsh's extrusion takes as layer heights.
-std::vector<double> layer_fractions(const AxialSegment& seg) {
-    std::vector<double> sizes;
-    const int n = seg.n_elements;
-    switch (seg.grading) {
-    case AxialGrading::uniform: sizes.assign(n, 1.0); break;
-    case AxialGrading::toward_start: sizes = geometric_sizes(n, kClampEdgeGradingRatio); break;
-    case AxialGrading::toward_end:
-        sizes = geometric_sizes(n, kClampEdgeGradingRatio);
-        std::reverse(sizes.begin(), sizes.end());
-        break;
-    case AxialGrading::toward_both: {
-        // Small at both ends, largest in the middle: two mirrored halves,
-        // each graded by the full ratio (as gmsh's "Bump" 1/8 did before the
-        // extruded rebuild; grading each half by only sqrt(8) cost case 02's
-        // default mesh 0.07 % in f1: 61.4823 against 61.4397 Hz).
-        const int half = (n + 1) / 2;
-        sizes = geometric_sizes(half, kClampEdgeGradingRatio);
-        std::vector<double> back(sizes.rbegin() + (n % 2), sizes.rend());
-        sizes.insert(sizes.end(), back.begin(), back.end());
-        break;
-    }
-    }
-    double total = 0;
-    for (double s : sizes) total += s;
-    std::vector<double> fractions;
-    double sum = 0;
-    for (double s : sizes) fractions.push_back((sum += s) / total);
-    fractions.back() = 1.0;
-    return fractions;
-}
-
 // A quarter of a ring of radius r at height z, from angle q * 90 degrees.
 struct Ring {
     int center = 0;
@@ -209,7 +159,7 @@ PartVolumes build_volumes(const TubeSection& s) {
     }
     const double tol = kGeometryTolerance;
     for (const AxialSegment& seg : s.segments) {
-        const std::vector<double> fractions = layer_fractions(seg);
+        const std::vector<double> fractions = segment_layer_fractions(seg);
         const double dz = seg.z_end - seg.z_start;
         for (ChuckState& c : chucks) {
             if (c.started || std::abs(c.body->z_body_start - seg.z_start) > tol) continue;
@@ -221,7 +171,7 @@ PartVolumes build_volumes(const TubeSection& s) {
             if (c.body->shaft_below) {  // the shaft hangs from the body's start face
                 std::vector<int> start_face = c.shaft;
                 extrude_into(start_face, "chuck_" + c.body->name, -c.body->shaft_length,
-                             layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
+                             segment_layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
             }
         }
         // Tube layers: extruded one part at a time so volumes know their part.
@@ -240,7 +190,7 @@ PartVolumes build_volumes(const TubeSection& s) {
                 c.done = true;
                 if (!c.body->shaft_below)
                     extrude_into(c.shaft, part, c.body->shaft_length,
-                                 layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
+                                 segment_layer_fractions({0, c.body->shaft_length, c.body->n_shaft}), volumes);
             }
         }
     }

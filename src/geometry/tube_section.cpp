@@ -118,7 +118,55 @@ AxialGrading grading(const Scene& scene, double z0, double z1) {
     return AxialGrading::uniform;
 }
 
+// Size ratio of the largest to the smallest element of a segment graded
+// towards clamp edges. Measured on case 02 (3 through the wall, 32 around;
+// f1 with 24 / 48 / 96 elements along): uniform 62.018 / 61.687 / 61.479 Hz,
+// ratio 4: 61.649 / 61.493 / 61.391 Hz, ratio 8: 61.545 / 61.455 / 61.377 Hz,
+// ratio 16: 61.489 / 61.439 Hz. The clamp edge is singular, so every mesh
+// converges slowly; grading by 8 gives with 24 elements what uniform gives
+// with ~80, and keeps the middle elements short enough for higher modes.
+constexpr double kClampEdgeGradingRatio = 8.0;
+
+// n element sizes growing geometrically by `ratio` end to end, from small to large.
+std::vector<double> geometric_sizes(int n, double ratio) {
+    std::vector<double> sizes(n);
+    const double step = n > 1 ? std::pow(ratio, 1.0 / (n - 1)) : 1.0;
+    for (int i = 0; i < n; ++i) sizes[i] = std::pow(step, i);
+    return sizes;
+}
+
 }  // namespace
+
+std::vector<double> segment_layer_fractions(const AxialSegment& seg) {
+    std::vector<double> sizes;
+    const int n = seg.n_elements;
+    switch (seg.grading) {
+    case AxialGrading::uniform: sizes.assign(n, 1.0); break;
+    case AxialGrading::toward_start: sizes = geometric_sizes(n, kClampEdgeGradingRatio); break;
+    case AxialGrading::toward_end:
+        sizes = geometric_sizes(n, kClampEdgeGradingRatio);
+        std::reverse(sizes.begin(), sizes.end());
+        break;
+    case AxialGrading::toward_both: {
+        // Small at both ends, largest in the middle: two mirrored halves,
+        // each graded by the full ratio (as gmsh's "Bump" 1/8 did before the
+        // extruded rebuild; grading each half by only sqrt(8) cost case 02's
+        // default mesh 0.07 % in f1: 61.4823 against 61.4397 Hz).
+        const int half = (n + 1) / 2;
+        sizes = geometric_sizes(half, kClampEdgeGradingRatio);
+        std::vector<double> back(sizes.rbegin() + (n % 2), sizes.rend());
+        sizes.insert(sizes.end(), back.begin(), back.end());
+        break;
+    }
+    }
+    double total = 0;
+    for (double s : sizes) total += s;
+    std::vector<double> fractions;
+    double sum = 0;
+    for (double s : sizes) fractions.push_back((sum += s) / total);
+    fractions.back() = 1.0;
+    return fractions;
+}
 
 int chuck_ring_elements(double r0, double r1, int n_around) {
     const double around = 2 * M_PI * r1 / n_around;

@@ -53,6 +53,11 @@ struct TubeSection {
     std::vector<std::pair<std::string, std::pair<double, double>>> interfaces;
 };
 
+// Element boundaries of a segment as fractions of its length (after the
+// start, ending with 1), graded as seg.grading says: the layer heights of the
+// solid's extrusion and the axial nodes of the harmonic section mesh.
+std::vector<double> segment_layer_fractions(const AxialSegment& seg);
+
 // Half-width of the O-grid's centre square (corner distance from the axis)
 // as a share of the shaft radius: 0.5 keeps the ring elements and the
 // square's elements of similar size and shape.

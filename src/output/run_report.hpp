@@ -21,6 +21,8 @@ struct ModelInfo {
     double mass_kg = 0;           // sum of rho V over the cells
     double expected_mass_kg = 0;  // from the scene's dimensions (generated meshes)
     std::string mesh_source;      // "generated" or the user's .msh path
+    // Harmonic level: per wave number n its DOFs, modes and inertia count; "" otherwise.
+    std::string harmonics;
 };
 
 struct BeamComparison {

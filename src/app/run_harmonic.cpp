@@ -1,0 +1,341 @@
+// The harmonic model level reads like run_case: numbered steps, each one
+// stage of the pipeline, with one eigenproblem per wave number n in step 4.
+#include "app/run_harmonic.hpp"
+
+#include "app/run_steps.hpp"
+#include "assembly/chuck_supports.hpp"
+#include "assembly/harmonic_system.hpp"
+#include "beam/beam_theory.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "eigensolve/modal_solver.hpp"
+#include "geometry/section_mesh.hpp"
+#include "modes/classify.hpp"
+#include "modes/mac.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coremodal {
+namespace {
+
+// Harmonics above the last one with modes in the band are checked by their
+// inertia until this many in a row have none: the lowest eigenvalue of a
+// tube's harmonic grows with n once ring bending (~n^4) dominates, so two
+// empty harmonics in a row end the search (docs/harmonic.md).
+constexpr int kEmptyHarmonicsToStop = 2;
+// Far beyond any physical band of a roll: reaching it means a wrong input.
+constexpr int kMaxHarmonic = 64;
+
+void require_axisymmetric(const Scene& scene) {
+    const std::string where = scene.source_file + ": model = \"harmonic\"";
+    if (scene.mesh.file)
+        throw InputError(where + " with a [mesh] file: the harmonic level meshes the scene's own r-z section; "
+                                 "expected no [mesh] file, or model = \"solid\"");
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding)
+            if (e.segments > 0)
+                throw InputError(where + ": the " + chuck.name + " chuck's expanding element at " +
+                                 significant(e.center * 1e3) + " mm has " + std::to_string(e.segments) +
+                                 " segments, which are not axisymmetric; expected full bands, or model = \"solid\"");
+}
+
+// One harmonic's verified modes, values gathered on rank 0.
+struct HarmonicModes {
+    int n = 0;
+    HarmonicDofs dofs;
+    std::vector<double> eigenvalues, residuals;
+    std::vector<std::vector<double>> vectors;
+    std::vector<std::array<double, 3>> gamma;  // x^T M r for r = x, z, rz (RigidMotion order)
+    Verification verification;
+    bool solved = false;    // false: only counted (no eigenvalue below the band edge)
+    long count_below = 0;   // when only counted
+    double assemble_s = 0, solve_s = 0;
+};
+
+PetscVector petsc_vector(Mat like, const std::vector<double>& values) {
+    PetscVector r, Mr;
+    COREMODAL_PETSC(MatCreateVecs(like, r.out(), Mr.out()));
+    PetscInt lo, hi;
+    COREMODAL_PETSC(VecGetOwnershipRange(r, &lo, &hi));
+    PetscScalar* v;
+    COREMODAL_PETSC(VecGetArray(r, &v));
+    for (PetscInt i = lo; i < hi; ++i) v[i - lo] = values[i];
+    COREMODAL_PETSC(VecRestoreArray(r, &v));
+    COREMODAL_PETSC(MatMult(like, r, Mr));
+    return Mr;
+}
+
+HarmonicModes solve_harmonic(HarmonicSystem& system, const SectionMesh& section, const SolveRequest& request) {
+    HarmonicModes h;
+    h.n = system.n;
+    h.dofs = system.dofs;
+    h.solved = true;
+    SolvedModes solved = solve_modes(system.K, system.M, request, [](const std::string&) {});
+    h.eigenvalues = solved.eigenvalues;
+    h.residuals = solved.relative_residuals;
+    h.verification = solved.verification;
+    std::array<PetscVector, 3> M_r;
+    for (int d = 0; d < 3; ++d)
+        M_r[d] = petsc_vector(system.M, harmonic_rigid_field(section, system.dofs, system.n, static_cast<RigidMotion>(d)));
+    for (const PetscVector& x : solved.vectors) {
+        std::array<double, 3> g{};
+        for (int d = 0; d < 3; ++d) COREMODAL_PETSC(VecDot(x, M_r[d], &g[d]));
+        h.gamma.push_back(g);
+        h.vectors.push_back(gather_to_root(x));
+    }
+    return h;
+}
+
+// A mode of the 3D body: harmonic h's k-th pair turned by `phase` (0, or
+// pi / 2n for the second member of a pair).
+struct Pick {
+    double lambda;
+    int h, k;
+    double phase;
+};
+
+std::vector<Pick> merged_picks(const std::vector<HarmonicModes>& harmonics) {
+    std::vector<Pick> picks;
+    for (size_t h = 0; h < harmonics.size(); ++h)
+        for (size_t k = 0; k < harmonics[h].eigenvalues.size(); ++k) {
+            const int n = harmonics[h].n;
+            picks.push_back({harmonics[h].eigenvalues[k], static_cast<int>(h), static_cast<int>(k), 0.0});
+            if (n > 0) picks.push_back({harmonics[h].eigenvalues[k], static_cast<int>(h), static_cast<int>(k), M_PI / (2 * n)});
+        }
+    std::stable_sort(picks.begin(), picks.end(), [](const Pick& a, const Pick& b) { return a.lambda < b.lambda; });
+    return picks;
+}
+
+// The n_modes-th lowest 3D eigenvalue so far (pairs counted twice), or none yet.
+std::optional<double> band_edge(const std::vector<HarmonicModes>& harmonics, int n_modes) {
+    const std::vector<Pick> picks = merged_picks(harmonics);
+    if (static_cast<int>(picks.size()) < n_modes) return std::nullopt;
+    return picks[n_modes - 1].lambda;
+}
+
+// The displacement of every node of the revolved mesh (and the frame nodes
+// after them) for one pick.
+std::vector<double> revolved_shape(const RevolvedMesh& revolved, const HarmonicModes& h, int k, double phase,
+                                   const std::vector<int>& frame_nodes) {
+    const std::vector<double>& x = h.vectors[k];
+    const auto value = [&](int component) {
+        const int d = h.dofs.of_component[component];
+        return d < 0 ? 0.0 : x[d];
+    };
+    std::vector<double> u(3 * static_cast<size_t>(revolved.mesh.n_nodes()), 0.0);
+    for (size_t i = 0; i < revolved.section_node.size(); ++i) {
+        const int s = revolved.section_node[i];
+        const double theta = revolved.theta[i], a = h.n * (theta - phase);
+        const double c = std::cos(a), sn = h.n == 0 ? 1.0 : std::sin(a);
+        const double ur = value(3 * s) * c, ut = -value(3 * s + 1) * sn, uz = value(3 * s + 2) * c;
+        u[3 * i] = ur * std::cos(theta) - ut * std::sin(theta);
+        u[3 * i + 1] = ur * std::sin(theta) + ut * std::cos(theta);
+        u[3 * i + 2] = uz;
+    }
+    for (size_t f = 0; f < frame_nodes.size(); ++f) {
+        if (frame_nodes[f] < 0 || h.dofs.frame[f] < 0) continue;
+        const double X = x[h.dofs.frame[f]];
+        const size_t i = 3 * static_cast<size_t>(frame_nodes[f]);
+        if (h.n == 1) {
+            u[i] = X * std::cos(phase);
+            u[i + 1] = X * std::sin(phase);
+        } else {
+            u[i + 2] = X;
+        }
+    }
+    return u;
+}
+
+// The frame nodes add_frame_nodes made, per scene chuck (-1: no frame mass).
+std::vector<int> frame_nodes_of(const Scene& scene, const Mesh& mesh) {
+    std::vector<int> nodes;
+    for (const ChuckSpec& chuck : scene.supports.chucks) {
+        const auto it = mesh.node_groups.find("frame_" + chuck.name);
+        nodes.push_back(it == mesh.node_groups.end() ? -1 : it->second.at(0));
+    }
+    return nodes;
+}
+
+std::string harmonics_text(const std::vector<HarmonicModes>& harmonics) {
+    std::string text;
+    for (const HarmonicModes& h : harmonics) {
+        text += (text.empty() ? "" : "; ") + std::string("n=") + std::to_string(h.n) + ": " +
+                std::to_string(h.dofs.n_dofs) + " DOFs, ";
+        if (h.solved)
+            text += std::to_string(h.eigenvalues.size()) + " modes, " +
+                    std::to_string(h.verification.negative_pivots_at_shift) + " eigenvalues below " +
+                    significant(std::sqrt(std::max(h.verification.check_shift, 0.0)) / (2 * M_PI)) + " Hz";
+        else
+            text += std::to_string(h.count_below) + " eigenvalues below the band edge";
+    }
+    return text;
+}
+
+Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
+    Verification v;
+    v.complete = true;
+    v.check_shift = 1e300;
+    for (const HarmonicModes& h : harmonics) {
+        if (!h.solved) {
+            v.complete = v.complete && h.count_below == 0;
+            continue;
+        }
+        const long multiplicity = h.n == 0 ? 1 : 2;
+        v.max_relative_residual = std::max(v.max_relative_residual, h.verification.max_relative_residual);
+        v.max_orthonormality_error = std::max(v.max_orthonormality_error, h.verification.max_orthonormality_error);
+        v.check_shift = std::min(v.check_shift, h.verification.check_shift);
+        v.negative_pivots_at_shift += multiplicity * h.verification.negative_pivots_at_shift;
+        v.modes_below_shift += multiplicity * h.verification.modes_below_shift;
+        v.complete = v.complete && h.verification.complete;
+    }
+    return v;
+}
+
+}  // namespace
+
+RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
+    const bool root = mpi_rank() == 0;
+    const Printer say{root && !options.quiet};
+    Stopwatch total, stage;
+    RunReport report;
+    report.mpi_ranks = mpi_size();
+    report.scene = std::move(scene_in);
+    const Scene& scene = report.scene;
+    require_axisymmetric(scene);
+
+    // 2. Mesh: the r–z section in quad8 cells (and its revolution, for showing the modes).
+    say("[2/7] meshing the r-z section");
+    const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
+    RevolvedMesh revolved = revolve_section(section, scene.mesh.n_around);
+    add_frame_nodes(scene, revolved.mesh);  // as the solid has them, for the frame's motion in the shapes
+    const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved.mesh);
+    const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
+    report.timing_s.mesh = stage.lap();
+
+    // 3-5. Per wave number n: assemble, solve, verify, prove complete; then
+    //      the next n until the band edge is proven clear of higher harmonics.
+    say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
+        " nodes; one eigenproblem per wave number n (SLEPc Krylov-Schur, shift-and-invert with " +
+        shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the counts)");
+    SolveRequest request;
+    request.n_modes = scene.analysis.n_modes;
+    const bool band = scene.analysis.f_max_hz.has_value();
+    if (band) {
+        request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
+        request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
+    }
+    request.lambda_scale = std::pow(2 * M_PI * euler_bernoulli_first_bending_hz(beam_section(scene), beam_span(scene)), 2);
+    request.tolerance = scene.analysis.tolerance;
+    request.max_iterations = scene.analysis.max_iterations;
+
+    std::vector<HarmonicModes> harmonics;
+    double assemble_s = 0, solve_s = 0;
+    int empty_in_a_row = 0;
+    for (int n = 0; empty_in_a_row < kEmptyHarmonicsToStop; ++n) {
+        if (n > kMaxHarmonic)
+            throw SolveError("the harmonic level found modes in the band up to wave number n = " +
+                             std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
+        Stopwatch lap;
+        HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
+        if (n == 0) report.model.mass_kg = system.model_mass;
+        assemble_s += lap.lap();
+        const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, request.n_modes);
+        HarmonicModes h;
+        if (n >= 2 && edge) {
+            // Sylvester's count says how many of this harmonic's modes lie below the edge.
+            const long below = count_eigenvalues_below(system.K, system.M, *edge * (1 + 1e-9));
+            if (below == 0) {
+                h.n = n;
+                h.dofs = system.dofs;
+                h.count_below = 0;
+                harmonics.push_back(std::move(h));
+                ++empty_in_a_row;
+                solve_s += lap.lap();
+                say("      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) +
+                    " DOFs, no mode below the band edge");
+                continue;
+            }
+            if (!band) request.n_modes = static_cast<int>(below);
+        } else if (!band) {
+            request.n_modes = n == 0 ? scene.analysis.n_modes : (scene.analysis.n_modes + 1) / 2;
+        }
+        empty_in_a_row = 0;
+        try {
+            h = solve_harmonic(system, section, request);
+        } catch (const InputError& e) {
+            throw InputError(scene.source_file + ": " + e.what());
+        }
+        solve_s += lap.lap();
+        say("      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) + " DOFs, " +
+            std::to_string(h.eigenvalues.size()) + " modes" +
+            (h.eigenvalues.empty() ? std::string()
+                                   : " from " + significant(std::sqrt(std::max(h.eigenvalues.front(), 0.0)) / (2 * M_PI)) + " Hz") +
+            (h.verification.complete ? "" : " (INCOMPLETE)"));
+        harmonics.push_back(std::move(h));
+    }
+    report.timing_s.assemble = assemble_s;
+    report.timing_s.factor_and_solve = solve_s;
+    stage.lap();
+
+    report.modes.verification = merged_verification(harmonics);
+    int max_dofs = 0;
+    for (const HarmonicModes& h : harmonics) max_dofs = std::max(max_dofs, h.dofs.n_dofs);
+    report.model = {"harmonic",
+                    "quad8",
+                    max_dofs,
+                    section.n_nodes(),
+                    section.n_cells(),
+                    0,
+                    report.model.mass_kg,
+                    expected_mass(scene),
+                    "generated section",
+                    harmonics_text(harmonics)};
+    for (const auto& [name, nodes] : section.node_groups)
+        if (name.rfind("clamp_", 0) == 0) report.model.n_eliminated_nodes += static_cast<long>(nodes.size());
+
+    // 6. Name every mode (on the revolved mesh, with the solid's classifier) and its effective masses.
+    std::vector<Pick> picks = merged_picks(harmonics);
+    say("[5/7] classifying the modes");
+    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
+    const std::optional<ModeSignatureSampler> signature =
+        root ? std::optional<ModeSignatureSampler>(std::in_place, revolved.mesh) : std::nullopt;
+    const double lambda_band_min = request.lambda_min.value_or(-1e300);
+    for (size_t p = 0; p < picks.size(); ++p) {
+        const Pick& pick = picks[p];
+        const HarmonicModes& h = harmonics[pick.h];
+        const bool second_of_pair = h.n > 0 && pick.phase > 0;
+        // Lowest n_modes (a pair never cut in half), or the band.
+        if (!band && static_cast<int>(report.modes.modes.size()) >= scene.analysis.n_modes && !second_of_pair) break;
+        if (band && (pick.lambda > *request.lambda_max ||
+                     (pick.lambda < lambda_band_min &&
+                      std::abs(pick.lambda) > kRigidEigenvalueFraction * request.lambda_scale)))
+            continue;
+        Mode mode;
+        mode.index = static_cast<int>(report.modes.modes.size()) + 1;
+        mode.eigenvalue = pick.lambda;
+        mode.frequency_hz = std::sqrt(std::max(pick.lambda, 0.0)) / (2 * M_PI);
+        mode.relative_residual = h.residuals[pick.k];
+        if (root) {
+            const auto& g = h.gamma[pick.k];
+            if (h.n == 1) {
+                mode.effective_mass.x = g[0] * g[0] * std::pow(std::cos(pick.phase), 2);
+                mode.effective_mass.y = g[0] * g[0] * std::pow(std::sin(pick.phase), 2);
+            }
+            if (h.n == 0) {
+                mode.effective_mass.z = g[1] * g[1];
+                mode.effective_mass.rz = g[2] * g[2];
+            }
+            mode.shape = revolved_shape(revolved, h, pick.k, pick.phase, frame_nodes);
+            mode.label = classifier.classify(mode.shape, pick.lambda, request.lambda_scale);
+            mode.signature = (*signature)(mode.shape);
+        }
+        report.modes.modes.push_back(std::move(mode));
+    }
+    report.timing_s.classify = stage.lap();
+
+    finish_run(report, revolved.mesh, options, total, stage);
+    return report;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,38 @@
+// Steps of `coremodal run` that the solid and harmonic model levels share
+// (app/run_case.cpp, app/run_harmonic.cpp).
+#pragma once
+
+#include "app/run_case.hpp"
+#include "assembly/cell_loop.hpp"
+#include "common/stopwatch.hpp"
+#include "mesh/mesh.hpp"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// Progress lines on standard output, when on.
+struct Printer {
+    bool on;
+    void operator()(const std::string& line) const {
+        if (on) std::cout << "  " << line << std::endl;
+    }
+};
+
+// The material of each named part ("core", "rest_paper", "chuck_<name>");
+// InputError naming `source` for a part the case file gives no material.
+std::vector<PartMaterial> part_materials(const Scene& scene, const std::vector<std::string>& part_names,
+                                         const std::string& source);
+
+// Mass of the roll, chucks, shafts and frames from the scene's dimensions, kg.
+double expected_mass(const Scene& scene);
+
+// Steps 7 and 8 of a run whose modes are named: beam comparison, chuck
+// factor, rigid-clamp variant, console tables, the results folder (the
+// modes' shapes live on `mesh`).
+void finish_run(RunReport& report, const Mesh& mesh, const RunOptions& options, const Stopwatch& total,
+                Stopwatch& stage);
+
+}  // namespace coremodal

@@ -1,0 +1,252 @@
+#include "assembly/harmonic_system.hpp"
+
+#include "assembly/chuck_supports.hpp"  // bearing_z
+#include "common/error.hpp"
+#include "element/harmonic_element.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace coremodal {
+namespace {
+
+// Which components are held, which share a DOF: a union-find over the
+// 3 * n_nodes components, then a numbering of the free representatives.
+class ComponentMap {
+public:
+    explicit ComponentMap(int n_nodes) : parent_(3 * n_nodes), held_(3 * n_nodes, false) {
+        std::iota(parent_.begin(), parent_.end(), 0);
+    }
+    int find(int c) { return parent_[c] == c ? c : parent_[c] = find(parent_[c]); }
+    void tie(int a, int b) { parent_[find(a)] = find(b); }
+    void hold(int c) { held_[c] = true; }
+    HarmonicDofs number() {
+        for (size_t c = 0; c < held_.size(); ++c)
+            if (held_[c]) held_[find(static_cast<int>(c))] = true;
+        HarmonicDofs dofs;
+        dofs.of_component.assign(parent_.size(), -1);
+        std::vector<int> dof_of_root(parent_.size(), -1);
+        for (size_t c = 0; c < parent_.size(); ++c) {
+            const int root = find(static_cast<int>(c));
+            if (held_[root]) continue;
+            if (dof_of_root[root] < 0) dof_of_root[root] = dofs.n_dofs++;
+            dofs.of_component[c] = dof_of_root[root];
+        }
+        return dofs;
+    }
+
+private:
+    std::vector<int> parent_;
+    std::vector<bool> held_;
+};
+
+HarmonicDofs number_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
+    ComponentMap map(mesh.n_nodes());
+    const auto hold_node = [&](int node) {
+        for (int c = 0; c < 3; ++c) map.hold(3 * node + c);
+    };
+    for (const ClampSpec& c : scene.supports.clamps)
+        for (int node : mesh.node_groups.at("clamp_" + c.name)) hold_node(node);
+    for (const ChuckSpec& chuck : scene.supports.chucks) {
+        if (chuck.bearing.rigid)
+            for (const SectionEdge& e : mesh.edge_groups.at("bearing_" + chuck.name))
+                for (int node : e) hold_node(node);
+        if (chuck.interface.kind != InterfaceKind::bonded) continue;
+        const auto& core = mesh.edge_groups.at("interface_" + chuck.name + "_core");
+        const auto& body = mesh.edge_groups.at("interface_" + chuck.name + "_chuck");
+        for (size_t k = 0; k < core.size(); ++k)
+            for (int p = 0; p < 3; ++p)
+                for (int c = 0; c < 3; ++c) map.tie(3 * core[k][p] + c, 3 * body[k][p] + c);
+    }
+    if (const auto axis = mesh.node_groups.find("axis"); axis != mesh.node_groups.end())
+        for (int node : axis->second) {
+            const int u = 3 * node, v = u + 1, w = u + 2;
+            if (n == 0) {
+                map.hold(u);
+                map.hold(v);
+            } else if (n == 1) {
+                map.hold(w);
+                map.tie(v, u);
+            } else {
+                hold_node(node);
+            }
+        }
+    HarmonicDofs dofs = map.number();
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        dofs.frame.push_back(!chuck.bearing.rigid && chuck.bearing.frame_mass && n <= 1 ? dofs.n_dofs++ : -1);
+    return dofs;
+}
+
+// Element matrices gathered as coordinate triplets (PETSc's COO assembly).
+struct Triplets {
+    std::vector<PetscInt> i, j;
+    std::vector<PetscScalar> k, m;
+    void add(const std::vector<int>& dofs, const Eigen::MatrixXd& K, const Eigen::MatrixXd* M) {
+        for (size_t a = 0; a < dofs.size(); ++a)
+            for (size_t b = 0; b < dofs.size(); ++b) {
+                if (dofs[a] < 0 || dofs[b] < 0) continue;
+                i.push_back(dofs[a]);
+                j.push_back(dofs[b]);
+                k.push_back(K(a, b));
+                m.push_back(M ? (*M)(a, b) : 0.0);
+            }
+    }
+};
+
+std::vector<int> component_dofs(const HarmonicDofs& dofs, const int* nodes, int count) {
+    std::vector<int> out;
+    for (int a = 0; a < count; ++a)
+        for (int c = 0; c < 3; ++c) out.push_back(dofs.of_component[3 * nodes[a] + c]);
+    return out;
+}
+
+Eigen::Matrix<double, 3, 2> edge_coords(const SectionMesh& mesh, const SectionEdge& e) {
+    Eigen::Matrix<double, 3, 2> x;
+    for (int p = 0; p < 3; ++p) x.row(p) << mesh.nodes[e[p]][0], mesh.nodes[e[p]][1];
+    return x;
+}
+
+// Core minus chuck over the expanding elements: k_n radially, k_t in the bore's tangent plane.
+void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const HarmonicDofs& dofs, int n, Triplets& t) {
+    const auto& core = mesh.edge_groups.at("interface_" + chuck.name + "_core");
+    const auto& body = mesh.edge_groups.at("interface_" + chuck.name + "_chuck");
+    const Eigen::Vector3d k(chuck.interface.normal_stiffness, chuck.interface.tangential_stiffness,
+                            chuck.interface.tangential_stiffness);
+    for (size_t e = 0; e < core.size(); ++e) {
+        const Eigen::MatrixXd Ke = harmonic_edge_spring(edge_coords(mesh, core[e]), k, n);
+        Eigen::MatrixXd K(18, 18);
+        K << Ke, -Ke, -Ke, Ke;
+        std::vector<int> d = component_dofs(dofs, core[e].data(), 3);
+        const std::vector<int> d_body = component_dofs(dofs, body[e].data(), 3);
+        d.insert(d.end(), d_body.begin(), d_body.end());
+        t.add(d, K, nullptr);
+    }
+}
+
+// Springs spread over the shaft end face as in the solid (chuck_supports.cpp):
+// c_r = k_radial / A on u_r and u_theta, c_z = k_tilt / I on u_z; relative to
+// the frame DOF where there is one (n = 1: U and V follow the frame's
+// sideways motion; n = 0: W its axial motion).
+void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof, const HarmonicDofs& dofs, int n,
+                 Triplets& t) {
+    const auto& edges = mesh.edge_groups.at("bearing_" + chuck.name);
+    // The face's area and second moment about a diameter, from its radial edges.
+    double area = 0, second_moment = 0;
+    for (const SectionEdge& e : edges) {
+        const double r0 = std::min(mesh.nodes[e[0]][0], mesh.nodes[e[1]][0]);
+        const double r1 = std::max(mesh.nodes[e[0]][0], mesh.nodes[e[1]][0]);
+        area += M_PI * (r1 * r1 - r0 * r0);
+        second_moment += M_PI / 4 * (std::pow(r1, 4) - std::pow(r0, 4));
+    }
+    const Eigen::Vector3d c(chuck.bearing.radial_stiffness / area, chuck.bearing.radial_stiffness / area,
+                            chuck.bearing.tilting_stiffness / second_moment);
+    Eigen::VectorXd follow = Eigen::VectorXd::Zero(9);  // face components that move with the frame DOF
+    for (int p = 0; p < 3; ++p) {
+        if (n == 1) follow[3 * p] = follow[3 * p + 1] = 1;
+        if (n == 0) follow[3 * p + 2] = 1;
+    }
+    for (const SectionEdge& e : edges) {
+        const Eigen::Matrix<double, 9, 9> Ke = harmonic_edge_spring(edge_coords(mesh, e), c, n);
+        std::vector<int> d = component_dofs(dofs, e.data(), 3);
+        if (frame_dof < 0) {
+            t.add(d, Ke, nullptr);
+            continue;
+        }
+        Eigen::MatrixXd K(10, 10);  // relative motion u - follow * X: [I, -follow]^T Ke [I, -follow]
+        K.topLeftCorner(9, 9) = Ke;
+        K.topRightCorner(9, 1) = -Ke * follow;
+        K.bottomLeftCorner(1, 9) = -(Ke * follow).transpose();
+        K(9, 9) = follow.dot(Ke * follow);
+        d.push_back(frame_dof);
+        t.add(d, K, nullptr);
+    }
+    if (frame_dof >= 0) {
+        const Eigen::MatrixXd K = Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_stiffness);
+        const Eigen::MatrixXd M = Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_mass);
+        t.add({frame_dof}, K, &M);
+    }
+}
+
+PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const Triplets& t, const std::vector<PetscScalar>& values) {
+    // PETSc may reorder the index arrays it is given: each matrix gets its own copy.
+    std::vector<PetscInt> i = t.i, j = t.j;
+    PetscMatrix A;
+    COREMODAL_PETSC(MatCreate(comm, A.out()));
+    COREMODAL_PETSC(MatSetSizes(A, PETSC_DECIDE, PETSC_DECIDE, n_dofs, n_dofs));
+    COREMODAL_PETSC(MatSetType(A, MATAIJ));
+    COREMODAL_PETSC(MatSetPreallocationCOO(A, static_cast<PetscCount>(i.size()), i.data(), j.data()));
+    COREMODAL_PETSC(MatSetValuesCOO(A, values.data(), ADD_VALUES));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+    return A;
+}
+
+}  // namespace
+
+HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
+                                 const std::vector<PartMaterial>& materials, int n, MPI_Comm comm) {
+    HarmonicSystem system;
+    system.n = n;
+    system.dofs = number_dofs(scene, mesh, n);
+    Triplets t;
+    // The section is small (thousands of nodes): rank 0 computes every
+    // element; PETSc's COO assembly sends the entries to their owners.
+    if (mpi_rank(comm) == 0) {
+        for (int c = 0; c < mesh.n_cells(); ++c) {
+            Quad8Coords x;
+            for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
+            const PartMaterial& mat = materials.at(mesh.cell_part[c]);
+            const HarmonicMatrices e = harmonic_quad8_matrices(x, mat.C_cylindrical, mat.density, n);
+            const Eigen::MatrixXd K = e.K, M = e.M;
+            t.add(component_dofs(system.dofs, mesh.cells[c].data(), 8), K, &M);
+            system.model_mass += e.mass;
+        }
+        for (size_t k = 0; k < scene.supports.chucks.size(); ++k) {
+            const ChuckSpec& chuck = scene.supports.chucks[k];
+            if (chuck.interface.kind == InterfaceKind::spring) add_spring_layer(mesh, chuck, system.dofs, n, t);
+            if (!chuck.bearing.rigid) add_bearing(mesh, chuck, system.dofs.frame[k], system.dofs, n, t);
+            system.model_mass += chuck.bearing.rigid ? 0.0 : chuck.bearing.frame_mass.value_or(0.0);
+        }
+    }
+    MPI_Bcast(&system.model_mass, 1, MPI_DOUBLE, 0, comm);
+    system.K = coo_matrix(comm, system.dofs.n_dofs, t, t.k);
+    system.M = coo_matrix(comm, system.dofs.n_dofs, t, t.m);
+    return system;
+}
+
+std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const HarmonicDofs& dofs, int n, RigidMotion motion) {
+    std::vector<double> r(dofs.n_dofs, 0.0);
+    const int lives_in = motion == RigidMotion::x ? 1 : 0;  // sideways: n = 1; along and about z: n = 0
+    if (n != lives_in) return r;
+    for (int node = 0; node < mesh.n_nodes(); ++node)
+        for (int c = 0; c < 3; ++c) {
+            const int d = dofs.of_component[3 * node + c];
+            if (d < 0) continue;
+            if (motion == RigidMotion::x && c < 2) r[d] = 1;
+            if (motion == RigidMotion::z && c == 2) r[d] = 1;
+            if (motion == RigidMotion::rz && c == 1) r[d] = mesh.nodes[node][0];
+        }
+    for (int d : dofs.frame)
+        if (d >= 0 && motion != RigidMotion::rz) r[d] = 1;  // the frame translates with the body
+    return r;
+}
+
+std::vector<double> gather_to_root(Vec x) {
+    PetscScatter scatter;
+    PetscVector x0;
+    COREMODAL_PETSC(VecScatterCreateToZero(x, scatter.out(), x0.out()));
+    COREMODAL_PETSC(VecScatterBegin(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
+    COREMODAL_PETSC(VecScatterEnd(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
+    std::vector<double> u;
+    if (mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return u;
+    PetscInt size;
+    COREMODAL_PETSC(VecGetSize(x0, &size));
+    const PetscScalar* values;
+    COREMODAL_PETSC(VecGetArrayRead(x0, &values));
+    u.assign(values, values + size);
+    COREMODAL_PETSC(VecRestoreArrayRead(x0, &values));
+    return u;
+}
+
+}  // namespace coremodal

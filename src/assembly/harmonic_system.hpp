@@ -1,0 +1,50 @@
+// K and M of one circumferential wave number n of the axisymmetric-harmonic
+// model (element/harmonic_element.hpp): section cells, rigid clamps and rigid
+// bearings eliminated, bonded chuck interfaces tied, spring layers and
+// bearing springs as ring springs, the frame mass as one extra DOF in the
+// harmonics it moves in (n = 0 along the axis, n = 1 sideways). Nodes on the
+// axis obey the conditions that keep the field single-valued there:
+//   n = 0: U = V = 0;  n = 1: W = 0 and V = U;  n >= 2: U = V = W = 0.
+#pragma once
+
+#include "assembly/cell_loop.hpp"
+#include "common/petsc_handle.hpp"
+#include "geometry/section_mesh.hpp"
+#include "scene/scene.hpp"
+
+#include <vector>
+
+namespace coremodal {
+
+struct HarmonicDofs {
+    // Global DOF of (node, component) at 3 * node + c, or -1 where the
+    // component is held at zero. Tied components share a DOF.
+    std::vector<int> of_component;
+    // Per scene chuck: the DOF of its frame mass in this harmonic, or -1.
+    std::vector<int> frame;
+    int n_dofs = 0;
+};
+
+struct HarmonicSystem {
+    int n = 0;  // circumferential wave number
+    HarmonicDofs dofs;
+    PetscMatrix K, M;
+    double model_mass = 0;  // kg, the revolved cells plus frame masses
+};
+
+// The scene must be axisymmetric (run_harmonic checks: no segmented
+// expanding elements).
+HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
+                                 const std::vector<PartMaterial>& materials, int n,
+                                 MPI_Comm comm = PETSC_COMM_WORLD);
+
+// Rigid-body fields of harmonic n on the DOFs: translation along x (n = 1:
+// U = V = 1), along z (n = 0: W = 1) and rotation about z (n = 0: V = r);
+// all zero in the harmonics they do not live in. For effective masses.
+enum class RigidMotion { x, z, rz };
+std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const HarmonicDofs& dofs, int n, RigidMotion motion);
+
+// x gathered to rank 0 as plain values (empty on other ranks). Collective.
+std::vector<double> gather_to_root(Vec x);
+
+}  // namespace coremodal

@@ -1,0 +1,59 @@
+// The axisymmetric-harmonic element: an 8-node serendipity quadrilateral of
+// the r–z section carrying one circumferential wave number n.
+//
+// A cylindrically orthotropic body of revolution with axisymmetric supports
+// has modes of the form (family "cos"; the "sin" family, turned by pi/2n,
+// has the same frequencies for n >= 1):
+//   u_r = U(r, z) cos n theta,  u_theta = -V(r, z) sin n theta,  u_z = W(r, z) cos n theta
+// and for n = 0 u_theta = -V(r, z) (torsion). Integrating over theta turns
+// the 3D energies into 2D integrals weighted by pi (n >= 1) or 2 pi (n = 0),
+// so each n is an independent 2D problem with the U, V, W of the section
+// nodes as unknowns (Zienkiewicz & Taylor, vol. 1, ch. 9; Bathe, sec. 5.3).
+// The minus sign on V makes a lateral translation X of the n = 1 family read
+// U = V = X, so nodes on the axis are held by plain equalities
+// (docs/harmonic.md).
+//
+// Strains in the Voigt order of material.hpp (rr, tt, zz, tz, rz, rt), with
+// the theta factor of each row dropped (c for rr, tt, zz, rz; s for tz, rt):
+//   e_rr = U,r              e_tt = (U - n V) / r      e_zz = W,z
+//   g_tz = V,z + n W / r    g_rz = U,z + W,r          g_rt = V,r - V / r + n U / r
+// An orthotropic C never couples a c-row with an s-row, so the signs the
+// dropped factors carry cancel in the energy.
+#pragma once
+
+#include "material/material.hpp"
+
+#include <Eigen/Dense>
+
+namespace coremodal {
+
+// Node coordinates (r, z) of a quad8 in gmsh order: corners (-1,-1), (1,-1),
+// (1,1), (-1,1), then mid-edges (0,-1), (1,0), (0,1), (-1,0); xi along r,
+// eta along z for the generated section.
+using Quad8Coords = Eigen::Matrix<double, 8, 2>;
+using Quad8Matrix = Eigen::Matrix<double, 24, 24>;  // node-major (U, V, W)
+
+// Theta integral of cos^2 n theta (and sin^2 for n >= 1): pi, or 2 pi for n = 0.
+double harmonic_weight(int n);
+
+// Quad8 serendipity shape functions and their reference derivatives.
+Eigen::Matrix<double, 8, 1> quad8_values(double xi, double eta);
+Eigen::Matrix<double, 8, 2> quad8_gradients(double xi, double eta);
+
+struct HarmonicMatrices {
+    Quad8Matrix K, M;
+    double mass = 0;  // rho times the revolved volume, kg (the whole ring, any n)
+};
+
+// Stiffness and consistent mass of one section cell for wave number n, full
+// 3 x 3 Gauss integration (the hex20's rule in r and z). Throws SolveError
+// for a cell with a non-positive Jacobian or a node at r < 0.
+HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C, double density, int n);
+
+// A distributed spring along a straight 3-node section edge (ends a, b and
+// middle node m, in the order a, b, m), stiffness per unit revolved area
+// diag(k_r, k_theta, k_z) on (U, V, W): returns the 9 x 9 matrix
+// w_n * int N_a N_b diag(k) r ds.
+Eigen::Matrix<double, 9, 9> harmonic_edge_spring(const Eigen::Matrix<double, 3, 2>& x, const Eigen::Vector3d& k, int n);
+
+}  // namespace coremodal
