@@ -238,6 +238,7 @@ RunReport run_case(const RunOptions& options) {
     if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
     Scene scene = parse_case_file(options.case_file);
     if (options.mesh_level) apply_mesh_level(scene, *options.mesh_level);
+    if (options.model) scene.model = *options.model;
     return run_scene(std::move(scene), options);
 }
 

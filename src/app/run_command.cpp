@@ -8,12 +8,17 @@ Command add_run_command(CLI::App& app) {
     auto options = std::make_shared<RunOptions>();
     auto output = std::make_shared<std::string>();
     auto mesh_level = std::make_shared<std::string>();
+    auto model = std::make_shared<std::string>();
     auto no_plots = std::make_shared<bool>(false);
     CLI::App* cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
     cmd->add_option("case", options->case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
     cmd->add_option("-o,--output", *output, "results folder (default results/<case name>)");
     cmd->add_option("-m,--mesh", *mesh_level,
                     "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
+    cmd->add_option("--model", *model,
+                    "model level, overriding the case's model key: solid (3D), harmonic (axisymmetric scenes, one "
+                    "2D problem per wave number n), beam")
+        ->check(CLI::IsMember({"solid", "harmonic", "beam"}));
     cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or tables");
     cmd->add_flag("--compare-rigid", options->compare_rigid,
                   "with elastic chucks: also run rigid clamps over the expanding elements and list both mode "
@@ -21,10 +26,11 @@ Command add_run_command(CLI::App& app) {
     cmd->add_flag("--no-plots", *no_plots, "do not run python3 for the pictures in report.md");
     cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
                 "they override coremodal's solver defaults.");
-    auto run = [options, output, mesh_level, no_plots] {
+    auto run = [options, output, mesh_level, model, no_plots] {
         options->plots = !*no_plots;
         if (!output->empty()) options->output_dir = *output;
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
+        if (!model->empty()) options->model = *model;
         run_case(*options);
         return 0;
     };

@@ -240,7 +240,7 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
         HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
         if (n == 0) report.model.mass_kg = system.model_mass;
         assemble_s += lap.lap();
-        const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, request.n_modes);
+        const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, scene.analysis.n_modes);
         HarmonicModes h;
         if (n >= 2 && edge) {
             // Sylvester's count says how many of this harmonic's modes lie below the edge.

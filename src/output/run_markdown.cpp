@@ -85,8 +85,11 @@ void model_section(std::ostream& out, const RunReport& r) {
     out << "- model: " << m.level << ", " << m.element << ", " << m.n_elements << " elements, " << m.n_nodes
         << " nodes, " << m.n_dofs << " DOFs (" << m.n_eliminated_nodes << " clamped nodes eliminated); mesh: "
         << m.mesh_source;
-    if (m.level == "solid3d" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
+    if (m.level != "beam" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
     out << "\n";
+    if (!m.harmonics.empty())
+        out << "- one 2D problem per wave number n (modes with n >= 1 come in pairs turned by 90°/n): " << m.harmonics
+            << "\n";
     out << "- mass: model " << significant(m.mass_kg, 6) << " kg, from the dimensions "
         << significant(m.expected_mass_kg, 6) << " kg";
     if (m.expected_mass_kg > 0) out << " (" << formatted("%+.2e", m.mass_kg / m.expected_mass_kg - 1) << ")";

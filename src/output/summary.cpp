@@ -154,7 +154,8 @@ void write_summary_json(const std::string& path, const RunReport& r) {
                               {"n_eliminated_nodes", r.model.n_eliminated_nodes},
                               {"mass_kg", r.model.mass_kg},
                               {"expected_mass_kg", r.model.expected_mass_kg},
-                              {"mesh_source", r.model.mesh_source}}},
+                              {"mesh_source", r.model.mesh_source},
+                              {"harmonics", r.model.harmonics}}},
         {"modes", modes},
         {"verification", toml::table{{"max_relative_residual", v.max_relative_residual},
                                      {"max_orthonormality_error", v.max_orthonormality_error},
@@ -253,6 +254,7 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
                   std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI), v.modes_below_shift,
                   v.complete ? "complete" : "INCOMPLETE");
     out << line;
+    if (!r.model.harmonics.empty()) out << "harmonics (each proven complete by its own count): " << r.model.harmonics << "\n";
     std::snprintf(line, sizeof line, "mass: model %.6g kg, from dimensions %.6g kg\n", r.model.mass_kg,
                   r.model.expected_mass_kg);
     out << line;
