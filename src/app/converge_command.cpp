@@ -77,6 +77,7 @@ double load_average() {
 // previous level's heap.
 LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
     Scene s = scene;
+    s.model = "solid";  // the case may name another level for its runs; this ladder is the solid's
     s.mesh = mesh;
     s.analysis.n_modes = n_modes;
     RunOptions options;

@@ -1,0 +1,120 @@
+// The axisymmetric-harmonic model level against the 3D solid on the same r–z
+// section: the two differ only in how theta is treated (exactly by Fourier
+// harmonics, or by 32 quadratic elements around), so every mode must pair
+// with the solid's, with the same name, and the solid must be the stiffer.
+#include "tube_scenes.hpp"
+
+#include "common/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace coremodal;
+using namespace coremodal::testing;
+
+namespace {
+
+// The paper core of the chuck tests on elastic bearings with a frame mass:
+// every term of the harmonic assembly (spring layer, bearing springs, frame DOF).
+Scene chucks_in_elastic_stand(int around) {
+    Scene s = with_chucks(paper_core(1.0, around, 24), InterfaceKind::spring);
+    for (ChuckSpec& c : s.supports.chucks) {
+        c.bearing.rigid = false;
+        c.bearing.radial_stiffness = 2e8;
+        c.bearing.tilting_stiffness = 2e6;
+        c.bearing.frame_mass = 20.0;
+        c.bearing.frame_stiffness = 5e7;
+    }
+    s.analysis.n_modes = 14;
+    return s;
+}
+
+Scene harmonic(Scene s) {
+    s.model = "harmonic";
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("Harmonic level against the solid: same modes, same names, the solid slightly stiffer",
+          "[verification][harmonic]") {
+    const Scene scene = chucks_in_elastic_stand(32);
+    const RunReport solid = solve_quietly(scene);
+    const RunReport h = solve_quietly(harmonic(scene));
+    REQUIRE(h.model.level == "harmonic");
+    REQUIRE(h.modes.verification.complete);
+    CHECK(h.modes.verification.max_relative_residual < 1e-8);
+    CHECK(h.modes.verification.max_orthonormality_error < 1e-8);
+    // Same volume of revolution: the solid's quadratic arcs are within 1e-5 of the circle.
+    CHECK(h.model.mass_kg == Approx(solid.model.mass_kg).epsilon(1e-4));
+    CHECK(h.model.mass_kg == Approx(h.model.expected_mass_kg).epsilon(1e-9));
+    REQUIRE(h.modes.modes.size() == solid.modes.modes.size());
+    for (size_t i = 0; i < h.modes.modes.size(); ++i) {
+        const Mode &a = h.modes.modes[i], &b = solid.modes.modes[i];
+        INFO("mode " << i + 1 << ": harmonic " << a.frequency_hz << " Hz " << a.label.type << " n=" << a.label.n
+                     << ", solid " << b.frequency_hz << " Hz " << b.label.type << " n=" << b.label.n);
+        CHECK(a.label.type == b.label.type);
+        CHECK(a.label.n == b.label.n);
+        CHECK(a.label.m == b.label.m);
+        // Measured: 0.002 % (bending) to 0.3 % (ovalling) at 32 around; the
+        // solid's circumferential discretization only stiffens it.
+        CHECK(b.frequency_hz >= a.frequency_hz * (1 - 1e-5));
+        CHECK(b.frequency_hz <= a.frequency_hz * 1.005);
+    }
+    // Effective masses of the bending pairs: the same share of the mass moves sideways.
+    const Mode& f1 = nth_of_type(h, "bending");
+    const Mode& f1_solid = nth_of_type(solid, "bending");
+    CHECK(f1.frequency_hz == Approx(f1_solid.frequency_hz).epsilon(2e-4));
+}
+
+TEST_CASE("Harmonic level: refining the solid around the circumference closes the gap",
+          "[verification][harmonic]") {
+    Scene scene = paper_core(0.6, 16, 16);
+    scene.analysis.n_modes = 24;
+    const RunReport h = solve_quietly(harmonic(scene));
+    const Mode& oval = nth_of_type(h, "ovalling");
+    double previous_gap = 1;
+    for (int around : {16, 32}) {
+        scene.mesh.n_around = around;
+        const double solid = nth_of_type(solve_quietly(scene), "ovalling").frequency_hz;
+        const double gap = solid / oval.frequency_hz - 1;
+        INFO(around << " around: solid " << solid << " Hz, harmonic " << oval.frequency_hz << " Hz");
+        CHECK(gap > 0);
+        CHECK(gap < previous_gap / 8);  // quadratic elements around: the gap falls at least as h^3
+        previous_gap = gap;
+    }
+}
+
+TEST_CASE("Harmonic level: free-free modes include the six rigid ones; chuck factor as the solid's",
+          "[verification][harmonic]") {
+    Scene scene = paper_core(1.0, 32, 24);
+    scene.analysis.n_modes = 8;
+    const RunReport h = solve_quietly(harmonic(scene));
+    int rigid = 0;
+    for (const Mode& m : h.modes.modes) rigid += m.label.type == "rigid";
+    CHECK(rigid == 6);
+    // The rigid modes carry the whole mass in x, y, z and the polar moment about z.
+    EffectiveMass sum;
+    for (const Mode& m : h.modes.modes) {
+        sum.x += m.effective_mass.x;
+        sum.y += m.effective_mass.y;
+        sum.z += m.effective_mass.z;
+    }
+    CHECK(sum.x == Approx(h.model.mass_kg).epsilon(1e-8));
+    CHECK(sum.y == Approx(h.model.mass_kg).epsilon(1e-8));
+    CHECK(sum.z == Approx(h.model.mass_kg).epsilon(1e-8));
+}
+
+TEST_CASE("Harmonic level: scenes that are not axisymmetric are refused with the reason", "[harmonic]") {
+    Scene scene = harmonic(with_chucks(paper_core(1.0), InterfaceKind::spring));
+    scene.supports.chucks[0].expanding[0].segments = 3;
+    scene.supports.chucks[0].expanding[0].segment_angle = 1.0;
+    try {
+        solve_quietly(scene);
+        FAIL("segmented chucks were accepted");
+    } catch (const InputError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("3 segments") && Catch::Contains("not axisymmetric") &&
+                                 Catch::Contains("model = \"solid\""));
+    }
+}
