@@ -132,3 +132,36 @@ TEST_CASE("Every hard case file parses, and `coremodal batch cases/` does not pi
         CHECK(file.find("/hard/") == std::string::npos);
     }
 }
+
+TEST_CASE("Every hard case at the harmonic level: verified, complete, six rigid modes where free", "[hard][harmonic]") {
+    for (const char* file : {"01-thin-wall.toml", "02-very-slender.toml", "03-strong-orthotropy.toml",
+                             "04-stiffness-contrast.toml", "05-free-free.toml", "06-ovalling-clusters.toml",
+                             "07-near-mechanism-soft-chuck.toml", "07b-rest-paper-cut-loose.toml",
+                             "08-units-si.toml"}) {
+        INFO(file);
+        Scene scene = hard_case(file);
+        scene.model = "harmonic";
+        const RunReport r = solve_quietly(scene);
+        REQUIRE(r.model.level == "harmonic");
+        check_verified(r.modes.verification);
+        REQUIRE(r.modes.modes.size() >= static_cast<size_t>(scene.analysis.n_modes));
+        int rigid = 0;
+        for (const Mode& m : r.modes.modes) rigid += m.label.type == "rigid";
+        CHECK(rigid == (scene.supports.kind == SupportKind::free ? 6 : 0));
+        // Pairs: every mode with n >= 1 has a partner at the same frequency.
+        for (size_t i = 0; i < r.modes.modes.size(); ++i) {
+            const Mode& m = r.modes.modes[i];
+            if (m.label.type == "rigid" || m.label.n == 0) continue;
+            const bool paired = (i > 0 && r.modes.modes[i - 1].eigenvalue == m.eigenvalue) ||
+                                (i + 1 < r.modes.modes.size() && r.modes.modes[i + 1].eigenvalue == m.eigenvalue);
+            CHECK(paired);
+        }
+    }
+    // Units at the harmonic level: mm/MPa strings and SI numbers, identical.
+    Scene a = hard_case("08-units-mm-mpa.toml"), b = hard_case("08-units-si.toml");
+    a.model = b.model = "harmonic";
+    const RunReport ra = solve_quietly(a), rb = solve_quietly(b);
+    REQUIRE(ra.modes.modes.size() == rb.modes.modes.size());
+    for (size_t i = 0; i < ra.modes.modes.size(); ++i)
+        CHECK(ra.modes.modes[i].frequency_hz == Approx(rb.modes.modes[i].frequency_hz).epsilon(1e-12));
+}
