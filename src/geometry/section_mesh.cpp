@@ -139,7 +139,7 @@ void mesh_chuck(const TubeSection& s, const ChuckBody& c, SectionMesh& mesh) {
         const bool in_body = within(z0, z1, c.z_body_start, c.z_body_end);
         for (int ci = 0; ci < block.cells_r(); ++ci)
             if (in_body || ci < n_shaft_r) block.add_cell(ci, cj, part);
-        if (!in_body || !has_outer) continue;
+        if (!in_body) continue;
         for (const auto& [chuck, zone] : s.interfaces)
             if (chuck == c.name && within(z0, z1, zone.first, zone.second))
                 mesh.edge_groups["interface_" + chuck + "_chuck"].push_back(block.edge_along_z(2 * block.cells_r(), cj));

@@ -88,3 +88,16 @@ TEST_CASE("Section mesh: interfaces face each other, the axis is at r = 0; its r
     CHECK(axis_3d.size() == section.node_groups.at("axis").size());
     for (const auto& x : revolved.mesh.nodes) CHECK(std::isfinite(x[0] + x[1] + x[2]));
 }
+
+TEST_CASE("Section mesh: a chuck whose shaft is as wide as its body still faces the core over its band",
+          "[geometry][harmonic]") {
+    Scene s = chuck_scene();
+    for (ChuckSpec& c : s.supports.chucks) c.shaft_diameter = c.body_diameter;
+    const SectionMesh section = make_section_mesh(make_tube_section(s), s.supports.clamps);
+    for (const std::string end : {"left", "right"}) {
+        REQUIRE(section.edge_groups.count("interface_" + end + "_chuck") == 1);
+        const auto& chuck = section.edge_groups.at("interface_" + end + "_chuck");
+        CHECK(chuck.size() == section.edge_groups.at("interface_" + end + "_core").size());
+        for (const auto& e : chuck) CHECK(section.nodes[e[0]][0] == Approx(s.supports.chucks[0].body_diameter / 2));
+    }
+}
