@@ -83,7 +83,8 @@ void model_section(std::ostream& out, const RunReport& r) {
     const Verification& v = r.modes.verification;
     out << "## Model and verification\n\n";
     out << "- model: " << m.level << ", " << m.element << ", " << m.n_elements << " elements, " << m.n_nodes
-        << " nodes, " << m.n_dofs << " DOFs (" << m.n_eliminated_nodes << " clamped nodes eliminated); mesh: "
+        << " nodes, " << m.n_dofs << (m.level == "harmonic" ? " DOFs per wave number n (" : " DOFs (")
+        << m.n_eliminated_nodes << " clamped nodes eliminated); mesh: "
         << m.mesh_source;
     if (m.level != "beam" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
     out << "\n";
