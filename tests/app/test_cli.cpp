@@ -263,3 +263,21 @@ TEST_CASE("Two MPI ranks give the serial frequencies, at the solid and the harmo
         CHECK(summary.find("\"mpi_ranks\" : 2") != std::string::npos);
     }
 }
+
+TEST_CASE("run --model harmonic overrides the case's level; an unknown level is refused", "[app][cli][harmonic]") {
+    TempDir dir;
+    const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/02-clamped-76x15.toml'";
+    const Run r = run_coremodal(dir, "run " + case_file + " -o out -q --no-plots --model harmonic");
+    INFO("stderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string summary = slurp(dir.path / "out" / "summary.json");
+    CHECK(summary.find("\"level\" : \"harmonic\"") != std::string::npos);
+    CHECK(summary.find("\"harmonics\" : \"n=0:") != std::string::npos);
+    CHECK(std::filesystem::exists(dir.path / "out" / "modes.xdmf"));
+    // Case 02's default mesh: the solid's f1 is 61.4408 Hz; the harmonic level, exact around, 61.4433 Hz.
+    CHECK(coremodal::json_number(summary, "beam.fe_first_bending_hz").value_or(0) == Approx(61.44).epsilon(1e-3));
+    const Run bad = run_coremodal(dir, "run " + case_file + " -o bad -q --model shell");
+    CHECK(bad.exit_code != 0);
+    CHECK_THAT(bad.err, Catch::Contains("harmonic"));
+    CHECK_FALSE(std::filesystem::exists(dir.path / "bad"));
+}
