@@ -248,9 +248,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;
-    RunReport report;
-    report.mpi_ranks = mpi_size();
-    report.scene = std::move(scene_in);
+    RunReport report = new_report(std::move(scene_in));
     const Scene& scene = report.scene;
 
     // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).

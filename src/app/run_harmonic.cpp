@@ -12,6 +12,7 @@
 #include "geometry/section_mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
+#include "modes/mode_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -198,9 +199,7 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     Stopwatch total, stage;
-    RunReport report;
-    report.mpi_ranks = mpi_size();
-    report.scene = std::move(scene_in);
+    RunReport report = new_report(std::move(scene_in));
     const Scene& scene = report.scene;
     require_axisymmetric(scene);
 

@@ -4,6 +4,7 @@
 
 #include "app/run_case.hpp"
 #include "assembly/cell_loop.hpp"
+#include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "mesh/mesh.hpp"
 
@@ -20,6 +21,14 @@ struct Printer {
         if (on) std::cout << "  " << line << std::endl;
     }
 };
+
+// An empty report of a run of `scene` on this many MPI ranks.
+inline RunReport new_report(Scene scene) {
+    RunReport report;
+    report.mpi_ranks = mpi_size();
+    report.scene = std::move(scene);
+    return report;
+}
 
 // The material of each named part ("core", "rest_paper", "chuck_<name>");
 // InputError naming `source` for a part the case file gives no material.

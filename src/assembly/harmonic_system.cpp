@@ -232,21 +232,4 @@ std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const Harmonic
     return r;
 }
 
-std::vector<double> gather_to_root(Vec x) {
-    PetscScatter scatter;
-    PetscVector x0;
-    COREMODAL_PETSC(VecScatterCreateToZero(x, scatter.out(), x0.out()));
-    COREMODAL_PETSC(VecScatterBegin(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
-    COREMODAL_PETSC(VecScatterEnd(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
-    std::vector<double> u;
-    if (mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return u;
-    PetscInt size;
-    COREMODAL_PETSC(VecGetSize(x0, &size));
-    const PetscScalar* values;
-    COREMODAL_PETSC(VecGetArrayRead(x0, &values));
-    u.assign(values, values + size);
-    COREMODAL_PETSC(VecRestoreArrayRead(x0, &values));
-    return u;
-}
-
 }  // namespace coremodal

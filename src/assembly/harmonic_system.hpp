@@ -44,7 +44,4 @@ HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
 enum class RigidMotion { x, z, rz };
 std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const HarmonicDofs& dofs, int n, RigidMotion motion);
 
-// x gathered to rank 0 as plain values (empty on other ranks). Collective.
-std::vector<double> gather_to_root(Vec x);
-
 }  // namespace coremodal

@@ -2,21 +2,31 @@
 
 namespace coremodal {
 
-std::vector<double> gather_node_displacements(Vec x, const Mesh& mesh, const DofMap& dofs) {
+std::vector<double> gather_to_root(Vec x) {
     PetscScatter scatter;
     PetscVector x0;
     COREMODAL_PETSC(VecScatterCreateToZero(x, scatter.out(), x0.out()));
     COREMODAL_PETSC(VecScatterBegin(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
     COREMODAL_PETSC(VecScatterEnd(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
+    std::vector<double> values;
+    if (mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return values;
+    PetscInt size;
+    COREMODAL_PETSC(VecGetSize(x0, &size));
+    const PetscScalar* v;
+    COREMODAL_PETSC(VecGetArrayRead(x0, &v));
+    values.assign(v, v + size);
+    COREMODAL_PETSC(VecRestoreArrayRead(x0, &v));
+    return values;
+}
+
+std::vector<double> gather_node_displacements(Vec x, const Mesh& mesh, const DofMap& dofs) {
+    const std::vector<double> values = gather_to_root(x);
     std::vector<double> u;
     if (mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return u;
-    const PetscScalar* values;
-    COREMODAL_PETSC(VecGetArrayRead(x0, &values));
     u.assign(3 * static_cast<size_t>(mesh.n_nodes()), 0.0);
     for (int n = 0; n < mesh.n_nodes(); ++n)
         if (dofs.node_first_dof[n] >= 0)
             for (int c = 0; c < 3; ++c) u[3 * n + c] = values[dofs.node_first_dof[n] + c];
-    COREMODAL_PETSC(VecRestoreArrayRead(x0, &values));
     return u;
 }
 

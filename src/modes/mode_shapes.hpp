@@ -11,6 +11,9 @@
 
 namespace coremodal {
 
+// x gathered to rank 0 as plain values (empty on other ranks). Collective.
+std::vector<double> gather_to_root(Vec x);
+
 // Gathers x to rank 0 and expands it to every mesh node (n_nodes x 3,
 // eliminated nodes zero). Other ranks get an empty vector. Collective.
 std::vector<double> gather_node_displacements(Vec x, const Mesh& mesh, const DofMap& dofs);
