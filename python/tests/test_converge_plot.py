@@ -114,6 +114,52 @@ def test_two_model_levels_give_a_curve_each_and_the_beam_one_against_the_solid(t
     assert converge_plot.model_errors(two_levels)[0]["model_error"] == pytest.approx(0.2 / 32.1)
 
 
+@pytest.fixture()
+def three_levels(two_levels: dict) -> dict:
+    """Two levels plus the harmonic: the solid's ladder k = 1 ... 6 on the r-z
+    section (DOFs ~ k^2), f1 converging to 32.0995 Hz, just below the solid's
+    32.1 Hz (exact in theta: what is left is the solid's discretization around)."""
+    ks = list(range(1, 7))
+    f0, solid_f0 = 32.0995, 32.1
+    values = []
+    for i, k in enumerate(ks):
+        f = f0 + 0.4 * (1 / k) ** 4
+        values.append({"level": i, "frequency_hz": f, "relative_error": abs(f - f0) / f0,
+                       "error_vs_solid": abs(f - solid_f0) / solid_f0})
+    harmonic_f1 = {"id": "bending n=1 m=0", "type": "bending", "n": 1, "m": 0, "occurrence": 1, "role": "f1",
+                   "values": values,
+                   "richardson": {"extrapolated": True, "order": 4.0, "f0_hz": f0, "error_estimate_hz": 0.4 / 6**4,
+                                  "relative_error_estimate": 0.4 / 6**4 / f0, "asymptotic": True, "note": ""}}
+    levels = [dict(level(k), n_dofs=60 * k * k, runs=3,
+                   timing_s={"mesh": 1e-3, "assemble": 0.01 * k, "factor_and_solve": 0.02 * k * k, "classify": 0.01,
+                             "total": 0.04 * k * k}) for k in ks]
+    two_levels["models"].append({"model": "harmonic", "ladder": "r–z section only; exact in theta",
+                                 "refined_dimensions": 2, "levels": levels, "modes": [harmonic_f1],
+                                 "not_in_model": []})
+    two_levels["model_errors"].append({"model": "harmonic", "role": "f1", "id": "bending n=1 m=0",
+                                       "solid_id": "bending n=1 m=0", "f0_hz": f0, "solid_f0_hz": solid_f0,
+                                       "model_error": (f0 - solid_f0) / solid_f0, "known_to": 1e-5})
+    return two_levels
+
+
+def test_three_model_levels_give_the_harmonic_its_own_curves(three_levels: dict) -> None:
+    curves = converge_plot.error_curves(three_levels)
+    assert [(c["model"], c["role"], c["against"]) for c in curves][-2:] == [("harmonic", "f1", "own"),
+                                                                           ("harmonic", "f1", "solid")]
+    own, vs_solid = curves[-2], curves[-1]
+    assert own["dofs"] == [60, 240, 540, 960, 1500, 2160]
+    assert own["finest"] == [False] * 5 + [True]
+    assert vs_solid["error"][-1] == pytest.approx(abs(32.0995 + 0.4 / 6**4 - 32.1) / 32.1)
+    assert converge_plot.error_meaning("harmonic") == "the solid's discretization around"
+    assert converge_plot.error_meaning("beam") == "model error"
+    assert [e["model"] for e in converge_plot.model_errors(three_levels)] == ["beam", "harmonic"]
+
+
+def test_draws_three_model_levels(three_levels: dict, tmp_path: Path) -> None:
+    out = converge_plot.draw_error_vs_time(three_levels, tmp_path / "three.png", size_px=(900, 600))
+    assert png_size(out) == (900, 600)
+
+
 def test_draws_two_model_levels(two_levels: dict, tmp_path: Path) -> None:
     out = converge_plot.draw_error_vs_time(two_levels, tmp_path / "two.png", size_px=(900, 600))
     assert png_size(out) == (900, 600)

@@ -239,18 +239,26 @@ inline constexpr double kBeamLevelBudget = 1.0;
 // unused, step.counts is "core elements/network elements".
 std::vector<MeshStep> beam_refinement_ladder(const Scene& scene, int unit_elements, int levels);
 
+// The harmonic model level's ladder is the solid's (refinement_ladder, the
+// same unit, so level k meshes the same r-z section as the solid's level k)
+// with this many finer levels: a harmonic run costs about a hundredth of the
+// solid's on the same section, and its DOFs (one 2D problem) are not bound by
+// --max-dofs.
+inline constexpr int kHarmonicExtraLevels = 2;
+
 // A model level's refinement ladder and how to run one of its levels once.
-// The solid ladder is refinement_ladder(), the beam's
-// beam_refinement_ladder(); app/converge_command.cpp builds both.
+// The solid ladder is refinement_ladder(), the harmonic's the same with
+// kHarmonicExtraLevels more, the beam's beam_refinement_ladder();
+// app/converge_command.cpp builds them.
 struct ModelLadder {
-    std::string model;   // "solid", "beam", ...
+    std::string model;   // "solid", "beam", "harmonic"
     std::string note;    // how the ladder was built, for the report
     std::vector<MeshStep> steps;
     std::function<LevelRun(const MeshStep&)> run_once;  // collective over PETSC_COMM_WORLD
     int n_modes = 0;             // modes asked per run (the solid's is fixed by choose_mode_count)
     int runs_per_level = 0;      // 0: --repeats; the beam: kBeamRunsPerLevel
     double level_budget_s = 0;   // > 0: no further run once a level's runs took this long in all
-    int refined_dimensions = 3;  // DOFs ~ k^this (3 for the solid, 1 for the beam)
+    int refined_dimensions = 3;  // DOFs ~ k^this (3 for the solid, 2 for the harmonic, 1 for the beam)
     // Roles (kModeRoles) this model cannot have, and why (the beam: ovalling
     // and breathing, which deform the cross-section).
     std::vector<std::pair<std::string, std::string>> unseen_roles;
@@ -258,7 +266,7 @@ struct ModelLadder {
 
 // ---- the study --------------------------------------------------------------
 
-// All levels of one model level ("solid", "beam") and what they say.
+// All levels of one model level ("solid", "beam", "harmonic") and what they say.
 struct ModelStudy {
     std::string model;
     std::string ladder_note;  // how the ladder was built, for the report
@@ -273,7 +281,11 @@ struct ModelStudy {
 
 // A model level's converged value of a role against the solid's: the model
 // error, which no refinement of the simpler model removes (a beam never
-// converges to the 3D answer).
+// converges to the 3D answer). For the harmonic level, which is exact in
+// theta on the solid's own r-z section, the difference is instead the solid's
+// circumferential discretization error left in its extrapolated f0 (the
+// solid's ladder refines around together with the section), plus both
+// extrapolations' noise.
 struct ModelError {
     std::string model, role;
     std::string id, solid_id;  // the tracked modes' labels
@@ -342,7 +354,9 @@ struct ConvergeOptions {
     std::optional<int> n_modes;             // modes per run; default: the case's, raised
                                             // until the coarsest level shows an ovalling mode
     std::vector<std::string> check_levels;  // named mesh levels to compare with f0
-    std::vector<std::string> models = {"solid", "beam"};  // model levels to run (those the scene allows)
+    // Model levels to run: those of them the scene allows (the beam and the
+    // harmonic level are skipped, with a note, for a scene they cannot solve).
+    std::vector<std::string> models = {"solid", "beam", "harmonic"};
     bool quiet = false;
     bool write_results = true;
 };

@@ -8,6 +8,7 @@
 #include "app/converge.hpp"
 #include "app/run_beam.hpp"
 #include "app/run_case.hpp"
+#include "app/run_harmonic.hpp"
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
@@ -71,13 +72,13 @@ double load_average() {
     return getloadavg(load, 1) == 1 ? load[0] : 0.0;
 }
 
-// One run of the solid model on one mesh of the ladder. The peak memory is
-// the process's peak during this run (summed over ranks); freed memory is
-// handed back to the system afterwards so that a level does not inherit the
-// previous level's heap.
-LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
+// One run of a meshed model level ("solid" or "harmonic") on one mesh of its
+// ladder. The peak memory is the process's peak during this run (summed over
+// ranks); freed memory is handed back to the system afterwards so that a
+// level does not inherit the previous level's heap.
+LevelRun run_meshed_once(const Scene& scene, const std::string& model, const MeshSpec& mesh, int n_modes) {
     Scene s = scene;
-    s.model = "solid";  // the case may name another level for its runs; this ladder is the solid's
+    s.model = model;  // the case may name another level for its runs; this ladder is `model`'s
     s.mesh = mesh;
     s.analysis.n_modes = n_modes;
     RunOptions options;
@@ -103,14 +104,41 @@ LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
     return run;
 }
 
+LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
+    return run_meshed_once(scene, "solid", mesh, n_modes);
+}
+
+// The harmonic level on the same MeshSpec: the same r-z section as the solid
+// of that level (n_around only sets the revolved mesh the modes are shown and
+// named on). n_dofs is the largest one-harmonic problem's; the timings sum
+// over the harmonics (assemble: all assemblies; factor_and_solve: every
+// eigensolve and inertia count).
+LevelRun run_harmonic_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
+    return run_meshed_once(scene, "harmonic", mesh, n_modes);
+}
+
+// The unit of the solid ladder (and of the harmonic ladder, which shares its
+// levels): --unit as given, or the default unit fitted to --max-dofs at the
+// solid's --levels. `budget_note` says what the bound changed.
+UnitMesh solid_unit(const Scene& scene, const ConvergeOptions& o, std::string& budget_note) {
+    budget_note.clear();
+    if (o.unit) return parse_unit(*o.unit, "--unit");  // the user's unit is taken as given
+    return fit_unit_to_budget(scene, default_unit(scene), o.first, o.levels, o.max_dofs, budget_note);
+}
+
+// "1/1/8/21 (...; along per axial segment 2+2+13+2+2)": the unit of a ladder as its steps multiply it.
+std::string unit_text(const Scene& scene, const UnitMesh& unit, const MeshStep& first) {
+    std::string segments;
+    for (int n : first.mesh.along_per_segment) segments += (segments.empty() ? "" : "+") + std::to_string(n / first.k);
+    const std::string paper = scene.rest_paper ? std::to_string(unit.n_rest_paper) : std::string("-");
+    return std::to_string(unit.n_wall) + "/" + paper + "/" + std::to_string(unit.n_around) + "/" +
+           std::to_string(first.mesh.n_along / first.k) + " (through the wall / through the rest paper / around / "
+           "along; along per axial segment " + segments + ")";
+}
+
 ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes) {
     std::string budget_note;
-    UnitMesh unit;
-    if (o.unit) {
-        unit = parse_unit(*o.unit, "--unit");  // the user's unit is taken as given
-    } else {
-        unit = fit_unit_to_budget(scene, default_unit(scene), o.first, o.levels, o.max_dofs, budget_note);
-    }
+    const UnitMesh unit = solid_unit(scene, o, budget_note);
     ModelLadder ladder;
     ladder.model = "solid";
     ladder.steps = refinement_ladder(scene, unit, o.first, o.levels);
@@ -118,18 +146,44 @@ ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int
     if (o.unit && o.max_dofs > 0 && finest > o.max_dofs)
         budget_note = "the finest level (estimated " + std::to_string(finest) + " DOFs) exceeds --max-dofs " +
                       std::to_string(o.max_dofs) + "; --unit was taken as given";
-    // The unit's counts per axial segment, as the ladder multiplies them.
-    std::string segments;
-    for (int n : ladder.steps.front().mesh.along_per_segment)
-        segments += (segments.empty() ? "" : "+") + std::to_string(n / ladder.steps.front().k);
-    const std::string paper = scene.rest_paper ? std::to_string(unit.n_rest_paper) : std::string("-");
-    ladder.note = "Ladder: level k has k times the elements of the unit mesh " + std::to_string(unit.n_wall) + "/" +
-                  paper + "/" + std::to_string(unit.n_around) + "/" + std::to_string(ladder.steps.front().mesh.n_along /
-                  ladder.steps.front().k) + " (through the wall / through the rest paper / around / along; along "
-                  "per axial segment " + segments + ") in every direction and in every axial segment, so h = 1/k "
+    ladder.note = "Ladder: level k has k times the elements of the unit mesh " +
+                  unit_text(scene, unit, ladder.steps.front()) + " in every direction and in every axial segment, so h = 1/k "
                   "exactly (ratios (k+1)/k between levels; graded segments keep their size ratio). Hexahedra " +
                   scene.mesh.element + (budget_note.empty() ? "." : "; " + budget_note + ".");
     ladder.run_once = [&scene, &n_modes](const MeshStep& step) { return run_solid_once(scene, step.mesh, n_modes); };
+    return ladder;
+}
+
+// The harmonic model level: the solid's unit and levels k = first ... plus
+// kHarmonicExtraLevels finer ones (a harmonic run costs ~1 % of the solid's
+// on the same section), not bound by --max-dofs (its DOFs are those of one 2D
+// problem). Level k meshes exactly the r-z section of the solid's level k.
+// A scene that is not axisymmetric is skipped with the reason in the notes,
+// as the beam skips what it cannot solve.
+std::optional<ModelLadder> harmonic_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes,
+                                           std::ostream& progress, std::vector<std::string>& notes) {
+    try {
+        require_axisymmetric(scene);
+    } catch (const InputError& e) {
+        notes.push_back("harmonic model level skipped: " + std::string(e.what()));
+        if (mpi_rank() == 0 && !o.quiet) progress << "  harmonic model level skipped: " << e.what() << std::endl;
+        return std::nullopt;
+    }
+    std::string budget_note;
+    const UnitMesh unit = solid_unit(scene, o, budget_note);
+    ModelLadder ladder;
+    ladder.model = "harmonic";
+    ladder.refined_dimensions = 2;
+    ladder.steps = refinement_ladder(scene, unit, o.first, o.levels + kHarmonicExtraLevels);
+    ladder.note = "Ladder (r–z section only; exact in theta): level k meshes the r–z section of the solid's level k "
+                  "(unit " + unit_text(scene, unit, ladder.steps.front()) + ", h = 1/k) in quad8 cells and solves one "
+                  "eigenproblem per circumferential wave number n, so it has no circumferential discretization; it "
+                  "runs the solid's levels and " + std::to_string(kHarmonicExtraLevels) + " finer ones (k up to " +
+                  std::to_string(ladder.steps.back().k) + "), not bound by --max-dofs. Around only sets the revolved "
+                  "mesh the modes are named on. DOFs: the largest one-harmonic problem; assemble and factor+solve "
+                  "sum over the harmonics (with their inertia counts)" +
+                  (budget_note.empty() ? "." : "; the unit is the solid's: " + budget_note + ".");
+    ladder.run_once = [&scene, &n_modes](const MeshStep& step) { return run_harmonic_once(scene, step.mesh, n_modes); };
     return ladder;
 }
 
@@ -243,12 +297,12 @@ bool has_ovalling(const std::vector<Mode>& modes) {
 // n_modes on the coarsest level (cheap) until an ovalling mode shows, up to
 // kMaxModesForOvalling. Returns the last coarsest run, which counts as that
 // level's first run; nothing when the count is given (--modes, a band).
-std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder& solid, const ConvergeOptions& o,
+std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder& ladder, const ConvergeOptions& o,
                                           int& n_modes, std::ostream& progress, std::vector<std::string>& notes) {
     if (o.n_modes || scene.analysis.f_max_hz) return std::nullopt;
     const bool root = mpi_rank() == 0;
     for (;;) {
-        LevelRun run = solid.run_once(solid.steps.front());
+        LevelRun run = ladder.run_once(ladder.steps.front());
         int found = root ? has_ovalling(run.modes) : 0;
         MPI_Bcast(&found, 1, MPI_INT, 0, PETSC_COMM_WORLD);  // labels live on rank 0
         if (found) return run;
@@ -259,7 +313,8 @@ std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder&
         }
         const int more = std::min(2 * n_modes, kMaxModesForOvalling);
         if (root && !o.quiet)
-            progress << "  no ovalling mode among the first " << n_modes << " modes at " << solid.steps.front().label
+            progress << "  no ovalling mode among the first " << n_modes << " modes at " << ladder.model << " "
+                     << ladder.steps.front().label
                      << ": asking for " << more << std::endl;
         n_modes = more;
     }
@@ -426,10 +481,11 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     for (const auto& name : o.check_levels)
         if (!find_mesh_level(name))
             throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
-    if (o.models.empty()) throw InputError("--models: no model level; expected solid, beam or both");
+    const std::string valid = "expected solid, harmonic, beam (comma-separated, any of them)";
+    if (o.models.empty()) throw InputError("--models: no model level; " + valid);
     for (const auto& name : o.models)
-        if (name != "solid" && name != "beam")
-            throw InputError("--models " + name + ": unknown model level; expected solid, beam or both");
+        if (name != "solid" && name != "beam" && name != "harmonic")
+            throw InputError("--models " + name + ": unknown model level; " + valid);
     if (!o.check_levels.empty() && !wants_model(o, "solid"))
         throw InputError("--check-levels: named mesh levels are solid meshes; add solid to --models");
 
@@ -449,7 +505,8 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.repeats = o.repeats;
     study.repeat_limit_s = o.repeat_limit_s;
     int n_modes = o.n_modes.value_or(scene.analysis.n_modes);
-    const bool want_solid = wants_model(o, "solid"), want_beam = wants_model(o, "beam");
+    const bool want_solid = wants_model(o, "solid"), want_beam = wants_model(o, "beam"),
+               want_harmonic = wants_model(o, "harmonic");
     std::vector<ModelLadder> ladders;
     if (want_solid) ladders.push_back(solid_ladder(scene, o, n_modes));
     if (root && !o.quiet) {
@@ -460,25 +517,41 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
         if (want_beam)
             progress << (want_solid ? "," : "") << " beam (" << kBeamLevels << " levels, " << kBeamRunsPerLevel
                      << " runs per level)";
+        if (want_harmonic)
+            progress << (want_solid || want_beam ? "," : "") << " harmonic (" << o.levels + kHarmonicExtraLevels
+                     << " levels, r-z section only)";
         progress << std::endl;
     }
     if (want_beam)
         if (auto beam = beam_ladder(scene, o, progress, study.notes)) ladders.push_back(std::move(*beam));
-    if (ladders.empty())  // --models beam, and the beam cannot solve the scene
+    if (want_harmonic)
+        if (auto harmonic = harmonic_ladder(scene, o, n_modes, progress, study.notes))
+            ladders.push_back(std::move(*harmonic));
+    if (ladders.empty())  // --models beam or harmonic, and that level cannot solve the scene
         throw InputError(o.case_file + ": no model level to run (" + study.notes.back() + ")");
 
-    // 2. How many modes each solid run asks for (enough to hold the first ovalling mode).
+    // 2. How many modes each solid and harmonic run asks for (enough to hold
+    //    the first ovalling mode), found on the solid's coarsest level, or on
+    //    the harmonic's when the solid is not run. That coarsest run counts as
+    //    the level's first.
     std::optional<LevelRun> first_run;
-    if (want_solid) first_run = choose_mode_count(scene, ladders.front(), o, n_modes, progress, study.notes);
+    std::string first_run_model;
+    for (const auto& ladder : ladders)
+        if (ladder.model == "solid" || ladder.model == "harmonic") {
+            first_run = choose_mode_count(scene, ladder, o, n_modes, progress, study.notes);
+            first_run_model = ladder.model;
+            break;
+        }
     study.n_modes = n_modes;
-    if (want_solid) ladders.front().n_modes = n_modes;
+    for (auto& ladder : ladders)
+        if (ladder.model == "solid" || ladder.model == "harmonic") ladder.n_modes = n_modes;
 
     // 3. Every level of every ladder, coarse to fine, then the analysis.
     for (auto& ladder : ladders) {
         std::vector<LevelResult> levels;
         for (std::size_t i = 0; i < ladder.steps.size(); ++i) {
             std::optional<LevelRun> reuse;
-            if (i == 0 && ladder.model == "solid") reuse = std::move(first_run);
+            if (i == 0 && ladder.model == first_run_model) reuse = std::move(first_run);
             levels.push_back(run_level(ladder, i, std::move(reuse), o, progress));
         }
         ModelStudy model = analyse_levels(ladder.model, ladder.note, std::move(levels));
@@ -554,16 +627,21 @@ Command add_converge_command(CLI::App& app) {
                     "extrapolated frequencies")
         ->delimiter(',');
     cmd->add_option("--models", options->models,
-                    "model levels to run, comma-separated: solid, beam (default both; the beam is skipped, with the "
-                    "reason in converge.md, for a scene it cannot solve)")
+                    "model levels to run, comma-separated: solid, harmonic, beam (default all three; the harmonic "
+                    "level is skipped for a scene that is not axisymmetric, the beam for one it cannot solve, with "
+                    "the reason in converge.md)")
         ->delimiter(',');
     cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or summary");
-    cmd->footer("Model levels: solid and beam. Solid level k refines the unit mesh k times in every direction "
-                "(h = 1/k; --levels, --first, --unit, --max-dofs, --repeats apply to it); the beam ladder is its own: "
+    cmd->footer("Model levels: solid, harmonic and beam. Solid level k refines the unit mesh k times in every direction "
+                "(h = 1/k; --levels, --first, --unit, --max-dofs, --repeats apply to it); the harmonic ladder (r-z "
+                "section only; exact in theta) meshes the same section as the solid's level k and goes two levels "
+                "finer (--levels + 2), not bound by --max-dofs; the beam ladder is its own: "
                 "5 levels of 4, 8, 16, 32, 64 three-node Timoshenko elements along the core (every gap between "
                 "support edges refined alike), each level run 200 times or for 1 s (median time). The three finest levels of "
                 "each give the Richardson extrapolation and its observed order, the level before them checks that "
-                "order; converge.md sets the beam's extrapolated frequencies against the solid's (the model error). "
+                "order; converge.md sets the beam's and the harmonic's extrapolated frequencies against the solid's "
+                "(for the beam the model error; for the harmonic, exact in theta on the same section, what is left "
+                "of the solid's circumferential discretization error). "
                 "PETSc/SLEPc options pass through as for `run`. See docs/accuracy-vs-cost.md.");
     auto run = [options, output, unit, n_modes] {
         if (!output->empty()) options->output_dir = *output;

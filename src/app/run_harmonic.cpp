@@ -28,19 +28,6 @@ constexpr int kEmptyHarmonicsToStop = 2;
 // Far beyond any physical band of a roll: reaching it means a wrong input.
 constexpr int kMaxHarmonic = 64;
 
-void require_axisymmetric(const Scene& scene) {
-    const std::string where = scene.source_file + ": model = \"harmonic\"";
-    if (scene.mesh.file)
-        throw InputError(where + " with a [mesh] file: the harmonic level meshes the scene's own r-z section; "
-                                 "expected no [mesh] file, or model = \"solid\"");
-    for (const ChuckSpec& chuck : scene.supports.chucks)
-        for (const ExpandingElement& e : chuck.expanding)
-            if (e.segments > 0)
-                throw InputError(where + ": the " + chuck.name + " chuck's expanding element at " +
-                                 significant(e.center * 1e3) + " mm has " + std::to_string(e.segments) +
-                                 " segments, which are not axisymmetric; expected full bands, or model = \"solid\"");
-}
-
 // One harmonic's verified modes, values gathered on rank 0.
 struct HarmonicModes {
     int n = 0;
@@ -194,6 +181,19 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
 }
 
 }  // namespace
+
+void require_axisymmetric(const Scene& scene) {
+    const std::string where = scene.source_file + ": model = \"harmonic\"";
+    if (scene.mesh.file)
+        throw InputError(where + " with a [mesh] file: the harmonic level meshes the scene's own r-z section; "
+                                 "expected no [mesh] file, or model = \"solid\"");
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding)
+            if (e.segments > 0)
+                throw InputError(where + ": the " + chuck.name + " chuck's expanding element at " +
+                                 significant(e.center * 1e3) + " mm has " + std::to_string(e.segments) +
+                                 " segments, which are not axisymmetric; expected full bands, or model = \"solid\"");
+}
 
 RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;
