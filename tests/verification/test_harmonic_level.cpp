@@ -37,7 +37,7 @@ Scene harmonic(Scene s) {
 
 }  // namespace
 
-TEST_CASE("Harmonic level against the solid: same modes, same names, the solid slightly stiffer",
+TEST_CASE("Harmonic level against the solid: same modes, same names, the same frequencies to 0.002 %",
           "[verification][harmonic]") {
     const Scene scene = chucks_in_elastic_stand(32);
     const RunReport solid = solve_quietly(scene);
@@ -57,9 +57,11 @@ TEST_CASE("Harmonic level against the solid: same modes, same names, the solid s
         CHECK(a.label.type == b.label.type);
         CHECK(a.label.n == b.label.n);
         CHECK(a.label.m == b.label.m);
-        // Measured: 0.002 % (bending) to 0.3 % (ovalling) at 32 around; the
-        // solid's circumferential discretization only stiffens it.
-        CHECK(b.frequency_hz >= a.frequency_hz * (1 - 1e-5));
+        // Measured on these 14 modes (bending, axial, torsion): -0.0006 % to
+        // +0.002 %. The solid's elements around stiffen it; its quadratic arcs,
+        // not exact circles (mass 1e-5 low at 24 around), can make it a hair
+        // softer: 1e-4 below is allowed, 0.5 % above (ovalling, docs/validation.md).
+        CHECK(b.frequency_hz >= a.frequency_hz * (1 - 1e-4));
         CHECK(b.frequency_hz <= a.frequency_hz * 1.005);
     }
     // Effective masses of the bending pairs: the same share of the mass moves sideways.
