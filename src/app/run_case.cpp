@@ -233,6 +233,20 @@ void write_results(const RunReport& report, const Mesh& mesh, const std::filesys
 
 }  // namespace
 
+SolveRequest solve_request(const Scene& scene) {
+    SolveRequest request;
+    request.n_modes = scene.analysis.n_modes;
+    if (scene.analysis.f_max_hz) {
+        request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
+        request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
+    }
+    const double f_scale = euler_bernoulli_first_bending_hz(beam_section(scene), beam_span(scene));
+    request.lambda_scale = std::pow(2 * M_PI * f_scale, 2);
+    request.tolerance = scene.analysis.tolerance;
+    request.max_iterations = scene.analysis.max_iterations;
+    return request;
+}
+
 RunReport run_case(const RunOptions& options) {
     // 1. Read and check the case file: every input error surfaces here.
     if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
@@ -271,7 +285,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
                     static_cast<long>(eliminated.size()),
                     0,
                     expected_mass(scene),
-                    mesh_source};
+                    mesh_source,
+                    ""};
     const Holding held = holding(eliminated, chucks);
     for (const std::string& warning : unheld_parts(mesh, held.held, held.links)) {
         if (root) std::cerr << "coremodal: warning: " << mesh_source << ": " << warning << std::endl;
@@ -291,17 +306,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     //    mode sets the shift's scale (and what counts as rigid).
     say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
-    const BeamSection section = beam_section(scene);
-    const double f_scale = euler_bernoulli_first_bending_hz(section, beam_span(scene));
-    SolveRequest request;
-    request.n_modes = scene.analysis.n_modes;
-    if (scene.analysis.f_max_hz) {
-        request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
-        request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
-    }
-    request.lambda_scale = std::pow(2 * M_PI * f_scale, 2);
-    request.tolerance = scene.analysis.tolerance;
-    request.max_iterations = scene.analysis.max_iterations;
+    const SolveRequest request = solve_request(scene);
     // The solver's input errors (e.g. more modes than DOFs) are about the
     // case file's [analysis] table: name the file.
     SolvedModes solved = [&] {

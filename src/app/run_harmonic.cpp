@@ -5,7 +5,6 @@
 #include "app/run_steps.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/harmonic_system.hpp"
-#include "beam/beam_theory.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "eigensolve/modal_solver.hpp"
@@ -36,9 +35,7 @@ struct HarmonicModes {
     std::vector<std::vector<double>> vectors;
     std::vector<std::array<double, 3>> gamma;  // x^T M r for r = x, z, rz (RigidMotion order)
     Verification verification;
-    bool solved = false;    // false: only counted (no eigenvalue below the band edge)
-    long count_below = 0;   // when only counted
-    double assemble_s = 0, solve_s = 0;
+    bool solved = false;  // false: only counted, and no eigenvalue lies below the band edge
 };
 
 PetscVector petsc_vector(Mat like, const std::vector<double>& values) {
@@ -155,7 +152,7 @@ std::string harmonics_text(const std::vector<HarmonicModes>& harmonics) {
                     std::to_string(h.verification.negative_pivots_at_shift) + " eigenvalues below " +
                     significant(std::sqrt(std::max(h.verification.check_shift, 0.0)) / (2 * M_PI)) + " Hz";
         else
-            text += std::to_string(h.count_below) + " eigenvalues below the band edge";
+            text += "0 eigenvalues below the band edge";
     }
     return text;
 }
@@ -165,10 +162,7 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
     v.complete = true;
     v.check_shift = 1e300;
     for (const HarmonicModes& h : harmonics) {
-        if (!h.solved) {
-            v.complete = v.complete && h.count_below == 0;
-            continue;
-        }
+        if (!h.solved) continue;  // counted: none below the edge
         const long multiplicity = h.n == 0 ? 1 : 2;
         v.max_relative_residual = std::max(v.max_relative_residual, h.verification.max_relative_residual);
         v.max_orthonormality_error = std::max(v.max_orthonormality_error, h.verification.max_orthonormality_error);
@@ -178,6 +172,121 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
         v.complete = v.complete && h.verification.complete;
     }
     return v;
+}
+
+// Harmonics n = 0, 1, 2, ... until two in a row have no mode below the
+// band edge (module comment). Fills the report's mass and timings.
+std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh& section,
+                                           const std::vector<PartMaterial>& materials, SolveRequest request,
+                                           const Printer& say, RunReport& report) {
+    const bool band = request.lambda_max.has_value();
+    std::vector<HarmonicModes> harmonics;
+    int empty_in_a_row = 0;
+    for (int n = 0; empty_in_a_row < kEmptyHarmonicsToStop; ++n) {
+        if (n > kMaxHarmonic)
+            throw SolveError("the harmonic level found modes in the band up to wave number n = " +
+                             std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
+        Stopwatch lap;
+        HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
+        if (n == 0) report.model.mass_kg = system.model_mass;
+        report.timing_s.assemble += lap.lap();
+        const std::string line = "      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) + " DOFs, ";
+        const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, scene.analysis.n_modes);
+        if (n >= 2 && edge) {
+            // Sylvester's count says how many of this harmonic's modes lie below the edge.
+            const long below = count_eigenvalues_below(system.K, system.M, *edge * (1 + 1e-9));
+            if (below == 0) {
+                HarmonicModes empty;
+                empty.n = n;
+                empty.dofs = system.dofs;
+                harmonics.push_back(std::move(empty));
+                ++empty_in_a_row;
+                report.timing_s.factor_and_solve += lap.lap();
+                say(line + "no mode below the band edge");
+                continue;
+            }
+            if (!band) request.n_modes = static_cast<int>(below);
+        } else if (!band) {
+            // n = 0 once; pairs (n >= 1) count twice.
+            request.n_modes = n == 0 ? scene.analysis.n_modes : (scene.analysis.n_modes + 1) / 2;
+        }
+        empty_in_a_row = 0;
+        HarmonicModes h = [&] {
+            try {
+                return solve_harmonic(system, section, request);
+            } catch (const InputError& e) {  // about the case's [analysis] table: name the file
+                throw InputError(scene.source_file + ": " + e.what());
+            }
+        }();
+        report.timing_s.factor_and_solve += lap.lap();
+        say(line + std::to_string(h.eigenvalues.size()) + " modes" +
+            (h.eigenvalues.empty() ? std::string()
+                                   : " from " + significant(std::sqrt(std::max(h.eigenvalues.front(), 0.0)) / (2 * M_PI)) + " Hz") +
+            (h.verification.complete ? "" : " (INCOMPLETE)"));
+        harmonics.push_back(std::move(h));
+    }
+    return harmonics;
+}
+
+ModelInfo harmonic_model_info(const Scene& scene, const SectionMesh& section,
+                              const std::vector<HarmonicModes>& harmonics, double mass_kg) {
+    ModelInfo info;
+    info.level = "harmonic";
+    info.element = "quad8";
+    for (const HarmonicModes& h : harmonics) info.n_dofs = std::max<long>(info.n_dofs, h.dofs.n_dofs);
+    info.n_nodes = section.n_nodes();
+    info.n_elements = section.n_cells();
+    for (const auto& [name, nodes] : section.node_groups)
+        if (name.rfind("clamp_", 0) == 0) info.n_eliminated_nodes += static_cast<long>(nodes.size());
+    info.mass_kg = mass_kg;
+    info.expected_mass_kg = expected_mass(scene);
+    info.mesh_source = "generated section";
+    info.harmonics = harmonics_text(harmonics);
+    return info;
+}
+
+// The lowest modes (a pair never cut in half) or the band's, in frequency
+// order, each shown on the revolved mesh and named there.
+std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
+                              const std::vector<HarmonicModes>& harmonics, const RevolvedMesh& revolved) {
+    const bool root = mpi_rank() == 0, band = request.lambda_max.has_value();
+    const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved.mesh);
+    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
+    const std::optional<ModeSignatureSampler> signature =
+        root ? std::optional<ModeSignatureSampler>(std::in_place, revolved.mesh) : std::nullopt;
+    const double lambda_band_min = request.lambda_min.value_or(-1e300);
+    std::vector<Mode> modes;
+    for (const Pick& pick : merged_picks(harmonics)) {
+        const HarmonicModes& h = harmonics[pick.h];
+        const bool second_of_pair = h.n > 0 && pick.phase > 0;
+        if (!band && static_cast<int>(modes.size()) >= scene.analysis.n_modes && !second_of_pair) break;
+        // Modes of a free scene at lambda ~ 0 may come out slightly negative.
+        if (band && (pick.lambda > *request.lambda_max ||
+                     (pick.lambda < lambda_band_min &&
+                      std::abs(pick.lambda) > kRigidEigenvalueFraction * request.lambda_scale)))
+            continue;
+        Mode mode;
+        mode.index = static_cast<int>(modes.size()) + 1;
+        mode.eigenvalue = pick.lambda;
+        mode.frequency_hz = std::sqrt(std::max(pick.lambda, 0.0)) / (2 * M_PI);
+        mode.relative_residual = h.residuals[pick.k];
+        if (root) {
+            const auto& g = h.gamma[pick.k];
+            if (h.n == 1) {  // sideways, split by the pair member's angle
+                mode.effective_mass.x = g[0] * g[0] * std::pow(std::cos(pick.phase), 2);
+                mode.effective_mass.y = g[0] * g[0] * std::pow(std::sin(pick.phase), 2);
+            }
+            if (h.n == 0) {
+                mode.effective_mass.z = g[1] * g[1];
+                mode.effective_mass.rz = g[2] * g[2];
+            }
+            mode.shape = revolved_shape(revolved, h, pick.k, pick.phase, frame_nodes);
+            mode.label = classifier.classify(mode.shape, pick.lambda, request.lambda_scale);
+            mode.signature = (*signature)(mode.shape);
+        }
+        modes.push_back(std::move(mode));
+    }
+    return modes;
 }
 
 }  // namespace
@@ -208,129 +317,22 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     RevolvedMesh revolved = revolve_section(section, scene.mesh.n_around);
     add_frame_nodes(scene, revolved.mesh);  // as the solid has them, for the frame's motion in the shapes
-    const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved.mesh);
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
     report.timing_s.mesh = stage.lap();
 
-    // 3-5. Per wave number n: assemble, solve, verify, prove complete; then
-    //      the next n until the band edge is proven clear of higher harmonics.
+    // 3-5. Per wave number n: assemble, solve, verify, prove complete.
     say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
         " nodes; one eigenproblem per wave number n (SLEPc Krylov-Schur, shift-and-invert with " +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the counts)");
-    SolveRequest request;
-    request.n_modes = scene.analysis.n_modes;
-    const bool band = scene.analysis.f_max_hz.has_value();
-    if (band) {
-        request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
-        request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
-    }
-    request.lambda_scale = std::pow(2 * M_PI * euler_bernoulli_first_bending_hz(beam_section(scene), beam_span(scene)), 2);
-    request.tolerance = scene.analysis.tolerance;
-    request.max_iterations = scene.analysis.max_iterations;
-
-    std::vector<HarmonicModes> harmonics;
-    double assemble_s = 0, solve_s = 0;
-    int empty_in_a_row = 0;
-    for (int n = 0; empty_in_a_row < kEmptyHarmonicsToStop; ++n) {
-        if (n > kMaxHarmonic)
-            throw SolveError("the harmonic level found modes in the band up to wave number n = " +
-                             std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
-        Stopwatch lap;
-        HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
-        if (n == 0) report.model.mass_kg = system.model_mass;
-        assemble_s += lap.lap();
-        const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, scene.analysis.n_modes);
-        HarmonicModes h;
-        if (n >= 2 && edge) {
-            // Sylvester's count says how many of this harmonic's modes lie below the edge.
-            const long below = count_eigenvalues_below(system.K, system.M, *edge * (1 + 1e-9));
-            if (below == 0) {
-                h.n = n;
-                h.dofs = system.dofs;
-                h.count_below = 0;
-                harmonics.push_back(std::move(h));
-                ++empty_in_a_row;
-                solve_s += lap.lap();
-                say("      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) +
-                    " DOFs, no mode below the band edge");
-                continue;
-            }
-            if (!band) request.n_modes = static_cast<int>(below);
-        } else if (!band) {
-            request.n_modes = n == 0 ? scene.analysis.n_modes : (scene.analysis.n_modes + 1) / 2;
-        }
-        empty_in_a_row = 0;
-        try {
-            h = solve_harmonic(system, section, request);
-        } catch (const InputError& e) {
-            throw InputError(scene.source_file + ": " + e.what());
-        }
-        solve_s += lap.lap();
-        say("      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) + " DOFs, " +
-            std::to_string(h.eigenvalues.size()) + " modes" +
-            (h.eigenvalues.empty() ? std::string()
-                                   : " from " + significant(std::sqrt(std::max(h.eigenvalues.front(), 0.0)) / (2 * M_PI)) + " Hz") +
-            (h.verification.complete ? "" : " (INCOMPLETE)"));
-        harmonics.push_back(std::move(h));
-    }
-    report.timing_s.assemble = assemble_s;
-    report.timing_s.factor_and_solve = solve_s;
+    const SolveRequest request = solve_request(scene);
+    const std::vector<HarmonicModes> harmonics = solve_harmonics(scene, section, materials, request, say, report);
+    report.modes.verification = merged_verification(harmonics);
+    report.model = harmonic_model_info(scene, section, harmonics, report.model.mass_kg);
     stage.lap();
 
-    report.modes.verification = merged_verification(harmonics);
-    int max_dofs = 0;
-    for (const HarmonicModes& h : harmonics) max_dofs = std::max(max_dofs, h.dofs.n_dofs);
-    report.model = {"harmonic",
-                    "quad8",
-                    max_dofs,
-                    section.n_nodes(),
-                    section.n_cells(),
-                    0,
-                    report.model.mass_kg,
-                    expected_mass(scene),
-                    "generated section",
-                    harmonics_text(harmonics)};
-    for (const auto& [name, nodes] : section.node_groups)
-        if (name.rfind("clamp_", 0) == 0) report.model.n_eliminated_nodes += static_cast<long>(nodes.size());
-
     // 6. Name every mode (on the revolved mesh, with the solid's classifier) and its effective masses.
-    std::vector<Pick> picks = merged_picks(harmonics);
     say("[5/7] classifying the modes");
-    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
-    const std::optional<ModeSignatureSampler> signature =
-        root ? std::optional<ModeSignatureSampler>(std::in_place, revolved.mesh) : std::nullopt;
-    const double lambda_band_min = request.lambda_min.value_or(-1e300);
-    for (size_t p = 0; p < picks.size(); ++p) {
-        const Pick& pick = picks[p];
-        const HarmonicModes& h = harmonics[pick.h];
-        const bool second_of_pair = h.n > 0 && pick.phase > 0;
-        // Lowest n_modes (a pair never cut in half), or the band.
-        if (!band && static_cast<int>(report.modes.modes.size()) >= scene.analysis.n_modes && !second_of_pair) break;
-        if (band && (pick.lambda > *request.lambda_max ||
-                     (pick.lambda < lambda_band_min &&
-                      std::abs(pick.lambda) > kRigidEigenvalueFraction * request.lambda_scale)))
-            continue;
-        Mode mode;
-        mode.index = static_cast<int>(report.modes.modes.size()) + 1;
-        mode.eigenvalue = pick.lambda;
-        mode.frequency_hz = std::sqrt(std::max(pick.lambda, 0.0)) / (2 * M_PI);
-        mode.relative_residual = h.residuals[pick.k];
-        if (root) {
-            const auto& g = h.gamma[pick.k];
-            if (h.n == 1) {
-                mode.effective_mass.x = g[0] * g[0] * std::pow(std::cos(pick.phase), 2);
-                mode.effective_mass.y = g[0] * g[0] * std::pow(std::sin(pick.phase), 2);
-            }
-            if (h.n == 0) {
-                mode.effective_mass.z = g[1] * g[1];
-                mode.effective_mass.rz = g[2] * g[2];
-            }
-            mode.shape = revolved_shape(revolved, h, pick.k, pick.phase, frame_nodes);
-            mode.label = classifier.classify(mode.shape, pick.lambda, request.lambda_scale);
-            mode.signature = (*signature)(mode.shape);
-        }
-        report.modes.modes.push_back(std::move(mode));
-    }
+    report.modes.modes = named_modes(scene, request, harmonics, revolved);
     report.timing_s.classify = stage.lap();
 
     finish_run(report, revolved.mesh, options, total, stage);

@@ -6,6 +6,7 @@
 #include "assembly/cell_loop.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
+#include "eigensolve/modal_solver.hpp"
 #include "mesh/mesh.hpp"
 
 #include <iostream>
@@ -34,6 +35,10 @@ inline RunReport new_report(Scene scene) {
 // InputError naming `source` for a part the case file gives no material.
 std::vector<PartMaterial> part_materials(const Scene& scene, const std::vector<std::string>& part_names,
                                          const std::string& source);
+
+// What the case's [analysis] asks of the eigensolver: the lowest modes or a
+// band; the shift's scale from the Euler-Bernoulli estimate of f1.
+SolveRequest solve_request(const Scene& scene);
 
 // Mass of the roll, chucks, shafts and frames from the scene's dimensions, kg.
 double expected_mass(const Scene& scene);
