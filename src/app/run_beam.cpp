@@ -46,7 +46,8 @@ ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
             beam.n_held_nodes,
             beam.network.mass(),
             mass_from_dimensions(scene),
-            "beam network (" + std::to_string(beam.network.beams.size()) + " beams)"};
+            "beam network (" + std::to_string(beam.network.beams.size()) + " beams)",
+            ""};
 }
 
 Timing timing(const BeamModelTiming& t, double total) {

@@ -257,6 +257,9 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene_in, const RunOptions& options) {
+    // "auto": the cheapest level that represents the whole scene (DESIGN.md):
+    // harmonic when the scene is a body of revolution, else the solid.
+    if (scene_in.model == "auto") scene_in.model = why_not_axisymmetric(scene_in) ? "solid" : "harmonic";
     if (scene_in.model == "beam") return run_beam_scene(std::move(scene_in), options);  // app/run_beam.cpp
     if (scene_in.model == "harmonic") return run_harmonic_scene(std::move(scene_in), options);  // app/run_harmonic.cpp
     const bool root = mpi_rank() == 0;

@@ -291,17 +291,21 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
 
 }  // namespace
 
-void require_axisymmetric(const Scene& scene) {
-    const std::string where = scene.source_file + ": model = \"harmonic\"";
+std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
     if (scene.mesh.file)
-        throw InputError(where + " with a [mesh] file: the harmonic level meshes the scene's own r-z section; "
-                                 "expected no [mesh] file, or model = \"solid\"");
+        return "a [mesh] file: the harmonic level meshes the scene's own r-z section";
     for (const ChuckSpec& chuck : scene.supports.chucks)
         for (const ExpandingElement& e : chuck.expanding)
             if (e.segments > 0)
-                throw InputError(where + ": the " + chuck.name + " chuck's expanding element at " +
-                                 significant(e.center * 1e3) + " mm has " + std::to_string(e.segments) +
-                                 " segments, which are not axisymmetric; expected full bands, or model = \"solid\"");
+                return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
+                       " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
+    return std::nullopt;
+}
+
+void require_axisymmetric(const Scene& scene) {
+    if (const auto why = why_not_axisymmetric(scene))
+        throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
+                         "; expected full bands and no [mesh] file, or model = \"solid\"");
 }
 
 RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {

@@ -6,15 +6,20 @@
 
 #include "app/run_case.hpp"
 
+#include <optional>
+#include <string>
+
 namespace coremodal {
 
-// Throws InputError (naming the case file and the reason) unless the harmonic
-// level can solve the scene: no user [mesh] file, no segmented expanding
-// element (both break the axial symmetry the harmonic level assumes).
+// Why the harmonic level cannot solve the scene (a user [mesh] file, a
+// segmented expanding element: both break the symmetry about the axis), or
+// nothing when it can.
+std::optional<std::string> why_not_axisymmetric(const Scene& scene);
+
+// Throws InputError naming the case file and why_not_axisymmetric's reason.
 void require_axisymmetric(const Scene& scene);
 
-// Throws InputError (naming the case file) for a scene that is not
-// axisymmetric: segmented expanding elements or a user mesh.
+// The harmonic run; require_axisymmetric first.
 RunReport run_harmonic_scene(Scene scene, const RunOptions& options);
 
 }  // namespace coremodal

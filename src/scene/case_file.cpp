@@ -41,7 +41,7 @@ constexpr int kAroundMultiple = 4;
 // Long values are cut in messages: the message must point, not reproduce.
 constexpr std::size_t kMaxShownChars = 60;
 
-const std::vector<std::string_view> kModelLevels = {"solid", "harmonic", "beam"};
+const std::vector<std::string_view> kModelLevels = {"solid", "harmonic", "auto", "beam"};
 const std::vector<std::string_view> kSupportTypes = {"free", "clamped", "chucks"};
 const std::vector<std::string_view> kInterfaceKinds = {"spring", "bonded"};
 const std::vector<std::string_view> kBearingTypes = {"rigid", "elastic"};

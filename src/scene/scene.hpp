@@ -119,7 +119,10 @@ struct Scene {
     std::string name;         // case name (file stem unless given)
     std::string source_file;  // path of the case file, as given
     std::string description;  // free text from the case file, "" when not given
-    std::string model = "solid";  // model level: "solid" (3D FE) or "beam" (Timoshenko beam network)
+    // Model level: "solid" (3D FE), "harmonic" (axisymmetric, one 2D problem
+    // per wave number n), "auto" (harmonic where the scene allows, run_scene
+    // decides) or "beam" (Timoshenko beam network).
+    std::string model = "solid";
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;
     SupportSpec supports;

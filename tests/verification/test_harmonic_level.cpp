@@ -138,3 +138,15 @@ TEST_CASE("Harmonic level: the n = 2 mode of a thin free-free tube is the inexte
     const double omega = n * (n * n - 1) / std::sqrt(n * n + 1) * std::sqrt(E / (1 - nu * nu) * I / (rho * t * std::pow(R, 4)));
     CHECK(oval.frequency_hz == Approx(omega / (2 * M_PI)).epsilon(5e-3));
 }
+
+TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, else the solid", "[harmonic]") {
+    Scene scene = with_chucks(paper_core(0.8, 8, 8), InterfaceKind::spring);
+    scene.model = "auto";
+    scene.analysis.n_modes = 4;
+    CHECK(solve_quietly(scene).model.level == "harmonic");
+    scene.supports.chucks[0].expanding[0].segments = 3;
+    scene.supports.chucks[0].expanding[0].segment_angle = 1.0;
+    const RunReport solid = solve_quietly(scene);
+    CHECK(solid.model.level == "solid3d");
+    CHECK(solid.scene.model == "solid");  // the summary's case says what ran
+}
