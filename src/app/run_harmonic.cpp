@@ -272,10 +272,8 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
         mode.relative_residual = h.residuals[pick.k];
         if (root) {
             const auto& g = h.gamma[pick.k];
-            if (h.n == 1) {  // sideways, split by the pair member's angle
-                mode.effective_mass.x = g[0] * g[0] * std::pow(std::cos(pick.phase), 2);
-                mode.effective_mass.y = g[0] * g[0] * std::pow(std::sin(pick.phase), 2);
-            }
+            if (h.n == 1)  // sideways: the pair's first member along x, the second (turned by 90°) along y
+                (pick.phase == 0 ? mode.effective_mass.x : mode.effective_mass.y) = g[0] * g[0];
             if (h.n == 0) {
                 mode.effective_mass.z = g[1] * g[1];
                 mode.effective_mass.rz = g[2] * g[2];
