@@ -26,6 +26,12 @@ namespace {
 constexpr int kEmptyHarmonicsToStop = 2;
 // Far beyond any physical band of a roll: reaching it means a wrong input.
 constexpr int kMaxHarmonic = 64;
+// Cells around the revolved mesh the modes are named and drawn on, at most:
+// 32 quadratic cells (64 node angles) resolve every wave number the
+// classifier looks for (kMaxWaveNumber = 8) and draw smoothly; finer mesh
+// levels refine the section, not this picture (at 64 around naming and
+// writing took half of a very fine run).
+constexpr int kMaxDisplayAround = 32;
 
 // One harmonic's verified modes, values gathered on rank 0.
 struct HarmonicModes {
@@ -317,7 +323,7 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     // 2. Mesh: the r–z section in quad8 cells (and its revolution, for showing the modes).
     say("[2/7] meshing the r-z section");
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
-    RevolvedMesh revolved = revolve_section(section, scene.mesh.n_around);
+    RevolvedMesh revolved = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
     add_frame_nodes(scene, revolved.mesh);  // as the solid has them, for the frame's motion in the shapes
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
     report.timing_s.mesh = stage.lap();
