@@ -19,10 +19,12 @@
 namespace coremodal {
 namespace {
 
-// Harmonics above the last one with modes in the band are checked by their
-// inertia until this many in a row have none: the lowest eigenvalue of a
-// tube's harmonic grows with n once ring bending (~n^4) dominates, so two
-// empty harmonics in a row end the search (docs/harmonic.md).
+// Harmonics above those with modes in the band are checked by their inertia
+// (none below the band edge) and their lowest eigenvalue. The lowest
+// eigenvalue of a tube's harmonic falls with n while the membrane dominates
+// and rises once ring bending (~n^4) does, so two empty harmonics in a row
+// whose lowest eigenvalue rises from the one to the next end the search
+// (docs/harmonic.md).
 constexpr int kEmptyHarmonicsToStop = 2;
 // Far beyond any physical band of a roll: reaching it means a wrong input.
 constexpr int kMaxHarmonic = 64;
@@ -42,6 +44,7 @@ struct HarmonicModes {
     std::vector<std::array<double, 3>> gamma;  // x^T M r for r = x, z, rz (RigidMotion order)
     Verification verification;
     bool solved = false;  // false: only counted, and no eigenvalue lies below the band edge
+    double lowest = 0;    // when only counted: its lowest eigenvalue
 };
 
 PetscVector petsc_vector(Mat like, const std::vector<double>& values) {
@@ -158,7 +161,8 @@ std::string harmonics_text(const std::vector<HarmonicModes>& harmonics) {
                     std::to_string(h.verification.negative_pivots_at_shift) + " eigenvalues below " +
                     significant(std::sqrt(std::max(h.verification.check_shift, 0.0)) / (2 * M_PI)) + " Hz";
         else
-            text += "0 eigenvalues below the band edge";
+            text += "0 eigenvalues below the band edge (lowest " +
+                    significant(std::sqrt(std::max(h.lowest, 0.0)) / (2 * M_PI)) + " Hz)";
     }
     return text;
 }
@@ -180,15 +184,27 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
     return v;
 }
 
+// The lowest eigenvalue of a harmonic with none below the band edge (one
+// verified mode; its count proves it is the lowest).
+double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
+    request.n_modes = 1;
+    request.lambda_min.reset();
+    request.lambda_max.reset();
+    const SolvedModes one = solve_modes(system.K, system.M, request, [](const std::string&) {});
+    return one.eigenvalues.at(0);
+}
+
 // Harmonics n = 0, 1, 2, ... until two in a row have no mode below the
-// band edge (module comment). Fills the report's mass and timings.
+// band edge and the lowest eigenvalue rises (kEmptyHarmonicsToStop). Fills
+// the report's mass and timings.
 std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh& section,
                                            const std::vector<PartMaterial>& materials, SolveRequest request,
                                            const Printer& say, RunReport& report) {
     const bool band = request.lambda_max.has_value();
     std::vector<HarmonicModes> harmonics;
     int empty_in_a_row = 0;
-    for (int n = 0; empty_in_a_row < kEmptyHarmonicsToStop; ++n) {
+    double previous_lowest = 0;  // lowest eigenvalue of the previous empty harmonic
+    for (int n = 0;; ++n) {
         if (n > kMaxHarmonic)
             throw SolveError("the harmonic level found modes in the band up to wave number n = " +
                              std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
@@ -205,10 +221,14 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
                 HarmonicModes empty;
                 empty.n = n;
                 empty.dofs = system.dofs;
-                harmonics.push_back(std::move(empty));
-                ++empty_in_a_row;
+                empty.lowest = lowest_eigenvalue(system, request);
                 report.timing_s.factor_and_solve += lap.lap();
-                say(line + "no mode below the band edge");
+                say(line + "no mode below the band edge (lowest " +
+                    significant(std::sqrt(std::max(empty.lowest, 0.0)) / (2 * M_PI)) + " Hz)");
+                const bool rising = empty_in_a_row > 0 && empty.lowest > previous_lowest;
+                previous_lowest = empty.lowest;
+                harmonics.push_back(std::move(empty));
+                if (++empty_in_a_row >= kEmptyHarmonicsToStop && rising) break;
                 continue;
             }
             if (!band) request.n_modes = static_cast<int>(below);

@@ -4,6 +4,8 @@
 // with the solid's, with the same name, and the solid must be the stiffer.
 #include "tube_scenes.hpp"
 
+#include "hard/hard_checks.hpp"
+
 #include "common/error.hpp"
 
 #include <catch2/catch.hpp>
@@ -149,4 +151,27 @@ TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, e
     const RunReport solid = solve_quietly(scene);
     CHECK(solid.model.level == "solid3d");
     CHECK(solid.scene.model == "solid");  // the summary's case says what ran
+}
+
+TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatever the number asked",
+          "[verification][harmonic]") {
+    // Steel shell 200 x 1 mm, 0.3 m, clamped over 10 mm at both ends: its
+    // lowest frequency falls from n = 0 to n = 5 and rises after, so the
+    // search must pass several harmonics before the lowest modes. Asking for
+    // 2 modes or 30 must give the same lowest pair (the stop rule does not
+    // cut the search short), each harmonic proven complete by its count.
+    Scene scene = harmonic(clamp_both_ends(steel_tube(0.2, 0.198, 0.3, 1, 64, 30, 2), 0.01));
+    const RunReport two = solve_quietly(scene);
+    scene.analysis.n_modes = 30;
+    const RunReport thirty = solve_quietly(scene);
+    for (const RunReport* r : {&two, &thirty}) check_verified(r->modes.verification);
+    REQUIRE(two.modes.modes.size() == 2);
+    CHECK(two.modes.modes[0].label.n == 5);
+    CHECK(two.modes.modes[0].label.type == "ovalling");
+    CHECK(two.modes.modes[0].frequency_hz == Approx(thirty.modes.modes[0].frequency_hz).epsilon(1e-9));
+    int lowest_n = -1;
+    double lowest = 1e300;
+    for (const Mode& m : thirty.modes.modes)
+        if (m.frequency_hz < lowest) lowest = m.frequency_hz, lowest_n = m.label.n;
+    CHECK(lowest_n == 5);
 }
