@@ -154,13 +154,14 @@ TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, e
 }
 
 TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatever the number asked",
-          "[verification][harmonic]") {
-    // Steel shell 200 x 1 mm, 0.3 m, clamped over 10 mm at both ends: its
-    // lowest frequency falls from n = 0 to n = 5 and rises after, so the
-    // search must pass several harmonics before the lowest modes. Asking for
-    // 2 modes or 30 must give the same lowest pair (the stop rule does not
-    // cut the search short), each harmonic proven complete by its count.
-    Scene scene = harmonic(clamp_both_ends(steel_tube(0.2, 0.198, 0.3, 1, 64, 30, 2), 0.01));
+          "[verification][harmonic][hard]") {
+    // Hard case 10 (cases/hard/10-thin-shell-valley.toml): its lowest
+    // frequency per harmonic falls from n = 0 to n = 5 and rises after, so
+    // the search must pass several harmonics before the lowest modes. Asking
+    // for 2 modes or 30 must give the same lowest pair (the stop rule does
+    // not cut the search short), each harmonic proven complete by its count.
+    Scene scene = hard_case("10-thin-shell-valley.toml");
+    REQUIRE(scene.model == "harmonic");
     const RunReport two = solve_quietly(scene);
     scene.analysis.n_modes = 30;
     const RunReport thirty = solve_quietly(scene);
