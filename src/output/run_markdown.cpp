@@ -103,9 +103,14 @@ void model_section(std::ostream& out, const RunReport& r) {
     }
     out << "- largest relative residual " << formatted("%.1e", v.max_relative_residual) << ", largest |XᵀMX − I| "
         << formatted("%.1e", v.max_orthonormality_error) << "\n";
-    out << "- inertia count: " << v.negative_pivots_at_shift << " eigenvalues below "
-        << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << v.modes_below_shift
-        << " modes found there: **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
+    if (m.harmonics.empty())
+        out << "- inertia count: " << v.negative_pivots_at_shift << " eigenvalues below "
+            << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << v.modes_below_shift
+            << " modes found there: **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
+    else
+        out << "- inertia counts, one per harmonic at its own shift (listed above), summed with pairs twice: "
+            << v.negative_pivots_at_shift << " eigenvalues, " << v.modes_below_shift << " modes found: **"
+            << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
 }
 
 void mode_section(std::ostream& out, const RunReport& r) {
