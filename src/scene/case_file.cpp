@@ -718,6 +718,12 @@ private:
                                                "a fraction of a millimetre to a few millimetres");
         }
         c.shaft_diameter = quantity(s, "shaft_diameter").value_or(c.body_diameter);
+        // The shaft leaves the body's end face: it cannot be wider than the body.
+        if (c.shaft_diameter > c.body_diameter * (1 + 1e-9))
+            fail(*get(s, "shaft_diameter"),
+                 echo(s, "shaft_diameter", *get(s, "shaft_diameter")) + " is wider than the chuck body (" +
+                     format_quantity(c.body_diameter, Dimension::length) +
+                     "); expected at most the body diameter (the shaft leaves the body's end face)");
         if (!get(s, "shaft_diameter"))
             scene.assumptions.push_back("chuck " + c.name + ": shaft diameter = chuck body diameter (" +
                                         format_quantity(c.body_diameter, Dimension::length) + ") assumed");

@@ -409,6 +409,10 @@ TEST_CASE("Elastic chucks are read, mirrored and checked", "[scene][case_file][c
         CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"110 mm\"\nbody_diameter = \"80 mm\"\n" + band),
                    Catch::Contains(":10:17: [supports.left] body_diameter = \"80 mm\" is not smaller than the core bore"));
     }
+    SECTION("a shaft wider than the chuck body") {
+        CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"110 mm\"\nshaft_diameter = \"90 mm\"\n" + band),
+                   Catch::Contains(":10:18: [supports.left] shaft_diameter = \"90 mm\" is wider than the chuck body"));
+    }
     SECTION("a negative stiffness") {
         CHECK_THAT(error_of(chucks + left + "normal_stiffness = \"-1e10 N/m^3\"\n" + band),
                    Catch::Contains(":11:20: [supports.left] normal_stiffness = -10 GN/m^3 must be positive"));
