@@ -7,6 +7,7 @@
 #include "hard/hard_checks.hpp"
 
 #include "common/error.hpp"
+#include "scene/case_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -175,4 +176,24 @@ TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatev
     for (const Mode& m : thirty.modes.modes)
         if (m.frequency_hz < lowest) lowest = m.frequency_hz, lowest_n = m.label.n;
     CHECK(lowest_n == 5);
+}
+
+TEST_CASE("Harmonic level: a band request returns exactly the modes of the band", "[verification][harmonic]") {
+    // Case 08 (2.2 m news roll on chucks): its 12 lowest modes reach 574.5 Hz.
+    Scene scene = parse_case_file(COREMODAL_SOURCE_DIR "/cases/08-news-chucks-76x15-2200.toml");
+    REQUIRE(scene.model == "harmonic");
+    scene.mesh.n_along = 20;  // a smaller section: the same comparison, quicker
+    scene.analysis.n_modes = 16;
+    const RunReport lowest = solve_quietly(scene);
+    const double f_max = 560;
+    scene.analysis.f_min_hz = 0.0;
+    scene.analysis.f_max_hz = f_max;
+    const RunReport band = solve_quietly(scene);
+    check_verified(band.modes.verification);
+    std::vector<double> expected;
+    for (const Mode& m : lowest.modes.modes)
+        if (m.frequency_hz <= f_max) expected.push_back(m.frequency_hz);
+    REQUIRE(expected.size() < lowest.modes.modes.size());  // the band ends inside the 16
+    REQUIRE(band.modes.modes.size() == expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) CHECK(band.modes.modes[i].frequency_hz == Approx(expected[i]).epsilon(1e-9));
 }
