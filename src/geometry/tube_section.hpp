@@ -2,7 +2,7 @@
 // times axial segments whose ends fall on every clamp-zone and expanding-
 // element edge and at chuck body ends, so that held zones are unions of whole
 // element faces; plus the chucks' solid parts. tube_model.hpp extrudes it into
-// hexahedra; a later axisymmetric-harmonic level can mesh the section in 2D.
+// hexahedra; section_mesh.hpp meshes it in 2D for the axisymmetric-harmonic level.
 #pragma once
 
 #include "scene/scene.hpp"
