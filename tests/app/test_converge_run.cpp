@@ -162,11 +162,17 @@ ConvergeStudy beam_study(const std::string& case_name) {
     return run_converge(o, progress);
 }
 
-const TrackedMode& role(const ModelStudy& m, const std::string& name) {
-    for (const auto& t : m.modes)
-        if (t.role == name) return t;
-    FAIL("no tracked mode with role " << name);
+// The one item of `items` whose `key` member is `name`; FAIL names `what` otherwise.
+template <class T>
+const T& named(const std::vector<T>& items, std::string T::*key, const std::string& name, const char* what) {
+    for (const auto& item : items)
+        if (item.*key == name) return item;
+    FAIL("no " << what << " " << name);
     throw;
+}
+
+const TrackedMode& role(const ModelStudy& m, const std::string& name) {
+    return named(m.modes, &TrackedMode::role, name, "tracked mode with role");
 }
 
 }  // namespace
@@ -335,10 +341,7 @@ ConvergeOptions small_study(const std::string& case_name, const std::string& uni
 }
 
 const ModelStudy& model(const ConvergeStudy& study, const std::string& name) {
-    for (const auto& m : study.models)
-        if (m.model == name) return m;
-    FAIL("no model level " << name);
-    throw;
+    return named(study.models, &ModelStudy::model, name, "model level");
 }
 
 }  // namespace
