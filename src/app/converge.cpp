@@ -667,9 +667,7 @@ std::string converge_json(const ConvergeStudy& study) {
                                      {"model_error", e.relative},
                                      {"known_to", e.known_to}});
     toml::array checks;
-    const ModelStudy* solid = nullptr;
-    for (const auto& m : study.models)
-        if (m.model == "solid") solid = &m;
+    const ModelStudy* solid = find_model(study.models, "solid");
     for (const auto& c : study.checks) {
         toml::array modes;
         for (const auto& d : distinct_modes(c.result.modes)) {
@@ -946,9 +944,7 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
         s << "\n## Named mesh levels against the extrapolated values (solid)\n\n"
              "| level | mesh (wall/paper/around/along) | DOFs | total [s] | peak memory [MiB] | f1 [Hz] | error f1 | "
              "ovalling [Hz] | error ovalling |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
-        const ModelStudy* solid = nullptr;
-        for (const auto& m : study.models)
-            if (m.model == "solid") solid = &m;
+        const ModelStudy* solid = find_model(study.models, "solid");
         for (const auto& c : study.checks) {
             s << "| " << c.name << " | " << c.mesh << " | " << c.result.n_dofs << " | "
               << seconds(c.result.median_s.total) << " | " << formatted("%.0f", c.result.peak_memory_mb) << " |";

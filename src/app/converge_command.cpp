@@ -162,11 +162,10 @@ ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int
 // as the beam skips what it cannot solve.
 std::optional<ModelLadder> harmonic_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes,
                                            std::ostream& progress, std::vector<std::string>& notes) {
-    try {
-        require_axisymmetric(scene);
-    } catch (const InputError& e) {
-        notes.push_back("harmonic model level skipped: " + std::string(e.what()));
-        if (mpi_rank() == 0 && !o.quiet) progress << "  harmonic model level skipped: " << e.what() << std::endl;
+    if (const auto why = why_not_axisymmetric(scene)) {
+        const std::string note = "harmonic model level skipped: " + *why;
+        notes.push_back(note);
+        if (mpi_rank() == 0 && !o.quiet) progress << "  " << note << std::endl;
         return std::nullopt;
     }
     std::string budget_note;

@@ -47,16 +47,17 @@ struct HarmonicModes {
     double lowest = 0;    // when only counted: its lowest eigenvalue
 };
 
-PetscVector petsc_vector(Mat like, const std::vector<double>& values) {
+// M r for a field r given as plain values on the DOFs.
+PetscVector mass_times(Mat M, const std::vector<double>& values) {
     PetscVector r, Mr;
-    COREMODAL_PETSC(MatCreateVecs(like, r.out(), Mr.out()));
+    COREMODAL_PETSC(MatCreateVecs(M, r.out(), Mr.out()));
     PetscInt lo, hi;
     COREMODAL_PETSC(VecGetOwnershipRange(r, &lo, &hi));
     PetscScalar* v;
     COREMODAL_PETSC(VecGetArray(r, &v));
     for (PetscInt i = lo; i < hi; ++i) v[i - lo] = values[i];
     COREMODAL_PETSC(VecRestoreArray(r, &v));
-    COREMODAL_PETSC(MatMult(like, r, Mr));
+    COREMODAL_PETSC(MatMult(M, r, Mr));
     return Mr;
 }
 
@@ -69,12 +70,16 @@ HarmonicModes solve_harmonic(HarmonicSystem& system, const SectionMesh& section,
     h.eigenvalues = solved.eigenvalues;
     h.residuals = solved.relative_residuals;
     h.verification = solved.verification;
+    // Rigid motions live in n = 0 (along and about z) and n = 1 (sideways) only.
+    const bool has_rigid_motions = system.n <= 1;
     std::array<PetscVector, 3> M_r;
-    for (int d = 0; d < 3; ++d)
-        M_r[d] = petsc_vector(system.M, harmonic_rigid_field(section, system.dofs, system.n, static_cast<RigidMotion>(d)));
+    if (has_rigid_motions)
+        for (int d = 0; d < 3; ++d)
+            M_r[d] = mass_times(system.M, harmonic_rigid_field(section, system.dofs, system.n, static_cast<RigidMotion>(d)));
     for (const PetscVector& x : solved.vectors) {
         std::array<double, 3> g{};
-        for (int d = 0; d < 3; ++d) COREMODAL_PETSC(VecDot(x, M_r[d], &g[d]));
+        if (has_rigid_motions)
+            for (int d = 0; d < 3; ++d) COREMODAL_PETSC(VecDot(x, M_r[d], &g[d]));
         h.gamma.push_back(g);
         h.vectors.push_back(gather_to_root(x));
     }
@@ -326,11 +331,15 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
     return std::nullopt;
 }
 
+namespace {
+
 void require_axisymmetric(const Scene& scene) {
     if (const auto why = why_not_axisymmetric(scene))
         throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
                          "; expected full bands and no [mesh] file, or model = \"solid\"");
 }
+
+}  // namespace
 
 RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;

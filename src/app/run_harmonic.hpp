@@ -16,10 +16,8 @@ namespace coremodal {
 // nothing when it can.
 std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 
-// Throws InputError naming the case file and why_not_axisymmetric's reason.
-void require_axisymmetric(const Scene& scene);
-
-// The harmonic run; require_axisymmetric first.
+// The harmonic run; an InputError naming the case file and
+// why_not_axisymmetric's reason for a scene it cannot solve.
 RunReport run_harmonic_scene(Scene scene, const RunOptions& options);
 
 }  // namespace coremodal
