@@ -17,11 +17,25 @@
 
 namespace coremodal {
 
+// Sources and ranges of every constant: docs/material-sources.md, "Chuck
+// contact". The form k_n proportional to pressure is supported by rough-contact
+// theory (Persson 2007: p ~ exp(-u/u0), so k_n = p/u0; Pastewka et al.:
+// interfacial stiffness linear in p); K2 and h enter only as u0 = h/K2, for
+// which no measurement against a core bore was found.
 struct ContactLaw {
-    double stack_exponent = 50;        // K2 (Pfeiffer): 20-100 for paper stacks
-    double layer_thickness = 1e-3;     // h, m: one to two plies of the bore
+    // K2 (Pfeiffer). The "20-100 for paper stacks" has no source that could be
+    // checked. With h: u0 = h/K2 = 20 um; suggested 5-50 um, i.e. k_n = 1.2e10
+    // to 1.2e11 Pa/m at 6 bar. k is sensitive (case 08: 0.768, bonded 0.839).
+    double stack_exponent = 50;
+    double layer_thickness = 1e-3;     // h, m: one to two plies of the bore (see K2)
+    // Not a material constant: the roll's weight over the contact is 3-9 kPa
+    // for cases 07 and 09 and 0.4-0.8 MPa for a full 1 m news roll.
     double residual_pressure = 20e3;   // p_residual, Pa: a not-expanded element
-    double poisson = 0.3;              // nu in Mindlin's ratio
+    // Mindlin's ratio holds for randomly rough contacts (Campana, Persson &
+    // Mueser 2011); k_t/k_n = 0.67 (nu = 0.5) to 1.0 (nu = 0), 0.82 here.
+    double poisson = 0.3;
+    // No published chuck value found; the contact pressure of a bladder behind
+    // leaves or lugs differs from the air pressure by their area ratio.
     double default_pressure = 0.6e6;   // Pa: a pneumatic element at 6 bar
 };
 

@@ -23,34 +23,66 @@ constexpr std::string_view kInPlaneEqual =
     "assumed equal to the measured cylinder modulus E_z (a wound roll's MD lies around it)";
 constexpr std::string_view kSteel = "handbook value for structural steel";
 
+// Published values, checked sources and the range to use for every value
+// below: docs/material-sources.md. "Suggested" ranges are judgements, not
+// measurements; no measured out-of-plane constant of a core wall was found.
 std::vector<LibraryValue> paperboard_core() {
     return {
+        // Gerhardt 1990: spiral tubes have an "extremely small" radial modulus
+        // (no number read); the E_MD/200 rule (Baum et al.) not checked.
+        // Suggested 20-100 MPa; k is sensitive (in series with the contact).
         {"E_r", 33e6, kOutOfPlane, true},
+        // No source for cores; suggested 2.5-6.5 GPa. Ovalling, breathing.
         {"E_theta", 4.0e9, kInPlaneAssumed, true},
+        // Ilomaki's measured Ec (ISO 11093-8); use the core's own ISO value.
         {"E_z", 6.5e9, kIlomakiCore, false},
+        // No measured value found; suggested as G_rz (out-of-plane shear is
+        // nearly isotropic in the plane: TAPPI PaperCon 2019 torsion study).
         {"G_rtheta", 130e6, kTransverseShear, true},
+        // No measured value found (fibre shear modulus 2.1-2.5 GPa, Dauer et al.
+        // 2021, is a far upper bound). Suggested 50-650 MPa; k is sensitive
+        // (case 08: 0.768 at 130 MPa, 0.791 at 650 MPa). Fit it.
         {"G_rz", 130e6, kTransverseShear, true},
+        // The classical relation from E_theta, E_z, nu_thetaz gives 1.84 GPa;
+        // suggested 1.2-2.5 GPa. The tube's beam shear (f2), torsion.
         {"G_thetaz", 1.8e9, kInPlaneAssumed, true},
+        // Sign uncertain (paper can be auxetic out of plane); suggested
+        // -0.005 to +0.005 while the compliance stays positive definite.
         {"nu_rtheta", 0.002, kSmallOutOfPlanePoisson, true},
         {"nu_rz", 0.002, kSmallOutOfPlanePoisson, true},
+        // 1/3 for isotropic sheets (Fibre Sci. Technol. 1983); 0.2-0.4.
         {"nu_thetaz", 0.3, kInPlaneAssumed, true},
+        // Ilomaki's 150 mm core; weigh the core in question.
         {"density", 920.0, kIlomakiCore, false},
     };
 }
 
 // A wound rest roll is in-plane isotropic to the precision we know it: the
 // cylinder modulus Ep was measured on the roll, not split into MD and CD.
+// Sources and ranges: docs/material-sources.md, "Rest paper".
 std::vector<LibraryValue> rest_paper(double E_inplane, double density, std::string_view source) {
     return {
+        // Jorkama's 9.8 MPa example; a stack's modulus rises with interlayer
+        // pressure (Pfeiffer). Suggested 5-50 MPa.
         {"E_r", 10e6, kJorkama, true},
+        // The paper's MD; likely >= E_z (the CD), not checked.
         {"E_theta", E_inplane, kInPlaneEqual, true},
+        // Ep: 5000 MPa (Ilomaki) against 1800 MPa (Koenig); measure it (I-15).
         {"E_z", E_inplane, source, false},
+        // No source: interlayer shear is held by friction. Suggested 1-100 MPa;
+        // decides whether thick rest paper bends as one cylinder.
         {"G_rtheta", 50e6, kTransverseShear, true},
         {"G_rz", 50e6, kTransverseShear, true},
+        // 0.3 Ep (isotropic would be 0.38 Ep); suggested 0.25-0.4 Ep.
         {"G_thetaz", 1.5e9 * E_inplane / 5.0e9, kInPlaneAssumed, true},
+        // As the core; with E_r = 10 MPa this gives nu_zr = E_z/E_r * 0.002
+        // (1.0 for rest_paper), not a measured value.
         {"nu_rtheta", 0.002, kSmallOutOfPlanePoisson, true},
         {"nu_rz", 0.002, kSmallOutOfPlanePoisson, true},
         {"nu_thetaz", 0.3, kInPlaneAssumed, true},
+        // 1350 kg/m^3 (Ilomaki) exceeds the densest calendered coated sheets
+        // (1110-1160 kg/m^3) and a roll holds air: questioned in the doc, kept.
+        // Suggested 1000-1200 (rotogravure grades), 600-800 (news).
         {"density", density, source, false},
     };
 }
@@ -80,6 +112,7 @@ const std::vector<LibraryMaterial>& material_library() {
         {"paperboard_core", false, paperboard_core()},
         {"rest_paper", false, rest_paper(5.0e9, 1350.0, kIlomakiRestPaper)},
         {"rest_paper_koenig", false, rest_paper(1.8e9, 1200.0, kKoenig)},
+        // EN 1993-1-1 3.2.6: E = 210 000 N/mm^2, nu = 0.3, rho = 7850 kg/m^3.
         {"steel",
          true,
          {{"E", 210e9, kSteel, false},
