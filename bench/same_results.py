@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Do two coremodal programs give the same frequencies on every shipped case?
+
+    /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--cases GLOB ...]
+
+Runs each case file of cases/ and cases/hard/ (not the [study] case) with both
+programs (`run CASE --no-plots -q -o DIR`), reads modes.csv from both, and
+prints one row per case: the number of modes, the largest relative frequency
+difference over the modes that are not rigid, and OK when it is at most
+--tolerance (default 1e-10). Exits 1 if any case differs or fails in one
+program and not the other. A refactoring that must keep every result (issue
+12) records this table in its note.
+"""
+import argparse
+import csv
+import glob
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+
+def run(binary, case, out, mesh):
+    args = [binary, "run", case, "--no-plots", "-q", "-o", out]
+    if mesh:
+        args += ["--mesh", mesh]
+    start = time.time()
+    p = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
+    return p.returncode, p.stderr.strip().splitlines()[-1:] , time.time() - start
+
+
+def frequencies(folder):
+    with open(os.path.join(folder, "modes.csv"), newline="") as f:
+        return [(float(r["frequency_hz"]), r["type"]) for r in csv.DictReader(f)]
+
+
+def compare(old, new):
+    if len(old) != len(new):
+        return None
+    worst = 0.0
+    for (fa, ta), (fb, tb) in zip(old, new):
+        if ta == "rigid" and tb == "rigid":
+            continue  # ~1e-5 Hz values, round-off of zero
+        worst = max(worst, abs(fa - fb) / max(abs(fa), 1e-300))
+    return worst
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("old")
+    ap.add_argument("new")
+    ap.add_argument("--mesh", default=None, help="mesh level for both (default: each case's own)")
+    ap.add_argument("--tolerance", type=float, default=1e-10)
+    ap.add_argument("--cases", nargs="*", default=None, help="case files (default: cases/*.toml and cases/hard/*.toml)")
+    a = ap.parse_args()
+    cases = a.cases or sorted(glob.glob(os.path.join(ROOT, "cases", "*.toml")) +
+                              glob.glob(os.path.join(ROOT, "cases", "hard", "*.toml")))
+    bad = 0
+    print(f"| case | modes | max relative difference | |\n|---|---|---|---|")
+    with tempfile.TemporaryDirectory() as tmp:
+        for i, case in enumerate(cases):
+            name = os.path.relpath(case, ROOT)
+            if "[study]" in open(case).read():
+                continue
+            outs = [os.path.join(tmp, f"{i}-old"), os.path.join(tmp, f"{i}-new")]
+            results = [run(b, case, o, a.mesh) for b, o in zip((a.old, a.new), outs)]
+            codes = [r[0] for r in results]
+            if codes[0] != 0 or codes[1] != 0:
+                same = codes[0] == codes[1]
+                bad += 0 if same else 1
+                print(f"| {name} | - | exit {codes[0]} / {codes[1]} | {'same failure' if same else 'DIFFERS'} |")
+                continue
+            old, new = frequencies(outs[0]), frequencies(outs[1])
+            worst = compare(old, new)
+            ok = worst is not None and worst <= a.tolerance
+            bad += 0 if ok else 1
+            shown = "different mode counts" if worst is None else f"{worst:.1e}"
+            print(f"| {name} | {len(new)} | {shown} | {'OK' if ok else 'DIFFERS'} |", flush=True)
+    sys.exit(1 if bad else 0)
+
+
+if __name__ == "__main__":
+    main()
