@@ -4,6 +4,7 @@
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "geometry/tube_section.hpp"
+#include "output/csv.hpp"
 #include "scene/mesh_levels.hpp"
 
 #include <toml++/toml.h>
@@ -503,13 +504,6 @@ const TrackedMode* role_mode(const ModelStudy& m, const std::string& role) {
     return nullptr;
 }
 
-std::string csv_quote(const std::string& s) {
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
 std::string opt(const std::optional<double>& v, const char* format = "%.10g") { return v ? formatted(format, *v) : ""; }
 
 toml::table timing_table(const Timing& t) {
@@ -582,7 +576,7 @@ std::string converge_csv(const ConvergeStudy& study) {
                   << csv_seconds(t.classify) << ',' << csv_seconds(t.total) << ',' << csv_seconds(l.median_cpu_s)
                   << ',' << csv_seconds(l.median_solver_s.factor_s) << ',' << csv_seconds(l.median_solver_s.solve_s)
                   << ',' << csv_seconds(l.median_solver_s.orthogonalize_s) << ',' << formatted("%.1f", l.peak_memory_mb)
-                  << ',' << csv_quote(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
+                  << ',' << csv_field(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ','
                   << mode.key.n << ',' << mode.key.m << ',' << mode.key.occurrence << ','
                   << opt(mode.frequency_hz[i]) << ',';
                 if (mode.richardson) {
