@@ -14,6 +14,7 @@
 #pragma once
 
 #include "modes/mode_set.hpp"
+#include "numerics/richardson.hpp"
 #include "output/run_report.hpp"
 #include "scene/scene.hpp"
 
@@ -125,7 +126,6 @@ struct LevelResult {
     double max_repeat_spread = 0;  // largest relative frequency difference between runs
 };
 
-double median(std::vector<double> values);
 LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& runs);
 
 // ---- tracking modes across levels --------------------------------------------
@@ -164,40 +164,6 @@ inline const std::vector<std::pair<std::string, std::string>> kModeRoles = {
     {"f1", "bending"}, {"ovalling", "ovalling"}, {"torsion", "torsion"}, {"axial", "axial"},
     {"breathing", "breathing"}};
 
-// Result of Richardson extrapolation f(h) = f0 + C h^p from three levels.
-struct Richardson {
-    bool extrapolated = false;  // false: f0 is the finest value, see note
-    double order = 0;           // observed p (0 when not extrapolated)
-    double f0 = 0;              // extrapolated value
-    double error_estimate = 0;  // |f_finest - f0| (for oscillating sequences the largest change)
-    bool asymptotic = false;    // order plausible, and consistent with the previous triple if there is one
-    std::optional<double> previous_order;  // p from the triple one level coarser
-    std::optional<double> previous_f0;     // f0 from that triple
-    std::optional<double> f0_uncertainty;  // |f0 - previous_f0|: how well f0 itself is known
-    std::string note;           // plain words for the report
-};
-
-// Plausible observed orders: quadratic elements give eigenvalue errors ~ h^4
-// on smooth problems; stress singularities at clamp edges lower that towards 1
-// or below (DOMAIN.md section 6). Outside this range the levels are not in
-// the asymptotic range and the report says so.
-inline constexpr double kMinPlausibleOrder = 0.5;
-inline constexpr double kMaxPlausibleOrder = 8.0;
-// Two triples agree on the order when they differ by less than this fraction.
-inline constexpr double kOrderConsistency = 0.25;
-// Changes below this relative size are the eigen solver's round-off (its
-// tolerance is 1e-10 on eigenvalues): such a mode has converged.
-inline constexpr double kSolverNoise = 1e-9;
-
-// Three levels, coarse to fine (h1 > h2 > h3 > 0). Solves
-// (f1 - f2)/(f2 - f3) = (h1^p - h2^p)/(h2^p - h3^p) for p by bisection
-// (the right side grows monotonically with p), then f0 = f3 - C h3^p.
-Richardson richardson_three(const double h[3], const double f[3]);
-
-// Extrapolation from the three finest of n >= 3 levels, with the previous
-// triple's order and f0 for the consistency check when n >= 4.
-Richardson richardson(const std::vector<double>& h, const std::vector<double>& f);
-
 struct TrackedMode {
     ModeKey key;
     std::string role;                               // "f1", "ovalling", ... or "" (tracked, no role)
@@ -210,10 +176,6 @@ struct TrackedMode {
 // role modes (labels taken from the finest level) even if a coarser level
 // lacks them. Sorted by the finest level's frequency.
 std::vector<TrackedMode> track_modes(const std::vector<LevelResult>& levels);
-
-// Least-squares slope of log(y) against log(x): y ~ x^slope. Needs >= 2
-// points with positive values, else nullopt.
-std::optional<double> power_law_exponent(const std::vector<double>& x, const std::vector<double>& y);
 
 // ---- model levels -------------------------------------------------------------
 
