@@ -202,80 +202,37 @@ LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& ru
 
 // ---- tracking ---------------------------------------------------------------
 
-std::string ModeKey::text() const {
-    std::string s = type + " n=" + std::to_string(n) + " m=" + std::to_string(m);
-    if (occurrence > 1) s += " #" + std::to_string(occurrence);
-    return s;
+namespace {
+
+// The extrapolation from the finest levels that all have the mode, and each
+// level's error against its f0.
+void extrapolate(TrackedMode& t, const std::vector<LevelResult>& levels) {
+    std::vector<double> h, f;
+    for (std::size_t i = levels.size(); i-- > 0 && t.frequency_hz[i];) {
+        h.insert(h.begin(), levels[i].step.h);
+        f.insert(f.begin(), *t.frequency_hz[i]);
+    }
+    if (f.size() >= 3) t.richardson = richardson(h, f);
+    for (const auto& value : t.frequency_hz)
+        t.relative_error.push_back(value && t.richardson
+                                       ? std::optional<double>(std::abs(*value - t.richardson->f0) /
+                                                               std::abs(t.richardson->f0))
+                                       : std::nullopt);
 }
 
-std::vector<DistinctMode> distinct_modes(const std::vector<Mode>& modes) {
-    std::vector<DistinctMode> out;
-    for (const Mode& mode : modes) {
-        const ModeLabel& l = mode.label;
-        if (l.type == "rigid" || l.type == "mixed") continue;
-        // A partner: the latest distinct mode of the same label, within the tolerance.
-        DistinctMode* partner = nullptr;
-        int same_label = 0;
-        for (auto& d : out)
-            if (d.key.type == l.type && d.key.n == l.n && d.key.m == l.m) {
-                partner = &d;
-                ++same_label;
-            }
-        if (partner && std::abs(mode.frequency_hz - partner->frequency_hz) <=
-                           kDegenerateTolerance * std::max(mode.frequency_hz, partner->frequency_hz)) {
-            ++partner->multiplicity;
-            continue;
-        }
-        out.push_back({{l.type, l.n, l.m, same_label + 1}, mode.frequency_hz, mode.index, 1});
-    }
-    return out;
-}
+}  // namespace
 
 std::vector<TrackedMode> track_modes(const std::vector<LevelResult>& levels) {
-    std::vector<TrackedMode> tracked;
-    if (levels.empty()) return tracked;
     std::vector<std::vector<DistinctMode>> distinct;
     for (const auto& level : levels) distinct.push_back(distinct_modes(level.modes));
-    auto find = [](const std::vector<DistinctMode>& modes, const ModeKey& key) -> const DistinctMode* {
-        for (const auto& d : modes)
-            if (d.key == key) return &d;
-        return nullptr;
-    };
-
-    const auto& finest = distinct.back();
-    for (const auto& d : finest) {
-        const bool everywhere = std::all_of(distinct.begin(), distinct.end(),
-                                            [&](const auto& level) { return find(level, d.key) != nullptr; });
-        std::string role;
-        for (const auto& [name, type] : kModeRoles) {
-            const auto first_of_type =
-                std::find_if(finest.begin(), finest.end(), [&](const DistinctMode& x) { return x.key.type == type; });
-            if (first_of_type != finest.end() && first_of_type->key == d.key) role = name;
-        }
-        if (!everywhere && role.empty()) continue;
+    std::vector<TrackedMode> tracked;
+    for (LabelTrack& track : track_by_label(distinct, kModeRoles)) {
         TrackedMode t;
-        t.key = d.key;
-        t.role = role;
-        for (const auto& level : distinct) {
-            const DistinctMode* x = find(level, d.key);
-            t.frequency_hz.push_back(x ? std::optional<double>(x->frequency_hz) : std::nullopt);
-        }
+        t.key = std::move(track.key);
+        t.role = std::move(track.role);
+        t.frequency_hz = std::move(track.frequency_hz);
+        extrapolate(t, levels);
         tracked.push_back(std::move(t));
-    }
-
-    for (auto& t : tracked) {
-        // The finest levels that all have the mode, for the extrapolation.
-        std::vector<double> h, f;
-        for (std::size_t i = levels.size(); i-- > 0 && t.frequency_hz[i];) {
-            h.insert(h.begin(), levels[i].step.h);
-            f.insert(f.begin(), *t.frequency_hz[i]);
-        }
-        if (f.size() >= 3) t.richardson = richardson(h, f);
-        for (const auto& value : t.frequency_hz)
-            t.relative_error.push_back(value && t.richardson
-                                           ? std::optional<double>(std::abs(*value - t.richardson->f0) /
-                                                                   std::abs(t.richardson->f0))
-                                           : std::nullopt);
     }
     return tracked;
 }

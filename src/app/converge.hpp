@@ -13,6 +13,7 @@
 // extrapolation below takes any three h.
 #pragma once
 
+#include "modes/label_tracking.hpp"
 #include "modes/mode_set.hpp"
 #include "numerics/richardson.hpp"
 #include "output/run_report.hpp"
@@ -130,37 +131,9 @@ LevelResult summarize_runs(const MeshStep& step, const std::vector<LevelRun>& ru
 
 // ---- tracking modes across levels --------------------------------------------
 
-// A mode's identity across meshes: its label and which occurrence of that
-// label it is (1 = the lowest). Degenerate partners (bending pairs, ovalling
-// pairs) are one tracked mode.
-struct ModeKey {
-    std::string type;
-    int n = 0, m = 0;
-    int occurrence = 1;
-    bool operator==(const ModeKey&) const = default;
-    std::string text() const;  // "bending n=1 m=0" (+ " #2" for a second occurrence)
-};
-
-// Partners closer than this (relative frequency) with the same label are one
-// mode. Exact pairs agree to ~1e-10; two distinct modes of one label are far
-// apart. A pair split by a mesh that is not 45-degree symmetric (around a
-// multiple of 4 only) differs by ~1e-5 to 1e-4, still one mode.
-inline constexpr double kDegenerateTolerance = 1e-3;
-
-struct DistinctMode {
-    ModeKey key;
-    double frequency_hz = 0;
-    int index = 0;         // 1-based index of the first partner in the run
-    int multiplicity = 1;  // 2 for a degenerate pair
-};
-
-// Distinct elastic modes of one run: rigid and mixed modes are left out
-// (a mixed label cannot be matched across meshes).
-std::vector<DistinctMode> distinct_modes(const std::vector<Mode>& modes);
-
 // The roles the study reports on: the first bending mode f1, the first
 // ovalling mode, the first torsion, axial and breathing modes.
-inline const std::vector<std::pair<std::string, std::string>> kModeRoles = {
+inline const std::vector<ModeRole> kModeRoles = {
     {"f1", "bending"}, {"ovalling", "ovalling"}, {"torsion", "torsion"}, {"axial", "axial"},
     {"breathing", "breathing"}};
 

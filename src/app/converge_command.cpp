@@ -223,12 +223,6 @@ LevelRun run_beam_once(const Scene& scene, const MeshStep& step, int unit_elemen
     return run;
 }
 
-bool has_type(const std::vector<Mode>& modes, const std::string& type) {
-    for (const auto& d : distinct_modes(modes))
-        if (d.key.type == type) return true;
-    return false;
-}
-
 // The beam model level: kBeamLevels levels of the unit beam mesh (h = 1/k,
 // k = 1, 2, 4, ...), each run kBeamRunsPerLevel times. The modes asked per
 // run start from --modes or the case's and double (up to
@@ -251,7 +245,7 @@ std::optional<ModelLadder> beam_ladder(const Scene& scene, const ConvergeOptions
         if (!o.n_modes && !scene.analysis.f_max_hz)
             for (;;) {
                 const LevelRun run = run_beam_once(scene, ladder.steps.front(), kBeamUnitElements, ladder.n_modes);
-                if ((has_type(run.modes, "torsion") && has_type(run.modes, "axial")) ||
+                if ((has_mode_type(run.modes, "torsion") && has_mode_type(run.modes, "axial")) ||
                     ladder.n_modes >= kMaxModesForOvalling)
                     break;
                 const int more = std::min(2 * ladder.n_modes, kMaxModesForOvalling);
@@ -285,12 +279,6 @@ std::optional<ModelLadder> beam_ladder(const Scene& scene, const ConvergeOptions
 
 // ---- 2. the number of modes -------------------------------------------------
 
-bool has_ovalling(const std::vector<Mode>& modes) {
-    for (const auto& d : distinct_modes(modes))
-        if (d.key.type == "ovalling") return true;
-    return false;
-}
-
 // The study reports on the first ovalling mode, which beam theory cannot see;
 // it often lies above the case's own request (case 03: mode 17). Doubles
 // n_modes on the coarsest level (cheap) until an ovalling mode shows, up to
@@ -302,7 +290,7 @@ std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder&
     const bool root = mpi_rank() == 0;
     for (;;) {
         LevelRun run = ladder.run_once(ladder.steps.front());
-        int found = root ? has_ovalling(run.modes) : 0;
+        int found = root ? has_mode_type(run.modes, "ovalling") : 0;
         MPI_Bcast(&found, 1, MPI_INT, 0, PETSC_COMM_WORLD);  // labels live on rank 0
         if (found) return run;
         if (n_modes >= kMaxModesForOvalling) {

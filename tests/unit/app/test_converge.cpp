@@ -58,25 +58,6 @@ TEST_CASE("The median of repeated runs", "[converge]") {
     CHECK(r.max_repeat_spread == 0);
 }
 
-TEST_CASE("Degenerate partners are one mode; rigid and mixed modes are not tracked", "[converge]") {
-    const std::vector<Mode> modes = {
-        mode(1, 0.0, "rigid", 0, 0),          mode(2, 1e-4, "rigid", 0, 0),
-        mode(3, 133.36, "bending", 1, 2),     mode(4, 133.36 * (1 + 1e-9), "bending", 1, 2),
-        mode(5, 466.2, "torsion", 0, 1),      mode(6, 600.0, "mixed", 1, 0),
-        mode(7, 1030.83, "ovalling", 2, 0),   mode(8, 1030.84, "ovalling", 2, 0),
-        mode(9, 1400.0, "ovalling", 2, 0)};  // a second, distinct n=2 m=0 mode
-    const auto d = distinct_modes(modes);
-    REQUIRE(d.size() == 4);
-    CHECK(d[0].key == ModeKey{"bending", 1, 2, 1});
-    CHECK(d[0].multiplicity == 2);
-    CHECK(d[0].index == 3);
-    CHECK(d[1].key == ModeKey{"torsion", 0, 1, 1});
-    CHECK(d[2].key == ModeKey{"ovalling", 2, 0, 1});
-    CHECK(d[2].multiplicity == 2);
-    CHECK(d[3].key == ModeKey{"ovalling", 2, 0, 2});
-    CHECK(d[3].key.text() == "ovalling n=2 m=0 #2");
-}
-
 TEST_CASE("Modes are tracked by label, not by index, across levels", "[converge]") {
     // The dense ovalling family swaps order between meshes (m = 1 below m = 0
     // on the coarse mesh); the torsion mode drops below the second bending pair.
