@@ -1,5 +1,5 @@
 """The error-against-time picture of ``coremodal converge``, on a converge.json
-written here in the layout the program writes (see src/app/converge.cpp)."""
+written here in the layout the program writes (see src/output/converge_report.cpp)."""
 
 from __future__ import annotations
 

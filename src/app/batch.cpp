@@ -2,6 +2,7 @@
 
 #include "common/child_process.hpp"
 #include "common/error.hpp"
+#include "output/csv.hpp"
 
 #include <toml++/toml.h>
 
@@ -259,16 +260,6 @@ std::string csv_number(const std::optional<double>& v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.10g", *v);
     return buf;
-}
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-    std::string q = "\"";
-    for (char c : s) {
-        if (c == '"') q += '"';
-        q += c;
-    }
-    return q + '"';
 }
 
 std::optional<double> times(const std::optional<double>& v, double factor) {

@@ -2,6 +2,7 @@
 #include "common/format.hpp"
 
 #include "common/error.hpp"
+#include "output/csv.hpp"
 
 #include <algorithm>
 #include <cmath>

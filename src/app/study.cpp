@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
+#include "output/csv.hpp"
 #include "output/python_plots.hpp"
 
 #include <toml++/toml.h>
@@ -214,20 +215,6 @@ std::string unit_suffix(const SweepParameter& p) {
     }
     return "";
 }
-
-}  // namespace
-
-std::string csv_field(const std::string& s) {
-    if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"') out += '"';
-        out += (c == '\n' || c == '\r') ? ' ' : c;
-    }
-    return out + "\"";
-}
-
-namespace {
 
 std::string number(double v) { return significant(v, 10); }
 std::string number(const std::optional<double>& v) { return v ? number(*v) : ""; }

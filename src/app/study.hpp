@@ -92,9 +92,6 @@ StudyResult run_and_track(const CaseSweep& sweep, const std::string& command, co
 // The column of a parameter in study.csv: its name and SI unit ("core.length_m").
 std::string parameter_column(const SweepParameter& p);
 
-// A CSV field, quoted when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text);
-
 // One row per point and tracked mode group; a failed point has one row with its error.
 std::string study_csv(const CaseSweep& sweep, const StudyResult& result);
 // Metadata for the plotting script (python/coremodal/study_plot.py).

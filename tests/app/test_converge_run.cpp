@@ -2,7 +2,7 @@
 // core) solved in this process, and the program's command line (help, bad
 // input). The ladder is coarse (unit 1/-/8/3, k = 1..4, at most ~23 k DOFs) so
 // that the whole test takes well under a minute (~25 s on a busy 2-core machine).
-#include "app/converge.hpp"
+#include "analyses/converge/converge.hpp"
 
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"

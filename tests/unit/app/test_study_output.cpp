@@ -104,5 +104,4 @@ TEST_CASE("study.csv: one row per point and tracked group, a failed point with i
     CHECK(csv.find(",solve failed: converged 3 of 8\n") != std::string::npos);
     // Point 3 follows point 1 (point 2 failed), on the same track by label.
     CHECK(csv.find("\n3,2,0.05,ok,1,1,") != std::string::npos);
-    CHECK(csv_field("a, \"b\"") == "\"a, \"\"b\"\"\"");
 }
