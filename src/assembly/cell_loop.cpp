@@ -42,7 +42,8 @@ const Eigen::MatrixXd& CouplingElement::matrix(Term term) const {
 }
 
 double assemble_couplings(const std::vector<CouplingElement>& couplings, const DofMap& dofs,
-                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert) {
+                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert,
+                          const std::vector<Term>& pad_to) {
     double mass = 0;
     std::vector<int> element_dofs;
     for (const CouplingElement& e : couplings) {
@@ -54,6 +55,11 @@ double assemble_couplings(const std::vector<CouplingElement>& couplings, const D
             insert(t.term, element_dofs, t.matrix);
             if (t.term == Term::mass) mass += t.matrix.sum() / 3;  // lumped: each component block sums to m
         }
+        for (Term t : pad_to)
+            if (e.matrix(t).size() == 0) {
+                const int n = static_cast<int>(element_dofs.size());
+                insert(t, element_dofs, Eigen::MatrixXd::Zero(n, n));
+            }
     }
     return mass;
 }

@@ -49,9 +49,13 @@ using TermInsert = std::function<void(Term term, const std::vector<int>& dofs, c
 double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
                       const std::function<bool(int)>& take, const TermInsert& insert);
 
-// Inserts every term of the couplings for which `take(nodes)` is true.
+// Inserts every term of the couplings for which `take(nodes)` is true, and
+// zeros for each term of `pad_to` an element does not have, so that every
+// assembled matrix gets the same pattern (PETSc squeezes out preallocated
+// entries nobody set, and K - sigma M is formed with SAME_NONZERO_PATTERN).
 // Returns their lumped mass (kg).
 double assemble_couplings(const std::vector<CouplingElement>& couplings, const DofMap& dofs,
-                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert);
+                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert,
+                          const std::vector<Term>& pad_to = {});
 
 }  // namespace coremodal

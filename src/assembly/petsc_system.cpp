@@ -116,7 +116,7 @@ OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
         mesh, materials, dofs, [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); }, insert);
     local_mass += assemble_couplings(
         couplings, dofs, [&](const std::vector<int>& nodes) { return owned_here(nodes.data(), static_cast<int>(nodes.size())); },
-        insert);
+        insert, terms);
     for (Term t : terms) {
         Mat A = system[t];
         COREMODAL_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
