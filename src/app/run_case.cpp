@@ -301,7 +301,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 4. Assemble K and M.
     say("[3/7] assembling stiffness and mass");
-    const PetscSystem system = assemble_petsc(mesh, part_materials(scene, mesh.part_names, mesh_source), dofs, chucks.couplings);
+    const OperatorSet system = assemble_petsc(mesh, part_materials(scene, mesh.part_names, mesh_source), dofs, chucks.couplings);
     report.model.mass_kg = system.model_mass;
     report.timing_s.assemble = stage.lap();
 
@@ -314,7 +314,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     // case file's [analysis] table: name the file.
     SolvedModes solved = [&] {
         try {
-            return solve_modes(system.K, system.M, request, say);
+            return solve_modes(system, request, say);
         } catch (const InputError& e) {
             throw InputError(scene.source_file + ": " + e.what());
         }
@@ -327,7 +327,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const ModeClassifier classifier(mesh, roll_nodes(mesh));
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
-    const EffectiveMassCalculator effective_mass(system.M, mesh, dofs);
+    const EffectiveMassCalculator effective_mass(system.M(), mesh, dofs);
     const double lambda_band_min = request.lambda_min.value_or(-1e300);
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
         const double lambda = solved.eigenvalues[i];

@@ -66,7 +66,7 @@ HarmonicModes solve_harmonic(HarmonicSystem& system, const SectionMesh& section,
     h.n = system.n;
     h.dofs = system.dofs;
     h.solved = true;
-    SolvedModes solved = solve_modes(system.K, system.M, request, [](const std::string&) {});
+    SolvedModes solved = solve_modes(system.operators, request, [](const std::string&) {});
     h.eigenvalues = solved.eigenvalues;
     h.residuals = solved.relative_residuals;
     h.verification = solved.verification;
@@ -75,7 +75,7 @@ HarmonicModes solve_harmonic(HarmonicSystem& system, const SectionMesh& section,
     std::array<PetscVector, 3> M_r;
     if (has_rigid_motions)
         for (int d = 0; d < 3; ++d)
-            M_r[d] = mass_times(system.M, harmonic_rigid_field(section, system.dofs, system.n, static_cast<RigidMotion>(d)));
+            M_r[d] = mass_times(system.operators.M(), harmonic_rigid_field(section, system.dofs, system.n, static_cast<RigidMotion>(d)));
     for (const PetscVector& x : solved.vectors) {
         std::array<double, 3> g{};
         if (has_rigid_motions)
@@ -195,7 +195,7 @@ double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
     request.n_modes = 1;
     request.lambda_min.reset();
     request.lambda_max.reset();
-    const SolvedModes one = solve_modes(system.K, system.M, request, [](const std::string&) {});
+    const SolvedModes one = solve_modes(system.operators, request, [](const std::string&) {});
     return one.eigenvalues.at(0);
 }
 
@@ -215,13 +215,13 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
                              std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
         Stopwatch lap;
         HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
-        if (n == 0) report.model.mass_kg = system.model_mass;
+        if (n == 0) report.model.mass_kg = system.operators.model_mass;
         report.timing_s.assemble += lap.lap();
         const std::string line = "      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) + " DOFs, ";
         const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, scene.analysis.n_modes);
         if (n >= 2 && edge) {
             // Sylvester's count says how many of this harmonic's modes lie below the edge.
-            const long below = count_eigenvalues_below(system.K, system.M, *edge * (1 + 1e-9));
+            const long below = count_eigenvalues_below(system.operators, *edge * (1 + 1e-9));
             if (below == 0) {
                 HarmonicModes empty;
                 empty.n = n;

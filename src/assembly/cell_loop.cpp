@@ -5,7 +5,7 @@
 namespace coremodal {
 
 double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                      const std::function<bool(int)>& take, const CellInsert& insert) {
+                      const std::function<bool(int)>& take, const TermInsert& insert) {
     const int npc = mesh.nodes_per_cell();
     CellCoords coords(npc, 3);
     Eigen::MatrixXd K, M;
@@ -28,7 +28,38 @@ double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materia
                              mesh.part_names[mesh.cell_part[c]] + "'): " + e.what());
         }
         mass += M.sum() / 3;  // each of the three component blocks sums to rho * V
-        insert(cell_dofs, K, M);
+        insert(Term::stiffness, cell_dofs, K);
+        insert(Term::mass, cell_dofs, M);
+    }
+    return mass;
+}
+
+const Eigen::MatrixXd& CouplingElement::matrix(Term term) const {
+    static const Eigen::MatrixXd none;
+    for (const TermMatrix& t : terms)
+        if (t.term == term) return t.matrix;
+    return none;
+}
+
+double assemble_couplings(const std::vector<CouplingElement>& couplings, const DofMap& dofs,
+                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert,
+                          const std::vector<Term>& pad_to) {
+    double mass = 0;
+    std::vector<int> element_dofs;
+    for (const CouplingElement& e : couplings) {
+        if (!take(e.nodes)) continue;
+        element_dofs.clear();
+        for (int n : e.nodes)
+            for (int c = 0; c < 3; ++c) element_dofs.push_back(dofs.dof(n, c));
+        for (const TermMatrix& t : e.terms) {
+            insert(t.term, element_dofs, t.matrix);
+            if (t.term == Term::mass) mass += t.matrix.sum() / 3;  // lumped: each component block sums to m
+        }
+        for (Term t : pad_to)
+            if (e.matrix(t).size() == 0) {
+                const int n = static_cast<int>(element_dofs.size());
+                insert(t, element_dofs, Eigen::MatrixXd::Zero(n, n));
+            }
     }
     return mass;
 }

@@ -1,10 +1,12 @@
-// The cell loop, independent of the matrix format: each cell's stiffness and
-// mass are handed to an insertion callback with the cell's global dofs (-1 for
-// eliminated ones). A unit test fills dense Eigen matrices with it; a run
-// fills PETSc matrices (DOLFINx's pattern).
+// The cell loop, independent of the matrix format: each cell's named terms
+// (stiffness, mass) are handed to an insertion callback with the cell's global
+// dofs (-1 for eliminated ones). A unit test fills dense Eigen matrices with
+// it (tests/unit/assembly/test_cell_loop.cpp); a run fills PETSc matrices
+// (DOLFINx's pattern).
 #pragma once
 
 #include "assembly/dof_map.hpp"
+#include "element/term.hpp"
 #include "material/material.hpp"
 #include "mesh/mesh.hpp"
 
@@ -20,19 +22,40 @@ struct PartMaterial {
     double density = 0;
 };
 
-// A contribution beyond the volume cells: springs between nodes or to the
-// ground, point masses. Three DOFs per node, node-major like the cells.
-struct CouplingElement {
-    std::vector<int> nodes;
-    Eigen::MatrixXd K, M;  // 3 n x 3 n (M may be empty: springs have no mass)
+// One term's dense matrix over an element's DOFs (three per node, node-major).
+struct TermMatrix {
+    Term term;
+    Eigen::MatrixXd matrix;
 };
 
-using CellInsert = std::function<void(const std::vector<int>& dofs, const Eigen::MatrixXd& K_cell,
-                                      const Eigen::MatrixXd& M_cell)>;
+// A contribution beyond the volume cells: springs between nodes or to the
+// ground, point masses. Three DOFs per node, node-major like the cells; one
+// matrix per term it contributes to (a spring: stiffness only).
+struct CouplingElement {
+    std::vector<int> nodes;
+    std::vector<TermMatrix> terms;
+    // The matrix of `term`, or an empty (0 x 0) one.
+    const Eigen::MatrixXd& matrix(Term term) const;
+};
 
-// Loops over the cells for which `take(cell)` is true. Returns the mass of
-// those cells (sum of rho * V), for the "mass equals rho V" check.
+// Receives one element matrix of one term with the element's global DOFs
+// (-1 for eliminated ones). A run's sink adds into PETSc matrices, a unit
+// test's into dense Eigen matrices: the loops below are the same for both.
+using TermInsert = std::function<void(Term term, const std::vector<int>& dofs, const Eigen::MatrixXd& matrix)>;
+
+// Loops over the cells for which `take(cell)` is true and inserts their
+// stiffness and mass. Returns the mass of those cells (sum of rho * V), for
+// the "mass equals rho V" check.
 double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                      const std::function<bool(int)>& take, const CellInsert& insert);
+                      const std::function<bool(int)>& take, const TermInsert& insert);
+
+// Inserts every term of the couplings for which `take(nodes)` is true, and
+// zeros for each term of `pad_to` an element does not have, so that every
+// assembled matrix gets the same pattern (PETSc squeezes out preallocated
+// entries nobody set, and K - sigma M is formed with SAME_NONZERO_PATTERN).
+// Returns their lumped mass (kg).
+double assemble_couplings(const std::vector<CouplingElement>& couplings, const DofMap& dofs,
+                          const std::function<bool(const std::vector<int>&)>& take, const TermInsert& insert,
+                          const std::vector<Term>& pad_to = {});
 
 }  // namespace coremodal

@@ -139,8 +139,9 @@ CouplingElement spring_layer_face(const Scene& scene, const Mesh& mesh, const Ch
         for (int a = 0; a < n; ++a)
             for (int b = 0; b < n; ++b) Kab.block<3, 3>(3 * a, 3 * b) += p.area_weight * p.N[a] * p.N[b] * D;
     }
-    e.K.resize(6 * n, 6 * n);
-    e.K << Kab, -Kab, -Kab, Kab;
+    Eigen::MatrixXd K(6 * n, 6 * n);
+    K << Kab, -Kab, -Kab, Kab;
+    e.terms.push_back({Term::stiffness, std::move(K)});
     return e;
 }
 
@@ -193,22 +194,23 @@ void hold_chuck_by_bearing(const Mesh& mesh, const ChuckSpec& chuck, ChuckSuppor
         CouplingElement e;
         e.nodes.assign(face.face(f), face.face(f) + n);
         if (to_frame) e.nodes.push_back(mesh.node_groups.at("frame_" + chuck.name).at(0));
-        e.K = Eigen::MatrixXd::Zero(3 * m, 3 * m);
+        Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * m, 3 * m);
         for (const FacePoint& p : face_quadrature(face_coords(mesh, face, f), kBearingGauss)) {
             Eigen::VectorXd N(m);  // relative displacement: face minus frame
             N.head(n) = p.N;
             if (to_frame) N[n] = -1;
             for (int a = 0; a < m; ++a)
                 for (int b = 0; b < m; ++b)
-                    e.K.block<3, 3>(3 * a, 3 * b) += p.area_weight * N[a] * N[b] * c.asDiagonal().toDenseMatrix();
+                    K.block<3, 3>(3 * a, 3 * b) += p.area_weight * N[a] * N[b] * c.asDiagonal().toDenseMatrix();
         }
+        e.terms.push_back({Term::stiffness, std::move(K)});
         out.couplings.push_back(std::move(e));
     }
     if (to_frame) {  // the frame: a lumped mass on a spring to the ground, in all three directions
         CouplingElement frame;
         frame.nodes = {mesh.node_groups.at("frame_" + chuck.name).at(0)};
-        frame.K = *chuck.bearing.frame_stiffness * Eigen::MatrixXd::Identity(3, 3);
-        frame.M = *chuck.bearing.frame_mass * Eigen::MatrixXd::Identity(3, 3);
+        frame.terms = {{Term::stiffness, *chuck.bearing.frame_stiffness * Eigen::MatrixXd::Identity(3, 3)},
+                       {Term::mass, *chuck.bearing.frame_mass * Eigen::MatrixXd::Identity(3, 3)}};
         out.couplings.push_back(std::move(frame));
     }
 }

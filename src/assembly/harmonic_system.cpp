@@ -41,7 +41,9 @@ private:
     std::vector<bool> held_;
 };
 
-HarmonicDofs number_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
+}  // namespace
+
+HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
     ComponentMap map(mesh.n_nodes());
     const auto hold_node = [&](int node) {
         for (int c = 0; c < 3; ++c) map.hold(3 * node + c);
@@ -78,19 +80,30 @@ HarmonicDofs number_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
     return dofs;
 }
 
-// Element matrices gathered as coordinate triplets (PETSc's COO assembly).
-struct Triplets {
+namespace {
+
+// Element matrices gathered as coordinate entries (PETSc's COO assembly).
+// Every term's matrix gets the union pattern of all entries (zeros where a
+// term has none), so K - sigma M keeps the pattern it always had.
+struct CooEntries {
     std::vector<PetscInt> i, j;
-    std::vector<PetscScalar> k, m;
-    void add(const std::vector<int>& dofs, const Eigen::MatrixXd& K, const Eigen::MatrixXd* M) {
+    std::vector<Term> term;
+    std::vector<PetscScalar> value;
+    void add(Term t, const std::vector<int>& dofs, const Eigen::MatrixXd& A) {
         for (size_t a = 0; a < dofs.size(); ++a)
             for (size_t b = 0; b < dofs.size(); ++b) {
                 if (dofs[a] < 0 || dofs[b] < 0) continue;
                 i.push_back(dofs[a]);
                 j.push_back(dofs[b]);
-                k.push_back(K(a, b));
-                m.push_back(M ? (*M)(a, b) : 0.0);
+                term.push_back(t);
+                value.push_back(A(a, b));
             }
+    }
+    std::vector<PetscScalar> values_of(Term t) const {
+        std::vector<PetscScalar> v(value.size(), 0.0);
+        for (size_t k = 0; k < value.size(); ++k)
+            if (term[k] == t) v[k] = value[k];
+        return v;
     }
 };
 
@@ -108,7 +121,8 @@ Eigen::Matrix<double, 3, 2> edge_coords(const SectionMesh& mesh, const SectionEd
 }
 
 // Core minus chuck over the expanding elements: k_n radially, k_t in the bore's tangent plane.
-void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const HarmonicDofs& dofs, int n, Triplets& t) {
+void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const HarmonicDofs& dofs, int n,
+                      const TermInsert& insert) {
     const auto& core = mesh.edge_groups.at("interface_" + chuck.name + "_core");
     const auto& body = mesh.edge_groups.at("interface_" + chuck.name + "_chuck");
     const Eigen::Vector3d k(chuck.interface.normal_stiffness, chuck.interface.tangential_stiffness,
@@ -120,7 +134,7 @@ void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const Har
         std::vector<int> d = component_dofs(dofs, core[e].data(), 3);
         const std::vector<int> d_body = component_dofs(dofs, body[e].data(), 3);
         d.insert(d.end(), d_body.begin(), d_body.end());
-        t.add(d, K, nullptr);
+        insert(Term::stiffness, d, K);
     }
 }
 
@@ -129,7 +143,7 @@ void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const Har
 // the frame DOF where there is one (n = 1: U and V follow the frame's
 // sideways motion; n = 0: W its axial motion).
 void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof, const HarmonicDofs& dofs, int n,
-                 Triplets& t) {
+                 const TermInsert& insert) {
     const auto& edges = mesh.edge_groups.at("bearing_" + chuck.name);
     // The face's area and second moment about a diameter, from its radial edges.
     double area = 0, second_moment = 0;
@@ -150,7 +164,7 @@ void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof,
         const Eigen::Matrix<double, 9, 9> Ke = harmonic_edge_spring(edge_coords(mesh, e), c, n);
         std::vector<int> d = component_dofs(dofs, e.data(), 3);
         if (frame_dof < 0) {
-            t.add(d, Ke, nullptr);
+            insert(Term::stiffness, d, Ke);
             continue;
         }
         Eigen::MatrixXd K(10, 10);  // relative motion u - follow * X: [I, -follow]^T Ke [I, -follow]
@@ -159,16 +173,15 @@ void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof,
         K.bottomLeftCorner(1, 9) = -(Ke * follow).transpose();
         K(9, 9) = follow.dot(Ke * follow);
         d.push_back(frame_dof);
-        t.add(d, K, nullptr);
+        insert(Term::stiffness, d, K);
     }
     if (frame_dof >= 0) {
-        const Eigen::MatrixXd K = Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_stiffness);
-        const Eigen::MatrixXd M = Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_mass);
-        t.add({frame_dof}, K, &M);
+        insert(Term::stiffness, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_stiffness));
+        insert(Term::mass, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_mass));
     }
 }
 
-PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const Triplets& t, const std::vector<PetscScalar>& values) {
+PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const CooEntries& t, const std::vector<PetscScalar>& values) {
     // PETSc may reorder the index arrays it is given: each matrix gets its own copy.
     std::vector<PetscInt> i = t.i, j = t.j;
     PetscMatrix A;
@@ -184,34 +197,46 @@ PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const Triplets& t, const std::
 
 }  // namespace
 
+double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const HarmonicDofs& dofs, int n, const TermInsert& insert) {
+    double mass = 0;
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        Quad8Coords x;
+        for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
+        const PartMaterial& mat = materials.at(mesh.cell_part[c]);
+        const HarmonicMatrices e = harmonic_quad8_matrices(x, mat.C_cylindrical, mat.density, n);
+        const std::vector<int> cell_dofs = component_dofs(dofs, mesh.cells[c].data(), 8);
+        insert(Term::stiffness, cell_dofs, e.K);
+        insert(Term::mass, cell_dofs, e.M);
+        mass += e.mass;
+    }
+    for (size_t k = 0; k < scene.supports.chucks.size(); ++k) {
+        const ChuckSpec& chuck = scene.supports.chucks[k];
+        if (chuck.interface.kind == InterfaceKind::spring) add_spring_layer(mesh, chuck, dofs, n, insert);
+        if (!chuck.bearing.rigid) add_bearing(mesh, chuck, dofs.frame[k], dofs, n, insert);
+        mass += chuck.bearing.rigid ? 0.0 : chuck.bearing.frame_mass.value_or(0.0);
+    }
+    return mass;
+}
+
 HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
                                  const std::vector<PartMaterial>& materials, int n, MPI_Comm comm) {
     HarmonicSystem system;
     system.n = n;
-    system.dofs = number_dofs(scene, mesh, n);
-    Triplets t;
+    system.dofs = harmonic_dofs(scene, mesh, n);
+    CooEntries entries;
+    OperatorSet& ops = system.operators;
     // The section is small (thousands of nodes): rank 0 computes every
     // element; PETSc's COO assembly sends the entries to their owners.
-    if (mpi_rank(comm) == 0) {
-        for (int c = 0; c < mesh.n_cells(); ++c) {
-            Quad8Coords x;
-            for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
-            const PartMaterial& mat = materials.at(mesh.cell_part[c]);
-            const HarmonicMatrices e = harmonic_quad8_matrices(x, mat.C_cylindrical, mat.density, n);
-            const Eigen::MatrixXd K = e.K, M = e.M;
-            t.add(component_dofs(system.dofs, mesh.cells[c].data(), 8), K, &M);
-            system.model_mass += e.mass;
-        }
-        for (size_t k = 0; k < scene.supports.chucks.size(); ++k) {
-            const ChuckSpec& chuck = scene.supports.chucks[k];
-            if (chuck.interface.kind == InterfaceKind::spring) add_spring_layer(mesh, chuck, system.dofs, n, t);
-            if (!chuck.bearing.rigid) add_bearing(mesh, chuck, system.dofs.frame[k], system.dofs, n, t);
-            system.model_mass += chuck.bearing.rigid ? 0.0 : chuck.bearing.frame_mass.value_or(0.0);
-        }
-    }
-    MPI_Bcast(&system.model_mass, 1, MPI_DOUBLE, 0, comm);
-    system.K = coo_matrix(comm, system.dofs.n_dofs, t, t.k);
-    system.M = coo_matrix(comm, system.dofs.n_dofs, t, t.m);
+    if (mpi_rank(comm) == 0)
+        ops.model_mass = assemble_harmonic_terms(scene, mesh, materials, system.dofs, n,
+                                                 [&](Term t, const std::vector<int>& d, const Eigen::MatrixXd& A) {
+                                                     entries.add(t, d, A);
+                                                 });
+    MPI_Bcast(&ops.model_mass, 1, MPI_DOUBLE, 0, comm);
+    // Which terms exist is known on rank 0 only; today's terms are stiffness and mass.
+    for (Term t : {Term::stiffness, Term::mass})
+        ops.matrices[t] = coo_matrix(comm, system.dofs.n_dofs, entries, entries.values_of(t));
     return system;
 }
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "assembly/cell_loop.hpp"
-#include "common/petsc_handle.hpp"
+#include "assembly/operator_set.hpp"
 #include "geometry/section_mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -28,9 +28,18 @@ struct HarmonicDofs {
 struct HarmonicSystem {
     int n = 0;  // circumferential wave number
     HarmonicDofs dofs;
-    PetscMatrix K, M;
-    double model_mass = 0;  // kg, the revolved cells plus frame masses
+    OperatorSet operators;  // model_mass: the revolved cells plus frame masses, kg
 };
+
+// The DOFs of wave number n: clamps and rigid bearings held, bonded
+// interfaces tied, the axis conditions, one frame DOF per frame mass in n <= 1.
+HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n);
+
+// Every term of wave number n (section cells, spring layers, bearing springs,
+// frame masses) handed to `insert`, the same loop for a run (PETSc COO) and a
+// unit test (dense Eigen). Returns the mass (kg) of what it inserted.
+double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const HarmonicDofs& dofs, int n, const TermInsert& insert);
 
 // The scene must be axisymmetric (run_harmonic checks: no segmented
 // expanding elements).

@@ -77,16 +77,19 @@ PetscMatrix create_matrix(MPI_Comm comm, int n_local_dofs, const std::vector<Pet
 
 }  // namespace
 
-PetscSystem assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
+OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
                            const std::vector<CouplingElement>& couplings, MPI_Comm comm) {
     const int rank = mpi_rank(comm), size = mpi_size(comm);
     const auto [first, last] = owned_free_nodes(dofs.n_free_nodes, rank, size);
     std::vector<PetscInt> d_nnz, o_nnz;
     count_block_nonzeros(mesh, couplings, dofs, first, last, d_nnz, o_nnz);
 
-    PetscSystem system;
-    system.K = create_matrix(comm, 3 * (last - first), d_nnz, o_nnz);
-    system.M = create_matrix(comm, 3 * (last - first), d_nnz, o_nnz);
+    OperatorSet system;
+    std::vector<Term> terms = {Term::stiffness, Term::mass};
+    for (const CouplingElement& e : couplings)
+        for (const TermMatrix& t : e.terms)
+            if (std::find(terms.begin(), terms.end(), t.term) == terms.end()) terms.push_back(t.term);
+    for (Term t : terms) system.matrices[t] = create_matrix(comm, 3 * (last - first), d_nnz, o_nnz);
 
     // An element is assembled by the rank owning its lowest-numbered free node.
     auto owned_here = [&](const int* nodes, int n) {
@@ -98,29 +101,27 @@ PetscSystem assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
         if (lowest == dofs.n_free_nodes) return rank == 0;  // fully clamped: mass only
         return lowest >= first && lowest < last;
     };
-    auto take = [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); };
     std::vector<PetscInt> idx;
-    auto insert = [&](const std::vector<int>& cell_dofs, const Eigen::MatrixXd& Kc, const Eigen::MatrixXd& Mc) {
-        idx.assign(cell_dofs.begin(), cell_dofs.end());
+    auto insert = [&](Term term, const std::vector<int>& element_dofs, const Eigen::MatrixXd& A) {
+        idx.assign(element_dofs.begin(), element_dofs.end());
         const PetscInt n = static_cast<PetscInt>(idx.size());
-        // Element matrices are symmetric, so Eigen's column-major storage
-        // equals the row-major layout MatSetValues expects.
-        COREMODAL_PETSC(MatSetValues(system.K, n, idx.data(), n, idx.data(), Kc.data(), ADD_VALUES));
-        COREMODAL_PETSC(MatSetValues(system.M, n, idx.data(), n, idx.data(), Mc.data(), ADD_VALUES));
+        // MatSetValues reads row-major, Eigen stores column-major: the same
+        // for the symmetric terms; a skew-symmetric (gyroscopic) one is copied
+        // transposed.
+        COREMODAL_ASSERT(A.rows() == n && A.cols() == n);
+        const Eigen::MatrixXd row_major_if_skew = term == Term::gyroscopic ? Eigen::MatrixXd(A.transpose()) : A;
+        COREMODAL_PETSC(MatSetValues(system[term], n, idx.data(), n, idx.data(), row_major_if_skew.data(), ADD_VALUES));
     };
-    double local_mass = assemble_cells(mesh, materials, dofs, take, insert);
-    for (const CouplingElement& e : couplings) {
-        if (!owned_here(e.nodes.data(), static_cast<int>(e.nodes.size()))) continue;
-        std::vector<int> element_dofs;
-        for (int n : e.nodes)
-            for (int c = 0; c < 3; ++c) element_dofs.push_back(dofs.dof(n, c));
-        const Eigen::MatrixXd M = e.M.size() ? e.M : Eigen::MatrixXd::Zero(e.K.rows(), e.K.cols());
-        insert(element_dofs, e.K, M);
-        local_mass += M.sum() / 3;
-    }
-    for (Mat A : {system.K.get(), system.M.get()}) {
+    double local_mass = assemble_cells(
+        mesh, materials, dofs, [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); }, insert);
+    local_mass += assemble_couplings(
+        couplings, dofs, [&](const std::vector<int>& nodes) { return owned_here(nodes.data(), static_cast<int>(nodes.size())); },
+        insert, terms);
+    for (Term t : terms) {
+        Mat A = system[t];
         COREMODAL_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
         COREMODAL_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+        if (t == Term::gyroscopic) continue;  // skew-symmetric
         COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
         COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
     }

@@ -159,7 +159,9 @@ std::string format_count_mismatch(long pivots, long found, double sigma) {
 
 const char* shift_invert_factor_package(MPI_Comm comm) { return mpi_size(comm) == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS; }
 
-long count_eigenvalues_below(Mat K, Mat M, double sigma) {
+namespace {
+
+long count_below(Mat K, Mat M, double sigma) {
     PetscMatrix A, F;
     COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
     COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
@@ -186,7 +188,31 @@ long count_eigenvalues_below(Mat K, Mat M, double sigma) {
     return n_negative;
 }
 
-SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {
+// The stiffness the symmetric problem sees: K, plus the geometric stiffness
+// of a prestress when the set has one (a copy then; K itself otherwise).
+class EffectiveStiffness {
+public:
+    explicit EffectiveStiffness(const OperatorSet& ops) : matrix_(ops.K()) {
+        if (!ops.has(Term::geometric_stiffness)) return;
+        COREMODAL_PETSC(MatDuplicate(ops.K(), MAT_COPY_VALUES, sum_.out()));
+        COREMODAL_PETSC(MatAXPY(sum_, 1.0, ops[Term::geometric_stiffness], DIFFERENT_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatSetOption(sum_, MAT_SYMMETRIC, PETSC_TRUE));
+        matrix_ = sum_.get();
+    }
+    Mat get() const { return matrix_; }
+
+private:
+    PetscMatrix sum_;
+    Mat matrix_;
+};
+
+void require_symmetric_problem(const OperatorSet& ops) {
+    if (ops.quadratic())
+        throw SolveError("the operator set has a gyroscopic or damping term: a quadratic eigenproblem, which the "
+                         "symmetric solver cannot take");
+}
+
+SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
     const double scale = request.lambda_scale;
@@ -195,7 +221,7 @@ SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progres
     int wanted = request.n_modes;
     if (request.lambda_max) {
         progress("counting modes below the band's upper edge (inertia of K - sigma M)");
-        wanted = static_cast<int>(count_eigenvalues_below(K, M, *request.lambda_max));
+        wanted = static_cast<int>(count_below(K, M, *request.lambda_max));
     }
     if (wanted > n_dofs)
         throw InputError("[analysis] modes = " + std::to_string(wanted) + " asks for more modes than the model has "
@@ -225,7 +251,7 @@ SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progres
                                  ? 0.5 * (last + a.lambdas[n_report])
                                  : last + kClusterTolerance * std::max(std::abs(last), scale);
         progress("checking completeness: inertia of K - sigma M at the band edge");
-        const long pivots = count_eigenvalues_below(K, M, check);
+        const long pivots = count_below(K, M, check);
         if (pivots != n_report) {
             if (attempt < kMaxRetries && pivots > n_report && pivots < n_dofs) {
                 // A shift far below the wanted modes squeezes them together in
@@ -254,6 +280,18 @@ SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progres
         v.complete = true;
         return out;
     }
+}
+
+}  // namespace
+
+long count_eigenvalues_below(const OperatorSet& ops, double sigma) {
+    require_symmetric_problem(ops);
+    return count_below(EffectiveStiffness(ops).get(), ops.M(), sigma);
+}
+
+SolvedModes solve_modes(const OperatorSet& ops, const SolveRequest& request, const Progress& progress) {
+    require_symmetric_problem(ops);
+    return solve_generalized(EffectiveStiffness(ops).get(), ops.M(), request, progress);
 }
 
 }  // namespace coremodal

@@ -3,6 +3,7 @@
 // Four acts (SLEPc ex13): configure, solve, extract and verify, prove complete.
 #pragma once
 
+#include "assembly/operator_set.hpp"
 #include "common/petsc_handle.hpp"
 #include "eigensolve/rigid_modes.hpp"
 #include "modes/mode_set.hpp"
@@ -38,7 +39,11 @@ using Progress = std::function<void(const std::string&)>;
 // mode below the highest reported one was missed (one automatic retry with a
 // larger subspace; then SolveError). Degenerate partners of the last requested
 // mode are always included, so a pair is never cut in half.
-SolvedModes solve_modes(Mat K, Mat M, const SolveRequest& request, const Progress& progress);
+// The operator set's problem type decides the method: while it holds only
+// stiffness, geometric stiffness and mass, the symmetric generalized problem
+// (K + K_sigma) x = lambda M x solved here. A gyroscopic or damping term
+// makes it quadratic, which this function refuses (SolveError).
+SolvedModes solve_modes(const OperatorSet& operators, const SolveRequest& request, const Progress& progress);
 
 // The package that factors K - sigma M for shift-and-invert on `comm`:
 // CHOLMOD in one process (a smaller factor than Debian's MUMPS), MUMPS in
@@ -47,6 +52,6 @@ const char* shift_invert_factor_package(MPI_Comm comm);
 
 // Number of eigenvalues of K x = lambda M x below sigma (Sylvester's law of
 // inertia: negative pivots of the LDL^T factor of K - sigma M).
-long count_eigenvalues_below(Mat K, Mat M, double sigma);
+long count_eigenvalues_below(const OperatorSet& operators, double sigma);
 
 }  // namespace coremodal

@@ -41,11 +41,11 @@ struct Spectrum {
 Spectrum solve_on(const Scene& s, const Mesh& mesh, int n_modes) {
     const ChuckSupports supports = chuck_supports(s, mesh);
     const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);
-    const PetscSystem sys = assemble_petsc(mesh, materials_by_part(s, mesh), dofs, supports.couplings);
+    const OperatorSet sys = assemble_petsc(mesh, materials_by_part(s, mesh), dofs, supports.couplings);
     SolveRequest request;
     request.n_modes = n_modes;
     request.lambda_scale = std::pow(2 * M_PI * 100.0, 2);
-    SolvedModes solved = solve_modes(sys.K, sys.M, request, [](const std::string&) {});
+    SolvedModes solved = solve_modes(sys, request, [](const std::string&) {});
     check_verified(solved.verification);
     CHECK(solved.eigenvalues.size() >= static_cast<size_t>(n_modes));
     return {solved.eigenvalues, labels_of(solved, mesh, dofs, request.lambda_scale)};
@@ -156,11 +156,11 @@ TEST_CASE("A part held by nothing is named, and its six rigid modes are found, n
         const OrthotropicMaterial& m = part == "rest_paper" ? s.rest_paper->material : s.core.material;
         materials.push_back({stiffness_cylindrical(m), m.density});
     }
-    const PetscSystem sys = assemble_petsc(mesh, materials, dofs);
+    const OperatorSet sys = assemble_petsc(mesh, materials, dofs);
     SolveRequest request;
     request.n_modes = s.analysis.n_modes;
     request.lambda_scale = std::pow(2 * M_PI * 100.0, 2);
-    const SolvedModes solved = solve_modes(sys.K, sys.M, request, [](const std::string&) {});
+    const SolvedModes solved = solve_modes(sys, request, [](const std::string&) {});
     check_verified(solved.verification);
     REQUIRE(solved.eigenvalues.size() >= static_cast<size_t>(request.n_modes));
     // Six eigenvalues at zero (to round-off against the elastic scale), then elastic ones.

@@ -39,11 +39,11 @@ Spectrum lowest_modes(const Mesh& mesh, const OrthotropicMaterial& material, int
     std::sort(clamped.begin(), clamped.end());
     clamped.erase(std::unique(clamped.begin(), clamped.end()), clamped.end());
     const DofMap dofs = make_dof_map(mesh.n_nodes(), clamped);
-    const PetscSystem sys = assemble_petsc(mesh, {{stiffness_cylindrical(material), material.density}}, dofs);
+    const OperatorSet sys = assemble_petsc(mesh, {{stiffness_cylindrical(material), material.density}}, dofs);
     SolveRequest request;
     request.n_modes = n;
     request.lambda_scale = std::pow(2 * M_PI * 100.0, 2);
-    const auto solved = solve_modes(sys.K, sys.M, request, [](const std::string&) {});
+    const auto solved = solve_modes(sys, request, [](const std::string&) {});
     check_verified(solved.verification);
     CHECK(solved.eigenvalues.size() >= static_cast<size_t>(n));
     return {solved.eigenvalues, labels_of(solved, mesh, dofs, request.lambda_scale)};

@@ -32,7 +32,7 @@ Scene stand_scene(bool frames) {
 template <class F>
 double energy(const HarmonicSystem& system, const SectionMesh& mesh, F field, double frame) {
     PetscVector x, Kx;
-    COREMODAL_PETSC(MatCreateVecs(system.K, x.out(), Kx.out()));
+    COREMODAL_PETSC(MatCreateVecs(system.operators.K(), x.out(), Kx.out()));
     for (int node = 0; node < mesh.n_nodes(); ++node) {
         const Eigen::Vector3d u = field(mesh.nodes[node][0], mesh.nodes[node][1]);
         for (int c = 0; c < 3; ++c)
@@ -43,7 +43,7 @@ double energy(const HarmonicSystem& system, const SectionMesh& mesh, F field, do
         if (d >= 0) COREMODAL_PETSC(VecSetValue(x, d, frame, INSERT_VALUES));
     COREMODAL_PETSC(VecAssemblyBegin(x));
     COREMODAL_PETSC(VecAssemblyEnd(x));
-    COREMODAL_PETSC(MatMult(system.K, x, Kx));
+    COREMODAL_PETSC(MatMult(system.operators.K(), x, Kx));
     PetscScalar e;
     COREMODAL_PETSC(VecDot(x, Kx, &e));
     return e;

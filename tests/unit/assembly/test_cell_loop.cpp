@@ -1,0 +1,207 @@
+// The cell loops with a dense Eigen sink: a small solid (hex20 cells, spring
+// layers, bearings, frame masses) and a harmonic problem are assembled into
+// dense matrices through the very loops a run uses (assemble_cells,
+// assemble_couplings, assemble_harmonic_terms), and checked against
+// independent truths: symmetry, rigid-body null spaces, the mass rho V, and
+// the PETSc matrices a run assembles from the same loops.
+#include "assembly/cell_loop.hpp"
+#include "assembly/chuck_supports.hpp"
+#include "assembly/harmonic_system.hpp"
+#include "assembly/petsc_system.hpp"
+
+#include "app/run_steps.hpp"
+#include "verification/tube_scenes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Sparse>
+
+#include <map>
+
+using namespace coremodal;
+
+namespace {
+
+// A dense sink: one matrix per term, DOFs below 0 skipped (eliminated).
+// For the small problems below (at most a few thousand DOFs).
+struct DenseSink {
+    int n = 0;
+    std::map<Term, Eigen::MatrixXd> A;
+    TermInsert insert() {
+        return [this](Term t, const std::vector<int>& dofs, const Eigen::MatrixXd& e) {
+            Eigen::MatrixXd& m = A.try_emplace(t, Eigen::MatrixXd::Zero(n, n)).first->second;
+            for (size_t a = 0; a < dofs.size(); ++a)
+                for (size_t b = 0; b < dofs.size(); ++b)
+                    if (dofs[a] >= 0 && dofs[b] >= 0) m(dofs[a], dofs[b]) += e(a, b);
+        };
+    }
+};
+
+// A sparse sink for a scene too large for dense matrices (chucks).
+struct SparseSink {
+    int n = 0;
+    std::map<Term, std::vector<Eigen::Triplet<double>>> entries;
+    TermInsert insert() {
+        return [this](Term t, const std::vector<int>& dofs, const Eigen::MatrixXd& e) {
+            for (size_t a = 0; a < dofs.size(); ++a)
+                for (size_t b = 0; b < dofs.size(); ++b)
+                    if (dofs[a] >= 0 && dofs[b] >= 0) entries[t].emplace_back(dofs[a], dofs[b], e(a, b));
+        };
+    }
+    Eigen::SparseMatrix<double> matrix(Term t) const {
+        Eigen::SparseMatrix<double> A(n, n);
+        A.setFromTriplets(entries.at(t).begin(), entries.at(t).end());
+        return A;
+    }
+};
+
+Eigen::SparseMatrix<double> sparse_of(Mat A) {
+    PetscInt n;
+    COREMODAL_PETSC(MatGetSize(A, &n, nullptr));
+    std::vector<Eigen::Triplet<double>> t;
+    for (PetscInt i = 0; i < n; ++i) {
+        PetscInt count;
+        const PetscInt* cols;
+        const PetscScalar* vals;
+        COREMODAL_PETSC(MatGetRow(A, i, &count, &cols, &vals));
+        for (PetscInt k = 0; k < count; ++k) t.emplace_back(i, cols[k], vals[k]);
+        COREMODAL_PETSC(MatRestoreRow(A, i, &count, &cols, &vals));
+    }
+    Eigen::SparseMatrix<double> out(n, n);
+    out.setFromTriplets(t.begin(), t.end());
+    return out;
+}
+
+Eigen::MatrixXd dense_of(Mat A) {
+    PetscInt n;
+    COREMODAL_PETSC(MatGetSize(A, &n, nullptr));
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+    for (PetscInt i = 0; i < n; ++i) {
+        PetscInt count;
+        const PetscInt* cols;
+        const PetscScalar* vals;
+        COREMODAL_PETSC(MatGetRow(A, i, &count, &cols, &vals));
+        for (PetscInt k = 0; k < count; ++k) out(i, cols[k]) = vals[k];
+        COREMODAL_PETSC(MatRestoreRow(A, i, &count, &cols, &vals));
+    }
+    return out;
+}
+
+template <class Matrix>
+double relative_difference(const Matrix& a, const Matrix& b) {
+    return (a - b).norm() / b.norm();
+}
+
+// The rigid motions of a free 3D body, one column each: translations x, y, z
+// and rotations about x, y, z.
+Eigen::MatrixXd rigid_motions(const Mesh& mesh) {
+    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * mesh.n_nodes(), 6);
+    for (int i = 0; i < mesh.n_nodes(); ++i) {
+        const Eigen::Vector3d x(mesh.nodes[i][0], mesh.nodes[i][1], mesh.nodes[i][2]);
+        for (int d = 0; d < 3; ++d) R(3 * i + d, d) = 1;
+        for (int d = 0; d < 3; ++d) {
+            Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+            axis[d] = 1;
+            R.block<3, 1>(3 * i, 3 + d) = axis.cross(x);
+        }
+    }
+    return R;
+}
+
+}  // namespace
+
+TEST_CASE("Cell loop, solid with chucks: an Eigen sink gets the same K and M as the run's PETSc matrices, with "
+          "the physics' invariants", "[assembly][cell_loop]") {
+    // A short, coarse 76x15 paper core on two chucks in elastic bearings with
+    // frame masses: cells, spring layers, bearing springs and lumped masses.
+    Scene s = testing::with_chucks(testing::paper_core(0.4, 8, 6), InterfaceKind::spring);
+    for (ChuckSpec& c : s.supports.chucks) {
+        c.bearing.rigid = false;
+        c.bearing.radial_stiffness = 3e8;
+        c.bearing.tilting_stiffness = 4e6;
+        c.bearing.frame_mass = 25.0;
+        c.bearing.frame_stiffness = 6e7;
+    }
+    const Mesh mesh = testing::generated_mesh(s);  // with the frame nodes
+    const ChuckSupports supports = chuck_supports(s, mesh);
+    const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);
+    const std::vector<PartMaterial> materials = part_materials(s, mesh.part_names, "test");
+
+    SparseSink sink{dofs.n_dofs, {}};
+    double mass = assemble_cells(mesh, materials, dofs, [](int) { return true; }, sink.insert());
+    mass += assemble_couplings(supports.couplings, dofs, [](const std::vector<int>&) { return true; }, sink.insert());
+    REQUIRE(sink.entries.size() == 2);  // stiffness and mass only: this scene names no other effect
+    const Eigen::SparseMatrix<double> K = sink.matrix(Term::stiffness), M = sink.matrix(Term::mass);
+
+    SECTION("Both matrices are symmetric to round-off") {
+        CHECK(relative_difference(Eigen::SparseMatrix<double>(K.transpose()), K) <= 1e-13);
+        CHECK(relative_difference(Eigen::SparseMatrix<double>(M.transpose()), M) <= 1e-13);
+    }
+    SECTION("A rigid translation's kinetic energy is the model mass, rho V plus the frames") {
+        for (int d = 0; d < 3; ++d) {
+            Eigen::VectorXd t = Eigen::VectorXd::Zero(dofs.n_dofs);
+            for (int i = 0; i < mesh.n_nodes(); ++i) t[dofs.dof(i, d)] = 1;
+            CHECK(t.dot(M * t) == Approx(mass).epsilon(1e-12));
+            // Springs to the ground (bearings to frames to the ground) resist it; the spring layers do not.
+        }
+        // The curved cells lose a^4/30 of the section's area (8 around: a = pi/8, 8e-4).
+        CHECK(mass == Approx(expected_mass(s)).epsilon(1e-3));
+    }
+    SECTION("The run's PETSc matrices hold exactly what the sink got") {
+        const OperatorSet ops = assemble_petsc(mesh, materials, dofs, supports.couplings, PETSC_COMM_SELF);
+        CHECK(ops.terms() == std::vector<Term>{Term::stiffness, Term::mass});
+        CHECK(relative_difference(sparse_of(ops.K()), K) < 1e-14);
+        CHECK(relative_difference(sparse_of(ops.M()), M) < 1e-14);
+        CHECK(ops.model_mass == Approx(mass).epsilon(1e-14));
+    }
+}
+
+TEST_CASE("Cell loop, solid: a free body's dense K has the six rigid motions in its null space",
+          "[assembly][cell_loop]") {
+    const Scene s = testing::paper_core(0.1, 8, 2);  // a few hundred nodes: dense is fine
+    const Mesh mesh = testing::generated_mesh(s);
+    const DofMap dofs = make_dof_map(mesh.n_nodes(), {});
+    DenseSink sink{dofs.n_dofs, {}};
+    assemble_cells(mesh, part_materials(s, mesh.part_names, "test"), dofs, [](int) { return true; }, sink.insert());
+    const Eigen::MatrixXd& K = sink.A.at(Term::stiffness);
+    const Eigen::MatrixXd R = rigid_motions(mesh);
+    // Cell stiffness entries are ~E h; K r must vanish to round-off of them.
+    for (int k = 0; k < 6; ++k) {
+        INFO("rigid motion " << k);
+        CHECK((K * R.col(k)).norm() <= 1e-10 * K.norm() * R.col(k).norm());
+    }
+}
+
+TEST_CASE("Cell loop, harmonic: a dense sink gets the run's K_n and M_n; free rigid motions are in K_n's null "
+          "space", "[assembly][cell_loop][harmonic]") {
+    const Scene s = testing::paper_core(0.5, 16, 12);  // free: no supports
+    const SectionMesh section = make_section_mesh(make_tube_section(s), s.supports.clamps);
+    const std::vector<PartMaterial> materials = part_materials(s, section.part_names, "test");
+    for (int n : {0, 1, 2}) {
+        INFO("wave number n = " << n);
+        const HarmonicDofs dofs = harmonic_dofs(s, section, n);
+        DenseSink sink{dofs.n_dofs, {}};
+        const double mass = assemble_harmonic_terms(s, section, materials, dofs, n, sink.insert());
+        const Eigen::MatrixXd& K = sink.A.at(Term::stiffness);
+        const Eigen::MatrixXd& M = sink.A.at(Term::mass);
+        CHECK((K - K.transpose()).norm() <= 1e-13 * K.norm());
+        CHECK(mass == Approx(expected_mass(s)).epsilon(1e-12));  // exact in theta: no curved-cell loss
+
+        const HarmonicSystem run = assemble_harmonic(s, section, materials, n, PETSC_COMM_SELF);
+        CHECK(relative_difference(dense_of(run.operators.K()), K) < 1e-14);
+        CHECK(relative_difference(dense_of(run.operators.M()), M) < 1e-14);
+
+        // Rigid motions live in n = 0 (along and about z) and n = 1 (sideways).
+        std::vector<RigidMotion> motions;
+        if (n == 0) motions = {RigidMotion::z, RigidMotion::rz};
+        if (n == 1) motions = {RigidMotion::x};
+        for (RigidMotion m : motions) {
+            const std::vector<double> field = harmonic_rigid_field(section, dofs, n, m);
+            const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(field.data(), dofs.n_dofs);
+            CHECK((K * r).norm() <= 1e-10 * K.norm() * r.norm());
+            // A translation's kinetic energy is the mass: n = 0, W = 1, weight
+            // 2 pi; n = 1, U = V = 1, weight pi on each of the two components.
+            if (m != RigidMotion::rz) CHECK(r.dot(M * r) == Approx(mass).epsilon(1e-12));
+        }
+    }
+}
