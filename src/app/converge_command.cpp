@@ -408,8 +408,9 @@ NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int
 
 // ---- 4. the results folder, with its picture ----------------------------------
 
-void write_study(const ConvergeStudy& study, const std::filesystem::path& out, bool quiet, std::ostream& progress) {
-    ResultsFolder folder(out);
+void write_study(const ConvergeStudy& study, const std::filesystem::path& out, bool force, bool quiet,
+                 std::ostream& progress) {
+    ResultsFolder folder(out, force);
     write_text_file(folder.file("converge.csv"), converge_csv(study));
     write_text_file(folder.file("converge.json"), converge_json(study));
     const std::string plot_note =
@@ -494,8 +495,11 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     PetscLogIsActive(&logging);
     if (!logging) PetscLogDefaultBegin();
 
-    // 1. The scene and its model levels.
+    // 1. The scene and its model levels; the results folder checked before any work.
     const Scene scene = parse_case_file(o.case_file);
+    const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
+                                                   : std::filesystem::path("results") / (scene.name + "-converge");
+    if (o.write_results) prepare_output(out, o.force);
     ConvergeStudy study;
     study.load_start = load_average();
     study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
@@ -577,11 +581,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.load_end = load_average();
 
     // 5. Write (rank 0): numbers first, then the picture, then the report.
-    if (root && o.write_results) {
-        const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
-                                                       : std::filesystem::path("results") / (scene.name + "-converge");
-        write_study(study, out, o.quiet, progress);
-    }
+    if (root && o.write_results) write_study(study, out, o.force, o.quiet, progress);
     if (root && !o.quiet) print_summary(study, progress);
     return study;
 }
@@ -598,7 +598,10 @@ Command add_converge_command(CLI::App& app) {
     cmd->add_option("case", options->case_file, "case file (TOML) with a generated mesh")->required();
     cmd->add_option("-o,--output", *output,
                     "results folder (default results/<case name>-converge): converge.md, converge.csv, "
-                    "converge.json, error_vs_time.png");
+                    "converge.json, error_vs_time.png; replaces only an earlier coremodal result, which is kept as "
+                    "<folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", options->force,
+                  "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("--levels", options->levels, "levels of the ladder, k = first ... first + levels - 1 (at least 3)")
         ->capture_default_str()
         ->check(CLI::Range(3, 12));
