@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,25 @@ bool any_partial(const fs::path& folder) {
 
 bool process_gone(pid_t pid) { return ::kill(pid, 0) != 0 && errno == ESRCH; }
 
+// The study workers whose parent is `study` (from /proc/<pid>/stat: "pid
+// (name) state ppid ..."; an MPI singleton has other children, e.g. orted).
+std::vector<pid_t> workers_of(pid_t study) {
+    std::vector<pid_t> workers;
+    for (const auto& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const std::string stat = slurp(entry.path() / "stat");
+        const size_t end_of_name = stat.rfind(')');
+        if (end_of_name == std::string::npos) continue;
+        std::istringstream rest(stat.substr(end_of_name + 1));
+        std::string state;
+        pid_t ppid = 0;
+        if (rest >> state >> ppid && ppid == study && contains(slurp(entry.path() / "cmdline"), "--worker-point"))
+            workers.push_back(std::stoi(name));
+    }
+    return workers;
+}
+
 // A stand-in for python3 that never finishes a picture: it notes its own
 // process number and its parent's (the coremodal that started it) in
 // dir/pids/, then sleeps. With it a run is sure to be in its writing step,
@@ -85,13 +105,13 @@ std::vector<std::pair<pid_t, pid_t>> sleeping_pythons(const TempDir& dir) {
     return found;
 }
 
-// Runs `coremodal args` with the sleeping python, waits until `ready()`
+// Runs `coremodal args` with the sleeping python, waits until `ready(pid)`
 // (at most ready_s), then sends `sig` to coremodal (to its whole process
 // group with SIGKILL: no child outlives it), and returns how it ended.
 template <class Ready>
 Run interrupted(const TempDir& dir, const std::string& args, Ready ready, double ready_s, int sig) {
     Started started = start_coremodal(dir, args, sleeping_python(dir));
-    REQUIRE(wait_until(ready, ready_s));
+    REQUIRE(wait_until([&] { return ready(started.pid); }, ready_s));
     ::kill(sig == SIGKILL ? -started.pid : started.pid, sig);
     const std::optional<Run> r = finish_coremodal(dir, started, 40);  // the children's grace is 10 s
     REQUIRE(r);
@@ -224,7 +244,7 @@ TEST_CASE("A stale partial folder of a run that was killed is swept by the next 
     TempDir dir("safety");
     dir.write("tiny.toml", kTinyCase);
     // A run killed with SIGKILL while writing: its partial folder, its marker.
-    const auto writing = [&] { return !sleeping_pythons(dir).empty(); };
+    const auto writing = [&](pid_t) { return !sleeping_pythons(dir).empty(); };
     interrupted(dir, "run tiny.toml -o out -q", writing, 120, SIGKILL);
     REQUIRE(any_partial(dir.path));
     // A user's folder of the same pattern without the marker is not touched.
@@ -238,7 +258,7 @@ TEST_CASE("A stale partial folder of a run that was killed is swept by the next 
 TEST_CASE("SIGINT while writing stops python, removes the partial folder, exits 130", "[app][output_safety][signals]") {
     TempDir dir("safety");
     dir.write("tiny.toml", kTinyCase);
-    const auto writing = [&] { return !sleeping_pythons(dir).empty() && any_partial(dir.path); };
+    const auto writing = [&](pid_t) { return !sleeping_pythons(dir).empty() && any_partial(dir.path); };
     const Run r = interrupted(dir, "run tiny.toml -o out", writing, 120, SIGINT);
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.exit_code == 130);
@@ -251,7 +271,7 @@ TEST_CASE("SIGINT while writing stops python, removes the partial folder, exits 
 TEST_CASE("SIGTERM during the solve exits 143 and writes nothing", "[app][output_safety][signals]") {
     TempDir dir("safety");
     dir.write("slow.toml", slow_case());
-    const auto solving = [&] { return contains(slurp(dir.path / "stdout.txt"), "[4/7] solving"); };
+    const auto solving = [&](pid_t) { return contains(slurp(dir.path / "stdout.txt"), "[4/7] solving"); };
     const Run r = interrupted(dir, "run slow.toml -o out", solving, 120, SIGTERM);
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.exit_code == 143);
@@ -264,7 +284,7 @@ TEST_CASE("batch passes SIGTERM on to its cases and waits for them", "[app][outp
     fs::create_directories(dir.path / "cases");
     dir.write("cases/a.toml", kTinyCase);
     dir.write("cases/b.toml", kTinyCase);
-    const auto both_writing = [&] { return sleeping_pythons(dir).size() == 2; };
+    const auto both_writing = [&](pid_t) { return sleeping_pythons(dir).size() == 2; };
     const Run r = interrupted(dir, "batch cases --jobs 2 -o out", both_writing, 180, SIGTERM);
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.exit_code == 143);
@@ -276,4 +296,24 @@ TEST_CASE("batch passes SIGTERM on to its cases and waits for them", "[app][outp
     CHECK_FALSE(any_partial(dir.path / "out"));
     CHECK_FALSE(fs::exists(dir.path / "out" / "batch.csv"));  // no table of stopped cases
     CHECK(contains(slurp(dir.path / "out" / "a.log"), "coremodal: interrupted by SIGTERM"));
+}
+
+TEST_CASE("study passes SIGTERM on to its workers and removes its scratch folder", "[app][output_safety][signals]") {
+    TempDir dir("safety");
+    dir.write("study.toml", slow_case() + kStudyTable);
+    std::vector<pid_t> workers;
+    fs::path scratch;
+    const auto both_running = [&](pid_t study) {
+        workers = workers_of(study);
+        scratch = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(study));
+        return workers.size() == 2;
+    };
+    const Run r = interrupted(dir, "study study.toml --jobs 2 -o out", both_running, 180, SIGTERM);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.exit_code == 143);
+    CHECK(contains(r.err, "coremodal: interrupted by SIGTERM; stopped 2 child process(es); removed " +
+                              scratch.string()));
+    for (pid_t worker : workers) CHECK(process_gone(worker));
+    CHECK_FALSE(fs::exists(scratch));
+    CHECK_FALSE(fs::exists(dir.path / "out"));
 }
