@@ -3,6 +3,7 @@
 #include "common/child_process.hpp"
 #include "common/error.hpp"
 #include "output/csv.hpp"
+#include "output/results_folder.hpp"
 
 #include <toml++/toml.h>
 
@@ -381,9 +382,9 @@ std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs
 
 std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) {
     const auto files = batch_case_files(o.inputs);
-    std::error_code ec;
-    fs::create_directories(o.output_dir, ec);
-    if (ec) throw InputError("cannot create output folder " + o.output_dir + ": " + ec.message());
+    // OUT is written in place, so that finished cases can be read while
+    // the others run: an earlier batch there moves to OUT.previous first.
+    start_folder_in_place(o.output_dir, o.force);
 
     // One result folder per case, named by the file stem; a stem seen before
     // (the same name in two folders) gets -2, -3, ...

@@ -16,7 +16,8 @@ inline constexpr double kSafeSpeedFactor = 0.7;
 
 struct BatchOptions {
     std::vector<std::string> inputs;             // case files and folders (every *.toml in them)
-    std::string output_dir = "results/batch";
+    std::string output_dir = "results/batch";    // written in place (start_folder_in_place)
+    bool force = false;                          // an earlier batch there is removed, not kept as .previous
     unsigned jobs = 0;                           // 0: number of cores; never more than the cases
     std::optional<std::string> mesh_level;       // passed on as `run --mesh LEVEL`, except to
                                                  // cases with their own [mesh] file

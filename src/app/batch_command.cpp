@@ -4,6 +4,7 @@
 #include "app/batch.hpp"
 #include "app/commands.hpp"
 #include "common/error.hpp"
+#include "common/signals.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -27,8 +28,10 @@ Command add_batch_command(CLI::App& app) {
         "batch", "Run many case files, each in its own process, and tabulate f1, FE/Timoshenko and v_safe");
     cmd->add_option("cases", options->inputs, "case files, or folders (every *.toml in them, sorted)")->required();
     cmd->add_option("-o,--output", options->output_dir,
-                    "results folder: OUT/<case>/ and OUT/<case>.log per case, OUT/batch.csv and OUT/batch.md")
+                    "results folder: OUT/<case>/ and OUT/<case>.log per case, OUT/batch.csv and OUT/batch.md; "
+                    "replaces only an earlier coremodal result, which is kept as OUT.previous (docs/results.md)")
         ->capture_default_str();
+    cmd->add_flag("--force", options->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-j,--jobs", options->jobs, "cases run at once (default: the number of cores)")
         ->check(CLI::Range(1u, 4096u));
     cmd->add_option("-m,--mesh", *mesh_level,
@@ -39,8 +42,10 @@ Command add_batch_command(CLI::App& app) {
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         const auto cases = run_batch(*options, std::cout);
         const std::filesystem::path out = options->output_dir;
-        write_file(out / "batch.csv", batch_csv(cases));
-        write_file(out / "batch.md", batch_markdown(cases));
+        unless_interrupted([&] {  // no table of cases an interrupt stopped
+            write_file(out / "batch.csv", batch_csv(cases));
+            write_file(out / "batch.md", batch_markdown(cases));
+        });
         print_batch_table(std::cout, cases);
         std::cout << "table: " << (out / "batch.csv").string() << ", " << (out / "batch.md").string() << std::endl;
         for (const auto& c : cases)

@@ -16,7 +16,7 @@ namespace {
 
 struct CalibrateOptions {
     std::string case_file, output, mesh;
-    bool quiet = false, no_plots = false;
+    bool quiet = false, no_plots = false, force = false;
     unsigned jobs = 0;  // 0: the number of cores
 };
 
@@ -26,12 +26,13 @@ int run_calibrate_command(const CalibrateOptions& o) {
                                             o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh));
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
+    prepare_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "calibrate", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
     const CalibrationOutcome outcome = calibrate_chuck_factor(sweep, result);
 
-    ResultsFolder folder(out_dir);
-    const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
+    ResultsFolder folder(out_dir, o.force);
+    const std::filesystem::path& dir = folder.dir();
     write_calibration((dir / "calibration.toml").string(), outcome.calibration);
     write_text_file(dir / "calibration.csv", calibration_csv(sweep, outcome));
     const StudyFiles files = write_study_files(dir, sweep, result, "calibration", !o.no_plots);
@@ -65,7 +66,10 @@ Command add_calibrate_command(CLI::App& app) {
                      "dimensionless groups and check it on held-out points; writes calibration.toml for "
                      "`coremodal beam --calibration`");
     cmd->add_option("case", o->case_file, "case file (TOML) with a [calibration] table")->required();
-    cmd->add_option("-o,--output", o->output, "results folder (default results/<case name>-calibration)");
+    cmd->add_option("-o,--output", o->output,
+                    "results folder (default results/<case name>-calibration); replaces only an earlier coremodal "
+                    "result, which is kept as <folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-m,--mesh", o->mesh,
                     "mesh level of every point, overriding [calibration] mesh: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");

@@ -24,7 +24,9 @@ void add_ladder_options(CLI::App* cmd, ConvergeLine& line) {
     cmd->add_option("case", o.case_file, "case file (TOML) with a generated mesh")->required();
     cmd->add_option("-o,--output", line.output,
                     "results folder (default results/<case name>-converge): converge.md, converge.csv, "
-                    "converge.json, error_vs_time.png");
+                    "converge.json, error_vs_time.png; replaces only an earlier coremodal result, which is kept as "
+                    "<folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", o.force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("--levels", o.levels, "levels of the ladder, k = first ... first + levels - 1 (at least 3)")
         ->capture_default_str()
         ->check(CLI::Range(3, 12));

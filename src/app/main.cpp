@@ -14,6 +14,7 @@
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
+#include "common/signals.hpp"
 
 #include <slepcsys.h>
 
@@ -55,6 +56,7 @@ SplitArgs split_arguments(int argc, char** argv) {
 }
 
 int report_error(const char* kind, const std::exception& e) {
+    coremodal::wait_if_interrupted();  // an error the interrupt's clean-up caused is no news
     int mpi_up = 0;
     MPI_Initialized(&mpi_up);
     if (!mpi_up || coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << e.what() << std::endl;
@@ -76,6 +78,9 @@ int run_guarded(const coremodal::Command& command) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // SIGINT and SIGTERM stop children and remove partial folders
+    // (common/signals.hpp).
+    coremodal::install_interrupt_handling();
     SplitArgs args = split_arguments(argc, argv);
 
     CLI::App app{"coremodal " COREMODAL_VERSION
@@ -96,7 +101,11 @@ int main(int argc, char** argv) {
     for (const auto& c : commands)
         if (c.cli->parsed()) chosen = &c;
     if (!chosen) return 2;
-    if (!chosen->needs_petsc) return run_guarded(*chosen);
+    if (!chosen->needs_petsc) {
+        const int status = run_guarded(*chosen);
+        coremodal::wait_if_interrupted();
+        return status;
+    }
 
     auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
@@ -104,7 +113,9 @@ int main(int argc, char** argv) {
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
     const int status = run_guarded(*chosen);
+    coremodal::wait_if_interrupted();
     SlepcFinalize();
     return status;
 }

@@ -83,8 +83,9 @@ void write_beam_shapes_csv(const std::string& path, const BeamModelResult& beam)
     if (!f) throw std::runtime_error("cannot write " + path);
 }
 
-void write_beam_results(const RunReport& report, const BeamModelResult& beam, const std::filesystem::path& dir) {
-    ResultsFolder folder(dir);
+void write_beam_results(const RunReport& report, const BeamModelResult& beam, const std::filesystem::path& dir,
+                        bool force) {
+    ResultsFolder folder(dir, force);
     write_summary_json(folder.file("summary.json"), report);
     write_modes_csv(folder.file("modes.csv"), report);
     write_beam_shapes_csv(folder.file("beam_shapes.csv"), beam);
@@ -157,7 +158,7 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     }
     if (root && options.write_results) {
         say("[4/4] writing " + out_dir.string());
-        write_beam_results(report, beam, out_dir);
+        write_beam_results(report, beam, out_dir, options.force);
     }
     return report;
 }

@@ -209,8 +209,9 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
 
 namespace {
 
-void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir, bool plots) {
-    ResultsFolder folder(dir);
+void write_results(const RunReport& report, const Mesh& mesh, const std::filesystem::path& dir, bool plots,
+                   bool force) {
+    ResultsFolder folder(dir, force);
     write_summary_json(folder.file("summary.json"), report);
     write_modes_csv(folder.file("modes.csv"), report);
     write_modes_h5(folder.file("modes.h5"), mesh, report.modes.modes, report.scene.name, scene_json(report.scene),
@@ -386,7 +387,7 @@ void finish_run(RunReport& report, const Mesh& mesh, const RunOptions& options, 
     }
     if (root && options.write_results) {
         say("[7/7] writing " + out_dir.string());
-        write_results(report, mesh, out_dir, options.plots);
+        write_results(report, mesh, out_dir, options.plots, options.force);
     }
 }
 

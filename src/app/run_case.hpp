@@ -11,6 +11,7 @@ namespace coremodal {
 struct RunOptions {
     std::string case_file;
     std::optional<std::string> output_dir;  // default results/<case name>
+    bool force = false;                     // an earlier result at output_dir is removed, not kept as .previous
     bool quiet = false;                     // no progress lines (tests)
     bool write_results = true;
     std::optional<std::string> mesh_level;  // overrides the case's [mesh] level

@@ -1,6 +1,8 @@
 // `coremodal run CASE.toml`: the main job.
 #include "app/commands.hpp"
 #include "app/run_case.hpp"
+#include "output/results_folder.hpp"
+#include "scene/case_file.hpp"
 
 namespace coremodal {
 
@@ -12,7 +14,10 @@ Command add_run_command(CLI::App& app) {
     auto no_plots = std::make_shared<bool>(false);
     CLI::App* cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
     cmd->add_option("case", options->case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
-    cmd->add_option("-o,--output", *output, "results folder (default results/<case name>)");
+    cmd->add_option("-o,--output", *output,
+                    "results folder (default results/<case name>); replaces only an earlier coremodal result, "
+                    "which is kept as <folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", options->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-m,--mesh", *mesh_level,
                     "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
     cmd->add_option("--model", *model,
@@ -28,9 +33,12 @@ Command add_run_command(CLI::App& app) {
                 "they override coremodal's solver defaults.");
     auto run = [options, output, mesh_level, model, no_plots] {
         options->plots = !*no_plots;
-        if (!output->empty()) options->output_dir = *output;
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         if (!model->empty()) options->model = *model;
+        // The results folder is checked before any work (its default needs
+        // the case's name).
+        options->output_dir = !output->empty() ? *output : "results/" + parse_case_file(options->case_file).name;
+        prepare_output(*options->output_dir, options->force);
         run_case(*options);
         return 0;
     };

@@ -17,7 +17,7 @@ namespace {
 
 struct StudyCommandOptions {
     std::string case_file, output, mesh;
-    bool quiet = false, no_plots = false;
+    bool quiet = false, no_plots = false, force = false;
     unsigned jobs = 0;  // 0: the number of cores
     // A worker child of a study (app/study_workers.hpp): hidden options.
     int worker_point = -1;
@@ -60,11 +60,12 @@ int run_study_command(const StudyCommandOptions& o) {
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
+    prepare_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "study", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
 
-    ResultsFolder folder(out_dir);
-    const std::filesystem::path dir = std::filesystem::path(folder.file("study.csv")).parent_path();
+    ResultsFolder folder(out_dir, o.force);
+    const std::filesystem::path& dir = folder.dir();
     const StudyFiles files = write_study_files(dir, sweep, result, "study", !o.no_plots);
     if (!files.plot_problem.empty() && !o.no_plots)
         std::cerr << "coremodal: warning: plots not drawn: " << files.plot_problem
@@ -90,7 +91,10 @@ Command add_study_command(CLI::App& app) {
                  "point to point by MAC; study.csv, plots and report.md");
     cmd->add_option("case", o->case_file, "case file (TOML) with a [study] table, e.g. cases/06-study-safe-speed.toml")
         ->required();
-    cmd->add_option("-o,--output", o->output, "results folder (default results/<case name>-study)");
+    cmd->add_option("-o,--output", o->output,
+                    "results folder (default results/<case name>-study); replaces only an earlier coremodal result, "
+                    "which is kept as <folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-m,--mesh", o->mesh,
                     "mesh level of every point, overriding [study] mesh: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");

@@ -2,6 +2,7 @@
 
 #include "app/batch.hpp"  // first_error_line
 #include "common/child_process.hpp"
+#include "common/signals.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -174,6 +175,7 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
                             const std::string& program, std::vector<StudyPoint>& points,
                             const std::function<void(int)>& finished) {
     const fs::path folder = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(::getpid()));
+    remove_on_interrupt(folder);  // the workers' records: scratch, removed however the study ends
     fs::remove_all(folder);
     fs::create_directories(folder);
     std::vector<std::string> env = child_environment(/*single_threaded=*/true);
@@ -193,6 +195,7 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
     for (auto& t : threads) t.join();
     std::error_code ignored;
     fs::remove_all(folder, ignored);
+    keep_on_interrupt(folder);
 }
 
 }  // namespace coremodal

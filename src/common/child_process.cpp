@@ -1,6 +1,7 @@
 #include "common/child_process.hpp"
 
 #include "common/argv.hpp"
+#include "common/signals.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -44,6 +45,11 @@ bool ChildExit::succeeded() const { return started() && WIFEXITED(status) && WEX
 
 ChildExit run_child(const std::string& program, std::vector<std::string> args, std::vector<std::string> env,
                     const std::filesystem::path& log, bool search_path) {
+    ChildExit out;
+    if (interrupt_signal()) {  // the process is stopping: start nothing new
+        out.spawn_error = ECANCELED;
+        return out;
+    }
     auto argv = c_strings(args);
     auto envp = c_strings(env);
     posix_spawn_file_actions_t actions;
@@ -53,14 +59,15 @@ ChildExit run_child(const std::string& program, std::vector<std::string> args, s
     posix_spawn_file_actions_adddup2(&actions, 1, 2);
     const auto start = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    ChildExit out;
     out.spawn_error = search_path
                           ? posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data())
                           : posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (out.spawn_error != 0) return out;
+    child_started(pid);  // an interrupt stops it (and waits until it has been reaped here)
     while (waitpid(pid, &out.status, 0) < 0 && errno == EINTR) {
     }
+    child_reaped(pid);
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }

@@ -16,10 +16,6 @@ struct ChildExit {
     bool succeeded() const;  // started, exited, status 0
 };
 
-// Runs `program` with `args` (args[0] is the child's argv[0]) in the
-// environment `env` ("NAME=value" entries), standard input from /dev/null and
-// standard output and error into `log`; returns when it has ended. With
-// search_path the program is looked up on PATH as a shell would.
 // This process's environment for a child coremodal or python: without the
 // variables this process's MPI singleton put there (a child that inherits
 // them tries to join our MPI job instead of starting its own) and, with
@@ -27,6 +23,13 @@ struct ChildExit {
 // J children at a time do not each start one thread per core.
 std::vector<std::string> child_environment(bool single_threaded);
 
+// Runs `program` with `args` (args[0] is the child's argv[0]) in the
+// environment `env` ("NAME=value" entries), standard input from /dev/null and
+// standard output and error into `log`; returns when it has ended. With
+// search_path the program is looked up on PATH as a shell would. Every child
+// is registered with common/signals.hpp while it runs, so that SIGINT or
+// SIGTERM to this process reaches it too; after an interrupt no child starts
+// (spawn_error ECANCELED).
 ChildExit run_child(const std::string& program, std::vector<std::string> args, std::vector<std::string> env,
                     const std::filesystem::path& log, bool search_path = false);
 

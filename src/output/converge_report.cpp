@@ -228,9 +228,9 @@ std::string converge_json(const ConvergeStudy& study) {
     return s.str();
 }
 
-void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool quiet,
+void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool force, bool quiet,
                             std::ostream& progress) {
-    ResultsFolder folder(out);
+    ResultsFolder folder(out, force);
     write_text_file(folder.file("converge.csv"), converge_csv(study));
     write_text_file(folder.file("converge.json"), converge_json(study));
     const std::string plot_note =

@@ -21,7 +21,7 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
 // The results folder (atomically, ResultsFolder): converge.csv and
 // converge.json, then the picture from them, then converge.md. A missing
 // picture is a warning on stderr and a note in the report, not an error.
-void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool quiet,
+void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool force, bool quiet,
                             std::ostream& progress);
 
 // The console summary: extrapolated frequencies of the role modes, the

@@ -1,6 +1,7 @@
 #include "output/python_plots.hpp"
 
 #include "common/child_process.hpp"
+#include "common/signals.hpp"
 
 #include <sys/wait.h>
 
@@ -59,6 +60,9 @@ std::string run_python_plot(const std::string& subcommand, const fs::path& folde
     std::vector<std::string> argv_strings = {python, "-m", "coremodal", subcommand, folder.string()};
     argv_strings.insert(argv_strings.end(), args.begin(), args.end());
     const ChildExit child = run_child(python, argv_strings, plot_environment(), log, /*search_path=*/true);
+    // Stopped by an interrupt (common/signals.hpp): no warning about pictures
+    // of a run that is being abandoned.
+    if (interrupt_signal()) throw Interrupted("interrupted while drawing");
     if (!child.started()) {
         std::error_code ignored;
         fs::remove(log, ignored);

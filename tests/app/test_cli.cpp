@@ -3,6 +3,7 @@
 // message on stderr and leave no results behind; good input must produce the
 // whole results folder, serially and under mpirun.
 #include "support/program_run.hpp"
+#include "support/tiny_case.hpp"
 
 #include "app/batch.hpp"  // json_number: read back summary.json
 
@@ -33,25 +34,6 @@ std::vector<std::string> leftovers(const TempDir& dir) {
     }
     return names;
 }
-
-// A steel tube 0.5 m long with one hex20 through the wall, 8 around, 4 along:
-// 792 DOFs, a second to solve. Steel keeps the closed forms simple.
-const std::string kTinyCase = R"(name = "tiny"
-
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "0.5 m"
-material = { E = "210 GPa", nu = 0.3, density = "7850 kg/m^3" }
-
-[analysis]
-modes = 12
-
-[mesh]
-around = 8
-along = 4
-through_wall = 1
-)";
 
 const std::string kCoreHeader = R"(name = "bad"
 

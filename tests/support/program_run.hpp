@@ -2,14 +2,21 @@
 // program's exit code, stdout and stderr. Shared by the command-line tests.
 #pragma once
 
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
+
+extern char** environ;
 
 namespace coremodal::testing {
 
@@ -41,17 +48,21 @@ struct Run {
     std::string out, err;
 };
 
-// Runs `prefix coremodal args` inside dir, so that case files are named
-// relatively ("bad.toml:4:18: ..."). The test binary itself is an MPI
+// The shell command that runs `prefix coremodal args` inside dir, so that
+// case files are named relatively ("bad.toml:4:18: ..."), output into
+// dir/stdout.txt and dir/stderr.txt. The test binary itself is an MPI
 // singleton; the Open MPI and PMIx variables that puts in our environment
 // must not reach the child, or its MPI_Init (and mpirun) would try to join
-// this process's job.
-inline Run run_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
-    const std::string command = "cd '" + dir.path.string() +
-                                "' && unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
-                                "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1) && " +
-                                prefix + "'" COREMODAL_BINARY "' " + args + " >stdout.txt 2>stderr.txt";
-    const int status = std::system(command.c_str());
+// this process's job. `prefix` is a command and/or NAME=value settings
+// (`exec env` takes both, and keeps the shell's process number).
+inline std::string coremodal_command(const TempDir& dir, const std::string& args, const std::string& prefix) {
+    return "cd '" + dir.path.string() +
+           "' && unset $(env | grep -E '^(OMPI_|PMIX_|OPAL_|ORTE_)' | grep -v "
+           "'^OMPI_ALLOW_RUN_AS_ROOT' | cut -d= -f1) && exec env " +
+           prefix + " '" COREMODAL_BINARY "' " + args + " >stdout.txt 2>stderr.txt";
+}
+
+inline Run collect_output(const TempDir& dir, int status) {
     Run r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.out = slurp(dir.path / "stdout.txt");
@@ -59,6 +70,72 @@ inline Run run_coremodal(const TempDir& dir, const std::string& args, const std:
     std::filesystem::remove(dir.path / "stdout.txt");
     std::filesystem::remove(dir.path / "stderr.txt");
     return r;
+}
+
+// Runs coremodal to the end (coremodal_command).
+inline Run run_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
+    return collect_output(dir, std::system(coremodal_command(dir, args, prefix).c_str()));
+}
+
+// A coremodal started in the background (start_coremodal), in a process
+// group of its own: if the test ends before finish_coremodal collected it,
+// the group (coremodal and every child) is killed.
+struct Started {
+    pid_t pid = -1;
+    explicit Started(pid_t p) : pid(p) {}
+    Started(const Started&) = delete;
+    Started& operator=(const Started&) = delete;
+    ~Started() {
+        if (pid <= 0) return;
+        kill(-pid, SIGKILL);
+        waitpid(pid, nullptr, 0);
+    }
+};
+
+// Starts coremodal in the background (coremodal_command); `pid` is
+// coremodal's own process number, for sending it signals.
+inline Started start_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
+    std::string shell = "/bin/sh", flag = "-c", command = coremodal_command(dir, args, prefix);
+    char* argv[] = {shell.data(), flag.data(), command.data(), nullptr};
+    // SIGINT and SIGTERM as a program started from a terminal has them (a
+    // test binary started in the background may have inherited SIGINT ignored).
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t both;
+    sigemptyset(&both);
+    sigaddset(&both, SIGINT);
+    sigaddset(&both, SIGTERM);
+    posix_spawnattr_setsigdefault(&attributes, &both);
+    posix_spawnattr_setpgroup(&attributes, 0);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
+    pid_t pid = -1;
+    const int failed = posix_spawn(&pid, "/bin/sh", nullptr, &attributes, argv, environ);
+    posix_spawnattr_destroy(&attributes);
+    return Started(failed ? -1 : pid);
+}
+
+// Waits up to timeout_s for a started coremodal to end and collects its
+// output; nothing (and the process killed) if it does not end in time.
+inline std::optional<Run> finish_coremodal(const TempDir& dir, Started& started, double timeout_s) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    int status = 0;
+    while (waitpid(started.pid, &status, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > until) return std::nullopt;  // ~Started kills it
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    started.pid = -1;
+    return collect_output(dir, status);
+}
+
+// Whether `done()` came true within timeout_s (polled every 20 ms).
+template <class Condition>
+bool wait_until(Condition done, double timeout_s) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > until) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
 }
 
 }  // namespace coremodal::testing

@@ -7,6 +7,7 @@
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "output/converge_report.hpp"
+#include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 
@@ -136,8 +137,11 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     PetscLogIsActive(&logging);
     if (!logging) PetscLogDefaultBegin();
 
-    // 1. The scene and its model levels.
+    // 1. The scene and its model levels; the results folder checked before any work.
     const Scene scene = parse_case_file(o.case_file);
+    const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
+                                                   : std::filesystem::path("results") / (scene.name + "-converge");
+    if (o.write_results) prepare_output(out, o.force);
     ConvergeStudy study;
     study.load_start = load_average();
     study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
@@ -159,11 +163,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.load_end = load_average();
 
     // 4. Write (rank 0): numbers first, then the picture, then the report.
-    if (root && o.write_results) {
-        const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
-                                                       : std::filesystem::path("results") / (scene.name + "-converge");
-        write_converge_results(study, out, o.quiet, progress);
-    }
+    if (root && o.write_results) write_converge_results(study, out, o.force, o.quiet, progress);
     if (root && !o.quiet) print_converge_summary(study, progress);
     return study;
 }

@@ -23,6 +23,7 @@ inline constexpr long kDefaultMaxDofs = 200000;
 struct ConvergeOptions {
     std::string case_file;
     std::optional<std::string> output_dir;  // default results/<case name>-converge
+    bool force = false;                     // an earlier result there is removed, not kept as .previous
     int levels = 4;                         // k = first ... first + levels - 1
     int first = 1;
     std::optional<std::string> unit;        // "W/P/A/Z"; default: default_unit(scene)

@@ -1,0 +1,180 @@
+#include "common/signals.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <set>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace coremodal {
+namespace fs = std::filesystem;
+
+namespace {
+
+// How long children get after the signal is passed on before SIGKILL: a
+// coremodal child removes its own partial folder and stops its own children
+// (well under a second); python unwinds its KeyboardInterrupt.
+constexpr auto kChildGrace = std::chrono::seconds(10);
+// After SIGKILL, how long to wait for the threads that started the children
+// to reap them (the kernel ends a killed process at once).
+constexpr auto kKilledGrace = std::chrono::seconds(2);
+// A folder may still be written by another thread (this process's main
+// thread does not stop for the interrupt): removing it is retried until it
+// stays gone, this many times, kPoll apart.
+constexpr int kRemoveAttempts = 50;
+constexpr auto kPoll = std::chrono::milliseconds(20);
+
+struct State {
+    std::mutex lock;
+    std::atomic<int> signal{0};
+    std::set<pid_t> children;
+    std::set<fs::path> folders;
+};
+
+// Never destroyed: the interrupt thread may use it while the main thread
+// runs the static destructors of a normal exit.
+State& state() {
+    static State* s = new State;
+    return *s;
+}
+
+std::set<pid_t> running_children() {
+    std::lock_guard<std::mutex> guard(state().lock);
+    return state().children;
+}
+
+// Passes `sig` on to every child, waits for them to be reaped, and kills
+// those that outlive kChildGrace. Returns how many there were.
+size_t stop_children(int sig) {
+    const std::set<pid_t> first = running_children();
+    for (pid_t pid : first) ::kill(pid, sig);
+    for (auto [resend, grace] : {std::pair{0, kChildGrace}, std::pair{SIGKILL, kKilledGrace}}) {
+        if (resend)
+            for (pid_t pid : running_children()) ::kill(pid, resend);
+        const auto until = std::chrono::steady_clock::now() + grace;
+        while (!running_children().empty() && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(kPoll);
+        if (running_children().empty()) break;
+    }
+    return first.size();
+}
+
+// Removes the folders, which another thread may still be writing into.
+void remove_folders(const std::vector<fs::path>& folders) {
+    for (const fs::path& folder : folders)
+        for (int attempt = 0; attempt < kRemoveAttempts; ++attempt) {
+            std::error_code ec;
+            fs::remove_all(folder, ec);
+            if (!fs::exists(fs::symlink_status(folder, ec))) break;
+            std::this_thread::sleep_for(kPoll);
+        }
+}
+
+// The interrupt thread's work once a signal has arrived. Setting the signal
+// under the lock waits for a rename in progress (unless_interrupted) and
+// stops any later one, and no folder is registered after it: the folders
+// registered now are all there are (the main thread may still remove one
+// itself as it unwinds). Children go first, because a python plot writes
+// into the partial folder that is removed next.
+[[noreturn]] void handle_interrupt(int sig) {
+    std::vector<fs::path> removed;
+    {
+        std::lock_guard<std::mutex> guard(state().lock);
+        state().signal = sig;
+        removed.assign(state().folders.begin(), state().folders.end());
+    }
+    const size_t n_children = stop_children(sig);
+    remove_folders(removed);
+    std::string line = std::string("coremodal: interrupted by ") + (sig == SIGINT ? "SIGINT" : "SIGTERM");
+    if (n_children) line += "; stopped " + std::to_string(n_children) + " child process(es)";
+    for (const fs::path& f : removed) line += "; removed " + f.string();
+    std::fprintf(stderr, "%s\n", line.c_str());
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::_exit(128 + sig);
+}
+
+// The pipe from the signal handler to the interrupt thread.
+int signal_pipe[2] = {-1, -1};
+
+// Signal context: only async-signal-safe calls. write(2) is one; errno is
+// kept for the code the signal interrupted.
+extern "C" void on_signal(int sig) {
+    const int saved = errno;
+    const unsigned char byte = static_cast<unsigned char>(sig);
+    [[maybe_unused]] const ssize_t written = ::write(signal_pipe[1], &byte, 1);
+    errno = saved;
+}
+
+}  // namespace
+
+void install_interrupt_handling() {
+    static const bool started = [] {
+        if (::pipe2(signal_pipe, O_CLOEXEC) != 0) return false;
+        ::fcntl(signal_pipe[1], F_SETFL, O_NONBLOCK);  // a flood of signals never blocks the handler
+        std::thread([] {
+            unsigned char sig = 0;
+            while (::read(signal_pipe[0], &sig, 1) != 1) {
+            }
+            handle_interrupt(sig);
+        }).detach();
+        return true;
+    }();
+    if (!started) return;  // no pipe: the signals keep their default action
+    for (int sig : {SIGINT, SIGTERM}) {
+        struct sigaction now {};
+        if (::sigaction(sig, nullptr, &now) != 0 || now.sa_handler == SIG_IGN) continue;
+        struct sigaction ours {};
+        ours.sa_handler = on_signal;
+        sigemptyset(&ours.sa_mask);
+        ours.sa_flags = SA_RESTART;
+        ::sigaction(sig, &ours, nullptr);
+    }
+}
+
+int interrupt_signal() { return state().signal; }
+
+void unless_interrupted(const std::function<void()>& action) {
+    std::lock_guard<std::mutex> guard(state().lock);
+    if (state().signal) throw Interrupted("interrupted");
+    action();
+}
+
+void remove_on_interrupt(const fs::path& folder) {
+    std::lock_guard<std::mutex> guard(state().lock);
+    if (state().signal) throw Interrupted("interrupted");
+    state().folders.insert(folder);
+}
+
+void keep_on_interrupt(const fs::path& folder) {
+    std::lock_guard<std::mutex> guard(state().lock);
+    state().folders.erase(folder);
+}
+
+void child_started(pid_t pid) {
+    std::lock_guard<std::mutex> guard(state().lock);
+    state().children.insert(pid);
+    if (state().signal) ::kill(pid, state().signal);
+}
+
+void child_reaped(pid_t pid) {
+    std::lock_guard<std::mutex> guard(state().lock);
+    state().children.erase(pid);
+}
+
+void wait_if_interrupted() {
+    if (!state().signal) return;
+    for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+}
+
+}  // namespace coremodal
