@@ -306,19 +306,40 @@ def draw_mode(
     azimuth: float = -60.0,
 ) -> float:
     """Draws mode ``index`` (1-based) of ``results`` into a PNG of ``size_px``
-    pixels and returns the displacement scale of the 3D view.
-
-    Three panels: the deformed core in 3D (top), the mean displacement of
-    each axial station along the core (bottom left; see centreline_curves)
-    and the outer ring of the station that deforms most (bottom right; see
-    section_ring).
+    pixels (mode_figure) and returns the displacement scale of the 3D view.
 
     ``scale`` multiplies the (mass-normalised) shape in the 3D view; by
     default it is chosen so that the largest displacement is 10 % of the
     model's largest extent, but at most 25 % of its smallest extent (see
-    auto_scale). The cross-section has its own exaggeration, written in its
-    title. The core axis (z) runs left to right in the 3D view and the
-    along-the-core panel.
+    auto_scale).
+    """
+    if scale is None:
+        scale = auto_scale(results.nodes, results.shape(index))
+    figure = mode_figure(results, index, scale, size_px=size_px, dpi=dpi, elevation=elevation,
+                         azimuth=azimuth)
+    figure.savefig(Path(png_path), dpi=dpi)
+    return scale
+
+
+def mode_figure(
+    results: Results,
+    index: int,
+    scale: float | None = None,
+    *,
+    size_px: tuple[int, int] = (1200, 900),
+    dpi: int = 100,
+    elevation: float = 25.0,
+    azimuth: float = -60.0,
+) -> Figure:
+    """Mode ``index`` (1-based) of ``results`` as a matplotlib Figure of
+    ``size_px`` pixels, in three panels: the deformed core in 3D (top left),
+    the outer ring of the station that deforms most (top right; see
+    section_ring) and the mean displacement of each axial station along the
+    core (bottom; see centreline_curves).
+
+    ``scale`` multiplies the shape in the 3D view (default: auto_scale). The
+    cross-section has its own exaggeration, written in its title. The core
+    axis (z) runs left to right in the 3D view and the along-the-core panel.
     """
     shape = results.shape(index)
     if scale is None:
@@ -342,8 +363,7 @@ def draw_mode(
         _draw_centreline(figure.add_subplot(grid[1, :]), results, shape, centreline, ring)
         name = results.case_name or results.path.stem
         figure.suptitle(f"{name} — {results.label(index)}", fontsize=font + 3)
-        figure.savefig(Path(png_path), dpi=dpi)
-    return scale
+    return figure
 
 
 def _draw_3d(figure: Figure, axes, results: Results, shape: np.ndarray, scale: float,
