@@ -1,8 +1,8 @@
 """A results folder of coremodal, opened as one object.
 
     import coremodal
-    run = coremodal.load("results/02-clamped-76x15")
-    run                      # <coremodal run 02-clamped-76x15: solid3d, 20 modes, f1 = 48.80 Hz (bending)>
+    run = coremodal.load("results/07-rotogravure-chucks-150x15.8-4320")
+    run                      # <coremodal run 07-rotogravure-chucks-150x15.8-4320: harmonic, 12 modes, f1 = 25.79 Hz (bending)>
     run.modes                # the mode table (modes.csv) as a coremodal Table
     run.to_pandas()          # ... as a pandas DataFrame
     run.summary["beam"]      # summary.json as a dict
