@@ -25,6 +25,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from ._optional import require
 from .results import Results
 
 #: The strip's frames: the swing at +1, +1/2, 0, -1/2, -1 of its amplitude
@@ -183,10 +184,7 @@ def animation_frames(results: Results, index: int, n_frames: int = GIF_FRAMES,
 def draw_animation(results: Results, index: int, gif_path: str | Path, **options) -> Path:
     """Writes mode ``index`` swinging as a looping GIF. Raises ImportError
     (saying how to install it) without PIL."""
-    try:
-        from PIL import Image
-    except ImportError:
-        raise ImportError("an animated GIF needs PIL: apt install python3-pil (or pip install pillow)") from None
+    Image = require("PIL.Image", "an animated GIF", "apt install python3-pil (or pip install pillow)")
     images = [Image.open(io.BytesIO(png)).convert("RGB") for png in animation_frames(results, index, **options)]
     path = Path(gif_path)
     images[0].save(path, save_all=True, append_images=images[1:], duration=GIF_FRAME_MS, loop=0)

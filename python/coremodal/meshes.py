@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING, Iterable
 
 import numpy as np
 
+from ._optional import require
+
 if TYPE_CHECKING:
     from .results import Results
 
@@ -39,11 +41,8 @@ def to_pyvista(results: "Results", modes: Iterable[int] | None = None):
     """A pyvista.UnstructuredGrid of the mesh with the shapes of ``modes``
     (1-based; default: all) as point data ``mode_NN`` and the cell data
     ``part``. Raises ImportError (saying how to install it) without pyvista."""
-    try:
-        import pyvista
-    except ImportError:
-        raise ImportError("Results.to_pyvista() needs pyvista (pip install pyvista); "
-                          "Results.to_meshio() needs only meshio (apt install python3-meshio)") from None
+    pyvista = require("pyvista", "Results.to_pyvista()", "pip install pyvista (Results.to_meshio() needs "
+                      "only meshio: apt install python3-meshio)")
     chosen = _mode_list(results, modes)
     cells = results.vtk_cells
     per_cell = cells.shape[1]
@@ -61,11 +60,7 @@ def to_meshio(results: "Results", modes: Iterable[int] | None = None):
     default: all) as point data ``mode_NN`` and the cell data ``part``
     (``mesh.write("roll.vtu")`` writes it for any VTK reader). Raises
     ImportError (saying how to install it) without meshio."""
-    try:
-        import meshio
-    except ImportError:
-        raise ImportError("Results.to_meshio() needs meshio: apt install python3-meshio "
-                          "(or pip install meshio)") from None
+    meshio = require("meshio", "Results.to_meshio()", "apt install python3-meshio (or pip install meshio)")
     chosen = _mode_list(results, modes)
     cells = results.vtk_cells
     return meshio.Mesh(

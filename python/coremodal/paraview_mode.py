@@ -5,7 +5,9 @@
     pvpython paraview_mode.py RESULTS_DIR --mode 1 --frames 12 --gif mode_01.gif
 
 Without a display, run it under a virtual one:
-``xvfb-run -a -s "-screen 0 1920x1080x24" pvpython ...``. ``python3 -m
+``xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" pvpython ...`` (without
+-noreset the X server resets between ParaView's first two connections and
+pvpython aborts now and then: "bad X server connection"). ``python3 -m
 coremodal paraview RESULTS_DIR ...`` finds pvpython and xvfb-run and does
 that for you.
 

@@ -294,19 +294,11 @@ def clamp_spans(case: dict[str, Any]) -> list[tuple[float, float]]:
     return spans
 
 
-def draw_mode(
-    results: Results,
-    index: int,
-    png_path: str | Path,
-    scale: float | None = None,
-    *,
-    size_px: tuple[int, int] = (1200, 900),
-    dpi: int = 100,
-    elevation: float = 25.0,
-    azimuth: float = -60.0,
-) -> float:
-    """Draws mode ``index`` (1-based) of ``results`` into a PNG of ``size_px``
-    pixels (mode_figure) and returns the displacement scale of the 3D view.
+def draw_mode(results: Results, index: int, png_path: str | Path, scale: float | None = None,
+              **options: Any) -> float:
+    """Draws mode ``index`` (1-based) of ``results`` into a PNG (mode_figure,
+    whose keyword ``options`` it takes: size_px, dpi, elevation, azimuth) and
+    returns the displacement scale of the 3D view.
 
     ``scale`` multiplies the (mass-normalised) shape in the 3D view; by
     default it is chosen so that the largest displacement is 10 % of the
@@ -315,9 +307,7 @@ def draw_mode(
     """
     if scale is None:
         scale = auto_scale(results.nodes, results.shape(index))
-    figure = mode_figure(results, index, scale, size_px=size_px, dpi=dpi, elevation=elevation,
-                         azimuth=azimuth)
-    figure.savefig(Path(png_path), dpi=dpi)
+    mode_figure(results, index, scale, **options).savefig(Path(png_path), dpi=options.get("dpi", 100))
     return scale
 
 

@@ -13,8 +13,13 @@ import os
 import shutil
 from pathlib import Path
 
-#: The virtual screen: big enough for any picture the script saves.
-XVFB_SCREEN = "-screen 0 1920x1080x24"
+#: The virtual screen, big enough for any picture the script saves, and
+#: -noreset: an X server resets when its last client disconnects and refuses
+#: connections meanwhile; ParaView closes its first display connection (the
+#: OpenGL check) and opens the next at once, so without -noreset pvpython
+#: aborts now and then with "bad X server connection" (4 of 10 runs on a
+#: loaded machine here).
+XVFB_SERVER_ARGS = "-screen 0 1920x1080x24 -noreset"
 SCRIPT = Path(__file__).resolve().with_name("paraview_mode.py")
 
 
@@ -37,4 +42,4 @@ def pvpython_command(script_args: list[str], env: dict[str, str] | None = None) 
     xvfb_run = shutil.which("xvfb-run", path=env.get("PATH"))
     if xvfb_run is None:
         raise ParaViewMissing("no display (DISPLAY is not set) and no xvfb-run to make one: apt install xvfb")
-    return [xvfb_run, "-a", "-s", XVFB_SCREEN, *command]
+    return [xvfb_run, "-a", "-s", XVFB_SERVER_ARGS, *command]

@@ -22,6 +22,8 @@ from typing import Any, Iterator
 
 import numpy as np
 
+from ._optional import require
+
 #: Rows shown by repr(table); the rest is summarised as "... N more rows".
 REPR_ROWS = 12
 #: Widest cell shown by repr(table), in characters.
@@ -66,11 +68,7 @@ class Table:
 
     def to_pandas(self):
         """The table as a pandas DataFrame (pandas is not required otherwise)."""
-        try:
-            import pandas
-        except ImportError:
-            raise ImportError("Table.to_pandas() needs pandas: apt install python3-pandas "
-                              "(or pip install pandas)") from None
+        pandas = require("pandas", "to_pandas()", "apt install python3-pandas (or pip install pandas)")
         return pandas.DataFrame(self._columns)
 
     def __repr__(self) -> str:

@@ -107,7 +107,7 @@ def test_without_a_display_the_script_runs_under_xvfb_run(tmp_path: Path) -> Non
     with_display = pvpython_command(["R"], {"PATH": str(tmp_path), "DISPLAY": ":0"})
     assert with_display[0] == str(fake) and with_display[-1] == "R"
     headless = pvpython_command(["R"], {"PATH": str(tmp_path)})
-    assert headless[:4] == [str(xvfb), "-a", "-s", "-screen 0 1920x1080x24"]
+    assert headless[:4] == [str(xvfb), "-a", "-s", "-screen 0 1920x1080x24 -noreset"]
     os.remove(xvfb)
     with pytest.raises(ParaViewMissing, match="no xvfb-run"):
         pvpython_command(["R"], {"PATH": str(tmp_path)})
