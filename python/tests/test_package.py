@@ -111,7 +111,7 @@ def test_to_pandas_gives_the_mode_table(run: coremodal.Run, results: coremodal.R
 
 def test_without_pandas_the_error_says_what_to_install(monkeypatch, results: coremodal.Results) -> None:
     monkeypatch.setitem(sys.modules, "pandas", None)  # import pandas now fails
-    with pytest.raises(ImportError, match="to_pandas\(\) needs pandas: apt install python3-pandas"):
+    with pytest.raises(ImportError, match=r"to_pandas\(\) needs pandas: apt install python3-pandas"):
         results.to_pandas()
 
 
