@@ -1,13 +1,15 @@
 """Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
 ``python3 -m coremodal run-plot RESULTS_DIR --modes ...``,
-``python3 -m coremodal converge-plot CONVERGE_DIR`` and
-``python3 -m coremodal study-plot STUDY_FOLDER``.
+``python3 -m coremodal converge-plot CONVERGE_DIR``,
+``python3 -m coremodal study-plot STUDY_FOLDER`` and
+``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython).
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
     python3 -m coremodal run-plot results/02-clamped-76x15 --modes 7,9   # the run report's PNGs
     python3 -m coremodal converge-plot results/CASE-converge     # error_vs_time.png from converge.json
     python3 -m coremodal study-plot results/06-study-safe-speed-study
+    python3 -m coremodal paraview results/02-clamped-76x15 --mode 1 --out mode1.png   # needs pvpython
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -59,6 +61,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument("--modes", default="", help="modes to draw, e.g. 7,9,13 (default: only spectrum.png)")
     run.add_argument("--size", type=_size, default=(1000, 750), metavar="WxH",
                      help="size of each mode picture in pixels (default 1000x750)")
+    run.add_argument("--frames", type=int, metavar="MODE",
+                     help="also draw MODE swinging: mode_NN_frames.png (a strip) and mode_NN.gif (with PIL)")
 
     converge = commands.add_parser(
         "converge-plot", help="draw error against time (PNG) from a `coremodal converge` folder")
@@ -68,6 +72,12 @@ def _parser() -> argparse.ArgumentParser:
     converge.add_argument("--size", type=_size, default=(1000, 700), metavar="WxH",
                           help="picture size in pixels (default 1000x700)")
     converge.add_argument("--quiet", action="store_true", help="print nothing on success")
+    paraview = commands.add_parser(
+        "paraview", help="render a mode with ParaView (pvpython, under xvfb-run without a display)",
+        description="Runs coremodal/paraview_mode.py in pvpython; its options: --list, --mode N, "
+                    "--out PNG, --scale S, --size WxH, --frames [N], --gif GIF.")
+    paraview.add_argument("script_args", nargs=argparse.REMAINDER,
+                          help="RESULTS_DIR and the options of paraview_mode.py")
     study = commands.add_parser(
         "study-plot", help="draw the PNG plots of a study or calibration folder (study.csv, study.json)")
     study.add_argument("folder", type=Path, help="results folder of coremodal study or coremodal calibrate")
@@ -101,7 +111,7 @@ def _run_plot(args: argparse.Namespace) -> int:
 
     try:
         modes = run_plot.parse_modes(args.modes) if args.modes.strip() else []
-        paths = run_plot.draw_run_plots(args.folder, modes, args.size)
+        paths = run_plot.draw_run_plots(args.folder, modes, args.size, args.frames)
     except (ValueError, IndexError, OSError) as error:  # ResultsFormatError is a ValueError
         print(f"coremodal: error: {error}", file=sys.stderr)
         return 1
@@ -109,8 +119,23 @@ def _run_plot(args: argparse.Namespace) -> int:
     return 0
 
 
+def _paraview(args: argparse.Namespace) -> int:
+    import subprocess
+
+    from .pvrun import ParaViewMissing, pvpython_command
+
+    try:
+        command = pvpython_command(args.script_args)
+    except ParaViewMissing as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    return subprocess.run(command).returncode
+
+
 def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
+    if args.command == "paraview":
+        return _paraview(args)
     if args.command == "run-plot":
         return _run_plot(args)
     if args.command == "converge-plot":

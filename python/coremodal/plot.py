@@ -294,31 +294,42 @@ def clamp_spans(case: dict[str, Any]) -> list[tuple[float, float]]:
     return spans
 
 
-def draw_mode(
+def draw_mode(results: Results, index: int, png_path: str | Path, scale: float | None = None,
+              **options: Any) -> float:
+    """Draws mode ``index`` (1-based) of ``results`` into a PNG (mode_figure,
+    whose keyword ``options`` it takes: size_px, dpi, elevation, azimuth) and
+    returns the displacement scale of the 3D view.
+
+    ``scale`` multiplies the (mass-normalised) shape in the 3D view; by
+    default it is chosen so that the largest displacement is 10 % of the
+    model's largest extent, but at most 25 % of its smallest extent (see
+    auto_scale).
+    """
+    if scale is None:
+        scale = auto_scale(results.nodes, results.shape(index))
+    mode_figure(results, index, scale, **options).savefig(Path(png_path), dpi=options.get("dpi", 100))
+    return scale
+
+
+def mode_figure(
     results: Results,
     index: int,
-    png_path: str | Path,
     scale: float | None = None,
     *,
     size_px: tuple[int, int] = (1200, 900),
     dpi: int = 100,
     elevation: float = 25.0,
     azimuth: float = -60.0,
-) -> float:
-    """Draws mode ``index`` (1-based) of ``results`` into a PNG of ``size_px``
-    pixels and returns the displacement scale of the 3D view.
+) -> Figure:
+    """Mode ``index`` (1-based) of ``results`` as a matplotlib Figure of
+    ``size_px`` pixels, in three panels: the deformed core in 3D (top left),
+    the outer ring of the station that deforms most (top right; see
+    section_ring) and the mean displacement of each axial station along the
+    core (bottom; see centreline_curves).
 
-    Three panels: the deformed core in 3D (top), the mean displacement of
-    each axial station along the core (bottom left; see centreline_curves)
-    and the outer ring of the station that deforms most (bottom right; see
-    section_ring).
-
-    ``scale`` multiplies the (mass-normalised) shape in the 3D view; by
-    default it is chosen so that the largest displacement is 10 % of the
-    model's largest extent, but at most 25 % of its smallest extent (see
-    auto_scale). The cross-section has its own exaggeration, written in its
-    title. The core axis (z) runs left to right in the 3D view and the
-    along-the-core panel.
+    ``scale`` multiplies the shape in the 3D view (default: auto_scale). The
+    cross-section has its own exaggeration, written in its title. The core
+    axis (z) runs left to right in the 3D view and the along-the-core panel.
     """
     shape = results.shape(index)
     if scale is None:
@@ -342,8 +353,7 @@ def draw_mode(
         _draw_centreline(figure.add_subplot(grid[1, :]), results, shape, centreline, ring)
         name = results.case_name or results.path.stem
         figure.suptitle(f"{name} — {results.label(index)}", fontsize=font + 3)
-        figure.savefig(Path(png_path), dpi=dpi)
-    return scale
+    return figure
 
 
 def _draw_3d(figure: Figure, axes, results: Results, shape: np.ndarray, scale: float,

@@ -10,11 +10,15 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterable
 
 import h5py
 import numpy as np
+
+from . import display, meshes
+from .tables import Table
 
 #: Newest layout of modes.h5 that this package understands.
 SUPPORTED_SCHEMA_VERSION = 1
@@ -83,6 +87,64 @@ class Results:
         with h5py.File(self.path, "r") as f:
             return np.asarray(f[f"modes/shapes/mode_{index:04d}"][()], dtype=np.float64)
 
+    def cylindrical(self, index: int) -> np.ndarray:
+        """Mode ``index`` (1-based) in cylindrical components about the z
+        axis, shape (N, 3): u_r, u_theta, u_z (float64, from the shape)."""
+        return display.cylindrical(self.nodes, self.shape(index))
+
+    @cached_property
+    def warp_scales(self) -> np.ndarray:
+        """(K,) the suggested Warp By Vector scale of each mode, as written
+        into modes.xdmf (computed with coremodal.display for older files)."""
+        with h5py.File(self.path, "r") as f:
+            if "modes/warp_scale" in f:
+                return np.asarray(f["modes/warp_scale"][()], dtype=np.float64)
+        return np.array([display.suggested_warp_scale(self.nodes, self.shape(i), self.types[i - 1])
+                         for i in range(1, self.n_modes + 1)])
+
+    @property
+    def model(self) -> str:
+        """The model level the case asked for: solid, harmonic ("" if unknown)."""
+        return str(self.case.get("model", "")) if isinstance(self.case, dict) else ""
+
+    @property
+    def modes(self) -> Table:
+        """The mode table (the columns of modes.csv) as a coremodal Table."""
+        return Table({
+            "index": np.arange(1, self.n_modes + 1),
+            "frequency_hz": self.frequencies_hz,
+            "type": list(self.types),
+            "n": self.n.astype(np.int64),
+            "m": self.m.astype(np.int64),
+            "dominant_share": self.dominant_share,
+            "relative_residual": self.relative_residuals,
+            "eff_mass_x_kg": self.effective_mass[:, 0],
+            "eff_mass_y_kg": self.effective_mass[:, 1],
+            "eff_mass_z_kg": self.effective_mass[:, 2],
+            "eff_mass_rz_kgm2": self.effective_mass[:, 3],
+        }, name=f"{self.case_name or self.path.name} modes")
+
+    def to_pandas(self):
+        """The mode table as a pandas DataFrame (needs pandas)."""
+        return self.modes.to_pandas()
+
+    def to_pyvista(self, modes: Iterable[int] | None = None):
+        """The mesh with the shapes of ``modes`` (default all) as a
+        pyvista.UnstructuredGrid; see coremodal.meshes.to_pyvista."""
+        return meshes.to_pyvista(self, modes)
+
+    def to_meshio(self, modes: Iterable[int] | None = None):
+        """The mesh with the shapes of ``modes`` (default all) as a
+        meshio.Mesh; see coremodal.meshes.to_meshio."""
+        return meshes.to_meshio(self, modes)
+
+    def __repr__(self) -> str:
+        first = first_elastic(self.frequencies_hz, self.types)
+        lowest = f", f1 = {self.frequencies_hz[first]:.2f} Hz ({self.types[first]})" if first is not None else ""
+        model = f", {self.model}" if self.model else ""
+        return (f"<coremodal.Results {self.case_name or '?'}{model}: {self.n_modes} modes{lowest}; "
+                f"{self.cell_type} mesh of {self.n_nodes} nodes; {self.path}>")
+
     def label(self, index: int) -> str:
         """One-line description of mode ``index`` (1-based), e.g.
         ``"mode 7: 48.80 Hz, bending, n=1, m=0"``."""
@@ -122,7 +184,15 @@ class Results:
             )
 
 
-def load(path: str | Path) -> Results:
+def first_elastic(frequencies_hz: Any, types: list[str]) -> int | None:
+    """Row of the lowest mode that is not rigid (None if there is none)."""
+    for i, kind in enumerate(types):
+        if kind != "rigid":
+            return i
+    return None
+
+
+def load_h5(path: str | Path) -> Results:
     """Reads a modes.h5 written by coremodal.
 
     Raises SchemaVersionError if the file is newer than this package
@@ -205,3 +275,7 @@ def _text(value: Any) -> str:
 
 def _texts(dataset: h5py.Dataset) -> list[str]:
     return [_text(v) for v in dataset[()]]
+
+
+#: The name this module always had for load_h5 (coremodal.load also opens folders).
+load = load_h5

@@ -9,7 +9,10 @@ draws into that folder (docs/results.md, "report.md"):
   coremodal.plot.draw_mode, a little smaller than the ``plot`` default;
 - ``spectrum.png``: every mode's frequency against its number, coloured by
   its type, so that the order of bending, torsion, axial and shell modes is
-  seen at a glance.
+  seen at a glance;
+- with ``--frames N``: ``mode_NN_frames.png``, mode N swinging as a strip of
+  side views (coremodal.frames), and ``mode_NN.gif``, the same animated
+  (only where PIL is installed).
 
 The program chooses the modes (one of each type, lowest first) and calls this
 after writing modes.h5; the mesh's boundary faces are found once for all
@@ -24,7 +27,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from . import plot
+from . import frames, plot
 from .results import Results, load
 
 #: Mode pictures in the report: big enough to read, small enough to draw fast.
@@ -58,8 +61,16 @@ def mode_png_name(index: int) -> str:
 
 def draw_spectrum(results: Results, png_path: str | Path,
                   size_px: tuple[int, int] = SPECTRUM_SIZE_PX, dpi: int = DPI) -> Path:
+    """Writes spectrum_figure into a PNG; returns its path."""
+    path = Path(png_path)
+    spectrum_figure(results, size_px, dpi).savefig(path, dpi=dpi)
+    return path
+
+
+def spectrum_figure(results: Results, size_px: tuple[int, int] = SPECTRUM_SIZE_PX,
+                    dpi: int = DPI) -> Figure:
     """Frequency of every mode against its number, a stem per mode coloured
-    by type, one legend entry per type present."""
+    by type, one legend entry per type present; a matplotlib Figure."""
     figure = Figure(figsize=(size_px[0] / dpi, size_px[1] / dpi), dpi=dpi)
     FigureCanvasAgg(figure)
     axes = figure.add_subplot(1, 1, 1)
@@ -77,26 +88,31 @@ def draw_spectrum(results: Results, png_path: str | Path,
     axes.legend(loc="upper left", framealpha=0.8)
     axes.set_title(f"{results.case_name or results.path.parent.name}: {results.n_modes} modes by type")
     figure.tight_layout()
-    path = Path(png_path)
-    figure.savefig(path, dpi=dpi)
-    return path
+    return figure
 
 
 def draw_run_plots(folder: str | Path, modes: list[int],
-                   size_px: tuple[int, int] = MODE_SIZE_PX) -> list[Path]:
+                   size_px: tuple[int, int] = MODE_SIZE_PX, frames_mode: int | None = None) -> list[Path]:
     """Draws mode_NN.png for each of ``modes`` and spectrum.png into
-    ``folder`` (which holds modes.h5); returns the paths written.
+    ``folder`` (which holds modes.h5), and for ``frames_mode`` its frame
+    strip and, where PIL is installed, its GIF; returns the paths written.
 
     Raises ResultsFormatError or OSError for an unreadable folder and
     IndexError for a mode the file does not hold (before drawing anything).
     """
     folder = Path(folder)
     results = load(folder / "modes.h5")
-    for index in modes:
+    for index in modes + ([frames_mode] if frames_mode is not None else []):
         results._check_index(index)
     written = [draw_spectrum(results, folder / "spectrum.png")]
     for index in modes:
         path = folder / mode_png_name(index)
         plot.draw_mode(results, index, path, size_px=size_px)
         written.append(path)
+    if frames_mode is not None:
+        written.append(frames.draw_frame_strip(results, frames_mode, folder / frames.strip_file(frames_mode)))
+        try:
+            written.append(frames.draw_animation(results, frames_mode, folder / frames.animation_file(frames_mode)))
+        except ImportError:
+            pass  # no PIL: the strip shows the motion in the report all the same
     return written

@@ -105,27 +105,40 @@ def test_vtk_cells_hold_the_same_nodes_as_the_cells(results: coremodal.Results) 
 # ------------------------------------------------------------------ XDMF
 
 
-def test_xdmf_is_well_formed_and_points_at_existing_datasets(modes_h5: Path,
-                                                             results: coremodal.Results) -> None:
+def test_xdmf_is_a_temporal_collection_pointing_at_existing_datasets(
+        modes_h5: Path, results: coremodal.Results) -> None:
     xdmf = modes_h5.with_name("modes.xdmf")
     assert xdmf.is_file(), f"no {xdmf} beside {modes_h5}"
     root = ET.parse(xdmf).getroot()
-    grid = root.find("./Domain/Grid")
-    assert grid is not None
-    topology = grid.find("Topology")
-    expected_topology = "Tetrahedron_10" if results.cell_type == "tet10" else "Hexahedron_20"
-    assert topology.get("TopologyType") == expected_topology
-    assert int(topology.get("NumberOfElements")) == results.n_cells
+    collection = root.find("./Domain/Grid")
+    assert collection.get("GridType") == "Collection"
+    assert collection.get("CollectionType") == "Temporal"
+    grids = collection.findall("Grid")
+    assert len(grids) == results.n_modes
+    # Time = mode number, in order.
+    assert [float(g.find("Time").get("Value")) for g in grids] == list(range(1, results.n_modes + 1))
 
-    attributes = grid.findall("Attribute")
-    names = [a.get("Name") for a in attributes]
-    assert names[0] == "part"
-    assert len(names) == 1 + results.n_modes
-    first = names[1]
-    assert first.startswith("mode_01_") and f"_{results.types[0]}_n{results.n[0]}_" in first
+    expected_topology = "Tetrahedron_10" if results.cell_type == "tet10" else "Hexahedron_20"
+    for index, grid in enumerate(grids, start=1):
+        topology = grid.find("Topology")
+        assert topology.get("TopologyType") == expected_topology
+        assert int(topology.get("NumberOfElements")) == results.n_cells
+        assert grid.get("Name").startswith(f"mode_{index:02d}_")
+        point = {a.get("Name") for a in grid.findall("Attribute") if a.get("Center") == "Node"}
+        assert point == {"displacement", "u_r", "u_theta", "u_z"}
+        fields = {a.get("Name"): a.find("DataItem").text.split()
+                  for a in grid.findall("Attribute") if a.get("Center") == "Grid"}
+        i = index - 1
+        assert float(fields["frequency_hz"][0]) == results.frequencies_hz[i]  # all digits
+        assert int(fields["n"][0]) == results.n[i] and int(fields["m"][0]) == results.m[i]
+        assert int(fields["mode"][0]) == index
+        assert "".join(chr(int(c)) for c in fields["type"]) == results.types[i]
+        assert float(fields["warp_scale"][0]) == pytest.approx(results.warp_scales[i], rel=1e-15)
 
     with h5py.File(modes_h5, "r") as f:
         for item in root.iter("DataItem"):
+            if item.get("Format") != "HDF":
+                continue
             filename, dataset = item.text.strip().split(":", 1)
             assert filename == modes_h5.name
             assert dataset in f, dataset

@@ -26,11 +26,27 @@ std::string last_line(const fs::path& file) {
     return last;
 }
 
+// The folder holding the python package: $COREMODAL_PYTHON_DIR if set; an
+// installed program's own (COREMODAL_PYTHON_FROM_BIN from the folder of the
+// executable, e.g. PREFIX/bin/../share/coremodal/python) when it is there;
+// else this source tree's python/.
+std::string package_folder() {
+    const char* own = std::getenv("COREMODAL_PYTHON_DIR");
+    if (own && *own) return own;
+    std::error_code error;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const fs::path installed = exe.parent_path() / COREMODAL_PYTHON_FROM_BIN;
+        if (fs::is_regular_file(installed / "coremodal" / "__init__.py", error))
+            return installed.lexically_normal().string();
+    }
+    return COREMODAL_SOURCE_DIR "/python";
+}
+
 // Our environment with PYTHONPATH led by the package folder and the Agg
 // backend (no display: the pictures are files).
 std::vector<std::string> plot_environment() {
-    const char* own = std::getenv("COREMODAL_PYTHON_DIR");
-    std::string pythonpath = own && *own ? own : COREMODAL_SOURCE_DIR "/python";
+    std::string pythonpath = package_folder();
     std::vector<std::string> env;
     for (char** e = environ; e && *e; ++e) {
         const std::string v = *e;

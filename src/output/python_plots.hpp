@@ -14,9 +14,11 @@ namespace coremodal {
 // numpy, h5py and matplotlib). A bare name is looked up on the PATH.
 std::string python_interpreter();
 
-// Runs `PYTHON -m coremodal SUBCOMMAND FOLDER ARGS...` with the package of
-// this source tree first on PYTHONPATH ($COREMODAL_PYTHON_DIR replaces the
-// source's python/ folder) and MPLBACKEND=Agg, and waits for it. Its output
+// Runs `PYTHON -m coremodal SUBCOMMAND FOLDER ARGS...` with the python
+// package first on PYTHONPATH — $COREMODAL_PYTHON_DIR if set, else the
+// installed package beside an installed program (PREFIX/share/coremodal/
+// python, see CMakeLists.txt), else this source tree's python/ — and
+// MPLBACKEND=Agg, and waits for it. Its output
 // goes to FOLDER/plot.log, which is removed when it succeeds.
 // Returns "" on success, else why there are no pictures, in words for a
 // report ("/nonexistent -m coremodal run-plot could not start: No such file

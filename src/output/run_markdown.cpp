@@ -246,6 +246,9 @@ void picture_section(std::ostream& out, const RunPictures& p) {
     }
     if (!p.spectrum.empty()) out << "![frequencies by mode type](" << p.spectrum << ")\n\n";
     for (const ModePicture& m : p.modes) out << "![mode " << m.mode << "](" << m.file << ")\n\n";
+    if (!p.frames.empty())  // the first bending mode swinging (run_pictures.hpp)
+        out << "Mode " << p.frames_mode << " swinging" << (p.animation.empty() ? "" : " ([animated](" + p.animation + "))")
+            << ":\n\n![mode " << p.frames_mode << " swinging](" << p.frames << ")\n\n";
 }
 
 void timing_section(std::ostream& out, const RunReport& r, const RunPictures& p) {

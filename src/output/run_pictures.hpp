@@ -1,5 +1,6 @@
-// The pictures of a run's report.md: a few mode shapes and the spectrum,
-// drawn by the python package (`python3 -m coremodal run-plot DIR --modes ...`)
+// The pictures of a run's report.md: a few mode shapes, the spectrum and
+// the first bending mode swinging (a strip of frames and a GIF), drawn by the
+// python package (`python3 -m coremodal run-plot DIR --modes ... --frames N`)
 // from the modes.h5 just written. A run without them is still complete.
 #pragma once
 
@@ -24,6 +25,9 @@ struct ModePicture {
 struct RunPictures {
     std::vector<ModePicture> modes;
     std::string spectrum;  // "spectrum.png", or "" when not drawn
+    int frames_mode = 0;     // the mode drawn swinging (0: none)
+    std::string frames;      // "mode_01_frames.png": side views at 5 phases, or ""
+    std::string animation;   // "mode_01.gif": the same animated (python's PIL), or ""
     std::string problem;   // why there are no pictures ("" when drawn)
     double time_s = 0;     // wall time of the python process
 };
@@ -35,6 +39,14 @@ std::vector<int> modes_to_picture(const std::vector<Mode>& modes, int max = kMax
 
 // "mode_07.png": the file name python's run-plot writes for mode 7.
 std::string mode_picture_file(int mode);
+
+// The mode shown swinging in the report: the lowest bending mode, else the
+// lowest mode that is not rigid; 0 if there is none.
+int mode_to_animate(const std::vector<Mode>& modes);
+
+// "mode_01_frames.png" and "mode_01.gif": what run-plot --frames 1 writes.
+std::string frame_strip_file(int mode);
+std::string animation_file(int mode);
 
 // Draws the pictures into `dir` (which holds modes.h5). With `enabled`
 // false, or when python fails, returns no pictures and the reason.

@@ -1,5 +1,6 @@
 #include "output/xdmf.hpp"
 
+#include "output/mode_display.hpp"
 #include "output/modes_h5.hpp"
 
 #include <algorithm>
@@ -64,6 +65,79 @@ std::string hdf_item(const std::string& h5, const std::string& dataset, const st
     return s.str();
 }
 
+std::string number_text(double value) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+// A field-data value (Center="Grid"): ParaView shows it in the Information
+// panel and the spreadsheet's Field Data, per time step.
+void field_value(std::ostream& x, const std::string& name, const char* number_type, int precision,
+                 const std::string& values, size_t count = 1) {
+    x << "        <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Grid\">\n"
+      << "          <DataItem Dimensions=\"" << count << "\" NumberType=\"" << number_type
+      << "\" Precision=\"" << precision << "\" Format=\"XML\">" << values << "</DataItem>\n"
+      << "        </Attribute>\n";
+}
+
+// XDMF has no string data: a word goes as its character codes (ParaView
+// reads them into a vtkCharArray; paraview_mode.py joins them again).
+std::string char_codes(const std::string& word) {
+    std::ostringstream out;
+    for (size_t i = 0; i < word.size(); ++i)
+        out << (i ? " " : "") << static_cast<int>(static_cast<unsigned char>(word[i]));
+    return out.str();
+}
+
+// Topology, geometry and the cells' part: the same datasets for every grid.
+void write_mesh_items(std::ostream& x, const std::string& h5, const Mesh& mesh) {
+    const std::string n_nodes = std::to_string(mesh.n_nodes());
+    const std::string n_cells = std::to_string(mesh.n_cells());
+    x << "        <Topology TopologyType=\"" << xdmf_topology_type(mesh.cell_type)
+      << "\" NumberOfElements=\"" << n_cells << "\">\n"
+      << "          "
+      << hdf_item(h5, "/mesh/vtk_cells", n_cells + " " + std::to_string(vtk_nodes_per_cell(mesh.cell_type)),
+                  "Int", 8)
+      << "\n        </Topology>\n"
+      << "        <Geometry GeometryType=\"XYZ\">\n"
+      << "          " << hdf_item(h5, "/mesh/nodes", n_nodes + " 3", "Float", 8) << "\n"
+      << "        </Geometry>\n"
+      << "        <Attribute Name=\"part\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+      << "          " << hdf_item(h5, "/mesh/cell_part", n_cells, "Int", 4) << "\n"
+      << "        </Attribute>\n";
+}
+
+// One time step: mode `number` on the shared mesh, its displacement vector,
+// its cylindrical components and its numbers as field data.
+void write_mode_grid(std::ostream& x, const std::string& h5, const Mesh& mesh, const Mode& mode, int number,
+                     int n_modes) {
+    const std::string n_nodes = std::to_string(mesh.n_nodes());
+    char label[160];
+    std::snprintf(label, sizeof label, "mode %d: %.2f Hz, %s, n=%d, m=%d", number, mode.frequency_hz,
+                  mode.label.type.c_str(), mode.label.n, mode.label.m);
+    x << "      <Grid Name=\"" << xml_escape(xdmf_mode_name(mode, number, n_modes))
+      << "\" GridType=\"Uniform\">\n"
+      << "        <Time Value=\"" << number << "\"/>\n"
+      << "        <Information Name=\"label\" Value=\"" << xml_escape(label) << "\"/>\n";
+    write_mesh_items(x, h5, mesh);
+    x << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
+      << "          " << hdf_item(h5, modes_h5_shape_dataset(number), n_nodes + " 3", "Float", 8) << "\n"
+      << "        </Attribute>\n";
+    for (const char* component : {"u_r", "u_theta", "u_z"})
+        x << "        <Attribute Name=\"" << component << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+          << "          " << hdf_item(h5, modes_h5_component_dataset(component, number), n_nodes, "Float", 4)
+          << "\n        </Attribute>\n";
+    field_value(x, "mode", "Int", 4, std::to_string(number));
+    field_value(x, "frequency_hz", "Float", 8, number_text(mode.frequency_hz));
+    field_value(x, "n", "Int", 4, std::to_string(mode.label.n));
+    field_value(x, "m", "Int", 4, std::to_string(mode.label.m));
+    field_value(x, "warp_scale", "Float", 8, number_text(suggested_warp_scale(mesh, mode.shape, mode.label.type)));
+    const std::string type = sanitize_name(mode.label.type);
+    field_value(x, "type", "Char", 1, char_codes(type), type.size());
+    x << "      </Grid>\n";
+}
+
 }  // namespace
 
 int vtk_nodes_per_cell(CellType type) { return type == CellType::tet10 ? 10 : 20; }
@@ -104,36 +178,24 @@ std::string xdmf_mode_name(const Mode& mode, int number, int n_modes) {
 
 void write_modes_xdmf(const std::string& xdmf_path, const std::string& h5_filename_relative,
                       const Mesh& mesh, const std::vector<Mode>& modes) {
-    const std::string n_nodes = std::to_string(mesh.n_nodes());
-    const std::string n_cells = std::to_string(mesh.n_cells());
-    const std::string& h5 = h5_filename_relative;
-
     std::ostringstream x;
     x << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
       << "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
-      << "  <Domain>\n"
-      << "    <Grid Name=\"core\" GridType=\"Uniform\">\n"
-      << "      <Topology TopologyType=\"" << xdmf_topology_type(mesh.cell_type)
-      << "\" NumberOfElements=\"" << n_cells << "\">\n"
-      << "        "
-      << hdf_item(h5, "/mesh/vtk_cells",
-                  n_cells + " " + std::to_string(vtk_nodes_per_cell(mesh.cell_type)), "Int", 8)
-      << "\n      </Topology>\n"
-      << "      <Geometry GeometryType=\"XYZ\">\n"
-      << "        " << hdf_item(h5, "/mesh/nodes", n_nodes + " 3", "Float", 8) << "\n"
-      << "      </Geometry>\n"
-      << "      <Attribute Name=\"part\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-      << "        " << hdf_item(h5, "/mesh/cell_part", n_cells, "Int", 4) << "\n"
-      << "      </Attribute>\n";
-    const int n_modes = static_cast<int>(modes.size());
-    for (int i = 0; i < n_modes; ++i) {
-        x << "      <Attribute Name=\"" << xml_escape(xdmf_mode_name(modes[i], i + 1, n_modes))
-          << "\" AttributeType=\"Vector\" Center=\"Node\">\n"
-          << "        " << hdf_item(h5, modes_h5_shape_dataset(i + 1), n_nodes + " 3", "Float", 8)
-          << "\n      </Attribute>\n";
+      << "  <Domain>\n";
+    if (modes.empty()) {
+        // Nothing to step through: the mesh alone, as one grid.
+        x << "    <Grid Name=\"core\" GridType=\"Uniform\">\n";
+        write_mesh_items(x, h5_filename_relative, mesh);
+        x << "    </Grid>\n";
+    } else {
+        x << "    <Grid Name=\"modes\" GridType=\"Collection\" CollectionType=\"Temporal\">\n"
+          << "      <Information Name=\"Time\" Value=\"mode number (1-based, in order of "
+             "frequency)\"/>\n";
+        const int n_modes = static_cast<int>(modes.size());
+        for (int i = 0; i < n_modes; ++i) write_mode_grid(x, h5_filename_relative, mesh, modes[i], i + 1, n_modes);
+        x << "    </Grid>\n";
     }
-    x << "    </Grid>\n"
-      << "  </Domain>\n"
+    x << "  </Domain>\n"
       << "</Xdmf>\n";
 
     std::ofstream out(xdmf_path, std::ios::binary | std::ios::trunc);

@@ -1,0 +1,150 @@
+"""A results folder of coremodal, opened as one object.
+
+    import coremodal
+    run = coremodal.load("results/07-rotogravure-chucks-150x15.8-4320")
+    run                      # <coremodal run 07-rotogravure-chucks-150x15.8-4320: harmonic, 12 modes, f1 = 25.79 Hz (bending)>
+    run.modes                # the mode table (modes.csv) as a coremodal Table
+    run.to_pandas()          # ... as a pandas DataFrame
+    run.summary["beam"]      # summary.json as a dict
+    run.results.shape(7)     # modes.h5: mesh and shapes (coremodal.Results)
+    run.to_meshio([1, 2])    # the mesh and two shapes for meshio (or to_pyvista)
+    fig = run.plot_mode(1)   # a matplotlib Figure
+
+A study or calibration folder (study.csv), a batch (batch.csv) or a
+convergence study (converge.csv) opens as a Folder whose ``table`` is that
+CSV.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+from pathlib import Path
+from typing import Any, Iterable
+
+from .results import Results, ResultsFormatError, first_elastic, load_h5
+from .tables import Table, read_summary, read_table
+
+#: The main table of each kind of folder, in the order they are looked for.
+FOLDER_TABLES = ("study.csv", "calibration.csv", "batch.csv", "converge.csv")
+
+
+class Folder:
+    """Any coremodal results folder: its CSV files as tables."""
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        if not self.path.is_dir():
+            raise ResultsFormatError(f"{self.path}: no such folder")
+
+    @property
+    def files(self) -> list[str]:
+        return sorted(p.name for p in self.path.iterdir() if p.is_file())
+
+    def read(self, name: str) -> Table:
+        """The CSV ``name`` of this folder ("study.csv", "rigid_vs_elastic.csv", ...)."""
+        return read_table(self.path / name)
+
+    @cached_property
+    def table(self) -> Table:
+        """The folder's main table: study.csv, calibration.csv, batch.csv or converge.csv."""
+        for name in FOLDER_TABLES:
+            if (self.path / name).is_file():
+                return self.read(name)
+        raise ResultsFormatError(f"{self.path} holds none of {', '.join(FOLDER_TABLES)}")
+
+    def to_pandas(self):
+        """The main table as a pandas DataFrame (needs pandas)."""
+        return self.table.to_pandas()
+
+    def __repr__(self) -> str:
+        return f"<coremodal folder {self.path.name}: {', '.join(self.files)}>"
+
+
+class Run(Folder):
+    """The folder of one ``coremodal run``: summary.json, modes.csv and,
+    except for the beam model level, modes.h5."""
+
+    def __init__(self, path: str | Path) -> None:
+        super().__init__(path)
+        if not (self.path / "summary.json").is_file():
+            raise ResultsFormatError(f"{self.path} is not the folder of a coremodal run (no summary.json)")
+        self.summary: dict[str, Any] = read_summary(self.path / "summary.json")
+
+    @property
+    def name(self) -> str:
+        return str(self.summary.get("case", {}).get("name", self.path.name))
+
+    @property
+    def level(self) -> str:
+        """solid3d, harmonic or beam."""
+        return str(self.summary.get("model", {}).get("level", ""))
+
+    @cached_property
+    def modes(self) -> Table:
+        """The mode table, from modes.csv."""
+        return self.read("modes.csv")
+
+    @property
+    def table(self) -> Table:
+        return self.modes
+
+    @property
+    def frequencies_hz(self):
+        return self.modes["frequency_hz"]
+
+    @cached_property
+    def results(self) -> Results:
+        """modes.h5: mesh, mode shapes, the resolved case. Raises
+        ResultsFormatError for a run without it (the beam model level)."""
+        path = self.path / "modes.h5"
+        if not path.is_file():
+            raise ResultsFormatError(f"{self.path} has no modes.h5 (a {self.level or 'beam'}-level run writes "
+                                     "beam_shapes.csv instead)")
+        return load_h5(path)
+
+    def shape(self, index: int):
+        """Displacement of every node in mode ``index`` (1-based), (N, 3)."""
+        return self.results.shape(index)
+
+    def to_pyvista(self, modes: Iterable[int] | None = None):
+        return self.results.to_pyvista(modes)
+
+    def to_meshio(self, modes: Iterable[int] | None = None):
+        return self.results.to_meshio(modes)
+
+    def plot_mode(self, index: int, **options):
+        """Mode ``index`` in the three panels of the report; a matplotlib Figure."""
+        from . import plot
+
+        return plot.mode_figure(self.results, index, **options)
+
+    def plot_spectrum(self, **options):
+        """Every mode's frequency against its number, by type; a Figure."""
+        from . import run_plot
+
+        return run_plot.spectrum_figure(self.results, **options)
+
+    def plot_frames(self, index: int, **options):
+        """Mode ``index`` swinging: a strip of side views; a Figure."""
+        from . import frames
+
+        return frames.frame_strip_figure(self.results, index, **options)
+
+    def __repr__(self) -> str:
+        types = list(self.modes["type"]) if "type" in self.modes else []
+        first = first_elastic(None, types)
+        lowest = (f", f1 = {self.modes['frequency_hz'][first]:.2f} Hz ({types[first]})"
+                  if first is not None else "")
+        return f"<coremodal run {self.name}: {self.level}, {len(self.modes)} modes{lowest}>"
+
+
+def load(path: str | Path) -> Run | Folder | Results:
+    """Opens coremodal results: a run's folder gives a Run, another results
+    folder (study, calibration, batch, converge) a Folder, and a modes.h5
+    file its Results (as before)."""
+    path = Path(path)
+    if path.is_dir():
+        return Run(path) if (path / "summary.json").is_file() else Folder(path)
+    if not path.is_file():
+        raise ResultsFormatError(f"{path}: no such file or folder")
+    return load_h5(path)

@@ -1,0 +1,93 @@
+"""Installing: `pip install ./python` (pyproject.toml, no network) gives an
+importable package, and `cmake --install` gives a program that runs outside
+the source tree and draws its pictures with the installed package."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import coremodal
+
+PYTHON_DIR = Path(__file__).resolve().parents[1]
+SOURCE_DIR = PYTHON_DIR.parent
+DATA_DIR = Path(__file__).resolve().parent / "data"
+INSTALL_TIMEOUT_S = 600
+
+
+def test_the_package_version_is_the_programs() -> None:
+    cmake = (SOURCE_DIR / "CMakeLists.txt").read_text()
+    program = re.search(r"project\(coremodal VERSION ([0-9.]+)", cmake).group(1)
+    pyproject = (PYTHON_DIR / "pyproject.toml").read_text()
+    assert re.search(r'^version = "([0-9.]+)"', pyproject, re.M).group(1) == program
+    assert coremodal.__version__ == program
+
+
+def test_pip_installs_the_package_without_network(tmp_path: Path, modes_h5: Path) -> None:
+    if subprocess.run([sys.executable, "-m", "pip", "--version"], capture_output=True).returncode != 0:
+        pytest.skip("pip is not installed (apt install python3-pip)")
+    # A copy, so that the build leaves nothing in the source tree.
+    source = tmp_path / "src"
+    shutil.copytree(PYTHON_DIR, source, ignore=shutil.ignore_patterns("tests", "__pycache__", "build",
+                                                                       "*.egg-info"))
+    target = tmp_path / "site"
+    done = subprocess.run([sys.executable, "-m", "pip", "install", "--no-build-isolation", "--no-deps",
+                           "--no-index", "--target", str(target), str(source)],
+                          capture_output=True, text=True, timeout=INSTALL_TIMEOUT_S)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert (target / "coremodal" / "paraview_mode.py").is_file()
+    assert not (target / "tests").exists()
+    # Imported from the install, in a folder far from the sources.
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["PYTHONPATH"] = str(target)
+    code = "import coremodal, sys; r = coremodal.load(sys.argv[1]); print(coremodal.__file__); print(repr(r))"
+    used = subprocess.run([sys.executable, "-c", code, str(modes_h5.parent)], capture_output=True, text=True,
+                          env=env, cwd=tmp_path)
+    assert used.returncode == 0, used.stderr
+    where, text = used.stdout.splitlines()
+    assert Path(where).is_relative_to(target)
+    assert text.startswith("<coremodal run tiny: solid3d, 10 modes")
+
+
+def test_cmake_install_gives_a_program_that_draws_with_the_installed_package(tmp_path: Path) -> None:
+    binary = os.environ.get("COREMODAL_BIN")
+    if not binary:
+        pytest.skip("COREMODAL_BIN is not set: run through ctest (python_pytest)")
+    build = Path(binary).resolve().parent
+    cmake = shutil.which("cmake")
+    if cmake is None or not (build / "CMakeCache.txt").is_file():
+        pytest.skip(f"{build} is not a CMake build folder (or cmake is missing)")
+    prefix = tmp_path / "prefix"
+    done = subprocess.run([cmake, "--install", str(build), "--prefix", str(prefix)], capture_output=True,
+                          text=True, timeout=INSTALL_TIMEOUT_S)
+    assert done.returncode == 0, done.stdout + done.stderr
+    program = prefix / "bin" / "coremodal"
+    package = prefix / "share" / "coremodal" / "python" / "coremodal"
+    assert program.is_file() and (package / "__init__.py").is_file()
+    assert (prefix / "share" / "coremodal" / "cases" / "02-clamped-76x15.toml").is_file()
+    # The installed package tells us it was the one imported.
+    marker = tmp_path / "imported_from"
+    with open(package / "__init__.py", "a") as f:
+        f.write('\nimport os as _os\nif _os.environ.get("COREMODAL_TEST_IMPORT_MARKER"):\n'
+                '    open(_os.environ["COREMODAL_TEST_IMPORT_MARKER"], "w").write(__file__)\n')
+
+    work = tmp_path / "work"  # outside the source tree
+    work.mkdir()
+    shutil.copy(DATA_DIR / "tiny.toml", work / "tiny.toml")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "COREMODAL_PYTHON_DIR")}
+    env.update(COREMODAL_TEST_IMPORT_MARKER=str(marker), OMPI_ALLOW_RUN_AS_ROOT="1",
+               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    run = subprocess.run([str(program), "run", "tiny.toml", "-o", "out", "-q"], capture_output=True,
+                         text=True, env=env, cwd=work, timeout=INSTALL_TIMEOUT_S)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert run.stderr == "", run.stderr  # no "no pictures" warning
+    report = (work / "out" / "report.md").read_text()
+    assert "![frequencies by mode type](spectrum.png)" in report
+    assert (work / "out" / "spectrum.png").is_file()
+    assert Path(marker.read_text()).resolve() == (package / "__init__.py").resolve()
