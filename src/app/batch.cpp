@@ -334,10 +334,10 @@ void read_batch_summary(BatchCase& c, const std::string& summary_json) {
         if (!v || v->kind != JsonValue::Kind::number || !std::isfinite(v->number)) return std::nullopt;
         return v->number;
     };
+    if (!json_find(root, "beam.fe_first_bending_hz")) throw std::runtime_error("no beam.fe_first_bending_hz");
+    // The writer stores null when no bending mode was found among the modes (0 before).
     const auto f1 = number("beam.fe_first_bending_hz");
-    if (!f1) throw std::runtime_error("no beam.fe_first_bending_hz");
-    // The writer stores 0 when no bending mode was found among the modes.
-    c.f1_hz = *f1 > 0 ? f1 : std::nullopt;
+    c.f1_hz = f1 && *f1 > 0 ? f1 : std::nullopt;
     const auto ratio = number("beam.fe_over_timoshenko");
     c.fe_over_timoshenko = ratio && *ratio > 0 ? ratio : std::nullopt;
     c.diameter_m = number("case.rest_paper.outer_diameter");

@@ -3,6 +3,7 @@
 // Euler–Bernoulli and Timoshenko beam frequencies. No mesh, no PETSc:
 // it answers in milliseconds. Formulas: beam/formulas.hpp; docs/beam.md.
 #include "app/commands.hpp"
+#include "app/run_case.hpp"
 #include "common/format.hpp"
 #include "beam/beam_theory.hpp"
 #include "beam/chuck_calibration.hpp"
@@ -139,6 +140,7 @@ Report compute(const BeamOptions& options) {
     Scene& s = r.scene;
     if (!options.case_file.empty()) {
         s = parse_case_file(options.case_file);
+        print_scene_warnings(s);
     } else {
         if (!in.get("di") || !in.get("do") || !in.get("lc"))
             throw InputError("coremodal beam needs a case file, or at least --di, --do and --lc "

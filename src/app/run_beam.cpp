@@ -3,9 +3,11 @@
 #include "app/run_beam.hpp"
 
 #include "app/run_case.hpp"
+#include "app/run_steps.hpp"
 
 #include "beam/beam_model.hpp"
 #include "beam/formulas.hpp"
+#include "common/format.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "output/results_folder.hpp"
@@ -23,20 +25,6 @@
 namespace coremodal {
 namespace {
 
-// ρ V of every part from the scene's dimensions: the check of the network's mass.
-double mass_from_dimensions(const Scene& s) {
-    const double Lc = s.core.length;
-    double m = s.core.material.density * tube_area(s.core.outer_diameter, s.core.inner_diameter) * Lc;
-    if (s.rest_paper)
-        m += s.rest_paper->material.density * tube_area(s.rest_paper->outer_diameter, s.core.outer_diameter) * Lc;
-    for (const ChuckSpec& c : s.supports.chucks) {
-        m += c.material.density * (tube_area(c.body_diameter, 0) * c.inserted_length +
-                                   tube_area(c.shaft_diameter, 0) * c.shaft_length);
-        m += c.bearing.frame_mass.value_or(0.0);
-    }
-    return m;
-}
-
 ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
     return {"beam",
             "timoshenko3",
@@ -45,7 +33,7 @@ ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
             beam.network.n_elements(),
             beam.n_held_nodes,
             beam.network.mass(),
-            mass_from_dimensions(scene),
+            scene.mass_from_dimensions(),
             "beam network (" + std::to_string(beam.network.beams.size()) + " beams)",
             ""};
 }
@@ -95,6 +83,27 @@ void write_beam_results(const RunReport& report, const BeamModelResult& beam, co
     folder.commit();
 }
 
+// A body shorter than this many diameters is no beam: its section deforms
+// (ovalling, breathing) in modes the beam level cannot see (docs/beam.md).
+constexpr double kMinBeamSlenderness = 1.0;
+
+// What the user should know about this run of the beam level.
+std::vector<std::string> beam_level_warnings(const Scene& scene, const BeamModelResult& beam) {
+    std::vector<std::string> out;
+    if (scene.mesh.file) out.push_back("[mesh] file is not used by model = \"beam\"");
+    const double outer = scene.rest_paper ? scene.rest_paper->outer_diameter : scene.core.outer_diameter;
+    if (scene.core.length < kMinBeamSlenderness * outer)
+        out.push_back("[core] length = " + significant(scene.core.length) + " m is less than the outer diameter " +
+                      significant(outer) + " m: no beam; the section deforms in modes this level cannot see "
+                      "(ovalling, breathing); expected model = \"harmonic\" or \"solid\" for such a body");
+    const int asked = scene.analysis.n_modes;
+    if (!scene.analysis.f_max_hz && static_cast<int>(beam.modes.size()) < asked)
+        out.push_back("[analysis] modes = " + std::to_string(asked) + " asks for more modes than the beam model has: " +
+                      std::to_string(beam.n_dofs) + " free degrees of freedom, so all its " +
+                      std::to_string(beam.modes.size()) + " modes are reported");
+    return out;
+}
+
 }  // namespace
 
 Mode report_mode(const BeamMode& b, int index) {
@@ -116,9 +125,7 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
         if (root && !options.quiet) std::cout << "  " << line << std::endl;
     };
     Stopwatch total;
-    RunReport report;
-    report.mpi_ranks = mpi_size();
-    report.scene = std::move(scene);
+    RunReport report = new_report(std::move(scene));
     const std::filesystem::path out_dir =
         options.output_dir ? std::filesystem::path(*options.output_dir) : std::filesystem::path("results") / report.scene.name;
 
@@ -126,9 +133,10 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     say("[2/4] beam model: building and solving the Timoshenko beam network");
     const BeamModelResult beam = solve_beam_model(report.scene);
     report.model = model_info(report.scene, beam);
-    if (report.scene.mesh.file) report.warnings.push_back("[mesh] file is not used by model = \"beam\"");
-    for (const std::string& w : report.warnings)
-        if (root) std::cerr << "coremodal: warning: " << report.scene.source_file << ": " << w << std::endl;
+    for (const std::string& w : beam_level_warnings(report.scene, beam)) {
+        if (root && !options.quiet) std::cerr << "coremodal: warning: " << report.scene.source_file << ": " << w << std::endl;
+        report.warnings.push_back(w);
+    }
     report.scene.assumptions.insert(report.scene.assumptions.end(), beam.assumptions.begin(), beam.assumptions.end());
     say("      " + std::to_string(report.model.n_elements) + " beam elements, " + std::to_string(report.model.n_nodes) +
         " nodes, " + std::to_string(report.model.n_dofs) + " DOFs in " + std::to_string(beam.n_problems) +
@@ -138,6 +146,7 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     say("[3/4] comparing with beam theory");
     for (const BeamMode& m : beam.modes) report.modes.modes.push_back(report_mode(m, int(report.modes.modes.size()) + 1));
     report.modes.verification = beam.verification;
+    check_rigid_modes(report);
     report.beam = compare_with_beam(report.scene, report.modes.modes);
     if (report.scene.supports.kind == SupportKind::chucks)  // f2: the beam network of the free span
         report.chuck = chuck_factor(report.scene, report.beam.fe_first_bending_hz, options.chuck_factor_by_fe);

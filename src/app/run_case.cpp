@@ -9,7 +9,9 @@
 #include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"
 #include "beam/beam_theory.hpp"
+#include "beam/eigenvalue_scale.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/stopwatch.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "geometry/tube_model.hpp"
@@ -108,19 +110,6 @@ std::vector<int> clamped_nodes(const Scene& scene, const Mesh& mesh) {
 
 }  // namespace
 
-double expected_mass(const Scene& s) {
-    auto ring = [](double d_out, double d_in) { return M_PI / 4 * (d_out * d_out - d_in * d_in); };
-    double m = s.core.material.density * ring(s.core.outer_diameter, s.core.inner_diameter) * s.core.length;
-    if (s.rest_paper)
-        m += s.rest_paper->material.density * ring(s.rest_paper->outer_diameter, s.core.outer_diameter) *
-             s.core.length;
-    for (const auto& c : s.supports.chucks) {
-        m += c.material.density * (ring(c.body_diameter, 0) * c.inserted_length + ring(c.shaft_diameter, 0) * c.shaft_length);
-        m += c.bearing.frame_mass.value_or(0.0);
-    }
-    return m;
-}
-
 namespace {
 
 // Nodes held by the ground (eliminated, or on springs to the ground) and the
@@ -187,6 +176,24 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model) {
     return k;
 }
 
+namespace {
+
+// In words, for the console, report.md and summary.json.
+std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<Mode>& modes) {
+    const long rigid = std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "rigid"; });
+    if (analysis.f_max_hz) {
+        const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
+                                 significant(*analysis.f_max_hz) + " Hz";
+        return modes.empty() ? "no modes " + band
+                             : "no bending mode among the " + std::to_string(modes.size()) + " modes " + band +
+                                   " (widen the band)";
+    }
+    return "no bending mode among the " + std::to_string(modes.size()) + " modes found (" + std::to_string(rigid) +
+           " rigid); ask for more modes";
+}
+
+}  // namespace
+
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
     BeamComparison b;
     const BeamSection section = beam_section(scene);
@@ -202,8 +209,9 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
             b.fe_mode_index = m.index;
             b.fe_over_timoshenko = m.frequency_hz / b.timoshenko_hz;
             b.fe_over_euler_bernoulli = m.frequency_hz / b.euler_bernoulli_hz;
-            break;
+            return b;
         }
+    b.fe_missing = why_no_bending_mode(scene.analysis, modes);
     return b;
 }
 
@@ -241,17 +249,27 @@ SolveRequest solve_request(const Scene& scene) {
         request.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
         request.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
     }
-    const double f_scale = euler_bernoulli_first_bending_hz(beam_section(scene), beam_span(scene));
-    request.lambda_scale = std::pow(2 * M_PI * f_scale, 2);
+    // The lowest of the closed-form estimates of every family of modes: the
+    // right order for a long core, a ring and a disc alike (eigenvalue_scale.hpp).
+    request.lambda_scale = elastic_eigenvalue_scale(scene, ModeFamilies::beam_and_section).lambda;
     request.tolerance = scene.analysis.tolerance;
     request.max_iterations = scene.analysis.max_iterations;
     return request;
+}
+
+void print_scene_warnings(const Scene& scene) {
+    // `coremodal beam` runs without MPI: then this is the only process.
+    int mpi_on = 0;
+    MPI_Initialized(&mpi_on);
+    if (mpi_on && mpi_rank() != 0) return;
+    for (const std::string& w : scene.warnings) std::cerr << "coremodal: warning: " << w << std::endl;
 }
 
 RunReport run_case(const RunOptions& options) {
     // 1. Read and check the case file: every input error surfaces here.
     if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
     Scene scene = parse_case_file(options.case_file);
+    print_scene_warnings(scene);
     if (options.mesh_level) apply_mesh_level(scene, *options.mesh_level);
     if (options.model) scene.model = *options.model;
     return run_scene(std::move(scene), options);
@@ -288,7 +306,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
                     mesh.n_cells(),
                     static_cast<long>(eliminated.size()),
                     0,
-                    expected_mass(scene),
+                    scene.mass_from_dimensions(),
                     mesh_source,
                     ""};
     const Holding held = holding(eliminated, chucks);
@@ -306,8 +324,8 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     report.model.mass_kg = system.model_mass;
     report.timing_s.assemble = stage.lap();
 
-    // 5. Solve, verify, prove complete. The beam estimate of the first bending
-    //    mode sets the shift's scale (and what counts as rigid).
+    // 5. Solve, verify, prove complete. The scale of the first elastic
+    //    eigenvalue sets the shift (and what counts as rigid).
     say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
@@ -329,11 +347,9 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
     const EffectiveMassCalculator effective_mass(system.M(), mesh, dofs);
-    const double lambda_band_min = request.lambda_min.value_or(-1e300);
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
         const double lambda = solved.eigenvalues[i];
-        // Modes of a free scene at lambda ~ 0 may come out slightly negative.
-        if (lambda < lambda_band_min && std::abs(lambda) > kRigidEigenvalueFraction * request.lambda_scale) continue;
+        if (!in_band(lambda, request)) continue;  // computed from the bottom, below the band
         Mode mode;
         mode.index = static_cast<int>(report.modes.modes.size()) + 1;
         mode.eigenvalue = lambda;
@@ -351,8 +367,30 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     return report;
 }
 
+void check_rigid_modes(const RunReport& report) {
+    const Scene& s = report.scene;
+    // A user mesh may hold parts that touch nothing (warned about: six rigid modes each).
+    if (s.supports.kind != SupportKind::free || s.mesh.file || s.analysis.f_min_hz.value_or(0.0) > 0) return;
+    const std::vector<Mode>& modes = report.modes.modes;
+    const int expected = std::min<int>(kFreeBodyRigidModes, static_cast<int>(modes.size()));
+    int rigid = 0, lowest_rigid = 0;
+    for (size_t i = 0; i < modes.size(); ++i) {
+        rigid += modes[i].label.type == "rigid";
+        lowest_rigid += modes[i].label.type == "rigid" && static_cast<int>(i) < expected;
+    }
+    if (rigid == expected && lowest_rigid == expected) return;
+    throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
+                     "(DOMAIN.md section 5), but " + std::to_string(rigid) + " of the lowest " +
+                     std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "
+                     "the body's lowest elastic eigenvalues, so they cannot be told apart. A core " +
+                     significant(s.core.length) + " m long and " + significant(s.core.outer_diameter) +
+                     " m across is beyond what double precision resolves at this model level; expected a body at "
+                     "least about a hundredth as long as its diameter");
+}
+
 void finish_run(RunReport& report, const Mesh& mesh, const RunOptions& options, const Stopwatch& total,
                 Stopwatch& stage) {
+    check_rigid_modes(report);
     const bool root = mpi_rank() == 0;
     const Printer say{root && !options.quiet};
     const Scene& scene = report.scene;

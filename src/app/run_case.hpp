@@ -31,6 +31,10 @@ struct RunOptions {
 // InputError / SolveError with a message for the user.
 RunReport run_case(const RunOptions& options);
 
+// The case reader's warnings (values that look like slips: Scene::warnings),
+// once on stderr from rank 0, for a command that has just read a case file.
+void print_scene_warnings(const Scene& scene);
+
 // Steps 2 onwards for a scene already in memory (options.case_file unused).
 // A scene with model = "beam" goes to run_beam_scene (app/run_beam.hpp).
 RunReport run_scene(Scene scene, const RunOptions& options);

@@ -184,6 +184,7 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
         v.check_shift = std::min(v.check_shift, h.verification.check_shift);
         v.negative_pivots_at_shift += multiplicity * h.verification.negative_pivots_at_shift;
         v.modes_below_shift += multiplicity * h.verification.modes_below_shift;
+        v.eigenvalues_below_band += multiplicity * h.verification.eigenvalues_below_band;
         v.complete = v.complete && h.verification.complete;
     }
     return v;
@@ -199,6 +200,16 @@ double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
     return one.eigenvalues.at(0);
 }
 
+// Why the search passed kMaxHarmonic, and what to change.
+std::string beyond_last_harmonic(const Scene& scene, const SolveRequest& request) {
+    const std::string wanted =
+        request.lambda_max ? "the band's upper edge " + significant(std::sqrt(*request.lambda_max) / (2 * M_PI)) + " Hz"
+                           : "the lowest [analysis] modes = " + std::to_string(scene.analysis.n_modes);
+    return "every wave number up to n = " + std::to_string(kMaxHarmonic) + " has modes below " + wanted +
+           ": the request reaches the cross-section's high ring modes; " +
+           (request.lambda_max ? "lower the band's upper edge" : "ask for fewer modes");
+}
+
 // Harmonics n = 0, 1, 2, ... until two in a row have no mode below the
 // band edge and the lowest eigenvalue rises (kEmptyHarmonicsToStop). Fills
 // the report's mass and timings.
@@ -210,9 +221,7 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
     int empty_in_a_row = 0;
     double previous_lowest = 0;  // lowest eigenvalue of the previous empty harmonic
     for (int n = 0;; ++n) {
-        if (n > kMaxHarmonic)
-            throw SolveError("the harmonic level found modes in the band up to wave number n = " +
-                             std::to_string(kMaxHarmonic) + "; the band is too wide for this scene");
+        if (n > kMaxHarmonic) throw SolveError(beyond_last_harmonic(scene, request));
         Stopwatch lap;
         HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
         if (n == 0) report.model.mass_kg = system.operators.model_mass;
@@ -270,7 +279,7 @@ ModelInfo harmonic_model_info(const Scene& scene, const SectionMesh& section,
     for (const auto& [name, nodes] : section.node_groups)
         if (name.rfind("clamp_", 0) == 0) info.n_eliminated_nodes += static_cast<long>(nodes.size());
     info.mass_kg = mass_kg;
-    info.expected_mass_kg = expected_mass(scene);
+    info.expected_mass_kg = scene.mass_from_dimensions();
     info.mesh_source = "generated section";
     info.harmonics = harmonics_text(harmonics);
     return info;
@@ -285,17 +294,12 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
     const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, revolved.mesh) : std::nullopt;
-    const double lambda_band_min = request.lambda_min.value_or(-1e300);
     std::vector<Mode> modes;
     for (const Pick& pick : merged_picks(harmonics)) {
         const HarmonicModes& h = harmonics[pick.h];
         const bool second_of_pair = h.n > 0 && pick.phase > 0;
         if (!band && static_cast<int>(modes.size()) >= scene.analysis.n_modes && !second_of_pair) break;
-        // Modes of a free scene at lambda ~ 0 may come out slightly negative.
-        if (band && (pick.lambda > *request.lambda_max ||
-                     (pick.lambda < lambda_band_min &&
-                      std::abs(pick.lambda) > kRigidEigenvalueFraction * request.lambda_scale)))
-            continue;
+        if (!in_band(pick.lambda, request)) continue;
         Mode mode;
         mode.index = static_cast<int>(modes.size()) + 1;
         mode.eigenvalue = pick.lambda;

@@ -23,10 +23,12 @@ struct Printer {
     }
 };
 
-// An empty report of a run of `scene` on this many MPI ranks.
+// An empty report of a run of `scene` on this many MPI ranks; it keeps the
+// case reader's warnings (printed when the file was read) for the summary.
 inline RunReport new_report(Scene scene) {
     RunReport report;
     report.mpi_ranks = mpi_size();
+    report.warnings = scene.warnings;
     report.scene = std::move(scene);
     return report;
 }
@@ -37,11 +39,17 @@ std::vector<PartMaterial> part_materials(const Scene& scene, const std::vector<s
                                          const std::string& source);
 
 // What the case's [analysis] asks of the eigensolver: the lowest modes or a
-// band; the shift's scale from the Euler-Bernoulli estimate of f1.
+// band; the shift's scale from the closed-form estimates of the first elastic
+// mode of every family (beam/eigenvalue_scale.hpp).
 SolveRequest solve_request(const Scene& scene);
 
-// Mass of the roll, chucks, shafts and frames from the scene's dimensions, kg.
-double expected_mass(const Scene& scene);
+// Rigid-body motions of a free body in three dimensions.
+constexpr int kFreeBodyRigidModes = 6;
+
+// A free scene (generated model, band from 0 if any) must show exactly its
+// six rigid-body modes as its lowest; SolveError otherwise: the body is too
+// thin for double precision to tell them from its elastic modes.
+void check_rigid_modes(const RunReport& report);
 
 // Steps 7 and 8 of a run whose modes are named: beam comparison, chuck
 // factor, rigid-clamp variant, console tables, the results folder (the

@@ -1,5 +1,6 @@
 #include "beam/beam_model.hpp"
 
+#include "beam/eigenvalue_scale.hpp"
 #include "beam/network_modes.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -309,7 +310,8 @@ NetworkSolveRequest solve_request(const Scene& scene, const BeamModelOptions& op
         r.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
         r.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
     }
-    r.lambda_scale = std::pow(2 * M_PI * euler_bernoulli_first_bending_hz(beam_section(scene), beam_span(scene)), 2);
+    // The beam network has no section modes: only its own families set the scale.
+    r.lambda_scale = elastic_eigenvalue_scale(scene, ModeFamilies::beam).lambda;
     r.tolerance = scene.analysis.tolerance;
     r.force_dense = options.force_dense;
     return r;

@@ -64,7 +64,7 @@ struct BeamModelResult {
     Verification verification;
     long n_dofs = 0;          // free DOFs
     long n_held_nodes = 0;    // nodes with all six DOFs held
-    double lambda_scale = 0;  // (2 pi f)^2 of the Euler-Bernoulli beam over beam_span
+    double lambda_scale = 0;  // rad^2/s^2: the scale of the first elastic eigenvalue (eigenvalue_scale.hpp)
     int n_problems = 0;       // independent eigenproblems (network_modes.hpp)
     bool mirrored_planes = false;
     bool dense_retry = false;  // the inertia check failed once and every problem was solved densely

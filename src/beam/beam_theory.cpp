@@ -12,6 +12,7 @@ namespace coremodal {
 namespace {
 
 constexpr int kTimoshenkoElements = 80;
+constexpr int kFreeFreeRigidModes = 2;
 
 double ring_area(double d_out, double d_in) { return M_PI / 4 * (d_out * d_out - d_in * d_in); }
 double ring_inertia(double d_out, double d_in) { return M_PI / 64 * (std::pow(d_out, 4) - std::pow(d_in, 4)); }
@@ -82,13 +83,15 @@ std::vector<double> timoshenko_bending_hz(const BeamSection& s, double length, B
     for (size_t i = 0; i < keep.size(); ++i)
         for (size_t j = 0; j < keep.size(); ++j) Kr(i, j) = K(keep[i], keep[j]), Mr(i, j) = M(keep[i], keep[j]);
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(Kr, Mr, Eigen::EigenvaluesOnly);
+    // A free–free beam in its plane has exactly two rigid-body modes (a
+    // translation and a rotation), the two lowest eigenvalues (zero up to
+    // round-off). Counting them, not comparing with a threshold, holds for any
+    // length: a threshold scaled by Euler–Bernoulli once dropped the shear-bending
+    // mode of a beam shorter than its diameter, and every mode of a 10 um one.
+    const int n_rigid = ends == BeamEnds::free_free ? kFreeFreeRigidModes : 0;
     std::vector<double> f;
-    // Rigid-body modes of a free–free beam come out at |lambda| ~ 1e-10 of the
-    // first elastic one; shear and rotary inertia never lower it by 1e4.
-    const double f_eb = euler_bernoulli_first_bending_hz(s, length);
-    const double rigid_limit = 1e-4 * std::pow(2 * M_PI * f_eb, 2);
-    for (int i = 0; i < solver.eigenvalues().size() && int(f.size()) < n_modes; ++i)
-        if (solver.eigenvalues()(i) > rigid_limit) f.push_back(std::sqrt(solver.eigenvalues()(i)) / (2 * M_PI));
+    for (int i = n_rigid; i < solver.eigenvalues().size() && int(f.size()) < n_modes; ++i)
+        f.push_back(std::sqrt(std::max(solver.eigenvalues()(i), 0.0)) / (2 * M_PI));
     return f;
 }
 

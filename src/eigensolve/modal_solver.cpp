@@ -101,9 +101,25 @@ struct Attempt {
     int n_converged = 0;
 };
 
+// K - sigma M is positive definite for sigma < 0 in exact arithmetic; a zero
+// pivot means round-off swamps its smallest eigenvalues (a model whose
+// eigenvalues span more than double precision holds) or a part without
+// stiffness and mass.
+std::string zero_pivot_text(double sigma) {
+    std::ostringstream s;
+    s << "the Cholesky factor of K - sigma M met a zero pivot at sigma = " << sigma
+      << " rad^2/s^2, where it is positive definite in exact arithmetic: the model's eigenvalues span more "
+         "than double precision resolves (cells far longer than thick, as in a body a thousandth as long as it "
+         "is wide), or a part has neither stiffness nor mass; expected a body at least about a hundredth as long "
+         "as its diameter";
+    return s.str();
+}
+
 Attempt run_eps(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
     auto eps = configure(K, M, sigma, nev, request);
-    COREMODAL_PETSC(EPSSolve(eps));
+    const PetscErrorCode solved = EPSSolve(eps);
+    if (solved == PETSC_ERR_MAT_CH_ZRPVT || solved == PETSC_ERR_MAT_LU_ZRPVT) throw SolveError(zero_pivot_text(sigma));
+    COREMODAL_PETSC(solved);
     PetscInt nconv;
     COREMODAL_PETSC(EPSGetConverged(eps, &nconv));
     Attempt a;
@@ -155,7 +171,65 @@ std::string format_count_mismatch(long pivots, long found, double sigma) {
     return s.str();
 }
 
+// |lambda| below this is a rigid-body mode (rigid_modes.hpp).
+double rigid_line(const SolveRequest& r) { return kRigidEigenvalueFraction * r.lambda_scale; }
+
+std::string band_text(const SolveRequest& r) {
+    const auto hz = [](double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); };
+    std::ostringstream s;
+    s << "[analysis] band = [" << hz(r.lambda_min.value_or(0.0)) << " Hz, " << hz(*r.lambda_max) << " Hz]";
+    return s.str();
+}
+
+long count_below(Mat K, Mat M, double sigma);
+
+// Eigenvalues below a band's lower edge (0 when it lies among the rigid
+// modes: they belong to the band) and below its upper edge, by inertia.
+struct BandCount {
+    long below_lower = 0, below_upper = 0;
+    bool empty() const { return below_upper == below_lower; }
+};
+
+// Two factorisations, no solve. Refuses, before any solve, a band the model
+// cannot answer: one reaching above its every eigenvalue (frequencies beyond
+// what the mesh resolves), or one that needs more modes than the limit.
+BandCount count_band(Mat K, Mat M, const SolveRequest& r, long n_dofs, const Progress& progress) {
+    progress("counting the modes below the band's edges (inertia of K - sigma M)");
+    BandCount c;
+    c.below_upper = count_below(K, M, *r.lambda_max);
+    if (r.lambda_min.value_or(0.0) > rigid_line(r)) c.below_lower = count_below(K, M, *r.lambda_min);
+    if (c.below_upper >= n_dofs)
+        throw InputError(band_text(r) + " reaches above every eigenvalue of the model: all " + std::to_string(n_dofs) +
+                         " lie below its upper edge (inertia count), and frequencies that high are beyond what the "
+                         "mesh resolves; expected a band within the model's spectrum: lower the upper edge");
+    if (!c.empty() && c.below_upper > kMaxModesPerProblem)
+        throw InputError(band_text(r) + ": " + std::to_string(c.below_upper - c.below_lower) +
+                         " modes lie in the band and " + std::to_string(c.below_upper) +
+                         " below its upper edge (inertia counts); the solver computes every mode below the upper "
+                         "edge, at most " + std::to_string(kMaxModesPerProblem) +
+                         ": lower the upper edge or ask for the lowest modes ([analysis] modes)");
+    return c;
+}
+
+// An empty band, proven by the counts alone: as many eigenvalues below the
+// upper edge as below the lower one, none of them computed.
+Verification empty_band_verification(const BandCount& c, double lambda_max) {
+    Verification v;
+    v.check_shift = lambda_max;
+    v.negative_pivots_at_shift = c.below_upper;
+    v.modes_below_shift = c.below_lower;
+    v.eigenvalues_below_band = c.below_lower;
+    v.complete = true;
+    return v;
+}
+
 }  // namespace
+
+bool in_band(double lambda, const SolveRequest& request) {
+    if (!request.lambda_max) return true;
+    const double value = std::abs(lambda) < rigid_line(request) ? 0.0 : lambda;
+    return value >= request.lambda_min.value_or(0.0) && value <= *request.lambda_max;
+}
 
 const char* shift_invert_factor_package(MPI_Comm comm) { return mpi_size(comm) == 1 ? MATSOLVERCHOLMOD : MATSOLVERMUMPS; }
 
@@ -218,17 +292,21 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     const double scale = request.lambda_scale;
     double sigma = -kShiftFraction * scale;
 
+    SolvedModes out;
     int wanted = request.n_modes;
     if (request.lambda_max) {
-        progress("counting modes below the band's upper edge (inertia of K - sigma M)");
-        wanted = static_cast<int>(count_below(K, M, *request.lambda_max));
+        const BandCount band = count_band(K, M, request, n_dofs, progress);
+        if (band.empty()) {
+            out.verification = empty_band_verification(band, *request.lambda_max);
+            return out;
+        }
+        wanted = static_cast<int>(band.below_upper);
     }
     if (wanted > n_dofs)
         throw InputError("[analysis] modes = " + std::to_string(wanted) + " asks for more modes than the model has "
                          "degrees of freedom (" + std::to_string(n_dofs) + "); ask for at most " +
                          std::to_string(n_dofs) + " or refine the mesh");
-    SolvedModes out;
-    if (wanted == 0) return out;
+    COREMODAL_ASSERT(wanted > 0);
 
     PetscReal K_norm;
     COREMODAL_PETSC(MatNorm(K, NORM_1, &K_norm));

@@ -26,6 +26,11 @@ struct SolveRequest {
     int max_iterations = 500;
 };
 
+// The most modes one eigenproblem is solved for ([analysis] modes has the
+// same bound, scene/case_schema.cpp). The solver computes every mode below a
+// band's upper edge; a band above more than this many is refused at once.
+constexpr int kMaxModesPerProblem = 10000;
+
 struct SolvedModes {
     std::vector<double> eigenvalues;  // ascending
     std::vector<PetscVector> vectors; // M-normalised
@@ -39,11 +44,23 @@ using Progress = std::function<void(const std::string&)>;
 // mode below the highest reported one was missed (one automatic retry with a
 // larger subspace; then SolveError). Degenerate partners of the last requested
 // mode are always included, so a pair is never cut in half.
+// A band is counted first: an empty one (as many eigenvalues below either
+// edge) returns no modes, proven complete, without a solve; one whose upper
+// edge lies above kMaxModesPerProblem eigenvalues, or above every eigenvalue
+// of the model, throws InputError before any solve. Otherwise every mode
+// below the upper edge is computed (the caller keeps those in_band).
+
 // The operator set's problem type decides the method: while it holds only
 // stiffness, geometric stiffness and mass, the symmetric generalized problem
 // (K + K_sigma) x = lambda M x solved here. A gyroscopic or damping term
 // makes it quadratic, which this function refuses (SolveError).
 SolvedModes solve_modes(const OperatorSet& operators, const SolveRequest& request, const Progress& progress);
+
+// Whether eigenvalue lambda belongs to the request: every one when there is
+// no band; else lambda_min <= lambda <= lambda_max, a rigid-body mode
+// (|lambda| below the rigid line, which round-off may make slightly
+// negative) counting as lambda = 0.
+bool in_band(double lambda, const SolveRequest& request);
 
 // The package that factors K - sigma M for shift-and-invert on `comm`:
 // CHOLMOD in one process (a smaller factor than Debian's MUMPS), MUMPS in

@@ -237,13 +237,33 @@ bool within(const Box& b, double z_start, double z_end) {
     return b.z0 >= z_start - kGeometryTolerance && b.z1 <= z_end + kGeometryTolerance;
 }
 
+// The chuck whose volume a surface bounds, or null (a core or rest paper
+// surface). By volume, not by radius: with zero clearance the chuck body's
+// surface lies on the core bore (two surfaces, two sets of nodes).
+const ChuckBody* chuck_of_surface(int tag, const std::map<int, const ChuckBody*>& chuck_volume) {
+    std::vector<int> up, down;
+    gmsh::model::getAdjacencies(2, tag, up, down);
+    for (int volume : up)
+        if (const auto it = chuck_volume.find(volume); it != chuck_volume.end()) return it->second;
+    return nullptr;
+}
+
+std::map<int, const ChuckBody*> chuck_volumes(const TubeSection& s, const PartVolumes& volumes) {
+    std::map<int, const ChuckBody*> out;
+    for (const ChuckBody& c : s.chucks)
+        if (const auto it = volumes.find("chuck_" + c.name); it != volumes.end())
+            for (int v : it->second) out[v] = &c;
+    return out;
+}
+
 // Named surfaces: the cylinders of the core and rest paper, clamp zones on
 // the core bore, and for chucks the facing surfaces over each expanding
 // element ("interface_<chuck>_core" on the bore, "interface_<chuck>_chuck" on
 // the body) and the shaft end face at the bearing ("bearing_<chuck>").
-void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clamps) {
+void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clamps, const PartVolumes& volumes) {
     const double ri = s.layers.front().r_inner, ro = s.layers.front().r_outer;
     const double e = kGeometryTolerance;
+    const std::map<int, const ChuckBody*> chuck_volume = chuck_volumes(s, volumes);
     gmsh::vectorpair surfaces;
     gmsh::model::getEntities(surfaces, 2);
     std::map<std::string, std::vector<int>> groups;
@@ -256,7 +276,12 @@ void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clam
         }
         const double r = cylinder_radius(tag);
         if (r < 0) continue;
-        if (std::abs(r - ri) < e) {
+        if (const ChuckBody* c = chuck_of_surface(tag, chuck_volume)) {
+            if (std::abs(r - c->body_radius) < e && within(b, c->z_body_start, c->z_body_end))
+                for (const auto& [chuck, zone] : s.interfaces)
+                    if (chuck == c->name && within(b, zone.first, zone.second))
+                        groups["interface_" + chuck + "_chuck"].push_back(tag);
+        } else if (std::abs(r - ri) < e) {
             groups["core_inner"].push_back(tag);
             for (const auto& c : clamps)
                 if (within(b, c.z_start, c.z_end)) groups["clamp_" + c.name].push_back(tag);
@@ -266,15 +291,30 @@ void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clam
             groups["core_outer"].push_back(tag);
         } else if (s.layers.size() > 1 && std::abs(r - s.layers.back().r_outer) < e) {
             groups["rest_paper_outer"].push_back(tag);
-        } else {
-            for (const ChuckBody& c : s.chucks)
-                if (std::abs(r - c.body_radius) < e && within(b, c.z_body_start, c.z_body_end))
-                    for (const auto& [chuck, zone] : s.interfaces)
-                        if (chuck == c.name && within(b, zone.first, zone.second))
-                            groups["interface_" + chuck + "_chuck"].push_back(tag);
         }
     }
     for (const auto& [name, tags] : groups) add_named_group(2, tags, name);
+}
+
+// The smallest radial distance between a chuck body and the bore in the
+// gmsh model. gmsh's geometry kernel merges entities that coincide (it must:
+// the layers of the core, rest paper and chuck discs are extruded one part at
+// a time and meet on merged surfaces), so a body filling the bore (zero
+// clearance) would share its surface, and its nodes, with the core over the
+// whole inserted length: bonded everywhere instead of over the expanding
+// elements. Ten geometry tolerances keep the two surfaces apart; the body's
+// volume changes by 2 x 1e-5 / radius (5e-4 of it in a 76 mm bore), the ties
+// and spring layers join facing nodes whatever their distance, and the
+// harmonic and beam levels model zero clearance exactly.
+constexpr double kMinBodyClearance = 10 * kGeometryTolerance;  // m
+
+TubeSection with_chucks_apart_from_bore(TubeSection s) {
+    const double limit = s.layers.front().r_inner - kMinBodyClearance;
+    for (ChuckBody& c : s.chucks) {
+        c.body_radius = std::min(c.body_radius, limit);
+        c.shaft_radius = std::min(c.shaft_radius, c.body_radius);
+    }
+    return s;
 }
 
 }  // namespace
@@ -282,11 +322,12 @@ void add_surface_groups(const TubeSection& s, const std::vector<ClampSpec>& clam
 void build_tube_model(const TubeSection& section, const std::vector<ClampSpec>& clamps,
                       const std::string& element) {
     gmsh::model::add("coremodal");
-    const PartVolumes volumes = build_volumes(section);
+    const TubeSection s = with_chucks_apart_from_bore(section);
+    const PartVolumes volumes = build_volumes(s);
     // Parts in a fixed order: core, rest paper, then the chucks.
     for (const std::string part : {"core", "rest_paper", "chuck_left", "chuck_right"})
         if (volumes.count(part)) add_named_group(3, volumes.at(part), part);
-    add_surface_groups(section, clamps);
+    add_surface_groups(s, clamps, volumes);
     gmsh::option::setNumber("Mesh.ElementOrder", 2);
     // Incomplete second order = 20-node serendipity hexahedra; complete = 27-node.
     gmsh::option::setNumber("Mesh.SecondOrderIncomplete", element == "hex27" ? 0 : 1);

@@ -103,6 +103,14 @@ void model_section(std::ostream& out, const RunReport& r) {
     }
     out << "- largest relative residual " << formatted("%.1e", v.max_relative_residual) << ", largest |XᵀMX − I| "
         << formatted("%.1e", v.max_orthonormality_error) << "\n";
+    const AnalysisSpec& a = r.scene.analysis;
+    if (a.f_max_hz && r.modes.modes.empty())
+        out << "- **no modes between " << significant(a.f_min_hz.value_or(0.0)) << " and " << significant(*a.f_max_hz)
+            << " Hz**: an empty band, proven by the inertia count (as many eigenvalues below its upper edge as "
+               "below its lower edge)\n";
+    if (v.eigenvalues_below_band > 0)
+        out << "- " << v.eigenvalues_below_band
+            << " eigenvalues below the band's lower edge were counted (inertia), not computed\n";
     if (m.harmonics.empty())
         out << "- inertia count: " << v.negative_pivots_at_shift << " eigenvalues below "
             << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << v.modes_below_shift
@@ -143,13 +151,13 @@ void beam_section(std::ostream& out, const RunReport& r) {
     const BeamComparison& b = r.beam;
     out << "## Beam theory\n\nFirst bending frequency, " << b.ends << ", span " << significant(b.span_m) << " m:\n\n";
     out << "| | f1 [Hz] | FE / this |\n|---|---:|---:|\n";
-    if (b.fe_first_bending_hz > 0)
+    if (b.fe_found())
         out << "| FE (mode " << b.fe_mode_index << ") | " << hz(b.fe_first_bending_hz) << " | |\n";
     else
-        out << "| FE | no bending mode among the modes found | |\n";
+        out << "| FE | none: " << b.fe_missing << " | |\n";
     auto row = [&](const char* name, double f, double ratio) {
-        out << "| " << name << " | " << hz(f) << " | "
-            << (b.fe_first_bending_hz > 0 ? formatted("%.4f", ratio) : std::string("-")) << " |\n";
+        out << "| " << name << " | " << hz(f) << " | " << (b.fe_found() ? formatted("%.4f", ratio) : std::string("-"))
+            << " |\n";
     };
     row("Euler–Bernoulli (I-7, k = 1)", b.euler_bernoulli_hz, b.fe_over_euler_bernoulli);
     row("Timoshenko (beam FE)", b.timoshenko_hz, b.fe_over_timoshenko);
@@ -162,13 +170,14 @@ void chuck_section(std::ostream& out, const ChuckFactor& k) {
     out << "| quantity | value |\n|---|---:|\n";
     out << "| Li left / right | " << mm(k.li_left_m) << " / " << mm(k.li_right_m) << " |\n";
     out << "| free span L | " << significant(k.free_span_m) << " m |\n";
-    out << "| f1 (FE, this scene) | " << hz(k.f1_hz) << " Hz |\n";
+    out << "| f1 (FE, this scene) | " << (k.f1_hz > 0 ? hz(k.f1_hz) + " Hz" : std::string("none")) << " |\n";
     out << "| f2 (FE, free–free over L) | " << (k.f2_fe_hz > 0 ? hz(k.f2_fe_hz) + " Hz" : std::string("not computed"))
         << " |\n";
     out << "| f2 (Timoshenko beam, free–free over L) | " << hz(k.f2_beam_hz) << " Hz |\n";
     out << "| **k = f1/f2 (FE)** | " << (k.chuck_factor > 0 ? "**" + formatted("%.4f", k.chuck_factor) + "**" : "-")
         << " |\n";
-    out << "| k with the beam f2 | " << formatted("%.4f", k.chuck_factor_beam) << " |\n\n";
+    out << "| k with the beam f2 | " << (k.f1_hz > 0 ? formatted("%.4f", k.chuck_factor_beam) : std::string("-"))
+        << " |\n\n";
 }
 
 // König's l: the core length minus the chuck insertion depth at both ends
@@ -190,8 +199,8 @@ void speed_section(std::ostream& out, const RunReport& r) {
                "stand (clamped or on chucks).\n\n";
         return;
     }
-    if (!(f1 > 0)) {
-        out << "Not given: no bending mode among the modes found (ask for more modes).\n\n";
+    if (!r.beam.fe_found()) {
+        out << "Not given: " << r.beam.fe_missing << ".\n\n";
         return;
     }
     out << "Safe web speed (I-5) v_safe = safe · π · Dp · f1, with f1 = " << hz(f1) << " Hz (FE) and Dp = "

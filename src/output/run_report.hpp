@@ -30,10 +30,12 @@ struct BeamComparison {
     std::string ends;  // "clamped-clamped" or "free-free"
     double euler_bernoulli_hz = 0;
     double timoshenko_hz = 0;
-    double fe_first_bending_hz = 0;  // 0 if no bending mode was found
-    int fe_mode_index = 0;
+    double fe_first_bending_hz = 0;  // 0 if no bending mode was found (then written as null)
+    int fe_mode_index = 0;           // 1-based; 0: none found
     double fe_over_timoshenko = 0;
     double fe_over_euler_bernoulli = 0;
+    std::string fe_missing;  // why no bending mode was found, e.g. "no modes between 0 and 1 Hz"; "" when found
+    bool fe_found() const { return fe_mode_index > 0; }
 };
 
 // Ilomäki's chuck factor k = f1 / f2 (DOMAIN.md section 3): f1 the first

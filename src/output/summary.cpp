@@ -11,6 +11,8 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
+#include <type_traits>
 
 namespace coremodal {
 namespace {
@@ -18,6 +20,24 @@ namespace {
 // JSON has no NaN or infinity; a value that is not finite becomes 0 and is
 // never expected (every writer input is checked upstream).
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+
+// JSON's null for a value that does not exist (no bending mode was found):
+// TOML, which builds the document, has none, so this marker stands in for it
+// and becomes null after formatting (to_json). Its control characters keep it
+// apart from any text a user can write by accident.
+constexpr std::string_view kNullMarker = "\x1f" "coremodal:null" "\x1f";
+constexpr std::string_view kFormattedNullMarker = "\"\\u001Fcoremodal:null\\u001F\"";
+
+// `value` where it exists, else null.
+template <typename Number>
+void insert_or_null(toml::table& t, std::string_view key, bool exists, Number value) {
+    if (!exists)
+        t.insert(key, kNullMarker);
+    else if constexpr (std::is_floating_point_v<Number>)
+        t.insert(key, finite(value));
+    else
+        t.insert(key, value);
+}
 
 toml::array strings_array(const std::vector<std::string>& items) {
     toml::array a;
@@ -114,7 +134,61 @@ toml::table scene_table(const Scene& s) {
 std::string to_json(const toml::table& t) {
     std::ostringstream s;
     s << toml::json_formatter{t};
-    return s.str();
+    std::string json = s.str();
+    for (size_t at = json.find(kFormattedNullMarker); at != std::string::npos; at = json.find(kFormattedNullMarker, at))
+        json.replace(at, kFormattedNullMarker.size(), "null");
+    return json;
+}
+
+// The solver's proof, and what was asked against what was found: a model
+// with fewer modes than [analysis] modes asks (a small beam network) reports
+// all it has, and says so here and in the warnings.
+toml::table verification_table(const RunReport& r) {
+    const Verification& v = r.modes.verification;
+    toml::table t{{"max_relative_residual", v.max_relative_residual},
+                  {"max_orthonormality_error", v.max_orthonormality_error},
+                  {"check_shift", v.check_shift},
+                  {"negative_pivots_at_shift", v.negative_pivots_at_shift},
+                  {"modes_below_shift", v.modes_below_shift},
+                  {"eigenvalues_below_band", v.eigenvalues_below_band},
+                  {"complete", v.complete}};
+    insert_or_null(t, "modes_requested", !r.scene.analysis.f_max_hz, r.scene.analysis.n_modes);
+    t.insert("modes_reported", static_cast<int64_t>(r.modes.modes.size()));
+    return t;
+}
+
+// The beam comparison; the FE values are null when no bending mode was found.
+toml::table beam_table(const BeamComparison& b) {
+    toml::table t{{"span_m", b.span_m},
+                  {"ends", b.ends},
+                  {"euler_bernoulli_hz", b.euler_bernoulli_hz},
+                  {"timoshenko_hz", b.timoshenko_hz}};
+    insert_or_null(t, "fe_first_bending_hz", b.fe_found(), b.fe_first_bending_hz);
+    insert_or_null(t, "fe_mode_index", b.fe_found(), b.fe_mode_index);
+    insert_or_null(t, "fe_over_timoshenko", b.fe_found(), b.fe_over_timoshenko);
+    insert_or_null(t, "fe_over_euler_bernoulli", b.fe_found(), b.fe_over_euler_bernoulli);
+    if (b.fe_found())
+        t.insert("fe_missing", kNullMarker);
+    else
+        t.insert("fe_missing", b.fe_missing);
+    return t;
+}
+
+// The chuck factor; f1, f2 (FE) and the factors built on them are null where
+// they do not exist (no bending mode, or f2 not computed).
+toml::table chuck_table(const ChuckFactor& k) {
+    const bool f1 = k.f1_hz > 0, f2 = k.f2_fe_hz > 0;
+    toml::table t{{"li_m", k.li_m}, {"free_span_m", k.free_span_m}, {"f2_beam_hz", k.f2_beam_hz}};
+    insert_or_null(t, "f1_hz", f1, k.f1_hz);
+    insert_or_null(t, "f2_fe_hz", f2, k.f2_fe_hz);
+    insert_or_null(t, "chuck_factor", f1 && f2, k.chuck_factor);
+    insert_or_null(t, "chuck_factor_beam", f1, k.chuck_factor_beam);
+    t.insert("span_definition", "free_span = core length - Li_left - Li_right");
+    if (std::abs(k.li_left_m - k.li_right_m) > 1e-12) {
+        t.insert("li_left_m", k.li_left_m);
+        t.insert("li_right_m", k.li_right_m);
+    }
+    return t;
 }
 
 toml::table mode_table(const Mode& m) {
@@ -138,8 +212,6 @@ void write_summary_json(const std::string& path, const RunReport& r) {
     const toml::array effects = strings_array(r.scene.effects());
     toml::array modes;
     for (const auto& m : r.modes.modes) modes.push_back(mode_table(m));
-    const auto& v = r.modes.verification;
-    const auto& b = r.beam;
     const auto& t = r.timing_s;
     toml::table summary{
         {"schema_version", kSummarySchemaVersion},
@@ -157,20 +229,8 @@ void write_summary_json(const std::string& path, const RunReport& r) {
                               {"mesh_source", r.model.mesh_source},
                               {"harmonics", r.model.harmonics}}},
         {"modes", modes},
-        {"verification", toml::table{{"max_relative_residual", v.max_relative_residual},
-                                     {"max_orthonormality_error", v.max_orthonormality_error},
-                                     {"check_shift", v.check_shift},
-                                     {"negative_pivots_at_shift", v.negative_pivots_at_shift},
-                                     {"modes_below_shift", v.modes_below_shift},
-                                     {"complete", v.complete}}},
-        {"beam", toml::table{{"span_m", b.span_m},
-                             {"ends", b.ends},
-                             {"euler_bernoulli_hz", b.euler_bernoulli_hz},
-                             {"timoshenko_hz", b.timoshenko_hz},
-                             {"fe_first_bending_hz", b.fe_first_bending_hz},
-                             {"fe_mode_index", b.fe_mode_index},
-                             {"fe_over_timoshenko", finite(b.fe_over_timoshenko)},
-                             {"fe_over_euler_bernoulli", finite(b.fe_over_euler_bernoulli)}}},
+        {"verification", verification_table(r)},
+        {"beam", beam_table(r.beam)},
         {"timing_s", toml::table{{"mesh", t.mesh},
                                  {"chuck_factor", t.chuck_factor},
                                  {"assemble", t.assemble},
@@ -180,22 +240,7 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         {"warnings", strings_array(r.warnings)},
         {"peak_memory_mb", r.peak_memory_mb},
         {"mpi_ranks", r.mpi_ranks}};
-    if (r.chuck) {
-        const ChuckFactor& k = *r.chuck;
-        toml::table chuck{{"li_m", k.li_m},
-                          {"free_span_m", k.free_span_m},
-                          {"f1_hz", k.f1_hz},
-                          {"f2_fe_hz", k.f2_fe_hz},
-                          {"f2_beam_hz", k.f2_beam_hz},
-                          {"chuck_factor", finite(k.chuck_factor)},
-                          {"chuck_factor_beam", finite(k.chuck_factor_beam)},
-                          {"span_definition", "free_span = core length - Li_left - Li_right"}};
-        if (std::abs(k.li_left_m - k.li_right_m) > 1e-12) {
-            chuck.insert("li_left_m", k.li_left_m);
-            chuck.insert("li_right_m", k.li_right_m);
-        }
-        summary.insert("chuck", chuck);
-    }
+    if (r.chuck) summary.insert("chuck", chuck_table(*r.chuck));
     if (!r.rigid_comparison.empty()) {
         toml::array rows;
         for (const ModeShift& m : r.rigid_comparison)
@@ -247,6 +292,10 @@ void print_mode_table(std::ostream& out, const RunReport& r) {
 void print_verification_and_beam(std::ostream& out, const RunReport& r) {
     const auto& v = r.modes.verification;
     char line[512];
+    if (r.scene.analysis.f_max_hz && r.modes.modes.empty())
+        out << "\nno modes between " << r.scene.analysis.f_min_hz.value_or(0.0) << " and " << *r.scene.analysis.f_max_hz
+            << " Hz: an empty band, proven by the inertia count (as many eigenvalues below its upper edge as below "
+               "its lower edge)";
     if (r.model.harmonics.empty())
         std::snprintf(line, sizeof line,
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots below %.4g Hz "
@@ -266,13 +315,19 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
                   r.model.expected_mass_kg);
     out << line;
     const auto& b = r.beam;
-    std::snprintf(line, sizeof line,
-                  "beam (%s, span %.4g m): Euler-Bernoulli %.4f Hz, Timoshenko %.4f Hz; FE first bending "
-                  "(mode %d) %.4f Hz = %.4f x Timoshenko\n",
-                  b.ends.c_str(), b.span_m, b.euler_bernoulli_hz, b.timoshenko_hz, b.fe_mode_index,
-                  b.fe_first_bending_hz, b.fe_over_timoshenko);
+    std::snprintf(line, sizeof line, "beam (%s, span %.4g m): Euler-Bernoulli %.4f Hz, Timoshenko %.4f Hz; ",
+                  b.ends.c_str(), b.span_m, b.euler_bernoulli_hz, b.timoshenko_hz);
     out << line;
-    if (r.chuck) {
+    if (b.fe_found()) {
+        std::snprintf(line, sizeof line, "FE first bending (mode %d) %.4f Hz = %.4f x Timoshenko\n", b.fe_mode_index,
+                      b.fe_first_bending_hz, b.fe_over_timoshenko);
+        out << line;
+    } else {
+        out << "FE first bending: none, " << b.fe_missing << "\n";
+    }
+    if (r.chuck && !(r.chuck->f1_hz > 0)) {
+        out << "chuck factor: not computed, no first bending mode f1 (" << b.fe_missing << ")\n";
+    } else if (r.chuck) {
         const ChuckFactor& k = *r.chuck;
         std::snprintf(line, sizeof line,
                       "chuck factor: Li %.4g m (left %.4g, right %.4g), free span L = %.4g m; f1 %.4f Hz, "

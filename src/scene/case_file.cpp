@@ -214,11 +214,15 @@ public:
         scene.supports = read_supports(top, scene);
         scene.analysis = read_analysis(top);
         scene.mesh = read_mesh(top, scene);
+        scene.warnings = warnings_;
         return scene;
     }
 
 private:
     std::string path_;
+    // Values that parse but look like slips (check_plausible); filled by the
+    // const readers as they go, so mutable.
+    mutable std::vector<std::string> warnings_;
 
     // ---- messages -------------------------------------------------------
 
@@ -382,7 +386,40 @@ private:
         COREMODAL_ASSERT(spec && spec->kind == ValueKind::quantity);
         const double v = to_si(*node, spec->dimension, echo(s, key, *node));
         check_range(s, *spec, *node, v);
+        check_plausible(s, *spec, *node, v);
         return v;
+    }
+
+    // Outside the key's plausible range: a warning (Scene::warnings), with the
+    // unit a plain number was probably meant in.
+    void check_plausible(const Section& s, const KeySpec& spec, const toml::node& node, double v) const {
+        const PlausibleRange& p = spec.plausible;
+        if (p.empty() || (v >= p.low && v <= p.high)) return;
+        std::string msg = location(node.source()) + name_of(s, spec.key) + " = " +
+                          format_quantity(v, spec.dimension) + " is outside the plausible range " +
+                          format_quantity(p.low, spec.dimension) + " to " + format_quantity(p.high, spec.dimension) +
+                          " (" + std::string(p.why) + ")";
+        if (node.is_number()) {
+            msg += std::string("; plain numbers are in ") + si_unit(spec.dimension);
+            if (const std::optional<std::string> unit = likely_unit(v, spec.dimension, p))
+                msg += ": did you mean \"" + show(node) + " " + *unit + "\"?";
+        }
+        msg += "; the run goes on with the value as read";
+        if (std::find(warnings_.begin(), warnings_.end(), msg) == warnings_.end()) warnings_.push_back(msg);
+    }
+
+    // The common unit that brings a plain number v inside the range, nearest
+    // the typical value (on a log scale).
+    static std::optional<std::string> likely_unit(double v, Dimension d, const PlausibleRange& p) {
+        std::optional<std::string> best;
+        double best_distance = 0;
+        for (const UnitFactor& u : common_units(d)) {
+            const double candidate = v * u.to_si;
+            if (u.to_si == 1.0 || candidate < p.low || candidate > p.high) continue;
+            const double distance = std::abs(std::log10(candidate / p.typical));
+            if (!best || distance < best_distance) best = std::string(u.symbol), best_distance = distance;
+        }
+        return best;
     }
 
     void check_range(const Section& s, const KeySpec& spec, const toml::node& node,
@@ -509,6 +546,7 @@ private:
     OrthotropicMaterial read_material(const Section& owner, std::string_view role,
                                       std::string_view default_name, Scene& scene) const {
         const toml::node* node = get(owner, "material");
+        const size_t warnings_before = warnings_.size();
         OrthotropicMaterial m;
         if (!node) {
             scene.assumptions.push_back(std::string(role) +
@@ -522,9 +560,12 @@ private:
         }
         if (const std::optional<std::string> why = why_not_admissible(m)) {
             const toml::source_region& at = node ? node->source() : owner.table->source();
+            // A value outside its plausible range is the likely cause (a bare 33 read as 33 Pa).
+            std::string hint;
+            for (size_t i = warnings_before; i < warnings_.size(); ++i) hint += "; likely cause: " + warnings_[i];
             fail(at, name_of(owner, "material") + " is not admissible: " + *why +
                          "; expected positive moduli and density, and Poisson ratios for which the "
-                         "compliance matrix is positive definite (DOMAIN.md §6)");
+                         "compliance matrix is positive definite (DOMAIN.md §6)" + hint);
         }
         return m;
     }
@@ -700,11 +741,11 @@ private:
         at_most_one(s, "clearance", "body_diameter");
         if (const auto d = quantity(s, "body_diameter")) {
             c.body_diameter = *d;
-            if (c.body_diameter >= bore)
+            if (c.body_diameter > bore)
                 fail(*get(s, "body_diameter"),
-                     echo(s, "body_diameter", *get(s, "body_diameter")) + " is not smaller than the core bore "
+                     echo(s, "body_diameter", *get(s, "body_diameter")) + " is larger than the core bore "
                      "([core] inner_diameter = " + format_quantity(bore, Dimension::length) +
-                     "); expected a chuck body that fits inside the core with a radial clearance");
+                     "); expected a chuck body that fits inside the core (at most the bore: zero clearance)");
         } else {
             const double clearance = quantity(s, "clearance").value_or(kDefaultChuckClearance);
             if (!get(s, "clearance"))

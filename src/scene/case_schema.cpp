@@ -20,11 +20,38 @@ constexpr int kMaxElementsAround = 4096;
 constexpr double kMaxWebSpeed = 100.0;  // m/s; presses run up to ~20 m/s
 constexpr int kMaxSweepSteps = 10000;
 
-KeySpec length_key(std::string_view table, std::string_view key, double max) {
-    return {table, key, ValueKind::quantity, Dimension::length, 0.0, max, true};
+// Plausible ranges: one row per kind of value, each with its reason. They
+// catch unit slips, which are factors of 1e3 to 1e9, so they are wide.
+//
+// Moduli: the softest solid in a roll, wound paper across its layers, is of
+// order 10 MPa (DOMAIN.md section 4) and loose layers a few times softer; the
+// stiffest engineering solids (tungsten carbide, diamond) are near 1 TPa.
+constexpr std::string_view kModulusWhy =
+    "from a loosely wound paper layer (~1 MPa; wound paper ~10 MPa, DOMAIN.md section 4) to diamond (~1.1 TPa)";
+constexpr double kMinPlausibleModulus = 0.1e6, kMaxPlausibleModulus = 1.2e12;  // Pa
+// Typical moduli, the aim of a suggestion: paperboard in its plane (E_theta,
+// E_z, G_thetaz), across it (E_r; G_rtheta, G_rz), and isotropic E (steel and
+// aluminium tubes, steel chucks): DOMAIN.md section 4, the materials library.
+constexpr double kTypicalInPlane = 5e9, kTypicalAcross = 30e6, kTypicalShearAcross = 100e6;
+constexpr double kTypicalShearInPlane = 2e9, kTypicalIsotropic = 70e9;  // Pa
+// Density: the lightest foams (~10 kg/m^3) to the densest metals (osmium 22 600).
+constexpr PlausibleRange kPlausibleDensity{10.0, 25e3, 1000.0,
+                                           "from foams (~10 kg/m^3) to the densest metals (osmium, 22 600 kg/m^3)"};
+// Cores: 1 inch (25 mm) to 600 mm inside (ISO 11093 sizes, DOMAIN.md section 1),
+// rolls up to ~4 m across; walls from under a millimetre; a test ring cut from
+// a core is a few millimetres long, the widest machines ~10 m.
+constexpr PlausibleRange kPlausibleDiameter{5e-3, 4.0, 0.1, "cores are 25-600 mm inside, rolls up to ~4 m across"};
+constexpr PlausibleRange kPlausibleWall{0.3e-3, 1.0, 0.015, "core walls from under a millimetre (film cores) to ~100 mm"};
+constexpr PlausibleRange kPlausibleCoreLength{1e-3, 20.0, 1.5,
+                                              "from a test ring cut from a core (a few mm) to the widest machines (~10 m)"};
+constexpr PlausibleRange kPlausibleRestPaper{50e-6, 2.0, 0.01, "from one sheet of paper (~0.1 mm) to a full roll (~1.5 m)"};
+
+KeySpec length_key(std::string_view table, std::string_view key, double max, PlausibleRange plausible = {}) {
+    return {table, key, ValueKind::quantity, Dimension::length, 0.0, max, true, plausible};
 }
-KeySpec modulus_key(std::string_view key) {
-    return {"material", key, ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true};
+KeySpec modulus_key(std::string_view key, double typical) {
+    return {"material", key, ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true,
+            {kMinPlausibleModulus, kMaxPlausibleModulus, typical, kModulusWhy}};
 }
 KeySpec poisson_key(std::string_view key) {
     // The admissible range depends on the moduli (DOMAIN.md §6); the whole
@@ -55,29 +82,29 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "study", ValueKind::table),
         plain_key("", "calibration", ValueKind::table),
 
-        length_key("core", "inner_diameter", kMaxDiameter),
-        length_key("core", "outer_diameter", kMaxDiameter),
-        length_key("core", "wall", kMaxDiameter),
-        length_key("core", "length", kMaxLength),
+        length_key("core", "inner_diameter", kMaxDiameter, kPlausibleDiameter),
+        length_key("core", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
+        length_key("core", "wall", kMaxDiameter, kPlausibleWall),
+        length_key("core", "length", kMaxLength, kPlausibleCoreLength),
         plain_key("core", "material", ValueKind::material),
 
-        length_key("rest_paper", "thickness", kMaxDiameter),
-        length_key("rest_paper", "outer_diameter", kMaxDiameter),
+        length_key("rest_paper", "thickness", kMaxDiameter, kPlausibleRestPaper),
+        length_key("rest_paper", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
         plain_key("rest_paper", "material", ValueKind::material),
 
         plain_key("material", "base", ValueKind::text),
-        modulus_key("E"),
+        modulus_key("E", kTypicalIsotropic),
         poisson_key("nu"),
-        modulus_key("E_r"),
-        modulus_key("E_theta"),
-        modulus_key("E_z"),
-        modulus_key("G_rtheta"),
-        modulus_key("G_rz"),
-        modulus_key("G_thetaz"),
+        modulus_key("E_r", kTypicalAcross),
+        modulus_key("E_theta", kTypicalInPlane),
+        modulus_key("E_z", kTypicalInPlane),
+        modulus_key("G_rtheta", kTypicalShearAcross),
+        modulus_key("G_rz", kTypicalShearAcross),
+        modulus_key("G_thetaz", kTypicalShearInPlane),
         poisson_key("nu_rtheta"),
         poisson_key("nu_rz"),
         poisson_key("nu_thetaz"),
-        {"material", "density", ValueKind::quantity, Dimension::density, 0.0, kMaxDensity, true},
+        {"material", "density", ValueKind::quantity, Dimension::density, 0.0, kMaxDensity, true, kPlausibleDensity},
 
         plain_key("supports", "type", ValueKind::text),
         plain_key("supports", "left", ValueKind::table),

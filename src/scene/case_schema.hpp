@@ -25,6 +25,18 @@ enum class ValueKind {
     list,      // array of values, [a, b, ...]
 };
 
+// Where a value normally lies, with the reason. Outside it a value is most
+// likely a unit slip (E = 6.5, a plain number, is 6.5 Pa, not 6.5 GPa): the
+// case reader warns, naming the key, and for a plain number suggests the
+// unit that brings it nearest `typical`. A warning, not an error: an odd
+// scene may be meant. Empty (low = high = 0) for keys without one.
+struct PlausibleRange {
+    double low = 0, high = 0;  // SI
+    double typical = 0;        // SI: the order of magnitude a suggestion aims at
+    std::string_view why;      // where the range comes from, for the warning
+    bool empty() const { return !(high > low); }
+};
+
 // Schema tables. Material tables ([core.material], [rest_paper.material]) share
 // "material"; [supports.left] and [supports.right] share "clamp".
 struct KeySpec {
@@ -35,6 +47,7 @@ struct KeySpec {
     double min = -std::numeric_limits<double>::infinity();
     double max = std::numeric_limits<double>::infinity();
     bool min_exclusive = false;  // value must be > min rather than >= min
+    PlausibleRange plausible{};  // quantities only; a warning outside it
 };
 
 // The library material of a part whose file gives no material (each use is

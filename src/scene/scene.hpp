@@ -131,6 +131,16 @@ struct Scene {
     // Values the program assumed because the file did not say (e.g. a library
     // material's transverse shear moduli): echoed in the summary.
     std::vector<std::string> assumptions;
+    // Values that parse but look like slips (a modulus of 6.5 Pa, a core
+    // 10 um long): each a sentence that starts with file:line:col and names
+    // the key. The command that read the file prints them once on stderr;
+    // the summary keeps them. They do not stop a run.
+    std::vector<std::string> warnings;
+
+    // rho V of the core and rest paper from their dimensions, kg.
+    double roll_mass() const;
+    // rho V of every part (roll, chuck bodies and shafts) and the frame masses, kg.
+    double mass_from_dimensions() const;
 
     // The effects this scene simulates, e.g. {"core", "rest_paper", "rigid_clamps"}.
     std::vector<std::string> effects() const;

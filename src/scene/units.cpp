@@ -227,6 +227,13 @@ std::string accepted_units(Dimension d) {
     return out;
 }
 
+std::vector<UnitFactor> common_units(Dimension d) {
+    std::vector<UnitFactor> out;
+    for (const UnitSpec& u : kUnits)
+        if (u.dimension == d && u.listed) out.push_back({u.symbol, u.to_si / u.divide_by});
+    return out;
+}
+
 double parse_quantity(std::string_view text, Dimension expected) {
     const std::string_view s = trim(text);
     std::string_view number = s;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace coremodal {
 
@@ -27,5 +28,13 @@ std::string format_quantity(double si_value, Dimension d);
 
 // The units parse_quantity accepts for `d`, e.g. "m, mm, cm, in" (the common ones).
 std::string accepted_units(Dimension d);
+
+// The common units of `d` with their factor to SI, in the order above
+// (for "did you mean 6.5 GPa?" when a plain number looks like a unit slip).
+struct UnitFactor {
+    std::string_view symbol;
+    double to_si;
+};
+std::vector<UnitFactor> common_units(Dimension d);
 
 }  // namespace coremodal

@@ -51,14 +51,15 @@ inline double boundary_determinant(const BeamSection& s, double L, BeamEnds ends
     return M.determinant();
 }
 
-// First root of the determinant above 0.5 f_EB: scan for a sign change, then bisect.
-inline double exact_timoshenko_first_hz(const BeamSection& s, double L, BeamEnds ends) {
+// First root of the determinant above from_share * f_EB: scan for a sign
+// change up to 1.1 f_EB, then bisect (below the shear cut-off only).
+inline double exact_timoshenko_first_hz(const BeamSection& s, double L, BeamEnds ends, double from_share = 0.5) {
     const double f_eb = euler_bernoulli_first_bending_hz(s, L);
     auto D = [&](double f) { return boundary_determinant(s, L, ends, 2 * M_PI * f); };
     const int steps = 2000;
-    double lo = 0.5 * f_eb, d_lo = D(lo);
+    double lo = from_share * f_eb, d_lo = D(lo);
     for (int i = 1; i <= steps; ++i) {
-        double hi = 0.5 * f_eb + i * (0.6 * f_eb / steps);
+        double hi = from_share * f_eb + i * ((1.1 - from_share) * f_eb / steps);
         if ((D(hi) < 0) == (d_lo < 0)) {
             lo = hi, d_lo = D(hi);
             continue;
@@ -70,7 +71,7 @@ inline double exact_timoshenko_first_hz(const BeamSection& s, double L, BeamEnds
         }
         return 0.5 * (lo + hi);
     }
-    FAIL("no root of the Timoshenko frequency equation between 0.5 and 1.1 f_EB");
+    FAIL("no root of the Timoshenko frequency equation between " << from_share << " and 1.1 f_EB");
     return 0;
 }
 

@@ -137,3 +137,27 @@ TEST_CASE("Short thick tube: Timoshenko model matches the exact frequency equati
     CHECK(exact_timoshenko_first_hz(s, L, BeamEnds::clamped_clamped) / f_eb == Approx(0.7721).epsilon(1e-4));
     CHECK(exact_timoshenko_first_hz(s, L, BeamEnds::free_free) / f_eb == Approx(0.8780).epsilon(1e-4));
 }
+
+TEST_CASE("Timoshenko beams shorter than their diameter keep every elastic mode, however short", "[beam]") {
+    // The two rigid modes of a free-free beam are counted out, not cut off
+    // below a share of the Euler-Bernoulli frequency: that share dropped the
+    // shear modes of a short beam, and every mode of a 10 um one (issue 11).
+    const BeamSection s = steel_tube();  // 200 x 100 mm
+    for (double L : {1.0, 0.2, 0.02, 1e-3, 1e-5}) {
+        INFO("L = " << L << " m");
+        for (BeamEnds ends : {BeamEnds::clamped_clamped, BeamEnds::free_free}) {
+            const std::vector<double> f = timoshenko_bending_hz(s, L, ends, 3);
+            REQUIRE(f.size() == 3);
+            CHECK(f[0] > 0);
+            CHECK(f[0] <= f[1]);
+            CHECK(f[1] <= f[2]);
+            CHECK(std::isfinite(f[2]));
+        }
+    }
+    // L = 0.4 m = 7.2 radii of gyration, below the shear cut-off: the exact
+    // frequency equation's first root, 0.62 f_EB (the old cut at 0.01 f_EB
+    // still kept this one; a 10 mm ring had its first mode dropped).
+    const double L = 0.4, exact = exact_timoshenko_first_hz(s, L, BeamEnds::free_free, 0.1);
+    CHECK(timoshenko_bending_hz(s, L, BeamEnds::free_free, 1).at(0) == Approx(exact).epsilon(1e-6));
+    CHECK(exact / euler_bernoulli_first_bending_hz(s, L) == Approx(0.619).epsilon(1e-3));
+}

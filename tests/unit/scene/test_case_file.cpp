@@ -407,7 +407,7 @@ TEST_CASE("Elastic chucks are read, mirrored and checked", "[scene][case_file][c
     }
     SECTION("a chuck body larger than the bore") {
         CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"110 mm\"\nbody_diameter = \"80 mm\"\n" + band),
-                   Catch::Contains(":10:17: [supports.left] body_diameter = \"80 mm\" is not smaller than the core bore"));
+                   Catch::Contains(":10:17: [supports.left] body_diameter = \"80 mm\" is larger than the core bore"));
     }
     SECTION("a shaft wider than the chuck body") {
         CHECK_THAT(error_of(chucks + "[supports.left]\ninserted_length = \"110 mm\"\nshaft_diameter = \"90 mm\"\n" + band),
