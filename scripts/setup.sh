@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Installs every Debian package coremodal needs, if any is missing. Idempotent:
-# a machine that has them all is left alone (no apt-get update).
+# a machine that has them all is left alone (no apt-get update). Extra package
+# names as arguments are installed the same way (scripts/fuzz.sh: clang).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
           petsc-dev slepc-dev libopenblas0-pthread
           libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
           catch2 libtomlplusplus-dev libcli11-dev
-          python3 python3-h5py python3-numpy python3-matplotlib python3-pytest)
+          python3 python3-h5py python3-numpy python3-matplotlib python3-pytest "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
