@@ -42,7 +42,7 @@ set +e
 build-fuzz/case_fuzzer build-fuzz/corpus "${seeds[@]}" -dict=build-fuzz/case.dict \
   -artifact_prefix=build-fuzz/crashes/ -timeout=10 -max_len=8192 -print_final_stats=1 \
   "${limit[@]}" "$@" 2>&1 | tee build-fuzz/last-run.log |
-  grep --line-buffered -E "^(#[0-9]+ *(INITED|DONE|pulse)|Done|stat::|==[0-9]+==|SUMMARY|.*(ERROR|error|deadly|Test unit written))"
+  grep --line-buffered -E "^(#[0-9]+ *(INITED|DONE|pulse)|Done |stat::|==[0-9]+==|SUMMARY|artifact_prefix|Test unit written|.*deadly signal)"
 status=${PIPESTATUS[0]}
 set -e
 if [ "$status" -ne 0 ]; then

@@ -12,6 +12,7 @@
 #include "scene/chuck_contact.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/toml_ascii_check.hpp"
 #include "scene/units.hpp"
 
 #include <toml++/toml.h>
@@ -1020,6 +1021,7 @@ private:
 Scene parse_case_table(const toml::table& root, const std::string& path) { return CaseReader(path).read(root); }
 
 Scene parse_case_text(std::string_view text, const std::string& path) {
+    check_ascii_outside_strings(text, path);  // before toml++ 3.3.0 can reach undefined behaviour on it
     toml::table root;
     try {
         root = toml::parse(text, path);
