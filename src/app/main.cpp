@@ -177,6 +177,7 @@ int main(int argc, char** argv) {
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
     const int status = run_guarded(*chosen);
+    PetscPopErrorHandler();  // PETSc's -malloc_dump lists the handler's 32 bytes otherwise
     SlepcFinalize();
     return status;
 }

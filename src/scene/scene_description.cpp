@@ -1,5 +1,6 @@
 #include "scene/scene_description.hpp"
 
+#include "scene/toml_text.hpp"
 #include "scene/units.hpp"
 
 #include <toml++/toml.h>
@@ -314,9 +315,9 @@ std::string effect_detail(const Scene& s, const std::string& effect) {
 KeySources key_sources(std::string_view case_text) {
     KeySources sources;
     try {
-        const toml::table root = toml::parse(case_text);
+        const toml::table root = parse_toml_text(case_text, "");
         collect_paths(root, "", sources.in_file);
-    } catch (const toml::parse_error&) {
+    } catch (const std::exception&) {
         // Not TOML: no key is known to come from the file.
     }
     return sources;
