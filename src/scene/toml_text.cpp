@@ -5,21 +5,37 @@
 namespace coremodal {
 namespace {
 
-// The code points toml++ 3.3.0 cannot test for whitespace, as one index range.
-constexpr char32_t kLatinFirst = 0xA1, kLatinLast = 0x499;
-constexpr char32_t kCjkFirst = 0x2E4E, kCjkLast = 0x3247, kIdeographicSpace = 0x3000;
-constexpr char32_t kStandIn = 0xF000;  // private use: U+F000 to U+F7FF
-constexpr char32_t kStandInLast = 0xF7FF;
+// The code points toml++ 3.3.0 cannot test for whitespace: its lookup
+// (is_non_ascii_horizontal_whitespace) splits U+00A0 to U+FEFF into blocks of
+// 0x3FA, and blocks 0, 11 and 63 fall through to TOML_UNREACHABLE for every
+// code point but the one whitespace each holds (U+00A0, U+3000, U+FEFF).
+struct Range {
+    char32_t first, last;
+};
+constexpr Range kUnsafe[] = {{0xA1, 0x499}, {0x2C5E, 0x2FFF}, {0x3001, 0x3057}, {0xFB26, 0xFEFE}};
+constexpr char32_t kStandIn = 0xE000;  // private use: U+E000 to U+EFFF, in the order of kUnsafe
+constexpr char32_t kStandInLast = 0xEFFF;
 
 bool unsafe(char32_t c) {
-    return (c >= kLatinFirst && c <= kLatinLast) || (c >= kCjkFirst && c <= kCjkLast && c != kIdeographicSpace);
+    for (const Range& r : kUnsafe)
+        if (c >= r.first && c <= r.last) return true;
+    return false;
 }
 char32_t stand_in(char32_t c) {
-    return c <= kLatinLast ? kStandIn + (c - kLatinFirst) : kStandIn + (kLatinLast - kLatinFirst + 1) + (c - kCjkFirst);
+    char32_t offset = 0;
+    for (const Range& r : kUnsafe) {
+        if (c <= r.last) return kStandIn + offset + (c - r.first);
+        offset += r.last - r.first + 1;
+    }
+    return c;  // not reached for unsafe(c)
 }
 char32_t original(char32_t s) {
-    const char32_t i = s - kStandIn, n_latin = kLatinLast - kLatinFirst + 1;
-    return i < n_latin ? kLatinFirst + i : kCjkFirst + (i - n_latin);
+    char32_t offset = s - kStandIn;
+    for (const Range& r : kUnsafe) {
+        if (offset <= r.last - r.first) return r.first + offset;
+        offset -= r.last - r.first + 1;
+    }
+    return s;  // a stand-in beyond the last range: none is made
 }
 
 // The code point of a well-formed 2- or 3-byte UTF-8 sequence at text[i]
@@ -92,7 +108,7 @@ toml::table parse_toml_text(std::string_view text, const std::string& path) {
         if (text[i] == '\n') ++line;
         if (is_stand_in(decode(text, i, n)))
             throw InputError(path + ":" + std::to_string(line) +
-                             ": a private-use character U+F000 to U+F7FF; expected none in a case file");
+                             ": a private-use character U+E000 to U+EFFF; expected none in a case file");
     }
     toml::table root = toml::parse(map_characters(text, unsafe, stand_in), path);
     restore_strings(root);

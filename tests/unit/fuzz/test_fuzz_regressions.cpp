@@ -3,34 +3,23 @@
 // the fuzzer calls: each must now end in a located InputError, a solved
 // scene or a clean refusal by the beam level.
 #include "case_harness.hpp"
+#include "support/program_run.hpp"  // slurp
 
 #include <catch2/catch.hpp>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
 using coremodal::fuzz::Outcome;
 using coremodal::fuzz::run_case_text;
-
-namespace {
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-}  // namespace
+using coremodal::testing::slurp;
 
 TEST_CASE("Every kept fuzzer crash now runs through the harness cleanly", "[fuzz]") {
     const fs::path kept = fs::path(COREMODAL_SOURCE_DIR) / "tests" / "fuzz_regressions";
     for (const auto& entry : fs::directory_iterator(kept)) {
         if (entry.path().filename() == "README.md") continue;
-        DYNAMIC_SECTION(entry.path().filename().string()) { CHECK_NOTHROW(run_case_text(read(entry.path()))); }
+        DYNAMIC_SECTION(entry.path().filename().string()) { CHECK_NOTHROW(run_case_text(slurp(entry.path()))); }
     }
 }
 
@@ -41,7 +30,7 @@ TEST_CASE("The harness solves every shipped case at the beam level", "[fuzz]") {
         for (const auto& entry : fs::directory_iterator(fs::path(COREMODAL_SOURCE_DIR) / folder)) {
             if (entry.path().extension() != ".toml") continue;
             DYNAMIC_SECTION(entry.path().filename().string()) {
-                CHECK(run_case_text(read(entry.path()), entry.path().string()) == Outcome::solved);
+                CHECK(run_case_text(slurp(entry.path()), entry.path().string()) == Outcome::solved);
             }
         }
 }
