@@ -38,7 +38,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # the app tests (the same code on larger meshes, or the program as a child
 # process). Its time: docs/validation.md, "Reliability".
 spec=${1:-"~[app]~[hard]~[cases]~[e2e]~[beam_vs_solid]"}
-time build-asan/tests/coremodal_tests "$spec" --durations yes > build-asan/tests.log 2>&1 || {
+# Capped: a selection grown too slow fails here instead of overrunning CI's budget.
+time timeout 1200 build-asan/tests/coremodal_tests "$spec" --durations yes > build-asan/tests.log 2>&1 || {
   tail -n 80 build-asan/tests.log
   echo "sanitize: tests failed or a sanitizer reported (build-asan/tests.log)" >&2
   exit 1
