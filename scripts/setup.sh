@@ -9,13 +9,15 @@
 #                         download, 806 MB installed; 1-6 min.
 #   COREMODAL_EXTRAS=1    pandas and meshio for Results.to_pandas/to_meshio
 #                         and their tests (skipped without them); 41 MB.
+#
+# Extra package names as arguments are installed the same way (scripts/fuzz.sh: clang).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
           petsc-dev slepc-dev libopenblas0-pthread
           libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
           catch2 libtomlplusplus-dev libcli11-dev
           python3 python3-h5py python3-numpy python3-matplotlib python3-pytest
-          python3-pil python3-pip python3-setuptools)
+          python3-pil python3-pip python3-setuptools "$@")
 if [ "${COREMODAL_PARAVIEW:-0}" = 1 ]; then
   packages+=(paraview python3-paraview xvfb)
 fi

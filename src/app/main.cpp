@@ -1,11 +1,13 @@
 // coremodal: natural modes of paper-roll cores, rest rolls and their chucks.
 //
 //   coremodal run CASE.toml [--output DIR] [--mesh LEVEL] [PETSc/SLEPc options]
+//   coremodal check CASE.toml [--model LEVEL] [--mesh LEVEL]  (validate; print the resolved scene, no solve)
 //   coremodal beam ...      (beam formulas, no mesh)
 //   coremodal batch ...     (many cases, in parallel processes)
 //   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
 //   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
 //   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
+//   coremodal --version
 //
 // PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
 // mumps, -eps_view) may follow anywhere; they are applied after coremodal's
@@ -15,10 +17,15 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
+#include "scene/case_schema.hpp"  // nearest: "did you mean"
 
+#include <gmsh.h>  // GMSH_API_VERSION
 #include <slepcsys.h>
 
+#include <algorithm>
+#include <cctype>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,6 +62,66 @@ SplitArgs split_arguments(int argc, char** argv) {
     return s;
 }
 
+#define COREMODAL_STRINGIFY(x) #x
+#define COREMODAL_VERSION_OF(major, minor, patch) \
+    COREMODAL_STRINGIFY(major) "." COREMODAL_STRINGIFY(minor) "." COREMODAL_STRINGIFY(patch)
+
+// The versions this binary was built against (the headers'; Debian's
+// packages keep the libraries at the same version).
+constexpr const char* kVersionText =
+    "coremodal " COREMODAL_VERSION " (built with PETSc " COREMODAL_VERSION_OF(
+        PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR) ", SLEPc " COREMODAL_VERSION_OF(SLEPC_VERSION_MAJOR, SLEPC_VERSION_MINOR, SLEPC_VERSION_SUBMINOR) ", gmsh " GMSH_API_VERSION ")";
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+    return out;
+}
+
+// " did you mean 'x'?" when one of `candidates` is near `word`, else "".
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+    const std::vector<std::string_view> views(candidates.begin(), candidates.end());
+    const std::string_view near = coremodal::nearest(word, views);
+    return near.empty() ? "" : "; did you mean '" + std::string(near) + "'?";
+}
+
+// What CLI11 says tersely about a mistyped command line, said with the
+// word that was typed and the nearest valid one: a command that does not
+// exist (CLI11: "A subcommand is required") and an option the command does
+// not have (CLI11: "The following argument was not expected"). Empty when
+// the mistake is another kind; CLI11's own message then stands.
+std::optional<std::string> explain_parse_error(const std::vector<coremodal::Command>& commands,
+                                               const std::vector<std::string>& args) {
+    std::vector<std::string> names;
+    for (const coremodal::Command& c : commands) names.push_back(c.cli->get_name());
+    const auto word = std::find_if(args.begin() + 1, args.end(), [](const std::string& a) { return a[0] != '-'; });
+    if (word == args.end())
+        return args.size() == 1 ? std::optional("no command given; expected one of " + joined(names)) : std::nullopt;
+    const auto command = std::find(names.begin(), names.end(), *word);
+    if (command == names.end()) {
+        const bool case_file = word->ends_with(".toml");
+        return "unknown command '" + *word + "'" +
+               (case_file ? "; did you mean 'coremodal run " + *word + "' or 'coremodal check " + *word + "'?"
+                          : suggestion(*word, names)) +
+               "; expected one of " + joined(names);
+    }
+    std::vector<std::string> options;
+    for (const CLI::Option* o : commands[command - names.begin()].cli->get_options()) {
+        for (const std::string& n : o->get_lnames()) options.push_back("--" + n);
+        for (const std::string& n : o->get_snames()) options.push_back("-" + n);
+    }
+    for (auto a = word + 1; a != args.end(); ++a) {
+        const std::string name = a->substr(0, a->find('='));
+        // Not an option: a value, a negative number, or one the command has.
+        if (name.size() < 2 || name[0] != '-' || std::isdigit(static_cast<unsigned char>(name[1])) ||
+            std::find(options.begin(), options.end(), name) != options.end())
+            continue;
+        return "coremodal " + *word + ": unknown option '" + name + "'" + suggestion(name, options) +
+               "; expected one of " + joined(options) + " ('coremodal " + *word + " --help' says what they do)";
+    }
+    return std::nullopt;
+}
+
 int report_error(const char* kind, const std::exception& e) {
     coremodal::wait_if_interrupted();  // an error the interrupt's clean-up caused is no news
     int mpi_up = 0;
@@ -86,16 +153,21 @@ int main(int argc, char** argv) {
     CLI::App app{"coremodal " COREMODAL_VERSION
                  ": natural modes of paper-roll cores, rest rolls and chucks (gmsh, PETSc, SLEPc)"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", kVersionText);
     const std::vector<coremodal::Command> commands = {
-        coremodal::add_run_command(app),      coremodal::add_beam_command(app),
-        coremodal::add_batch_command(app),    coremodal::add_converge_command(app),
-        coremodal::add_study_command(app),    coremodal::add_calibrate_command(app)};
+        coremodal::add_run_command(app),      coremodal::add_check_command(app),
+        coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
+        coremodal::add_converge_command(app), coremodal::add_study_command(app),
+        coremodal::add_calibrate_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {
         app.parse(static_cast<int>(args.ours.size()), ours.data());
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        const std::optional<std::string> explained = e.get_exit_code() ? explain_parse_error(commands, args.ours) : std::nullopt;
+        if (!explained) return app.exit(e);
+        std::cerr << "coremodal: error: " << *explained << std::endl;
+        return e.get_exit_code();
     }
     const coremodal::Command* chosen = nullptr;
     for (const auto& c : commands)
@@ -116,6 +188,7 @@ int main(int argc, char** argv) {
     coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
     const int status = run_guarded(*chosen);
     coremodal::wait_if_interrupted();
+    PetscPopErrorHandler();  // PETSc's -malloc_dump lists the handler's 32 bytes otherwise
     SlepcFinalize();
     return status;
 }

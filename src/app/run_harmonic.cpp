@@ -335,15 +335,11 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
     return std::nullopt;
 }
 
-namespace {
-
 void require_axisymmetric(const Scene& scene) {
     if (const auto why = why_not_axisymmetric(scene))
         throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
                          "; expected full bands and no [mesh] file, or model = \"solid\"");
 }
-
-}  // namespace
 
 RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
     const bool root = mpi_rank() == 0;

@@ -16,8 +16,11 @@ namespace coremodal {
 // nothing when it can.
 std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 
-// The harmonic run; an InputError naming the case file and
-// why_not_axisymmetric's reason for a scene it cannot solve.
+// An InputError naming the case file and why_not_axisymmetric's reason,
+// for a scene the harmonic level cannot solve (`run` and `check` refuse it alike).
+void require_axisymmetric(const Scene& scene);
+
+// The harmonic run; require_axisymmetric first.
 RunReport run_harmonic_scene(Scene scene, const RunOptions& options);
 
 }  // namespace coremodal

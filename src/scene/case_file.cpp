@@ -12,6 +12,7 @@
 #include "scene/chuck_contact.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/toml_text.hpp"
 #include "scene/units.hpp"
 
 #include <toml++/toml.h>
@@ -1063,14 +1064,18 @@ Scene parse_case_table(const toml::table& root, const std::string& path) { retur
 Scene parse_case_text(std::string_view text, const std::string& path) {
     toml::table root;
     try {
-        root = toml::parse(text, path);
+        root = parse_toml_text(text, path);
     } catch (const toml::parse_error& e) {
         const auto& at = e.source().begin;
         throw InputError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
-                         ": TOML syntax error: " + printable(e.description()) +
+                         ": TOML syntax error: " + printable(restore_characters(e.description())) +
                          "; expected a valid TOML case file (docs/case-files.md)");
     }
-    return parse_case_table(root, path);
+    try {
+        return parse_case_table(root, path);
+    } catch (const InputError& e) {  // a key echoed in a message: the user's characters
+        throw InputError(restore_characters(e.what()));
+    }
 }
 
 Scene parse_case_file(const std::string& path) {

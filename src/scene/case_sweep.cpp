@@ -7,6 +7,7 @@
 #include "scene/case_schema.hpp"
 #include "scene/case_table.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/toml_text.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -351,7 +352,7 @@ private:
     void check_words(const CaseSweep::Impl& out, const std::vector<KeyPath>& paths, const std::vector<Value>& values,
                      const toml::array& list, const std::string& what) const {
         for (size_t v = 0; v < values.size(); ++v) {
-            toml::table doc = toml::parse(out.text, path_);
+            toml::table doc = parse_toml_text(out.text, path_);
             out.apply_options(doc);
             for (const KeyPath& path : paths) CaseSweep::Impl::set(doc, path, values[v]);
             try {
@@ -586,7 +587,7 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
     impl->name = base.name;
     impl->table = std::string(table);
     impl->text = std::move(text);
-    const toml::table root = toml::parse(impl->text, path);
+    const toml::table root = parse_toml_text(impl->text, path);
     SweepReader(path, table).read(root, *impl, mesh_override);
     CaseSweep sweep;
     sweep.impl_ = std::move(impl);
@@ -643,7 +644,7 @@ Scene CaseSweep::scene(int point) const {
     const std::vector<int> index = value_indices(point);
     // Parsed afresh for every point: toml++ does not copy source positions,
     // and the case reader's messages need them.
-    toml::table doc = toml::parse(impl_->text, impl_->path);
+    toml::table doc = parse_toml_text(impl_->text, impl_->path);
     impl_->apply_options(doc);
     for (size_t p = 0; p < index.size(); ++p)
         for (const KeyPath& path : impl_->paths[p]) Impl::set(doc, path, impl_->values[p][index[p]]);
