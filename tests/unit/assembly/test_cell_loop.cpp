@@ -145,7 +145,7 @@ TEST_CASE("Cell loop, solid with chucks: an Eigen sink gets the same K and M as 
             // Springs to the ground (bearings to frames to the ground) resist it; the spring layers do not.
         }
         // The curved cells lose a^4/30 of the section's area (8 around: a = pi/8, 8e-4).
-        CHECK(mass == Approx(expected_mass(s)).epsilon(1e-3));
+        CHECK(mass == Approx(s.mass_from_dimensions()).epsilon(1e-3));
     }
     SECTION("The run's PETSc matrices hold exactly what the sink got") {
         const OperatorSet ops = assemble_petsc(mesh, materials, dofs, supports.couplings, PETSC_COMM_SELF);
@@ -185,7 +185,7 @@ TEST_CASE("Cell loop, harmonic: a dense sink gets the run's K_n and M_n; free ri
         const Eigen::MatrixXd& K = sink.A.at(Term::stiffness);
         const Eigen::MatrixXd& M = sink.A.at(Term::mass);
         CHECK((K - K.transpose()).norm() <= 1e-13 * K.norm());
-        CHECK(mass == Approx(expected_mass(s)).epsilon(1e-12));  // exact in theta: no curved-cell loss
+        CHECK(mass == Approx(s.mass_from_dimensions()).epsilon(1e-12));  // exact in theta: no curved-cell loss
 
         const HarmonicSystem run = assemble_harmonic(s, section, materials, n, PETSC_COMM_SELF);
         CHECK(relative_difference(dense_of(run.operators.K()), K) < 1e-14);
