@@ -39,57 +39,64 @@ struct Spec {
     double min = -kInf, max = kInf;
     bool min_exclusive = false;
     std::string_view what = "";  // how to name the quantity when not its dimension ("a line load")
+    // Where the default comes from: "paper" (Jorkama & von Hertzen's example),
+    // "assumed" (ours: listed in the results), "" (a setting, not physics).
+    std::string_view origin = "";
 };
 
-Spec length(std::string_view t, std::string_view k, double min, double max, bool open = true) {
-    return {t, k, Kind::quantity, Dimension::length, min, max, open};
+constexpr std::string_view kPaper = "paper", kAssumed = "assumed";
+
+Spec length(std::string_view t, std::string_view k, std::string_view origin, bool open = true) {
+    return {t, k, Kind::quantity, Dimension::length, 0.0, k == "length" || k == "width" ? kMaxLength : kMaxDiameter,
+            open, "", origin};
 }
-Spec positive(std::string_view t, std::string_view k, Dimension d, double max) {
-    return {t, k, Kind::quantity, d, 0.0, max, true};
+Spec positive(std::string_view t, std::string_view k, Dimension d, double max, std::string_view origin) {
+    return {t, k, Kind::quantity, d, 0.0, max, true, "", origin};
 }
-Spec line_load(std::string_view t, std::string_view k) {
-    return {t, k, Kind::quantity, Dimension::stiffness, 0.0, kMaxLineLoad, false, "a line load"};
+Spec line_load(std::string_view t, std::string_view k, std::string_view origin) {
+    return {t, k, Kind::quantity, Dimension::stiffness, 0.0, kMaxLineLoad, false, "a line load", origin};
 }
-Spec ratio(std::string_view t, std::string_view k, double max) {
-    return {t, k, Kind::quantity, Dimension::dimensionless, 0.0, max};
+Spec ratio(std::string_view t, std::string_view k, double max, std::string_view origin) {
+    return {t, k, Kind::quantity, Dimension::dimensionless, 0.0, max, false, "", origin};
 }
-Spec whole(std::string_view t, std::string_view k, double min, double max) {
-    return {t, k, Kind::integer, Dimension::dimensionless, min, max};
+Spec whole(std::string_view t, std::string_view k, double min, double max, std::string_view origin = "") {
+    return {t, k, Kind::integer, Dimension::dimensionless, min, max, false, "", origin};
 }
-Spec plain(std::string_view t, std::string_view k, Kind kind) { return {t, k, kind}; }
+Spec plain(std::string_view t, std::string_view k, Kind kind, std::string_view origin = "") {
+    return {t, k, kind, Dimension::dimensionless, -kInf, kInf, false, "", origin};
+}
 
 const std::vector<Spec>& schema() {
     static const std::vector<Spec> s = {
         plain("", "name", Kind::text), plain("", "description", Kind::text), plain("", "winder", Kind::table),
-        positive("winder", "web_speed", Dimension::speed, kMaxSpeed),
+        positive("winder", "web_speed", Dimension::speed, kMaxSpeed, kAssumed),
         plain("winder", "drums", Kind::table), plain("winder", "rolls", Kind::table),
         plain("winder", "rider", Kind::table), plain("winder", "damping", Kind::table),
         plain("winder", "sweep", Kind::table),
-        length("winder.drums", "outer_diameter", 0, kMaxDiameter), length("winder.drums", "wall", 0, kMaxDiameter),
-        length("winder.drums", "length", 0, kMaxLength), length("winder.drums", "gap", 0, kMaxDiameter),
-        plain("winder.drums", "material", Kind::text),
-        positive("winder.drums", "bearing_stiffness", Dimension::stiffness, kMaxStiffness),
-        positive("winder.drums", "bearing_stiffness_horizontal", Dimension::stiffness, kMaxStiffness),
-        line_load("winder.drums", "line_load"), whole("winder.drums", "elements", 4, 400),
-        whole("winder.rolls", "count", 1, 50), length("winder.rolls", "width", 0, kMaxLength),
-        length("winder.rolls", "gap", 0, kMaxLength, false),
-        length("winder.rolls", "core_inner_diameter", 0, kMaxDiameter),
-        length("winder.rolls", "core_outer_diameter", 0, kMaxDiameter),
-        plain("winder.rolls", "core_material", Kind::text), plain("winder.rolls", "paper_material", Kind::text),
-        positive("winder.rolls", "paper_density", Dimension::density, 1e5),
-        positive("winder.rolls", "radial_modulus", Dimension::pressure, 1e13),
-        {"winder.rolls", "poisson", Kind::quantity, Dimension::dimensionless, 0.0, 0.49},
-        plain("winder.rolls", "model", Kind::text),
-        length("winder.rolls", "diameter_start", 0, kMaxDiameter),
-        length("winder.rolls", "diameter_end", 0, kMaxDiameter),
-        length("winder.rider", "outer_diameter", 0, kMaxDiameter), length("winder.rider", "wall", 0, kMaxDiameter),
-        length("winder.rider", "length", 0, kMaxLength), plain("winder.rider", "material", Kind::text),
-        positive("winder.rider", "support_stiffness", Dimension::stiffness, kMaxStiffness),
-        line_load("winder.rider", "line_load"), whole("winder.rider", "elements", 2, 400),
-        ratio("winder.damping", "drums", kMaxDamping), ratio("winder.damping", "nips", kMaxDamping),
-        ratio("winder.damping", "rider", kMaxDamping),
-        whole("winder.sweep", "points", 2, 2000), whole("winder.sweep", "harmonics", 1, 12),
-        positive("winder.sweep", "max_frequency", Dimension::frequency, 1e5),
+        length("winder.drums", "outer_diameter", kPaper), length("winder.drums", "wall", kPaper),
+        length("winder.drums", "length", kPaper), length("winder.drums", "gap", kAssumed),
+        plain("winder.drums", "material", Kind::text, kAssumed),
+        positive("winder.drums", "bearing_stiffness", Dimension::stiffness, kMaxStiffness, kAssumed),
+        positive("winder.drums", "bearing_stiffness_horizontal", Dimension::stiffness, kMaxStiffness, kAssumed),
+        line_load("winder.drums", "line_load", ""), whole("winder.drums", "elements", 4, 400),
+        whole("winder.rolls", "count", 1, 50, kPaper), length("winder.rolls", "width", kPaper),
+        length("winder.rolls", "gap", kAssumed, false), length("winder.rolls", "core_inner_diameter", kAssumed),
+        length("winder.rolls", "core_outer_diameter", kAssumed),
+        plain("winder.rolls", "core_material", Kind::text, kAssumed),
+        plain("winder.rolls", "paper_material", Kind::text, kAssumed),
+        positive("winder.rolls", "paper_density", Dimension::density, 1e5, kAssumed),
+        positive("winder.rolls", "radial_modulus", Dimension::pressure, 1e13, kPaper),
+        {"winder.rolls", "poisson", Kind::quantity, Dimension::dimensionless, 0.0, 0.49, false, "", kPaper},
+        plain("winder.rolls", "model", Kind::text), length("winder.rolls", "diameter_start", kPaper),
+        length("winder.rolls", "diameter_end", kPaper),
+        length("winder.rider", "outer_diameter", kAssumed), length("winder.rider", "wall", kAssumed),
+        length("winder.rider", "length", kPaper), plain("winder.rider", "material", Kind::text, kAssumed),
+        positive("winder.rider", "support_stiffness", Dimension::stiffness, kMaxStiffness, kAssumed),
+        line_load("winder.rider", "line_load", kAssumed), whole("winder.rider", "elements", 2, 400),
+        ratio("winder.damping", "drums", kMaxDamping, kAssumed), ratio("winder.damping", "nips", kMaxDamping, kAssumed),
+        ratio("winder.damping", "rider", kMaxDamping, kAssumed),
+        whole("winder.sweep", "points", 2, 2000), whole("winder.sweep", "harmonics", 1, 12, kPaper),
+        positive("winder.sweep", "max_frequency", Dimension::frequency, 1e5, ""),
         plain("winder.sweep", "response_drum", Kind::text), plain("winder.sweep", "response_direction", Kind::text),
     };
     return s;
@@ -117,8 +124,11 @@ std::string join(const std::vector<std::string_view>& words) {
 // The value roughly as written, for messages.
 std::string shown(const toml::node& node) {
     if (node.is_table()) return "{...}";
-    if (node.is_string()) return "\"" + std::string(*node.value<std::string_view>()) + "\"";
     std::ostringstream out;
+    if (node.is_string()) {
+        out << '"' << *node.value<std::string_view>() << '"';
+        return out.str();
+    }
     node.visit([&](const auto& v) { out << v; });
     return out.str();
 }
@@ -135,19 +145,21 @@ public:
         scene.description = text(root, "", "description").value_or("");
         const toml::table* winder = root["winder"].as_table();
         if (!winder) fail(root.source(), "no [winder] table; expected a winder case file (docs/winder.md)");
-        scene.web_speed = quantity(*winder, "winder", "web_speed").value_or(scene.web_speed);
+        take(*winder, "winder", "web_speed", scene.web_speed);
         read_drums(sub(*winder, "drums"), scene.drums);
         read_rolls(sub(*winder, "rolls"), scene.rolls);
         read_rider(sub(*winder, "rider"), scene.rider);
         read_damping(sub(*winder, "damping"), scene.damping);
         read_sweep(sub(*winder, "sweep"), scene.sweep);
         check_geometry(*winder, scene);
+        scene.defaults = std::move(defaults_);
         return scene;
     }
 
 private:
     std::string path_;
     const toml::table empty_;
+    std::vector<std::string> defaults_;  // "[winder.drums] gap = 0.1 m (assumed)"
 
     [[noreturn]] void fail(const toml::source_region& where, const std::string& what) const {
         const std::string at = where.begin.line == 0 ? path_ + ": "
@@ -157,7 +169,9 @@ private:
     }
 
     static std::string display(std::string_view table, std::string_view key) {
-        return table.empty() ? std::string(key) : "[" + std::string(table) + "] " + std::string(key);
+        std::string out;
+        if (!table.empty()) out.append("[").append(table).append("] ");
+        return out.append(key);
     }
 
     // Unknown keys and value kinds of one table, then its sub-tables' own checks.
@@ -248,10 +262,27 @@ private:
         return static_cast<int>(v);
     }
 
+    // A default in use, listed in the results when it is physics (paper or assumed).
+    void note_default(std::string_view table, std::string_view key, const std::string& value) {
+        const Spec& spec = *find_spec(table, key);
+        if (!spec.origin.empty()) defaults_.push_back(display(table, key) + " = " + value + " (" + std::string(spec.origin) + ")");
+    }
+    void take(const toml::table& t, std::string_view table, std::string_view key, double& field) {
+        if (const auto v = quantity(t, table, key)) field = *v;
+        else note_default(table, key, format_quantity(field, find_spec(table, key)->dimension));
+    }
+    void take(const toml::table& t, std::string_view table, std::string_view key, int& field) {
+        if (const auto v = integer(t, table, key)) field = *v;
+        else note_default(table, key, std::to_string(field));
+    }
+
     std::string material(const toml::table& t, std::string_view table, std::string_view key,
-                         const std::string& fallback) const {
+                         const std::string& fallback) {
         const auto name = text(t, table, key);
-        if (!name) return fallback;
+        if (!name) {
+            note_default(table, key, "\"" + fallback + "\"");
+            return fallback;
+        }
         if (!find_library_material(*name)) {
             std::vector<std::string_view> names;
             for (const auto& m : material_library()) names.push_back(m.name);
@@ -271,81 +302,84 @@ private:
         fail(t.get(key)->source(), display(table, key) + " = \"" + *value + "\": expected one of " + join(choices));
     }
 
-    void read_drums(const toml::table& t, WinderDrums& d) const {
+    void read_drums(const toml::table& t, WinderDrums& d) {
         constexpr std::string_view tb = "winder.drums";
-        d.outer_diameter = quantity(t, tb, "outer_diameter").value_or(d.outer_diameter);
-        d.wall = quantity(t, tb, "wall").value_or(d.wall);
-        d.length = quantity(t, tb, "length").value_or(d.length);
-        d.gap = quantity(t, tb, "gap").value_or(d.gap);
+        take(t, tb, "outer_diameter", d.outer_diameter);
+        take(t, tb, "wall", d.wall);
+        take(t, tb, "length", d.length);
+        take(t, tb, "gap", d.gap);
         d.material = material(t, tb, "material", d.material);
-        d.bearing_stiffness_vertical = quantity(t, tb, "bearing_stiffness").value_or(d.bearing_stiffness_vertical);
-        d.bearing_stiffness_horizontal =
-            quantity(t, tb, "bearing_stiffness_horizontal").value_or(d.bearing_stiffness_vertical);
+        take(t, tb, "bearing_stiffness", d.bearing_stiffness_vertical);
+        d.bearing_stiffness_horizontal = d.bearing_stiffness_vertical;
+        if (const auto h = quantity(t, tb, "bearing_stiffness_horizontal")) d.bearing_stiffness_horizontal = *h;
         d.line_load = quantity(t, tb, "line_load");
-        d.elements = integer(t, tb, "elements").value_or(d.elements);
+        take(t, tb, "elements", d.elements);
         if (!(d.wall < d.outer_diameter / 2))
-            fail(t.get("wall")->source(), "[winder.drums] wall = " + significant(d.wall) +
-                                              " m must be less than half the outer diameter (" +
-                                              significant(d.outer_diameter) + " m)");
+            fail(t.get("wall") ? t.get("wall")->source() : t.source(),
+                 "[winder.drums] wall = " + significant(d.wall) + " m must be less than half the outer diameter (" +
+                     significant(d.outer_diameter) + " m)");
     }
 
-    void read_rolls(const toml::table& t, WinderRolls& r) const {
+    void read_rolls(const toml::table& t, WinderRolls& r) {
         constexpr std::string_view tb = "winder.rolls";
-        r.count = integer(t, tb, "count").value_or(r.count);
-        r.width = quantity(t, tb, "width").value_or(r.width);
-        r.gap = quantity(t, tb, "gap").value_or(r.gap);
-        r.core_inner_diameter = quantity(t, tb, "core_inner_diameter").value_or(r.core_inner_diameter);
-        r.core_outer_diameter = quantity(t, tb, "core_outer_diameter").value_or(r.core_outer_diameter);
+        take(t, tb, "count", r.count);
+        take(t, tb, "width", r.width);
+        take(t, tb, "gap", r.gap);
+        take(t, tb, "core_inner_diameter", r.core_inner_diameter);
+        take(t, tb, "core_outer_diameter", r.core_outer_diameter);
         r.core_material = material(t, tb, "core_material", r.core_material);
         r.paper_material = material(t, tb, "paper_material", r.paper_material);
-        r.paper_density = quantity(t, tb, "paper_density").value_or(r.paper_density);
-        r.radial_modulus = quantity(t, tb, "radial_modulus").value_or(r.radial_modulus);
-        r.poisson = quantity(t, tb, "poisson").value_or(r.poisson);
+        take(t, tb, "paper_density", r.paper_density);
+        take(t, tb, "radial_modulus", r.radial_modulus);
+        take(t, tb, "poisson", r.poisson);
         if (auto m = choice(t, tb, "model", {"rigid", "beam"})) r.model = static_cast<RollModel>(*m);
-        r.diameter_start = quantity(t, tb, "diameter_start").value_or(r.diameter_start);
-        r.diameter_end = quantity(t, tb, "diameter_end").value_or(r.diameter_end);
-        const toml::source_region& at = t.source();
-        if (!(r.core_inner_diameter < r.core_outer_diameter))
-            fail(t.get("core_inner_diameter") ? t.get("core_inner_diameter")->source() : at,
-                 "[winder.rolls] core_inner_diameter = " + significant(r.core_inner_diameter) +
-                     " m must be less than core_outer_diameter = " + significant(r.core_outer_diameter) + " m");
-        if (!(r.diameter_start >= r.core_outer_diameter))
-            fail(t.get("diameter_start") ? t.get("diameter_start")->source() : at,
-                 "[winder.rolls] diameter_start = " + significant(r.diameter_start) +
-                     " m is smaller than the core (core_outer_diameter = " + significant(r.core_outer_diameter) +
-                     " m); expected a roll diameter at least the core's");
-        if (!(r.diameter_end > r.diameter_start))
-            fail(t.get("diameter_end") ? t.get("diameter_end")->source() : at,
-                 "[winder.rolls] diameter_end = " + significant(r.diameter_end) +
-                     " m must be larger than diameter_start = " + significant(r.diameter_start) + " m");
+        take(t, tb, "diameter_start", r.diameter_start);
+        take(t, tb, "diameter_end", r.diameter_end);
+        check_rolls(t, r);
     }
 
-    void read_rider(const toml::table& t, WinderRider& r) const {
+    void check_rolls(const toml::table& t, const WinderRolls& r) const {
+        const auto at = [&](std::string_view key) { return t.get(key) ? t.get(key)->source() : t.source(); };
+        if (!(r.core_inner_diameter < r.core_outer_diameter))
+            fail(at("core_inner_diameter"), "[winder.rolls] core_inner_diameter = " + significant(r.core_inner_diameter) +
+                                                " m must be less than core_outer_diameter = " +
+                                                significant(r.core_outer_diameter) + " m");
+        if (!(r.diameter_start >= r.core_outer_diameter))
+            fail(at("diameter_start"), "[winder.rolls] diameter_start = " + significant(r.diameter_start) +
+                                           " m is smaller than the core (core_outer_diameter = " +
+                                           significant(r.core_outer_diameter) +
+                                           " m); expected a roll diameter at least the core's");
+        if (!(r.diameter_end > r.diameter_start))
+            fail(at("diameter_end"), "[winder.rolls] diameter_end = " + significant(r.diameter_end) +
+                                         " m must be larger than diameter_start = " + significant(r.diameter_start) + " m");
+    }
+
+    void read_rider(const toml::table& t, WinderRider& r) {
         constexpr std::string_view tb = "winder.rider";
-        r.outer_diameter = quantity(t, tb, "outer_diameter").value_or(r.outer_diameter);
-        r.wall = quantity(t, tb, "wall").value_or(r.wall);
-        r.length = quantity(t, tb, "length").value_or(r.length);
+        take(t, tb, "outer_diameter", r.outer_diameter);
+        take(t, tb, "wall", r.wall);
+        take(t, tb, "length", r.length);
         r.material = material(t, tb, "material", r.material);
-        r.support_stiffness = quantity(t, tb, "support_stiffness").value_or(r.support_stiffness);
-        r.line_load = quantity(t, tb, "line_load").value_or(r.line_load);
-        r.elements = integer(t, tb, "elements").value_or(r.elements);
+        take(t, tb, "support_stiffness", r.support_stiffness);
+        take(t, tb, "line_load", r.line_load);
+        take(t, tb, "elements", r.elements);
         if (!(r.wall < r.outer_diameter / 2))
             fail(t.get("wall") ? t.get("wall")->source() : t.source(),
                  "[winder.rider] wall = " + significant(r.wall) + " m must be less than half the outer diameter (" +
                      significant(r.outer_diameter) + " m)");
     }
 
-    void read_damping(const toml::table& t, WinderDamping& d) const {
-        d.drums = quantity(t, "winder.damping", "drums").value_or(d.drums);
-        d.nips = quantity(t, "winder.damping", "nips").value_or(d.nips);
-        d.rider = quantity(t, "winder.damping", "rider").value_or(d.rider);
+    void read_damping(const toml::table& t, WinderDamping& d) {
+        take(t, "winder.damping", "drums", d.drums);
+        take(t, "winder.damping", "nips", d.nips);
+        take(t, "winder.damping", "rider", d.rider);
     }
 
-    void read_sweep(const toml::table& t, WinderSweep& s) const {
+    void read_sweep(const toml::table& t, WinderSweep& s) {
         constexpr std::string_view tb = "winder.sweep";
-        s.points = integer(t, tb, "points").value_or(s.points);
-        s.harmonics = integer(t, tb, "harmonics").value_or(s.harmonics);
-        s.max_frequency = quantity(t, tb, "max_frequency").value_or(s.max_frequency);
+        take(t, tb, "points", s.points);
+        take(t, tb, "harmonics", s.harmonics);
+        take(t, tb, "max_frequency", s.max_frequency);
         if (auto c = choice(t, tb, "response_drum", {"front", "rear"})) s.response_drum = static_cast<DrumSide>(*c);
         if (auto c = choice(t, tb, "response_direction", {"vertical", "horizontal"}))
             s.response_direction = static_cast<ResponseDirection>(*c);

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace coremodal {
 
@@ -112,6 +113,9 @@ struct WinderScene {
     WinderRider rider;
     WinderDamping damping;
     WinderSweep sweep;
+    // The defaults in use that are physics, each with its origin:
+    // "[winder.drums] gap = 0.1 m (assumed)", "... (paper)".
+    std::vector<std::string> defaults;
 };
 
 // Reads a winder case file. Throws InputError (file:line:col, the key, what

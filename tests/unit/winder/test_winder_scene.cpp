@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 
 using namespace coremodal;
@@ -38,6 +39,15 @@ TEST_CASE("A bare [winder] table gives the paper's example winder", "[winder][sc
     CHECK(s.rolls.model == RollModel::rigid);
     CHECK(!s.drums.line_load);
     CHECK(s.drums.bearing_stiffness_horizontal == s.drums.bearing_stiffness_vertical);
+    // Every physical default in use is listed with where it comes from.
+    const auto listed = [&](const std::string& line) {
+        return std::find(s.defaults.begin(), s.defaults.end(), line) != s.defaults.end();
+    };
+    CHECK(listed("[winder.drums] outer_diameter = 0.85 m (paper)"));
+    CHECK(listed("[winder.drums] gap = 0.1 m (assumed)"));
+    CHECK(listed("[winder.rolls] radial_modulus = 9.8 MPa (paper)"));
+    CHECK(listed("[winder.rider] material = \"steel\" (assumed)"));
+    CHECK(!listed("[winder.sweep] points = 57"));  // a setting, not physics
 }
 
 TEST_CASE("Winder values take units and land in SI", "[winder][scene]") {
@@ -63,6 +73,8 @@ response_direction = "horizontal"
 )",
                                            "w.toml");
     CHECK(s.name == "mill 3");
+    CHECK(std::none_of(s.defaults.begin(), s.defaults.end(),
+                       [](const std::string& d) { return d.find("radial_modulus") != std::string::npos; }));
     CHECK(s.web_speed == Approx(40.0));
     CHECK(s.drums.outer_diameter == Approx(1.0));
     CHECK(s.drums.bearing_stiffness_vertical == Approx(5e8));
