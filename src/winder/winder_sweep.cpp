@@ -147,7 +147,10 @@ WinderSweepResult run_winder_sweep(const WinderScene& scene, const std::function
     int next_track = 1;
     for (size_t i = 0; i < d.size(); ++i) {
         const WinderModel model = build_winder_model(scene, d[i]);
-        if (i == 0) result.response_dof = response_dof(model, scene.sweep.response_drum, scene.sweep.response_direction);
+        if (i == 0) {
+            result.response_dof = response_dof(model, scene.sweep.response_drum, scene.sweep.response_direction);
+            result.n_dofs = model.n_dofs();
+        }
         const WinderModes modes = solve_winder_modes(model, scene.damping, scene.sweep.max_frequency);
         SweepPoint point = point_of(model, modes, scene, result.response_dof);
         const std::vector<ModeGroup> groups = group_modes(summaries(model, modes));

@@ -69,6 +69,7 @@ struct WinderSweepResult {
     std::vector<SweepPoint> points;
     std::vector<Crossing> crossings;
     int response_dof = 0;
+    int n_dofs = 0;  // of the reduced model (the same at every diameter)
     double time_s = 0;
 };
 
