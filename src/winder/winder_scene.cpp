@@ -314,10 +314,15 @@ private:
         if (const auto h = quantity(t, tb, "bearing_stiffness_horizontal")) d.bearing_stiffness_horizontal = *h;
         d.line_load = quantity(t, tb, "line_load");
         take(t, tb, "elements", d.elements);
-        if (!(d.wall < d.outer_diameter / 2))
-            fail(t.get("wall") ? t.get("wall")->source() : t.source(),
-                 "[winder.drums] wall = " + significant(d.wall) + " m must be less than half the outer diameter (" +
-                     significant(d.outer_diameter) + " m)");
+        check_wall(t, tb, d.wall, d.outer_diameter);
+    }
+
+    // A tube's wall must leave a bore.
+    void check_wall(const toml::table& t, std::string_view table, double wall, double outer_diameter) const {
+        if (wall < outer_diameter / 2) return;
+        fail(t.get("wall") ? t.get("wall")->source() : t.source(),
+             display(table, "wall") + " = " + significant(wall) + " m must be less than half the outer diameter (" +
+                 significant(outer_diameter) + " m)");
     }
 
     void read_rolls(const toml::table& t, WinderRolls& r) {
@@ -363,10 +368,7 @@ private:
         take(t, tb, "support_stiffness", r.support_stiffness);
         take(t, tb, "line_load", r.line_load);
         take(t, tb, "elements", r.elements);
-        if (!(r.wall < r.outer_diameter / 2))
-            fail(t.get("wall") ? t.get("wall")->source() : t.source(),
-                 "[winder.rider] wall = " + significant(r.wall) + " m must be less than half the outer diameter (" +
-                     significant(r.outer_diameter) + " m)");
+        check_wall(t, tb, r.wall, r.outer_diameter);
     }
 
     void read_damping(const toml::table& t, WinderDamping& d) {
