@@ -32,6 +32,7 @@ cmake --build build-fuzz -j "$(nproc)" 2>&1 | tail -n 5
 } > build-fuzz/case.dict
 
 mkdir -p build-fuzz/corpus build-fuzz/crashes
+rm -f build-fuzz/crashes/*  # a crash left by an earlier run is not this run's
 seeds=(cases)
 compgen -G "tests/fuzz_regressions/*" >/dev/null && seeds+=(tests/fuzz_regressions)
 limit=()
@@ -45,7 +46,10 @@ build-fuzz/case_fuzzer build-fuzz/corpus "${seeds[@]}" -dict=build-fuzz/case.dic
   grep --line-buffered -E "^(#[0-9]+ *(INITED|DONE|pulse)|Done |stat::|==[0-9]+==|SUMMARY|artifact_prefix|Test unit written|.*deadly signal)"
 status=${PIPESTATUS[0]}
 set -e
-if [ "$status" -ne 0 ]; then
+if compgen -G "build-fuzz/crashes/*" >/dev/null; then
   echo "fuzz: the fuzzer found a bug (log: build-fuzz/last-run.log); its input is in build-fuzz/crashes/" >&2
+  exit 1
+elif [ "$status" -ne 0 ]; then
+  echo "fuzz: the fuzzer stopped with status $status but kept no input (interrupted?); log: build-fuzz/last-run.log" >&2
   exit 1
 fi
