@@ -377,7 +377,12 @@ void check_rigid_modes(const RunReport& report) {
         rigid += modes[i].label.type == "rigid";
         lowest_rigid += modes[i].label.type == "rigid" && static_cast<int>(i) < expected;
     }
-    if (rigid == expected && lowest_rigid == expected) return;
+    // Modes are named on rank 0 only: its verdict holds for every rank, so
+    // that all stop together (a rank alone in a collective would wait forever).
+    int ok = rigid == expected && lowest_rigid == expected;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    MPI_Bcast(&rigid, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    if (ok) return;
     throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
                      "(DOMAIN.md section 5), but " + std::to_string(rigid) + " of the lowest " +
                      std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "
