@@ -256,6 +256,12 @@ SolveRequest solve_request(const Scene& scene) {
     return request;
 }
 
+std::string shift_scale_text(const Scene& scene) {
+    const EigenvalueEstimate scale = elastic_eigenvalue_scale(scene, ModeFamilies::beam_and_section);
+    return "      shift from the scale of the first elastic mode: " + scale.family + " estimate, " +
+           significant(std::sqrt(scale.lambda) / (2 * M_PI)) + " Hz";
+}
+
 void print_scene_warnings(const Scene& scene) {
     // `coremodal beam` runs without MPI: then this is the only process.
     int mpi_on = 0;
@@ -328,6 +334,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
+    say(shift_scale_text(scene));
     // The solver's input errors (e.g. more modes than DOFs) are about the
     // case file's [analysis] table: name the file.
     SolvedModes solved = [&] {
