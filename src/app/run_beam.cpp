@@ -134,7 +134,7 @@ RunReport run_beam_scene(Scene scene, const RunOptions& options) {
     const BeamModelResult beam = solve_beam_model(report.scene);
     report.model = model_info(report.scene, beam);
     for (const std::string& w : beam_level_warnings(report.scene, beam)) {
-        if (root && !options.quiet) std::cerr << "coremodal: warning: " << report.scene.source_file << ": " << w << std::endl;
+        if (root) std::cerr << "coremodal: warning: " << report.scene.source_file << ": " << w << std::endl;
         report.warnings.push_back(w);
     }
     report.scene.assumptions.insert(report.scene.assumptions.end(), beam.assumptions.begin(), beam.assumptions.end());

@@ -257,6 +257,12 @@ SolveRequest solve_request(const Scene& scene) {
     return request;
 }
 
+std::string shift_scale_text(const Scene& scene) {
+    const EigenvalueEstimate scale = elastic_eigenvalue_scale(scene, ModeFamilies::beam_and_section);
+    return "      shift from the scale of the first elastic mode: " + scale.family + " estimate, " +
+           significant(std::sqrt(scale.lambda) / (2 * M_PI)) + " Hz";
+}
+
 void print_scene_warnings(const Scene& scene) {
     // `coremodal beam` runs without MPI: then this is the only process.
     int mpi_on = 0;
@@ -329,6 +335,7 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
     say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
+    say(shift_scale_text(scene));
     // The solver's input errors (e.g. more modes than DOFs) are about the
     // case file's [analysis] table: name the file.
     SolvedModes solved = [&] {
@@ -378,7 +385,12 @@ void check_rigid_modes(const RunReport& report) {
         rigid += modes[i].label.type == "rigid";
         lowest_rigid += modes[i].label.type == "rigid" && static_cast<int>(i) < expected;
     }
-    if (rigid == expected && lowest_rigid == expected) return;
+    // Modes are named on rank 0 only: its verdict holds for every rank, so
+    // that all stop together (a rank alone in a collective would wait forever).
+    int ok = rigid == expected && lowest_rigid == expected;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    MPI_Bcast(&rigid, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    if (ok) return;
     throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
                      "(DOMAIN.md section 5), but " + std::to_string(rigid) + " of the lowest " +
                      std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "

@@ -254,8 +254,9 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
         HarmonicModes h = [&] {
             try {
                 return solve_harmonic(system, section, request);
-            } catch (const InputError& e) {  // about the case's [analysis] table: name the file
-                throw InputError(scene.source_file + ": " + e.what());
+            } catch (const InputError& e) {  // about the case's [analysis] table: name the file and the harmonic
+                throw InputError(scene.source_file + ": the problem of wave number n = " + std::to_string(n) +
+                                 " (each is solved on its own): " + e.what());
             }
         }();
         report.timing_s.factor_and_solve += lap.lap();
@@ -362,6 +363,7 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
         " nodes; one eigenproblem per wave number n (SLEPc Krylov-Schur, shift-and-invert with " +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the counts)");
     const SolveRequest request = solve_request(scene);
+    say(shift_scale_text(scene));
     const std::vector<HarmonicModes> harmonics = solve_harmonics(scene, section, materials, request, say, report);
     report.modes.verification = merged_verification(harmonics);
     report.model = harmonic_model_info(scene, section, harmonics, report.model.mass_kg);

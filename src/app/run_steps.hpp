@@ -42,6 +42,8 @@ std::vector<PartMaterial> part_materials(const Scene& scene, const std::vector<s
 // band; the shift's scale from the closed-form estimates of the first elastic
 // mode of every family (beam/eigenvalue_scale.hpp).
 SolveRequest solve_request(const Scene& scene);
+// A progress line: which family's estimate set the shift, and its frequency.
+std::string shift_scale_text(const Scene& scene);
 
 // Rigid-body motions of a free body in three dimensions.
 constexpr int kFreeBodyRigidModes = 6;

@@ -49,6 +49,8 @@ struct Verification {
     // is proven by two counts, N(lower edge) = N(upper edge), without a solve).
     long eigenvalues_below_band = 0;
     bool complete = false;                // the two counts agree
+
+    long modes_found_below_shift() const { return modes_below_shift - eigenvalues_below_band; }
 };
 
 struct ModeSet {

@@ -108,16 +108,19 @@ void model_section(std::ostream& out, const RunReport& r) {
         out << "- **no modes between " << significant(a.f_min_hz.value_or(0.0)) << " and " << significant(*a.f_max_hz)
             << " Hz**: an empty band, proven by the inertia count (as many eigenvalues below its upper edge as "
                "below its lower edge)\n";
-    if (v.eigenvalues_below_band > 0)
-        out << "- " << v.eigenvalues_below_band
-            << " eigenvalues below the band's lower edge were counted (inertia), not computed\n";
+
+    // Modes accounted for below the shift: found, and counted below a band.
+    const long found = v.modes_found_below_shift();
+    const std::string counted = v.eigenvalues_below_band > 0
+                                    ? " and " + std::to_string(v.eigenvalues_below_band) + " counted below the band"
+                                    : std::string();
     if (m.harmonics.empty())
         out << "- inertia count: " << v.negative_pivots_at_shift << " eigenvalues below "
-            << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << v.modes_below_shift
-            << " modes found there: **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
+            << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << found
+            << " modes found there" << counted << ": **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
     else
         out << "- inertia counts, one per harmonic at its own shift (listed above), summed with pairs twice: "
-            << v.negative_pivots_at_shift << " eigenvalues, " << v.modes_below_shift << " modes found: **"
+            << v.negative_pivots_at_shift << " eigenvalues, " << found << " modes found" << counted << ": **"
             << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
 }
 

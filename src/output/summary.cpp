@@ -296,19 +296,24 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
         out << "\nno modes between " << r.scene.analysis.f_min_hz.value_or(0.0) << " and " << *r.scene.analysis.f_max_hz
             << " Hz: an empty band, proven by the inertia count (as many eigenvalues below its upper edge as below "
                "its lower edge)";
+    // Modes accounted for below the shift: found, and counted below a band.
+    const std::string counted =
+        v.eigenvalues_below_band > 0 ? " and " + std::to_string(v.eigenvalues_below_band) + " counted below the band"
+                                     : std::string();
+    const long found = v.modes_found_below_shift();
     if (r.model.harmonics.empty())
         std::snprintf(line, sizeof line,
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots below %.4g Hz "
-                      "for %ld modes found: %s\n",
+                      "for %ld modes found%s: %s\n",
                       v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift,
-                      std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI), v.modes_below_shift,
+                      std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI), found, counted.c_str(),
                       v.complete ? "complete" : "INCOMPLETE");
     else  // one count per harmonic, each at its own shift: summed (pairs twice)
         std::snprintf(line, sizeof line,
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots for %ld modes "
-                      "found, summed over the harmonics' own counts: %s\n",
-                      v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift,
-                      v.modes_below_shift, v.complete ? "complete" : "INCOMPLETE");
+                      "found%s, summed over the harmonics' own counts: %s\n",
+                      v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift, found,
+                      counted.c_str(), v.complete ? "complete" : "INCOMPLETE");
     out << line;
     if (!r.model.harmonics.empty()) out << "harmonics: " << r.model.harmonics << "\n";
     std::snprintf(line, sizeof line, "mass: model %.6g kg, from dimensions %.6g kg\n", r.model.mass_kg,

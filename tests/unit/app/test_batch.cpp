@@ -117,7 +117,14 @@ TEST_CASE("read_batch_summary takes f1, the beam ratio and v_safe = 0.7 pi D f1 
         CHECK(d.f1_hz);
         CHECK_FALSE(d.v_safe_m_s);
     }
-    SECTION("no bending mode found (written as 0) leaves f1 empty") {
+    SECTION("no bending mode found (written as null since issue 11) leaves f1 empty") {
+        BatchCase d;
+        read_batch_summary(d, R"({"beam": {"fe_first_bending_hz": null, "fe_over_timoshenko": null}, "case": {}})");
+        CHECK_FALSE(d.f1_hz);
+        CHECK_FALSE(d.fe_over_timoshenko);
+        CHECK_FALSE(d.v_safe_m_s);
+    }
+    SECTION("no bending mode found (written as 0 before) leaves f1 empty") {
         BatchCase d;
         read_batch_summary(d, R"({"beam": {"fe_first_bending_hz": 0, "fe_over_timoshenko": 0}, "case": {}})");
         CHECK_FALSE(d.f1_hz);
