@@ -3,7 +3,7 @@
 
     /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--cases GLOB ...]
 
-Runs each case file of cases/ and cases/hard/ (not the [study] case) with both
+Runs each case file of cases/ and cases/hard/ (not the [study] and [winder] cases) with both
 programs (`run CASE --no-plots -q -o DIR`), reads modes.csv from both, and
 prints one row per case: the number of modes, the largest relative frequency
 difference over the modes that are not rigid, and OK when it is at most
@@ -64,7 +64,8 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for i, case in enumerate(cases):
             name = os.path.relpath(case, ROOT)
-            if "[study]" in open(case).read():
+            text = open(case).read()
+            if "[study]" in text or "[winder]" in text:  # not `coremodal run` cases
                 continue
             outs = [os.path.join(tmp, f"{i}-old"), os.path.join(tmp, f"{i}-new")]
             results = [run(b, case, o, a.mesh) for b, o in zip((a.old, a.new), outs)]

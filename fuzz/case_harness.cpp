@@ -4,6 +4,10 @@
 #include "common/error.hpp"
 #include "scene/case_file.hpp"
 #include "scene/scene_description.hpp"
+#include "scene/toml_text.hpp"
+#include "winder/winder_model.hpp"
+#include "winder/winder_modes.hpp"
+#include "winder/winder_scene.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -23,9 +27,42 @@ void check_modes(const BeamModelResult& result) {
     }
 }
 
+// A [winder] file: its reader, then its model at the smallest and largest
+// roll diameter (the whole sweep would cost a fuzzer 50 solves an input).
+Outcome run_winder_text(std::string_view text, const std::string& path) {
+    WinderScene scene;
+    try {
+        scene = read_winder_text(text, path);
+    } catch (const InputError&) {
+        return Outcome::invalid;
+    }
+    try {
+        for (double d : {scene.rolls.diameter_start, scene.rolls.diameter_end}) {
+            const WinderModes modes = solve_winder_modes(build_winder_model(scene, d), scene.damping,
+                                                         scene.sweep.max_frequency);
+            for (const WinderMode& m : modes.modes)
+                check(std::isfinite(m.frequency_hz), "a winder frequency that is not a finite number");
+        }
+    } catch (const InputError&) {
+        return Outcome::not_solvable;
+    } catch (const SolveError&) {
+        return Outcome::not_solvable;
+    }
+    return Outcome::solved;
+}
+
+bool is_winder_text(std::string_view text) {
+    try {
+        return parse_toml_text(text, "fuzz.toml").contains("winder");
+    } catch (const std::exception&) {
+        return false;  // not TOML: the case reader says why
+    }
+}
+
 }  // namespace
 
 Outcome run_case_text(std::string_view text, const std::string& path) {
+    if (is_winder_text(text)) return run_winder_text(text, path);
     Scene scene;
     try {
         scene = parse_case_text(text, path);

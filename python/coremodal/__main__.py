@@ -1,8 +1,9 @@
 """Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
 ``python3 -m coremodal run-plot RESULTS_DIR --modes ...``,
 ``python3 -m coremodal converge-plot CONVERGE_DIR``,
-``python3 -m coremodal study-plot STUDY_FOLDER`` and
-``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython).
+``python3 -m coremodal study-plot STUDY_FOLDER``,
+``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython) and
+``python3 -m coremodal winder-plot WINDER_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -10,6 +11,7 @@
     python3 -m coremodal converge-plot results/CASE-converge     # error_vs_time.png from converge.json
     python3 -m coremodal study-plot results/06-study-safe-speed-study
     python3 -m coremodal paraview results/02-clamped-76x15 --mode 1 --out mode1.png   # needs pvpython
+    python3 -m coremodal winder-plot results/11-two-drum-winder-winder  # crossing_diagram.png, response.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -81,6 +83,9 @@ def _parser() -> argparse.ArgumentParser:
     study = commands.add_parser(
         "study-plot", help="draw the PNG plots of a study or calibration folder (study.csv, study.json)")
     study.add_argument("folder", type=Path, help="results folder of coremodal study or coremodal calibrate")
+    winder = commands.add_parser(
+        "winder-plot", help="draw the crossing diagram and the response (PNG) of a `coremodal winder` folder")
+    winder.add_argument("folder", type=Path, help="results folder of coremodal winder")
     return parser
 
 
@@ -104,6 +109,18 @@ def _study_plot(folder: Path) -> str:
 
     paths = study_plot.draw_all(folder)
     return "\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot (no successful point)"
+
+
+def _winder_plot(folder: Path) -> int:
+    from . import winder_plot  # matplotlib only when drawing
+
+    try:
+        paths = winder_plot.draw_all(folder)
+    except (winder_plot.WinderFormatError, KeyError, ValueError, OSError) as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    _print("\n".join(str(p) for p in paths))
+    return 0
 
 
 def _run_plot(args: argparse.Namespace) -> int:
@@ -140,6 +157,8 @@ def main(argv: list[str] | None = None) -> int:
         return _run_plot(args)
     if args.command == "converge-plot":
         return _converge_plot(args)
+    if args.command == "winder-plot":
+        return _winder_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

@@ -4,6 +4,7 @@
 #include "common/error.hpp"
 #include "output/csv.hpp"
 #include "output/results_folder.hpp"
+#include "scene/toml_text.hpp"
 
 #include <toml++/toml.h>
 
@@ -208,9 +209,14 @@ std::string program_name(const std::string& program) {
 }
 
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
-    std::vector<std::string> args = {program_name(o.program), "run", c.file, "--output", c.result_dir, "--quiet"};
+    const bool winder = is_winder_file(c.file);
+    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : "run", c.file, "--output",
+                                     c.result_dir, "--quiet"};
+    if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
     if (o.mesh_level) {
-        if (case_has_mesh_file(c.file))
+        if (winder)
+            c.note += "; a beam model: --mesh " + *o.mesh_level + " not applied";
+        else if (case_has_mesh_file(c.file))
             c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
         else
             args.insert(args.end(), {"--mesh", *o.mesh_level});
@@ -237,6 +243,10 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
     const fs::path summary = fs::path(c.result_dir) / "summary.json";
     if (!fs::exists(summary)) {
         c.error = "finished without writing " + summary.string();
+        return;
+    }
+    if (winder) {  // no f1 or safe speed of one roll: the winder's answer is its crossing table
+        c.ok = true;
         return;
     }
     try {
@@ -348,14 +358,23 @@ void read_batch_summary(BatchCase& c, const std::string& summary_json) {
     if (c.f1_hz && c.diameter_m && !free_free) c.v_safe_m_s = kSafeSpeedFactor * M_PI * *c.diameter_m * *c.f1_hz;
 }
 
-bool case_has_mesh_file(const std::string& case_file) {
+namespace {
+// The parsed case file, or an empty table when it cannot be read (its run
+// then reports why).
+toml::table case_table_or_empty(const std::string& case_file) {
     try {
-        const toml::table t = toml::parse_file(case_file);
-        return t["mesh"]["file"].is_string();
+        return parse_toml_text(read_input_file(case_file, "case file"), case_file);
     } catch (const std::exception&) {
-        return false;
+        return {};
     }
 }
+}  // namespace
+
+bool case_has_mesh_file(const std::string& case_file) {
+    return case_table_or_empty(case_file)["mesh"]["file"].is_string();
+}
+
+bool is_winder_file(const std::string& case_file) { return case_table_or_empty(case_file).contains("winder"); }
 
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {
     std::vector<std::string> files;

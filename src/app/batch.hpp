@@ -48,6 +48,9 @@ std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs
 // Whether a case file names its own mesh ([mesh] file = ...); false when
 // the file cannot be read or parsed (the child run will report that).
 bool case_has_mesh_file(const std::string& case_file);
+// Whether a case file describes a two-drum winder ([winder], docs/winder.md):
+// batch runs it with `coremodal winder` rather than `coremodal run`.
+bool is_winder_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.

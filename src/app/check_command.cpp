@@ -2,11 +2,14 @@
 // does, then say what `run` would simulate — every resolved value and where
 // it came from, the effects, the model level and why — without meshing,
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
+#include "app/batch.hpp"  // is_winder_file
 #include "app/commands.hpp"
 #include "app/run_harmonic.hpp"  // why_not_axisymmetric, require_axisymmetric
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/scene_description.hpp"
+#include "output/winder_report.hpp"
+#include "winder/winder_scene.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -47,7 +50,19 @@ std::string read_text(const std::string& path) {
     return text.str();
 }
 
+// A two-drum winder file (docs/winder.md): its own reader, its beam model.
+int check_winder(const CheckOptions& options) {
+    const WinderScene scene = read_winder_file(options.case_file);
+    std::cout << options.case_file << ": valid two-drum winder file \"" << scene.name << "\"\n\n"
+              << "model level: beam (drums, rolls and rider as Timoshenko beams, nips as distributed springs; "
+                 "--model and --mesh do not apply); run it with `coremodal winder`\n\n"
+              << "resolved scene (SI units):\n"
+              << winder_scene_description(scene);
+    return 0;
+}
+
 int check_case(const CheckOptions& options) {
+    if (is_winder_file(options.case_file)) return check_winder(options);
     // The same reading as run_case's step 1, so that the same errors come out.
     Scene scene = parse_case_file(options.case_file);
     KeySources sources = key_sources(read_text(options.case_file));

@@ -157,8 +157,8 @@ int main(int argc, char** argv) {
     const std::vector<coremodal::Command> commands = {
         coremodal::add_run_command(app),      coremodal::add_check_command(app),
         coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
-        coremodal::add_converge_command(app), coremodal::add_study_command(app),
-        coremodal::add_calibrate_command(app)};
+        coremodal::add_converge_command(app), coremodal::add_winder_command(app),
+        coremodal::add_study_command(app),    coremodal::add_calibrate_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

@@ -3,6 +3,7 @@
 
 #include "beam/formulas.hpp"
 #include "common/error.hpp"
+#include "scene/toml_text.hpp"
 
 #include <toml++/toml.h>
 
@@ -208,15 +209,8 @@ private:
 }  // namespace
 
 Calibration read_calibration(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path + ": cannot open the calibration file");
-    toml::table t;
-    try {
-        t = toml::parse(in, path);
-    } catch (const toml::parse_error& e) {
-        throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": TOML syntax error: " +
-                         std::string(e.description()) + "; expected a calibration.toml written by coremodal calibrate");
-    }
+    const toml::table t = parse_toml_input(read_input_file(path, "calibration file"), path,
+                                           "a calibration.toml written by coremodal calibrate");
     const CalibrationReader r(path, t);
     if (t["format"].value_or<std::string_view>("") != "coremodal-calibration")
         r.fail(t.get("format"), "format is not \"coremodal-calibration\"");

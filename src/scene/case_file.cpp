@@ -1059,18 +1059,16 @@ private:
 
 }  // namespace
 
-Scene parse_case_table(const toml::table& root, const std::string& path) { return CaseReader(path).read(root); }
+Scene parse_case_table(const toml::table& root, const std::string& path) {
+    if (const toml::node* winder = root.get("winder"))
+        throw InputError(path + ":" + std::to_string(winder->source().begin.line) +
+                         ": [winder] is a two-drum winder file, not a roll's case file; run it with "
+                         "`coremodal winder " + path + "` (docs/winder.md)");
+    return CaseReader(path).read(root);
+}
 
 Scene parse_case_text(std::string_view text, const std::string& path) {
-    toml::table root;
-    try {
-        root = parse_toml_text(text, path);
-    } catch (const toml::parse_error& e) {
-        const auto& at = e.source().begin;
-        throw InputError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
-                         ": TOML syntax error: " + printable(restore_characters(e.description())) +
-                         "; expected a valid TOML case file (docs/case-files.md)");
-    }
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
     try {
         return parse_case_table(root, path);
     } catch (const InputError& e) {  // a key echoed in a message: the user's characters
@@ -1078,16 +1076,6 @@ Scene parse_case_text(std::string_view text, const std::string& path) {
     }
 }
 
-Scene parse_case_file(const std::string& path) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec))
-        throw InputError(path + ": is a folder; expected a case file (.toml)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open case file (" + std::strerror(errno) + ")");
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    if (in.bad()) throw InputError(path + ": cannot read case file (" + std::strerror(errno) + ")");
-    return parse_case_text(contents.str(), path);
-}
+Scene parse_case_file(const std::string& path) { return parse_case_text(read_input_file(path, "case file"), path); }
 
 }  // namespace coremodal

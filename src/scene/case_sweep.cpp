@@ -62,16 +62,6 @@ std::string join(const std::vector<std::string_view>& words) {
     return out;
 }
 
-std::string read_text_file(const std::string& path) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) throw InputError(path + ": is a folder; expected a case file (.toml)");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open case file (" + std::strerror(errno) + ")");
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    return contents.str();
-}
-
 std::string support_type_of(const toml::table& root) {
     return std::string(root["supports"]["type"].value_or<std::string_view>("free"));
 }
@@ -573,7 +563,7 @@ void CaseSweep::Impl::set(toml::table& doc, const KeyPath& path, const Value& va
 
 CaseSweep CaseSweep::read(const std::string& path, std::string_view table,
                           const std::optional<std::string>& mesh_override) {
-    CaseSweep sweep = from_text(read_text_file(path), path, table, mesh_override);
+    CaseSweep sweep = from_text(read_input_file(path, "case file"), path, table, mesh_override);
     std::const_pointer_cast<Impl>(sweep.impl_)->from_file = true;
     return sweep;
 }

@@ -2,6 +2,12 @@
 
 #include "common/error.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 namespace coremodal {
 namespace {
 
@@ -113,6 +119,31 @@ toml::table parse_toml_text(std::string_view text, const std::string& path) {
     toml::table root = toml::parse(map_characters(text, unsafe, stand_in), path);
     restore_strings(root);
     return root;
+}
+
+std::string read_input_file(const std::string& path, std::string_view kind) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw InputError(path + ": is a folder; expected a " + std::string(kind) + " (.toml)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open " + std::string(kind) + " (" + std::strerror(errno) + ")");
+    std::ostringstream contents;
+    contents << in.rdbuf();
+    if (in.bad()) throw InputError(path + ": cannot read " + std::string(kind) + " (" + std::strerror(errno) + ")");
+    return contents.str();
+}
+
+toml::table parse_toml_input(std::string_view text, const std::string& path, std::string_view expected) {
+    try {
+        return parse_toml_text(text, path);
+    } catch (const toml::parse_error& e) {
+        std::string what = restore_characters(e.description());
+        for (char& c : what)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+        const auto& at = e.source().begin;
+        throw InputError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+                         ": TOML syntax error: " + what + "; expected " + std::string(expected));
+    }
 }
 
 }  // namespace coremodal

@@ -19,6 +19,7 @@
 #include <string>
 #include <string_view>
 
+
 namespace coremodal {
 
 // toml::parse(text, path) without the undefined behaviour; throws
@@ -26,6 +27,16 @@ namespace coremodal {
 // the user's characters back) and InputError for a text holding the
 // private-use code points U+E000 to U+EFFF this needs for itself.
 toml::table parse_toml_text(std::string_view text, const std::string& path);
+
+// The whole of a text file: `kind` names it in the messages ("case file",
+// "winder file"); a folder, a file that cannot be opened or read is an
+// InputError naming the path.
+std::string read_input_file(const std::string& path, std::string_view kind);
+
+// parse_toml_text with every syntax error an InputError
+// "path:line:column: TOML syntax error: what; expected <expected>", in the
+// user's characters and with control characters shown as '?'.
+toml::table parse_toml_input(std::string_view text, const std::string& path, std::string_view expected);
 
 // The user's characters back in a text made from the parsed document (a message).
 std::string restore_characters(std::string_view text);

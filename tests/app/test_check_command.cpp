@@ -54,10 +54,22 @@ TEST_CASE("Every shipped case passes coremodal check", "[app][cli][check]") {
                 const Run r = run_coremodal(dir, "check '" + entry.path().string() + "'");
                 INFO("stderr: " << r.err);
                 CHECK(r.exit_code == 0);
-                CHECK_THAT(r.out, Catch::Contains(": valid case"));
+                CHECK_THAT(r.out, Catch::Contains(": valid case") || Catch::Contains(": valid two-drum winder file"));
                 CHECK(r.err.empty());
             }
         }
+}
+
+TEST_CASE("A winder file: check describes it, run names the command that runs it", "[app][cli][check]") {
+    TempDir dir;
+    const std::string winder = COREMODAL_SOURCE_DIR + std::string("/cases/11-two-drum-winder.toml");
+    const Run checked = run_coremodal(dir, "check '" + winder + "'");
+    CHECK(checked.exit_code == 0);
+    CHECK_THAT(checked.out, Catch::Contains("web_speed_m_s = 33.3"));  // 2000 m/min, resolved to SI
+    const Run run = run_coremodal(dir, "run '" + winder + "'");
+    CHECK(run.exit_code == 1);
+    CHECK_THAT(run.err, Catch::Contains("11-two-drum-winder.toml:") && Catch::Contains("coremodal winder"));
+    CHECK(fs::is_empty(dir.path));  // nothing written
     // check writes nothing.
     CHECK(fs::is_empty(dir.path));
 }

@@ -164,6 +164,8 @@ TEST_CASE("case_has_mesh_file tells cases with their own mesh (no --mesh for the
     CHECK(case_has_mesh_file(cases + "04-user-mesh-76x15.toml"));
     CHECK_FALSE(case_has_mesh_file(cases + "02-clamped-76x15.toml"));
     CHECK_FALSE(case_has_mesh_file(cases + "no-such-case.toml"));
+    CHECK(is_winder_file(cases + "11-two-drum-winder.toml"));  // run with `coremodal winder`
+    CHECK_FALSE(is_winder_file(cases + "02-clamped-76x15.toml"));
 }
 
 TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[batch]") {

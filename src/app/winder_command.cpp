@@ -1,0 +1,82 @@
+// `coremodal winder WINDER.toml [--output DIR] [--no-plots] [--quiet]`: the
+// two-drum winder of a [winder] case file, its modes as the rolls grow, the
+// crossings of the rolls' rotation harmonics with the drum-dominated modes
+// and the response at a drum's centre (docs/winder.md). Beam level, Eigen
+// only: no mesh, no PETSc.
+#include "app/commands.hpp"
+#include "common/format.hpp"
+#include "output/python_plots.hpp"
+#include "output/results_folder.hpp"
+#include "output/text_file.hpp"
+#include "output/winder_report.hpp"
+#include "winder/winder_sweep.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace coremodal {
+namespace {
+
+// The picture the python package draws (python/coremodal/winder_plot.py).
+constexpr const char* kDiagramPng = "crossing_diagram.png";
+constexpr const char* kResponsePng = "response.png";
+
+struct WinderOptions {
+    std::string case_file, output;
+    bool quiet = false, no_plots = false, force = false;
+};
+
+int run_winder_command(const WinderOptions& o) {
+    const WinderScene scene = read_winder_file(o.case_file);
+    const std::filesystem::path out_dir =
+        o.output.empty() ? std::filesystem::path("results") / (scene.name + "-winder") : std::filesystem::path(o.output);
+    prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
+    // A progress line on a terminal only: a log gets the summary alone.
+    const bool show = !o.quiet && ::isatty(STDERR_FILENO);
+    const auto progress = [&](int i, int n) {
+        if (show) std::cerr << "\rwinder: diameter " << i << " of " << n << std::flush;
+    };
+    const WinderSweepResult result = run_winder_sweep(scene, progress);
+    if (show) std::cerr << "\n";
+
+    ResultsFolder folder(out_dir, o.force);
+    const std::filesystem::path& dir = folder.dir();
+    write_winder_tables(dir, scene, result);
+    std::vector<std::string> pngs;
+    std::string problem = o.no_plots ? "switched off (--no-plots)" : run_python_plot("winder-plot", dir);
+    if (problem.empty()) pngs = {kDiagramPng, kResponsePng};
+    else if (!o.no_plots)
+        std::cerr << "coremodal: warning: plots not drawn: " << problem
+                  << "; the tables and report.md are complete (draw them later with python3 -m coremodal "
+                     "winder-plot DIR)" << std::endl;
+    write_text_file(dir / "report.md", winder_report_markdown(scene, result, pngs, problem));
+    folder.commit();
+    std::cout << winder_console_summary(scene, result) << "  results: " << out_dir.string() << "/report.md" << std::endl;
+    return 0;
+}
+
+}  // namespace
+
+Command add_winder_command(CLI::App& app) {
+    auto o = std::make_shared<WinderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "winder", "A two-drum winder ([winder] case file): natural frequencies as the rolls grow, the crossings of "
+                  "the rolls' rotation harmonics with the drum modes, X/F at a drum's centre; tables, a crossing "
+                  "diagram and report.md");
+    cmd->add_option("case", o->case_file, "winder case file (TOML), e.g. cases/11-two-drum-winder.toml")->required();
+    cmd->add_option("-o,--output", o->output,
+                    "results folder (default results/<case name>-winder); replaces only an earlier coremodal result, "
+                    "which is kept as <folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress line");
+    cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
+    cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
+                "The [winder] table: docs/winder.md.");
+    return {cmd, [o] { return run_winder_command(*o); }, false};
+}
+
+}  // namespace coremodal
