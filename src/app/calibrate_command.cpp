@@ -5,6 +5,7 @@
 #include "common/format.hpp"
 #include "app/commands.hpp"
 #include "common/petsc_handle.hpp"
+#include "common/warnings.hpp"
 #include "output/results_folder.hpp"
 
 #include <cstdio>
@@ -24,6 +25,7 @@ int run_calibrate_command(const CalibrateOptions& o) {
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "calibration",
                                             o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh));
+    print_warnings(sweep.warnings());
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
     prepare_output(out_dir, o.force);

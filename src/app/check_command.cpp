@@ -5,6 +5,7 @@
 #include "app/batch.hpp"  // is_winder_file
 #include "app/commands.hpp"
 #include "app/run_harmonic.hpp"  // why_not_axisymmetric, require_axisymmetric
+#include "common/warnings.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/scene_description.hpp"
@@ -65,6 +66,7 @@ int check_case(const CheckOptions& options) {
     if (is_winder_file(options.case_file)) return check_winder(options);
     // The same reading as run_case's step 1, so that the same errors come out.
     Scene scene = parse_case_file(options.case_file);
+    print_warnings(scene.warnings);  // on stderr, as `run` says them
     KeySources sources = key_sources(read_text(options.case_file));
     if (!options.mesh_level.empty()) {
         apply_mesh_level(scene, options.mesh_level);

@@ -13,6 +13,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"
+#include "common/warnings.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "geometry/tube_model.hpp"
 #include "mesh/connectivity.hpp"
@@ -263,13 +264,7 @@ std::string shift_scale_text(const Scene& scene) {
            significant(std::sqrt(scale.lambda) / (2 * M_PI)) + " Hz";
 }
 
-void print_scene_warnings(const Scene& scene) {
-    // `coremodal beam` runs without MPI: then this is the only process.
-    int mpi_on = 0;
-    MPI_Initialized(&mpi_on);
-    if (mpi_on && mpi_rank() != 0) return;
-    for (const std::string& w : scene.warnings) std::cerr << "coremodal: warning: " << w << std::endl;
-}
+void print_scene_warnings(const Scene& scene) { print_warnings(scene.warnings); }
 
 RunReport run_case(const RunOptions& options) {
     // 1. Read and check the case file: every input error surfaces here.

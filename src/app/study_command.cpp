@@ -6,6 +6,7 @@
 #include "app/study_workers.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
+#include "common/warnings.hpp"
 #include "output/results_folder.hpp"
 
 #include <cstdio>
@@ -58,6 +59,7 @@ int run_study_command(const StudyCommandOptions& o) {
     if (!o.worker_output.empty()) return run_worker(o);
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
+    print_warnings(sweep.warnings());
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
     prepare_output(out_dir, o.force);

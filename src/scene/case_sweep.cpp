@@ -70,6 +70,7 @@ std::string support_type_of(const toml::table& root) {
 
 struct CaseSweep::Impl {
     std::string path, text, name, table;
+    std::vector<std::string> warnings;  // of the case as written (Scene::warnings)
     bool from_file = false;
     std::vector<SweepParameter> parameters;
     std::vector<std::vector<KeyPath>> paths;  // per parameter, per key
@@ -575,6 +576,7 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
     auto impl = std::make_shared<Impl>();
     impl->path = path;
     impl->name = base.name;
+    impl->warnings = base.warnings;
     impl->table = std::string(table);
     impl->text = std::move(text);
     const toml::table root = parse_toml_text(impl->text, path);
@@ -586,6 +588,7 @@ CaseSweep CaseSweep::from_text(std::string text, const std::string& path, std::s
 
 const std::string& CaseSweep::case_file() const { return impl_->path; }
 const std::string& CaseSweep::case_name() const { return impl_->name; }
+const std::vector<std::string>& CaseSweep::warnings() const { return impl_->warnings; }
 const std::string& CaseSweep::table() const { return impl_->table; }
 bool CaseSweep::from_file() const { return impl_->from_file; }
 const std::vector<SweepParameter>& CaseSweep::parameters() const { return impl_->parameters; }

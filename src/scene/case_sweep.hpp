@@ -66,6 +66,9 @@ public:
     const std::string& table() const;  // "study" or "calibration"
     bool from_file() const;            // read(), not from_text(): a child process can read it again
     const std::string& case_name() const;  // the case's name (file stem unless given)
+    // The plausibility warnings of the case as written (Scene::warnings):
+    // printed once by the command, not once a point.
+    const std::vector<std::string>& warnings() const;
     const std::vector<SweepParameter>& parameters() const;
     const SweepOptions& options() const;
 

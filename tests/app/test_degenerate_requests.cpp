@@ -201,6 +201,20 @@ TEST_CASE("A modulus written without its unit is warned about once, with the uni
     CHECK(contains(r.summary, "E = 210 Pa is outside the plausible range"));
 }
 
+TEST_CASE("check and study say the case's warnings too, once each", "[app][degenerate]") {
+    TempDir dir("warned-study");
+    std::string text = tube("0.5 m", "beam", "modes = 8");
+    text.replace(text.find("E = \"210 GPa\""), std::string("E = \"210 GPa\"").size(), "E = 210");
+    dir.write("case.toml", text + "\n[study]\nparameters = [{ key = \"core.length\", values = "
+                                              "[\"0.5 m\", \"0.6 m\", \"0.7 m\"] }]\n");
+    for (const std::string command : {"check case.toml", "study case.toml --jobs 1 --no-plots --quiet"}) {
+        const Run r = run_coremodal(dir, command);
+        INFO(command << ": " << r.err);
+        CHECK(r.exit_code == 0);
+        CHECK(count_of(r.err, "[core.material] E = 210 Pa is outside the plausible range") == 1);
+    }
+}
+
 TEST_CASE("A chuck with zero clearance runs at every level and tends to a vanishing clearance", "[app][degenerate]") {
     // Before: the reader took clearance = "0 mm" and the mesher failed with
     // "no physical surface 'interface_left_chuck'".

@@ -6,6 +6,7 @@
 #include "common/format.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
+#include "common/warnings.hpp"
 #include "output/converge_report.hpp"
 #include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
@@ -139,6 +140,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
 
     // 1. The scene and its model levels; the results folder checked before any work.
     const Scene scene = parse_case_file(o.case_file);
+    print_warnings(scene.warnings);
     const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
                                                    : std::filesystem::path("results") / (scene.name + "-converge");
     if (o.write_results) prepare_output(out, o.force);
