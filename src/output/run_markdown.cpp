@@ -183,51 +183,31 @@ void chuck_section(std::ostream& out, const ChuckFactor& k) {
         << " |\n\n";
 }
 
-// König's l: the core length minus the chuck insertion depth at both ends
-// (clamps: between the clamp zones' inner edges), as `coremodal beam` takes it.
-double koenig_length(const Scene& s) {
-    if (s.supports.kind == SupportKind::chucks)
-        return s.core.length - s.supports.chucks.at(0).inserted_length - s.supports.chucks.at(1).inserted_length;
-    if (s.supports.clamps.size() != 2) return 0;  // no span between two clamps
-    return s.supports.clamps[1].z_start - s.supports.clamps[0].z_end;
-}
-
 void speed_section(std::ostream& out, const RunReport& r) {
     const Scene& s = r.scene;
-    const double f1 = r.beam.fe_first_bending_hz;
-    const double dp = rest_roll_section(s).Dp;
+    const RollSpeeds speeds = report_speeds(r);
     out << "## Speeds\n\n";
-    if (s.supports.kind == SupportKind::free) {
-        out << "Not given: the scene is free–free, and the safe and critical speeds are for the roll in its "
-               "stand (clamped or on chucks).\n\n";
+    if (!speeds.given()) {
+        out << "Not given: " << speeds.not_given << ".\n\n";
         return;
     }
-    if (!r.beam.fe_found()) {
-        out << "Not given: " << r.beam.fe_missing << ".\n\n";
-        return;
-    }
-    out << "Safe web speed (I-5) v_safe = safe · π · Dp · f1, with f1 = " << hz(f1) << " Hz (FE) and Dp = "
-        << mm(dp) << " (" << (s.rest_paper ? "the rest paper's outer diameter" : "the core's outer diameter; no rest paper")
-        << "):\n\n";
+    out << "Safe web speed (I-5) v_safe = safe · π · Dp · f1, with f1 = " << hz(speeds.f1_hz) << " Hz (FE) and Dp = "
+        << mm(speeds.dp_m) << " ("
+        << (s.rest_paper ? "the rest paper's outer diameter" : "the core's outer diameter; no rest paper") << "):\n\n";
     out << "| safe | v_safe |\n|---:|---:|\n";
-    for (double safe : kReportSafeFactors)
-        out << "| " << significant(safe) << " | " << speed(safe_web_speed(f1, dp, safe)) << " |\n";
+    for (const SafeSpeed& v : speeds.safe) out << "| " << significant(v.safe) << " | " << speed(v.v_safe_m_s) << " |\n";
     out << "\nIlomäki: safe 0.8 at most, 0.7 without a safety cage; it keeps the mid-span vibration within "
            "about ±5 mm.\n\n";
-
-    const double l = koenig_length(s);
-    if (!(l > 0)) return;
-    constexpr double kExperience = 0.66;
-    const KoenigEstimate koenig = koenig_critical_speed(rest_roll_section(s), l, kExperience);
-    const bool thin = koenig.thin_paper;
-    const CriticalSpeed& c = koenig.speed;
-    out << "König's critical speed (" << (thin ? "K-1, rest paper up to 10 mm" : "K-2, rest paper over 10 mm")
-        << "; experience factor " << significant(kExperience) << ", l = " << significant(l)
-        << " m between the " << (s.supports.kind == SupportKind::chucks ? "chucks' inserted ends" : "clamp zones")
-        << "): f_krit = " << significant(c.f_krit_hz) << " Hz, v_krit = " << speed(c.v_krit_m_s) << ".";
-    if (s.core.inner_diameter > 0.12)
-        out << " König recommends 0.55 for the 150/176 core (0.66 was fitted to 76 mm cores): v_krit × 0.55/0.66 = "
-            << speed(c.v_krit_m_s * 0.55 / kExperience) << ".";
+    if (!speeds.koenig) return;
+    const KoenigSpeeds& k = *speeds.koenig;
+    out << "König's critical speed (" << (k.formula == "K-1" ? "K-1, rest paper up to 10 mm" : "K-2, rest paper over 10 mm")
+        << "; experience factor " << significant(k.experience) << ", l = " << significant(k.span.length_m) << " m "
+        << k.span.source << "): f_krit = " << significant(k.speed.f_krit_hz)
+        << " Hz, v_krit = " << speed(k.speed.v_krit_m_s) << ".";
+    if (k.v_krit_large_core_m_s)
+        out << " König recommends " << significant(kKoenigExperienceLargeCore)
+            << " for the 150/176 core (0.66 was fitted to 76 mm cores): v_krit × 0.55/0.66 = "
+            << speed(*k.v_krit_large_core_m_s) << ".";
     out << "\n\n";
 }
 

@@ -12,10 +12,6 @@
 
 namespace coremodal {
 
-// The safety factors of the safe web speed in the report (I-5): Ilomäki's
-// range, 0.7 without a safety cage, at most 0.8.
-constexpr double kReportSafeFactors[] = {0.7, 0.8};
-
 std::string run_report_markdown(const RunReport& report, const RunPictures& pictures);
 
 }  // namespace coremodal

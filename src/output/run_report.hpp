@@ -2,6 +2,8 @@
 // (console table, summary.json, modes.csv, modes.h5).
 #pragma once
 
+#include "beam/speeds.hpp"
+
 #include "modes/mode_set.hpp"
 #include "scene/scene.hpp"
 
@@ -79,5 +81,14 @@ struct RunReport {
     int mpi_ranks = 1;
     std::vector<std::string> warnings;  // things the user should know (e.g. an unheld part)
 };
+
+// The safe and critical speeds of the report's roll from its FE first
+// bending frequency (beam/speeds.hpp): what summary.json and report.md give.
+inline RollSpeeds report_speeds(const RunReport& r) {
+    const std::string missing = r.beam.fe_found()           ? ""
+                                : r.beam.fe_missing.empty() ? "no bending mode was found"
+                                                            : r.beam.fe_missing;
+    return roll_speeds(r.scene, r.beam.fe_first_bending_hz, missing);
+}
 
 }  // namespace coremodal

@@ -131,6 +131,32 @@ toml::table scene_table(const Scene& s) {
     return t;
 }
 
+// The safe and critical speeds (beam/speeds.hpp), as report.md gives them;
+// "not_given" says why there are none.
+toml::table speeds_table(const RollSpeeds& v) {
+    toml::table t;
+    if (!v.given()) {
+        t.insert("not_given", v.not_given);
+        return t;
+    }
+    toml::array safe;
+    for (const SafeSpeed& s : v.safe)
+        safe.push_back(toml::table{{"safe", s.safe}, {"v_safe_m_s", s.v_safe_m_s}, {"v_safe_m_min", 60 * s.v_safe_m_s}});
+    t.insert("f1_hz", v.f1_hz);
+    t.insert("dp_m", v.dp_m);
+    t.insert("safe_web_speed", safe);
+    if (v.koenig) {
+        const KoenigSpeeds& k = *v.koenig;
+        toml::table koenig{{"formula", k.formula},         {"span_m", k.span.length_m},
+                           {"span", k.span.source},        {"experience", k.experience},
+                           {"f_krit_hz", k.speed.f_krit_hz}, {"v_krit_m_s", k.speed.v_krit_m_s},
+                           {"v_krit_m_min", 60 * k.speed.v_krit_m_s}};
+        if (k.v_krit_large_core_m_s) koenig.insert("v_krit_large_core_m_s", *k.v_krit_large_core_m_s);
+        t.insert("koenig_critical_speed", koenig);
+    }
+    return t;
+}
+
 std::string to_json(const toml::table& t) {
     std::ostringstream s;
     s << toml::json_formatter{t};
@@ -231,6 +257,7 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         {"modes", modes},
         {"verification", verification_table(r)},
         {"beam", beam_table(r.beam)},
+        {"speeds", speeds_table(report_speeds(r))},
         {"timing_s", toml::table{{"mesh", t.mesh},
                                  {"chuck_factor", t.chuck_factor},
                                  {"assemble", t.assemble},

@@ -110,6 +110,14 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
         CHECK(contains(report, "| 0.7 | " + significant(v07) + " m/s"));
         CHECK(contains(report, "| 0.8 | " + significant(v08) + " m/s"));
         CHECK(contains(report, "König's critical speed (K-1"));
+        // summary.json holds the same speeds (it had none before: report.md only).
+        const std::vector<double> v_safe = json_numbers(summary, "v_safe_m_s");
+        REQUIRE(v_safe.size() == 2);
+        CHECK(v_safe[0] == Approx(v07).epsilon(1e-12));
+        CHECK(v_safe[1] == Approx(v08).epsilon(1e-12));
+        CHECK(json_numbers(summary, "dp_m").at(0) == Approx(0.106).epsilon(1e-12));
+        const double v_krit = json_numbers(summary, "v_krit_m_s").at(0);
+        CHECK(contains(report, "v_krit = " + significant(v_krit) + " m/s"));
     }
     SECTION("Every linked picture exists: the spectrum and one of each mode type") {
         const auto pictures = linked_pictures(report);
@@ -158,6 +166,8 @@ TEST_CASE("A chuck scene's report has the chuck factor block with the k of summa
     const double f1 = json_numbers(summary, "fe_first_bending_hz").at(0);
     CHECK(contains(report, "| 0.7 | " + significant(safe_web_speed(f1, 0.106, 0.7)) + " m/s"));
     CHECK(contains(report, "between the chucks' inserted ends"));
+    CHECK(contains(summary, "\"span\" : \"between the chucks' inserted ends\""));
+    CHECK(json_numbers(summary, "v_safe_m_s").at(0) == Approx(safe_web_speed(f1, 0.106, 0.7)).epsilon(1e-12));
     CHECK(contains(report, "No pictures: switched off (--no-plots)"));
     CHECK(linked_pictures(report).empty());
 }
