@@ -8,14 +8,15 @@
 // against the same bodies in the winder's beam model.
 //
 // What each comparison proves:
-// 1. The drum as a Timoshenko tube: its first bending frequency matches the
-//    harmonic level's to a small part of the shear correction, and its
-//    ovalling (n = 2, 3), which a beam cannot have, lies far above the band
-//    the winder reports (max_frequency).
+// 1. The drum as a Timoshenko tube: its bending frequencies (free-free, and
+//    the first two on its bearings) match the harmonic level's to a small
+//    part of the shear correction, and its ovalling (n = 2, 3), which a beam
+//    cannot have, lies far above the band the winder reports (max_frequency).
 // 2. The roll: the winder's beam roll is the Timoshenko beam of its section;
 //    the harmonic level, which also sees the paper's transverse shear modulus
-//    G_rz and radial modulus E_r, puts the roll's bending far lower, and its
-//    lowest elastic mode of any kind still above the band: rigid rolls hold.
+//    G_rz and radial modulus E_r, puts the roll's bending far lower (33 % at
+//    1.2 m), and its lowest elastic mode of any kind still above the band at
+//    the sweep's smallest, middle and largest diameters: rigid rolls hold.
 #include "tube_scenes.hpp"
 
 #include "beam/beam_theory.hpp"
@@ -40,9 +41,10 @@ const char* const kCase11 = COREMODAL_SOURCE_DIR "/cases/11-two-drum-winder.toml
 constexpr double kRollDiameter = 1.2;  // m
 
 // Coarse harmonic meshes, converged enough (measured, the finest against these):
-// drum 2 through the wall x 20 along (3 x 60: first bending 2e-5, on rigid
-// bearings 1e-4, n = 2 ovalling 1e-3 lower); roll 2 x 4 through core and paper
-// x 8 along (3 x 10 x 24: bending 1.6e-3, n = 2 ovalling 1.2e-3 lower).
+// drum 2 through the wall x 20 along (3 x 60: free-free bending 2e-5 lower, on
+// the case's bearings 6e-5 and 5e-4 for the first two modes, n = 2 ovalling
+// 1e-4 on bearings, 9e-4 free-free); roll 2 x 4 through core and paper x 8
+// along (3 x 10 x 24: bending 1.6e-3, n = 2 ovalling 1.2e-3 lower).
 constexpr const char* kDrumMesh = "[mesh]\nthrough_wall = 2\naround = 16\nalong = 20\n";
 constexpr const char* kRollMesh = "[mesh]\nthrough_wall = 2\nthrough_rest_paper = 4\naround = 16\nalong = 8\n";
 
@@ -138,7 +140,8 @@ double ring_ovalling_hz(const WinderScene& s, int n) {
     const OrthotropicMaterial steel = winder_material(s.drums.material);
     const double t = s.drums.wall, R = (s.drums.outer_diameter - t) / 2, I = t * t * t / 12;
     const double E_plane_strain = steel.E_theta / (1 - steel.nu_rtheta * steel.nu_rtheta);
-    const double w = n * (n * n - 1.0) / std::sqrt(n * n + 1.0) * std::sqrt(E_plane_strain * I / (steel.density * t * std::pow(R, 4)));
+    const double w = n * (n * n - 1.0) / std::sqrt(n * n + 1.0) *
+                     std::sqrt(E_plane_strain * I / (steel.density * t * std::pow(R, 4)));
     return w / (2 * M_PI);
 }
 
@@ -292,9 +295,10 @@ TEST_CASE("A winder roll at 1.2 m: the beam roll is the Timoshenko beam of its s
     // Timoshenko beam. A roll 1.68 m long and 1.2 m thick is at the edge of
     // beam theory (shear takes 46 % off Euler-Bernoulli) and Cowper's kappa is
     // for one material, not a core inside paper: allowed 2 %, measured +0.34 %
-    // (513.25 against 511.49 Hz). Raising E_r and G_rtheta alone gives 439 Hz.
-    const RunReport stiff = solve_case_text(roll_case(s, kRollDiameter, stiff_out_of_plane(core), stiff_out_of_plane(paper)) +
-                                            "[analysis]\nmodes = 12\n");
+    // (513.25 against 511.49 Hz). Raising the paper's E_r and G_rtheta alone
+    // gives 439 Hz.
+    const std::string stiff_roll = roll_case(s, kRollDiameter, stiff_out_of_plane(core), stiff_out_of_plane(paper));
+    const RunReport stiff = solve_case_text(stiff_roll + "[analysis]\nmodes = 12\n");
     REQUIRE(stiff.modes.verification.complete);
     const double f_stiff = nth_of_type(stiff, "bending").frequency_hz;
     INFO("with stiff out-of-plane moduli: harmonic " << f_stiff << " Hz");
