@@ -16,6 +16,7 @@ struct ConvergeLine {
     ConvergeOptions options;
     std::string output, unit;
     int n_modes = 0;
+    bool no_plots = false;
 };
 
 // The case, the results folder and the solid's ladder.
@@ -64,6 +65,7 @@ void add_run_options(CLI::App* cmd, ConvergeLine& line) {
                     "the reason in converge.md)")
         ->delimiter(',');
     cmd->add_flag("-q,--quiet", o.quiet, "no progress lines or summary");
+    cmd->add_flag("--no-plots", line.no_plots, "do not run python3 for error_vs_time.png");
 }
 
 constexpr const char* kConvergeFooter =
@@ -95,6 +97,7 @@ Command add_converge_command(CLI::App& app) {
         if (!line->output.empty()) o.output_dir = line->output;
         if (!line->unit.empty()) o.unit = line->unit;
         if (line->n_modes > 0) o.n_modes = line->n_modes;
+        o.plots = !line->no_plots;
         run_converge(o, std::cout);
         return 0;
     };

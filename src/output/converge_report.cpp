@@ -228,17 +228,17 @@ std::string converge_json(const ConvergeStudy& study) {
     return s.str();
 }
 
-void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool force, bool quiet,
+void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, const ConvergeWriting& how,
                             std::ostream& progress) {
-    ResultsFolder folder(out, force);
+    ResultsFolder folder(out, how.force);
     write_text_file(folder.file("converge.csv"), converge_csv(study));
     write_text_file(folder.file("converge.json"), converge_json(study));
-    const std::string plot_note =
-        run_python_plot("converge-plot", std::filesystem::path(folder.file("converge.json")).parent_path(), {"--quiet"});
-    if (!plot_note.empty()) std::cerr << "coremodal: warning: no error_vs_time.png: " << plot_note << std::endl;
+    const std::string plot_note = how.plots ? run_python_plot("converge-plot", folder.dir(), {"--quiet"})
+                                            : "switched off (--no-plots)";
+    if (!plot_note.empty() && how.plots) std::cerr << "coremodal: warning: no error_vs_time.png: " << plot_note << std::endl;
     write_text_file(folder.file("converge.md"), converge_markdown(study, plot_note));
     folder.commit();
-    if (!quiet) progress << "results: " << out.string() << " (converge.md, converge.csv, converge.json"
+    if (!how.quiet) progress << "results: " << out.string() << " (converge.md, converge.csv, converge.json"
                          << (plot_note.empty() ? ", error_vs_time.png" : "") << ")" << std::endl;
 }
 

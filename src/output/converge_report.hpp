@@ -21,7 +21,12 @@ std::string converge_markdown(const ConvergeStudy& study, const std::string& plo
 // The results folder (atomically, ResultsFolder): converge.csv and
 // converge.json, then the picture from them, then converge.md. A missing
 // picture is a warning on stderr and a note in the report, not an error.
-void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, bool force, bool quiet,
+struct ConvergeWriting {
+    bool force = false;  // an earlier result is removed, not kept as .previous
+    bool quiet = false;  // no "results: ..." line
+    bool plots = true;   // draw error_vs_time.png
+};
+void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, const ConvergeWriting& how,
                             std::ostream& progress);
 
 // The console summary: extrapolated frequencies of the role modes, the

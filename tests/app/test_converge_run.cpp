@@ -315,9 +315,11 @@ TEST_CASE("The converge command runs both ladders of a small case and sets the b
     // The beam alone: no PETSc solve at all.
     const fs::path beam_only = dir.path / "beam";
     const Output beam = run_program("converge '" + case_file("03-rest-roll-150x15.8-4320.toml") +
-                                    "' --models beam -q -o '" + beam_only.string() + "'");
+                                    "' --models beam -q --no-plots -o '" + beam_only.string() + "'");
     REQUIRE(beam.exit_code == 0);
     const std::string beam_md = slurp(beam_only / "converge.md");
+    CHECK_FALSE(fs::exists(beam_only / "error_vs_time.png"));  // --no-plots: python not started
+    CHECK_THAT(beam_md, Catch::Contains("(no picture: switched off (--no-plots))"));
     CHECK_THAT(beam_md, Catch::Contains("## Model level: beam"));
     CHECK_THAT(beam_md, !Catch::Contains("## Model level: solid"));
 }

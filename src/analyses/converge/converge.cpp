@@ -165,7 +165,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.load_end = load_average();
 
     // 4. Write (rank 0): numbers first, then the picture, then the report.
-    if (root && o.write_results) write_converge_results(study, out, o.force, o.quiet, progress);
+    if (root && o.write_results) write_converge_results(study, out, {o.force, o.quiet, o.plots}, progress);
     if (root && !o.quiet) print_converge_summary(study, progress);
     return study;
 }

@@ -38,6 +38,7 @@ struct ConvergeOptions {
     std::vector<std::string> models = {"solid", "beam", "harmonic"};
     bool quiet = false;
     bool write_results = true;
+    bool plots = true;  // error_vs_time.png (python); false: --no-plots
 };
 
 // Most modes asked per run while looking for the first ovalling mode.
