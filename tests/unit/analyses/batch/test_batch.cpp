@@ -1,6 +1,7 @@
-// `coremodal batch`: the pieces (JSON lookup, error lines, summary values,
+// `coremodal batch`: the pieces (JSON lookup, summary values,
 // tables) and the real program on a folder with two good and one broken case.
-#include "app/batch.hpp"
+#include "analyses/batch/batch.hpp"
+#include "output/batch_report.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -132,14 +133,6 @@ TEST_CASE("read_batch_summary takes f1, the beam ratio and v_safe = 0.7 pi D f1 
         CHECK_FALSE(d.v_safe_m_s);
     }
     CHECK_THROWS_WITH(read_batch_summary(c, "{}"), Catch::Contains("beam.fe_first_bending_hz"));
-}
-
-TEST_CASE("first_error_line picks coremodal's message out of a child's log", "[batch]") {
-    CHECK(first_error_line("") == "");
-    CHECK(first_error_line("some MPI warning\ncoremodal: error: x.toml:3:1: unknown key 'a'\nmore\n") ==
-          "error: x.toml:3:1: unknown key 'a'");
-    CHECK(first_error_line("noise\nPETSC ERROR: out of memory\nlast\n") == "PETSC ERROR: out of memory");
-    CHECK(first_error_line("one\nlast line  \n\n") == "last line");
 }
 
 TEST_CASE("batch_case_files takes every *.toml of a folder, sorted, and refuses missing paths", "[batch]") {

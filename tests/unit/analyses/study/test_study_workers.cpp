@@ -1,5 +1,5 @@
-// The record a worker child hands back to its study (app/study_workers.hpp).
-#include "app/study_workers.hpp"
+// The record a worker child hands back to its study (analyses/study/study_workers.hpp).
+#include "analyses/study/study_workers.hpp"
 
 #include <catch2/catch.hpp>
 

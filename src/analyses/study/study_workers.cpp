@@ -1,8 +1,10 @@
-#include "app/study_workers.hpp"
+#include "analyses/study/study_workers.hpp"
 
-#include "app/batch.hpp"  // first_error_line
 #include "common/child_process.hpp"
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
+#include "output/text_file.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -196,6 +198,21 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
     std::error_code ignored;
     fs::remove_all(folder, ignored);
     keep_on_interrupt(folder);
+}
+
+int run_worker_point(const WorkerPoint& w) {
+    const CaseSweep sweep = CaseSweep::read(w.case_file, w.table, w.mesh_level);
+    if (w.point < 0 || w.point >= sweep.n_points())
+        throw InputError("--worker-point " + std::to_string(w.point) + " is not a point of " + w.case_file);
+    StudyPoint p;
+    p.index = w.point;
+    try {
+        run_point(sweep.scene(w.point), p);
+    } catch (const InputError& e) {
+        p.error = e.what();
+    }
+    if (mpi_rank() == 0) write_text_file(w.output, point_record(p));
+    return 0;
 }
 
 }  // namespace coremodal

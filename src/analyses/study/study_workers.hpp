@@ -6,9 +6,10 @@
 // out-of-memory in one point cannot take down the study.
 #pragma once
 
-#include "app/study.hpp"
+#include "analyses/study/study.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,20 @@ void read_point_record(const std::string& text, StudyPoint& p);
 void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo, unsigned jobs,
                             const std::string& program, std::vector<StudyPoint>& points,
                             const std::function<void(int)>& finished);
+
+// What a worker child is asked to do: point `point` of the sweep in `table`
+// of `case_file`, its record written to `output`.
+struct WorkerPoint {
+    std::string case_file;
+    std::string table = "study";
+    std::optional<std::string> mesh_level;
+    int point = -1;
+    std::string output;
+};
+
+// The worker child's whole work: reads the sweep, runs the point in this
+// process (run_point) and writes its record on rank 0, also when the point
+// fails. Throws InputError for a point that is not in the sweep.
+int run_worker_point(const WorkerPoint& worker);
 
 }  // namespace coremodal
