@@ -5,6 +5,7 @@
 #include "output/results_folder.hpp"
 #include "scene/toml_text.hpp"
 
+#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
 #include <sys/wait.h>
@@ -32,165 +33,6 @@
 namespace coremodal {
 namespace fs = std::filesystem;
 namespace {
-
-// ---- a small JSON reader: enough for summary.json ---------------------------
-
-struct JsonValue {
-    enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
-    double number = 0;
-    std::string text;
-    std::vector<std::pair<std::string, JsonValue>> members;  // object
-    std::vector<JsonValue> items;                             // array
-};
-
-class JsonParser {
-public:
-    explicit JsonParser(const std::string& text) : t_(text) {}
-
-    JsonValue document() {
-        JsonValue v = value(0);
-        if (peek() != '\0') fail("unexpected text after the value");
-        return v;
-    }
-
-private:
-    const std::string& t_;
-    std::size_t p_ = 0;
-
-    [[noreturn]] void fail(const std::string& what) const {
-        throw std::runtime_error("invalid JSON at character " + std::to_string(p_ + 1) + ": " + what);
-    }
-    char peek() {
-        while (p_ < t_.size() && (t_[p_] == ' ' || t_[p_] == '\t' || t_[p_] == '\n' || t_[p_] == '\r')) ++p_;
-        return p_ < t_.size() ? t_[p_] : '\0';
-    }
-    void expect(char c) {
-        if (peek() != c) fail(std::string("expected '") + c + "'");
-        ++p_;
-    }
-    bool literal(const char* word) {
-        const std::size_t n = std::strlen(word);
-        if (t_.compare(p_, n, word) != 0) return false;
-        p_ += n;
-        return true;
-    }
-
-    JsonValue value(int depth) {
-        if (depth > 256) fail("nested too deeply");
-        JsonValue v;
-        const char c = peek();
-        if (c == '{') {
-            ++p_;
-            v.kind = JsonValue::Kind::object;
-            if (peek() == '}') return ++p_, v;
-            for (;;) {
-                if (peek() != '"') fail("expected a key");
-                std::string key = string();
-                expect(':');
-                v.members.emplace_back(std::move(key), value(depth + 1));
-                if (peek() == ',') {
-                    ++p_;
-                    continue;
-                }
-                expect('}');
-                return v;
-            }
-        }
-        if (c == '[') {
-            ++p_;
-            v.kind = JsonValue::Kind::array;
-            if (peek() == ']') return ++p_, v;
-            for (;;) {
-                v.items.push_back(value(depth + 1));
-                if (peek() == ',') {
-                    ++p_;
-                    continue;
-                }
-                expect(']');
-                return v;
-            }
-        }
-        if (c == '"') {
-            v.kind = JsonValue::Kind::string;
-            v.text = string();
-            return v;
-        }
-        if (literal("true") || literal("false")) {
-            v.kind = JsonValue::Kind::boolean;
-            v.number = t_[p_ - 1] == 'e' && t_[p_ - 2] == 'u';
-            return v;
-        }
-        if (literal("null")) return v;
-        if (c == '-' || (c >= '0' && c <= '9')) {
-            const char* begin = t_.c_str() + p_;
-            char* end = nullptr;
-            v.kind = JsonValue::Kind::number;
-            v.number = std::strtod(begin, &end);
-            if (end == begin) fail("bad number");
-            p_ += static_cast<std::size_t>(end - begin);
-            return v;
-        }
-        fail(c == '\0' ? std::string("unexpected end") : std::string("unexpected '") + c + "'");
-    }
-
-    std::string string() {
-        ++p_;  // opening quote
-        std::string s;
-        while (p_ < t_.size() && t_[p_] != '"') {
-            char c = t_[p_++];
-            if (c != '\\') {
-                s += c;
-                continue;
-            }
-            if (p_ >= t_.size()) break;
-            c = t_[p_++];
-            switch (c) {
-                case 'b': s += '\b'; break;
-                case 'f': s += '\f'; break;
-                case 'n': s += '\n'; break;
-                case 'r': s += '\r'; break;
-                case 't': s += '\t'; break;
-                case 'u': {
-                    if (p_ + 4 > t_.size()) fail("bad \\u escape");
-                    const unsigned cp = static_cast<unsigned>(std::stoul(t_.substr(p_, 4), nullptr, 16));
-                    p_ += 4;
-                    if (cp < 0x80) {
-                        s += static_cast<char>(cp);
-                    } else if (cp < 0x800) {
-                        s += static_cast<char>(0xC0 | (cp >> 6));
-                        s += static_cast<char>(0x80 | (cp & 0x3F));
-                    } else {
-                        s += static_cast<char>(0xE0 | (cp >> 12));
-                        s += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-                        s += static_cast<char>(0x80 | (cp & 0x3F));
-                    }
-                    break;
-                }
-                default: s += c;  // \" \\ \/
-            }
-        }
-        if (p_ >= t_.size()) fail("unterminated string");
-        ++p_;  // closing quote
-        return s;
-    }
-};
-
-const JsonValue* json_find(const JsonValue& root, const std::string& path) {
-    const JsonValue* v = &root;
-    std::size_t start = 0;
-    while (start <= path.size()) {
-        const std::size_t dot = std::min(path.find('.', start), path.size());
-        const std::string key = path.substr(start, dot - start);
-        if (v->kind != JsonValue::Kind::object) return nullptr;
-        const JsonValue* next = nullptr;
-        for (const auto& [k, member] : v->members)
-            if (k == key) next = &member;
-        if (!next) return nullptr;
-        v = next;
-        start = dot + 1;
-    }
-    return v;
-}
 
 // ---- child processes ---------------------------------------------------------
 
@@ -258,29 +100,29 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
 
 }  // namespace
 
-std::optional<double> json_number(const std::string& json, const std::string& path) {
-    const JsonValue root = JsonParser(json).document();
-    const JsonValue* v = json_find(root, path);
-    if (!v || v->kind != JsonValue::Kind::number) return std::nullopt;
-    return v->number;
-}
-
-std::optional<std::string> json_string(const std::string& json, const std::string& path) {
-    const JsonValue root = JsonParser(json).document();
-    const JsonValue* v = json_find(root, path);
-    if (!v || v->kind != JsonValue::Kind::string) return std::nullopt;
-    return v->text;
-}
-
-
 void read_batch_summary(BatchCase& c, const std::string& summary_json) {
-    const JsonValue root = JsonParser(summary_json).document();
-    auto number = [&](const std::string& path) -> std::optional<double> {
-        const JsonValue* v = json_find(root, path);
-        if (!v || v->kind != JsonValue::Kind::number || !std::isfinite(v->number)) return std::nullopt;
-        return v->number;
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(summary_json);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw std::runtime_error(std::string("invalid JSON: ") + e.what());
+    }
+    // The value at a dotted path of object keys ("beam.fe_first_bending_hz"); nullptr when absent.
+    auto find = [&](const std::string& path) -> const nlohmann::json* {
+        const nlohmann::json* v = &root;
+        std::istringstream keys(path);
+        for (std::string key; std::getline(keys, key, '.');) {
+            if (!v->is_object() || !v->contains(key)) return nullptr;
+            v = &(*v)[key];
+        }
+        return v;
     };
-    if (!json_find(root, "beam.fe_first_bending_hz")) throw std::runtime_error("no beam.fe_first_bending_hz");
+    auto number = [&](const std::string& path) -> std::optional<double> {
+        const nlohmann::json* v = find(path);
+        if (!v || !v->is_number() || !std::isfinite(v->get<double>())) return std::nullopt;
+        return v->get<double>();
+    };
+    if (!find("beam.fe_first_bending_hz")) throw std::runtime_error("no beam.fe_first_bending_hz");
     // The writer stores null when no bending mode was found among the modes (0 before).
     const auto f1 = number("beam.fe_first_bending_hz");
     c.f1_hz = f1 && *f1 > 0 ? f1 : std::nullopt;
@@ -288,8 +130,8 @@ void read_batch_summary(BatchCase& c, const std::string& summary_json) {
     c.fe_over_timoshenko = ratio && *ratio > 0 ? ratio : std::nullopt;
     c.diameter_m = number("case.rest_paper.outer_diameter");
     if (!c.diameter_m) c.diameter_m = number("case.core.outer_diameter");
-    const JsonValue* supports = json_find(root, "case.supports.type");
-    const bool free_free = supports && supports->kind == JsonValue::Kind::string && supports->text == "free";
+    const nlohmann::json* supports = find("case.supports.type");
+    const bool free_free = supports && supports->is_string() && supports->get<std::string>() == "free";
     c.v_safe_m_s.reset();
     if (c.f1_hz && c.diameter_m && !free_free) c.v_safe_m_s = kSafeSpeedFactor * M_PI * *c.diameter_m * *c.f1_hz;
 }

@@ -57,14 +57,9 @@ bool is_winder_file(const std::string& case_file);
 // finished case to `progress`. Never throws for a failing case.
 std::vector<BatchCase> run_batch(const BatchOptions& options, std::ostream& progress);
 
-// Fills the summary fields of `c` from the text of its summary.json. Throws
-// std::runtime_error when the text is not JSON or lacks the beam keys.
+// Fills the summary fields of `c` from the text of its summary.json (read
+// with nlohmann-json). Throws std::runtime_error when the text is not JSON
+// or lacks the beam keys.
 void read_batch_summary(BatchCase& c, const std::string& summary_json);
-
-// A number or string in a JSON text by a dotted path of object keys, e.g.
-// "beam.fe_first_bending_hz"; nullopt when the path is absent or of another
-// kind. Throws std::runtime_error when the text is not valid JSON.
-std::optional<double> json_number(const std::string& json, const std::string& path);
-std::optional<std::string> json_string(const std::string& json, const std::string& path);
 
 }  // namespace coremodal

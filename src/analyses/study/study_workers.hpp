@@ -15,10 +15,13 @@
 
 namespace coremodal {
 
-// The run's part of a point as text: ok/error, time, model level, DOFs, f1,
-// every mode with its label and signature (17 significant digits).
+// The run's part of a point as JSON (nlohmann-json): ok, error, time, model
+// level, DOFs, f1, every mode with its label and signature (each double
+// written so that it reads back bit for bit).
 std::string point_record(const StudyPoint& p);
-// Reads it back into `p`. Throws std::runtime_error for text that is not a record.
+// Reads it back into `p`. Throws std::runtime_error for text that is not a
+// record ("not a study point record ...") or lacks one of its fields
+// ("study point record: ...").
 void read_point_record(const std::string& text, StudyPoint& p);
 
 // Runs the points `todo` of the sweep, at most `jobs` at a time, each in a
