@@ -27,7 +27,7 @@ cmake --build build-fuzz -j "$(nproc)" 2>&1 | tail -n 5
 # and the reader (keys, value choices) and every ASCII unit symbol.
 {
   cat fuzz/case.dict
-  grep -ohE '"[A-Za-z_][A-Za-z0-9_]*"' src/scene/case_schema.cpp src/scene/case_file.cpp | sort -u
+  grep -ohE '"[A-Za-z_][A-Za-z0-9_]*"' src/scene/case_schema.cpp src/scene/case_file.cpp src/scene/case_reader* | sort -u
   grep -ohE 'UnitSpec\{"[ -~]+",' src/scene/units.cpp | sed -E 's/UnitSpec\{"(.*)",/" \1"/'
 } > build-fuzz/case.dict
 
