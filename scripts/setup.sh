@@ -15,7 +15,7 @@ set -euo pipefail
 packages=(build-essential cmake pkg-config
           petsc-dev slepc-dev libopenblas0-pthread
           libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
-          catch2 libtomlplusplus-dev libcli11-dev
+          catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
           python3 python3-h5py python3-numpy python3-matplotlib python3-pytest
           python3-pil python3-pip python3-setuptools "$@")
 if [ "${COREMODAL_PARAVIEW:-0}" = 1 ]; then

@@ -127,7 +127,7 @@ def axis_label(p: Parameter) -> str:
 def change_diameters(diameter: np.ndarray, v_safe: np.ndarray, web_speed: float) -> list[float]:
     """Diameters where v_safe(D) rises through the web speed as D grows: below
     them the roll runs faster than safe and must be changed. Same rule as the
-    C++ report (app/study.cpp, safe_speed_crossings)."""
+    C++ report (analyses/study/study.cpp, safe_speed_crossings)."""
     order = np.argsort(diameter)
     d, v = np.asarray(diameter, float)[order], np.asarray(v_safe, float)[order]
     out = []

@@ -1,25 +1,16 @@
 // `coremodal batch DIR|FILES...`: many case files, each run by a child
 // `coremodal run` process, a few at a time; a table of f1, the beam ratio and
 // the safe web speed at the end (console, OUT/batch.csv, OUT/batch.md).
-#include "app/batch.hpp"
+#include "analyses/batch/batch.hpp"
 #include "app/commands.hpp"
-#include "common/error.hpp"
 #include "common/signals.hpp"
+#include "output/batch_report.hpp"
+#include "output/text_file.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace coremodal {
-namespace {
-
-void write_file(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream f(path);
-    f << text;
-    if (!f) throw InputError("cannot write " + path.string());
-}
-
-}  // namespace
 
 Command add_batch_command(CLI::App& app) {
     auto options = std::make_shared<BatchOptions>();
@@ -43,8 +34,8 @@ Command add_batch_command(CLI::App& app) {
         const auto cases = run_batch(*options, std::cout);
         const std::filesystem::path out = options->output_dir;
         unless_interrupted([&] {  // no table of cases an interrupt stopped
-            write_file(out / "batch.csv", batch_csv(cases));
-            write_file(out / "batch.md", batch_markdown(cases));
+            write_text_file(out / "batch.csv", batch_csv(cases));
+            write_text_file(out / "batch.md", batch_markdown(cases));
         });
         print_batch_table(std::cout, cases);
         std::cout << "table: " << (out / "batch.csv").string() << ", " << (out / "batch.md").string() << std::endl;

@@ -1,19 +1,20 @@
 // `coremodal calibrate CASE.toml [--output DIR]`: the [calibration] sweep,
 // the table of k, the fitted law and its check; calibration.toml for
 // `coremodal beam --calibration` (docs/calibration.md).
-#include "app/calibrate.hpp"
-#include "common/format.hpp"
+#include "analyses/calibrate/calibrate.hpp"
 #include "app/commands.hpp"
+#include "common/format.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/warnings.hpp"
+#include "output/calibration_report.hpp"
 #include "output/results_folder.hpp"
+#include "output/study_report.hpp"
+#include "output/text_file.hpp"
 
-#include <cstdio>
 #include <iostream>
 
 namespace coremodal {
 namespace {
-
 
 struct CalibrateOptions {
     std::string case_file, output, mesh;

@@ -2,7 +2,7 @@
 // does, then say what `run` would simulate — every resolved value and where
 // it came from, the effects, the model level and why — without meshing,
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
-#include "app/batch.hpp"  // is_winder_file
+#include "analyses/batch/batch.hpp"  // is_winder_file
 #include "app/commands.hpp"
 #include "app/run_harmonic.hpp"  // why_not_axisymmetric, require_axisymmetric
 #include "common/warnings.hpp"

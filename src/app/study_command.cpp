@@ -1,48 +1,31 @@
 // `coremodal study CASE.toml [--output DIR]`: the case's [study] table run
 // point by point, modes tracked by MAC, results in one folder (docs/studies.md).
+#include "analyses/study/study.hpp"
+#include "analyses/study/study_workers.hpp"
 #include "app/commands.hpp"
 #include "common/format.hpp"
-#include "app/study.hpp"
-#include "app/study_workers.hpp"
-#include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/warnings.hpp"
 #include "output/results_folder.hpp"
+#include "output/study_report.hpp"
+#include "output/text_file.hpp"
 
-#include <cstdio>
 #include <iostream>
 
 namespace coremodal {
 namespace {
 
-
 struct StudyCommandOptions {
     std::string case_file, output, mesh;
     bool quiet = false, no_plots = false, force = false;
     unsigned jobs = 0;  // 0: the number of cores
-    // A worker child of a study (app/study_workers.hpp): hidden options.
+    // A worker child of a study (analyses/study/study_workers.hpp): hidden options.
     int worker_point = -1;
     std::string worker_table = "study", worker_output;
 };
 
 std::optional<std::string> mesh_option(const std::string& mesh) {
     return mesh.empty() ? std::nullopt : std::optional<std::string>(mesh);
-}
-
-// One point, for a parent study running its points in child processes.
-int run_worker(const StudyCommandOptions& o) {
-    const CaseSweep sweep = CaseSweep::read(o.case_file, o.worker_table, mesh_option(o.mesh));
-    if (o.worker_point < 0 || o.worker_point >= sweep.n_points())
-        throw InputError("--worker-point " + std::to_string(o.worker_point) + " is not a point of " + o.case_file);
-    StudyPoint p;
-    p.index = o.worker_point;
-    try {
-        run_point(sweep.scene(o.worker_point), p);
-    } catch (const InputError& e) {
-        p.error = e.what();
-    }
-    if (mpi_rank() == 0) write_text_file(o.worker_output, point_record(p));
-    return 0;
 }
 
 void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
@@ -56,7 +39,8 @@ void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
 }
 
 int run_study_command(const StudyCommandOptions& o) {
-    if (!o.worker_output.empty()) return run_worker(o);
+    if (!o.worker_output.empty())
+        return run_worker_point({o.case_file, o.worker_table, mesh_option(o.mesh), o.worker_point, o.worker_output});
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
     print_warnings(sweep.warnings());

@@ -7,9 +7,12 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <set>
+#include <sstream>
 
 extern char** environ;
 
@@ -70,6 +73,24 @@ ChildExit run_child(const std::string& program, std::vector<std::string> args, s
     child_reaped(pid);
     out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+std::string first_error_line(const std::string& log_text) {
+    std::vector<std::string> lines;
+    std::istringstream in(log_text);
+    for (std::string line; std::getline(in, line);) {
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) line.pop_back();
+        if (!line.empty()) lines.push_back(line);
+    }
+    const std::string prefix = "coremodal: ";
+    for (const auto& l : lines)
+        if (l.rfind(prefix, 0) == 0) return l.substr(prefix.size());
+    for (const auto& l : lines) {
+        std::string lower = l;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return std::tolower(ch); });
+        if (lower.find("error") != std::string::npos) return l;
+    }
+    return lines.empty() ? "" : lines.back();
 }
 
 }  // namespace coremodal

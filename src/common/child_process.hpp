@@ -33,4 +33,9 @@ std::vector<std::string> child_environment(bool single_threaded);
 ChildExit run_child(const std::string& program, std::vector<std::string> args, std::vector<std::string> env,
                     const std::filesystem::path& log, bool search_path = false);
 
+// The line of a child's log that explains its failure: the first
+// "coremodal: ..." line (prefix removed), else the first line mentioning an
+// error, else the last non-empty line; "" for an empty log.
+std::string first_error_line(const std::string& log_text);
+
 }  // namespace coremodal

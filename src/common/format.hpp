@@ -21,4 +21,9 @@ inline std::string formatted(const char* format, double v) {
     return text;
 }
 
+// A duration for people: "95.2 s" below two minutes, "12.5 min" above.
+inline std::string minutes_or_seconds(double s) {
+    return s < 120 ? significant(s, 3) + " s" : significant(s / 60, 3) + " min";
+}
+
 }  // namespace coremodal

@@ -85,7 +85,7 @@ public:
     // reader's message>" when the case reader refuses the combination.
     Scene scene(int point) const;
 
-    struct Impl;  // the case's text, the key paths and values (case_sweep.cpp)
+    struct Impl;  // the case's text, the key paths and values (case_sweep_impl.hpp)
 
 private:
     std::shared_ptr<const Impl> impl_;

@@ -5,7 +5,7 @@
 #include "support/program_run.hpp"
 #include "support/tiny_case.hpp"
 
-#include "app/batch.hpp"  // json_number: read back summary.json
+#include "support/json_lookup.hpp"  // json_number: read back summary.json
 
 #include <catch2/catch.hpp>
 

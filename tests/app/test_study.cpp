@@ -1,10 +1,11 @@
 // Studies and calibration end to end, in this process (run_scene per point):
 // modes that cross are followed by MAC, and the calibrated chuck factor
 // reproduces FE frequencies it was not fitted to.
-#include "app/calibrate.hpp"
+#include "analyses/calibrate/calibrate.hpp"
 #include "app/run_case.hpp"
-#include "app/study.hpp"
+#include "analyses/study/study.hpp"
 #include "beam/formulas.hpp"
+#include "output/study_report.hpp"
 #include "scene/case_sweep.hpp"
 
 #include <catch2/catch.hpp>

@@ -6,7 +6,7 @@
 #include "hard/hard_checks.hpp"
 #include "verification/tube_scenes.hpp"
 
-#include "app/batch.hpp"
+#include "analyses/batch/batch.hpp"
 #include "assembly/petsc_system.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "geometry/tube_model.hpp"

@@ -4,7 +4,7 @@
 // summary.
 #include "output/converge_report.hpp"
 
-#include "app/batch.hpp"  // json_number, json_string: read back converge.json
+#include "support/json_lookup.hpp"  // json_number, json_string: read back converge.json
 #include "output/csv.hpp"
 
 #include "support/converge_levels.hpp"

@@ -1,6 +1,7 @@
-// Running a sweep ([study] or [calibration]): every point in this process
-// through run_scene, modes tracked from point to point by MAC, then the
-// study's files (docs/studies.md).
+// Running a sweep ([study] or [calibration]): every point through run_scene,
+// in this process or in child processes (study_workers.hpp), modes tracked
+// from point to point by MAC (docs/studies.md). The study's files are
+// output/study_report.hpp.
 //
 // A point is "the case's document with some keys changed -> Scene ->
 // run_scene -> RunReport": whatever model level or support the scene asks for
@@ -9,7 +10,6 @@
 
 #include "beam/chuck_calibration.hpp"
 #include "modes/tracking.hpp"
-#include "output/text_file.hpp"  // write_text_file, for the study and calibrate commands
 #include "scene/case_sweep.hpp"
 
 #include <filesystem>
@@ -53,7 +53,7 @@ struct StudyResult {
 struct StudyRunOptions {
     bool quiet = false;  // no progress lines
     // Points run at the same time, each in a child process of this program
-    // (`coremodal study --worker-point`, app/study_workers.hpp): one point's
+    // (`coremodal study --worker-point`, analyses/study/study_workers.hpp): one point's
     // factor-and-solve keeps about one core busy, so two at a time use a
     // 2-core machine. 1 = one after the other in this process (always so
     // under MPI, and for a sweep read from text rather than a file).
@@ -89,14 +89,6 @@ void track_modes(const CaseSweep& sweep, StudyResult& result);
 StudyResult run_and_track(const CaseSweep& sweep, const std::string& command, const std::filesystem::path& out_dir,
                           bool quiet, unsigned jobs);
 
-// The column of a parameter in study.csv: its name and SI unit ("core.length_m").
-std::string parameter_column(const SweepParameter& p);
-
-// One row per point and tracked mode group; a failed point has one row with its error.
-std::string study_csv(const CaseSweep& sweep, const StudyResult& result);
-// Metadata for the plotting script (python/coremodal/study_plot.py).
-std::string study_json(const CaseSweep& sweep, const StudyResult& result, const std::string& kind);
-
 // Where a safe-speed curve crosses the web speed: the rest roll diameter
 // below which the roll must be changed (docs/studies.md, König's chart).
 struct SpeedCrossing {
@@ -109,18 +101,5 @@ std::vector<SpeedCrossing> safe_speed_crossings(const CaseSweep& sweep, const St
 
 // Indices of the parameters that change the rest roll diameter (found from the results).
 std::vector<int> diameter_parameters(const CaseSweep& sweep, const StudyResult& result);
-
-// Writes study.csv and study.json into `dir` and, with `plots`, the PNGs;
-// returns the PNG file names found in `dir` afterwards and, if the plots
-// could not be drawn, why.
-struct StudyFiles {
-    std::vector<std::string> pngs;
-    std::string plot_problem;
-};
-StudyFiles write_study_files(const std::filesystem::path& dir, const CaseSweep& sweep, const StudyResult& result,
-                             const std::string& kind, bool plots);
-
-std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& result,
-                                  const std::vector<std::string>& pngs, const std::string& plot_problem);
 
 }  // namespace coremodal

@@ -1,6 +1,6 @@
-// The study's tables and König's change diameters (app/study.hpp), on a
+// The study's tables and König's change diameters (output/study_report.hpp, analyses/study/study.hpp), on a
 // study result filled by hand: no solves.
-#include "app/study.hpp"
+#include "output/study_report.hpp"
 
 #include <catch2/catch.hpp>
 

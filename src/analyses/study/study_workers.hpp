@@ -6,18 +6,22 @@
 // out-of-memory in one point cannot take down the study.
 #pragma once
 
-#include "app/study.hpp"
+#include "analyses/study/study.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace coremodal {
 
-// The run's part of a point as text: ok/error, time, model level, DOFs, f1,
-// every mode with its label and signature (17 significant digits).
+// The run's part of a point as JSON (nlohmann-json): ok, error, time, model
+// level, DOFs, f1, every mode with its label and signature (each double
+// written so that it reads back bit for bit).
 std::string point_record(const StudyPoint& p);
-// Reads it back into `p`. Throws std::runtime_error for text that is not a record.
+// Reads it back into `p`. Throws std::runtime_error for text that is not a
+// record ("not a study point record ...") or lacks one of its fields
+// ("study point record: ...").
 void read_point_record(const std::string& text, StudyPoint& p);
 
 // Runs the points `todo` of the sweep, at most `jobs` at a time, each in a
@@ -27,5 +31,20 @@ void read_point_record(const std::string& text, StudyPoint& p);
 void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo, unsigned jobs,
                             const std::string& program, std::vector<StudyPoint>& points,
                             const std::function<void(int)>& finished);
+
+// What a worker child is asked to do: point `point` of the sweep in `table`
+// of `case_file`, its record written to `output`.
+struct WorkerPoint {
+    std::string case_file;
+    std::string table = "study";
+    std::optional<std::string> mesh_level;
+    int point = -1;
+    std::string output;
+};
+
+// The worker child's whole work: reads the sweep, runs the point in this
+// process (run_point) and writes its record on rank 0, also when the point
+// fails. Throws InputError for a point that is not in the sweep.
+int run_worker_point(const WorkerPoint& worker);
 
 }  // namespace coremodal

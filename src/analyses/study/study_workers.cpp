@@ -1,8 +1,12 @@
-#include "app/study_workers.hpp"
+#include "analyses/study/study_workers.hpp"
 
-#include "app/batch.hpp"  // first_error_line
 #include "common/child_process.hpp"
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
+#include "output/text_file.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,81 +30,67 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kRecordHeader = "coremodal-study-point 1";
+// The record's "format": a file with another tag is not a point record.
+constexpr const char* kRecordFormat = "coremodal-study-point";
+constexpr int kRecordVersion = 1;
 
-std::string exact(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
+nlohmann::json mode_json(const ModeSummary& m) {
+    return {{"index", m.index},
+            {"frequency_hz", m.frequency_hz},
+            {"type", m.label.type},
+            {"n", m.label.n},
+            {"m", m.label.m},
+            {"dominant_share", m.label.dominant_share},
+            {"signature", m.signature}};
 }
 
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
-    return s;
+ModeSummary mode_from_json(const nlohmann::json& j) {
+    ModeSummary m;
+    m.index = j.at("index").get<int>();
+    m.frequency_hz = j.at("frequency_hz").get<double>();
+    m.label.type = j.at("type").get<std::string>();
+    m.label.n = j.at("n").get<int>();
+    m.label.m = j.at("m").get<int>();
+    m.label.dominant_share = j.at("dominant_share").get<double>();
+    m.signature = j.at("signature").get<Signature>();
+    return m;
 }
 
 }  // namespace
 
 std::string point_record(const StudyPoint& p) {
-    std::ostringstream out;
-    out << kRecordHeader << "\nok " << (p.ok ? 1 : 0) << "\ntime_s " << exact(p.time_s) << "\nmodel_level "
-        << (p.model_level.empty() ? "-" : p.model_level) << "\nn_dofs " << p.n_dofs << "\n";
-    if (p.f1_hz) out << "f1_hz " << exact(*p.f1_hz) << "\n";
-    if (!p.ok) out << "error " << one_line(p.error) << "\n";
-    out << "modes " << p.modes.size() << "\n";
-    for (const ModeSummary& m : p.modes) {
-        out << m.index << " " << exact(m.frequency_hz) << " " << m.label.type << " " << m.label.n << " " << m.label.m
-            << " " << exact(m.label.dominant_share) << " " << m.signature.size();
-        for (double v : m.signature) out << " " << exact(v);
-        out << "\n";
-    }
-    return out.str();
+    nlohmann::json modes = nlohmann::json::array();
+    for (const ModeSummary& m : p.modes) modes.push_back(mode_json(m));
+    nlohmann::json j = {{"format", kRecordFormat}, {"version", kRecordVersion}, {"ok", p.ok},
+                        {"time_s", p.time_s},      {"model_level", p.model_level}, {"n_dofs", p.n_dofs},
+                        {"error", p.error},        {"modes", modes}};
+    if (p.f1_hz) j["f1_hz"] = *p.f1_hz;
+    // Doubles are written with the shortest text that reads back to the same bits.
+    return j.dump(1) + "\n";
 }
 
 void read_point_record(const std::string& text, StudyPoint& p) {
-    std::istringstream in(text);
-    std::string line;
-    if (!std::getline(in, line) || line != kRecordHeader) throw std::runtime_error("not a study point record");
-    while (std::getline(in, line)) {
-        std::istringstream row(line);
-        std::string key;
-        row >> key;
-        if (key == "ok") {
-            int ok = 0;
-            row >> ok;
-            p.ok = ok == 1;
-        } else if (key == "time_s") {
-            row >> p.time_s;
-        } else if (key == "model_level") {
-            row >> p.model_level;
-        } else if (key == "n_dofs") {
-            row >> p.n_dofs;
-        } else if (key == "f1_hz") {
-            double f1 = 0;
-            row >> f1;
-            p.f1_hz = f1;
-        } else if (key == "error") {
-            std::getline(row >> std::ws, p.error);
-        } else if (key == "modes") {
-            size_t n = 0;
-            row >> n;
-            for (size_t i = 0; i < n; ++i) {
-                if (!std::getline(in, line)) throw std::runtime_error("study point record: missing modes");
-                std::istringstream m(line);
-                ModeSummary s;
-                size_t n_signature = 0;
-                m >> s.index >> s.frequency_hz >> s.label.type >> s.label.n >> s.label.m >> s.label.dominant_share >>
-                    n_signature;
-                s.signature.resize(n_signature);
-                for (double& v : s.signature) m >> v;
-                if (!m) throw std::runtime_error("study point record: bad mode line");
-                p.modes.push_back(std::move(s));
-            }
-        } else {
-            throw std::runtime_error("study point record: unknown line '" + line + "'");
-        }
-        if (!row && key != "error") throw std::runtime_error("study point record: bad line '" + line + "'");
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw std::runtime_error(std::string("not a study point record (invalid JSON): ") + e.what());
+    }
+    if (!j.is_object() || j.value("format", "") != kRecordFormat)
+        throw std::runtime_error(std::string("not a study point record (no \"format\": \"") + kRecordFormat + "\")");
+    try {
+        if (j.at("version").get<int>() != kRecordVersion)
+            throw std::runtime_error("version " + j.at("version").dump() + ", expected " +
+                                     std::to_string(kRecordVersion));
+        p.ok = j.at("ok").get<bool>();
+        p.time_s = j.at("time_s").get<double>();
+        p.model_level = j.at("model_level").get<std::string>();
+        p.n_dofs = j.at("n_dofs").get<long>();
+        p.error = j.at("error").get<std::string>();
+        if (j.contains("f1_hz")) p.f1_hz = j.at("f1_hz").get<double>();
+        for (const nlohmann::json& m : j.at("modes")) p.modes.push_back(mode_from_json(m));
+    } catch (const std::exception& e) {  // a missing key or a value of the wrong kind
+        throw std::runtime_error(std::string("study point record: ") + e.what());
     }
 }
 
@@ -121,7 +111,7 @@ struct Child {
 
     // Runs point i in a child; fills the point from its record, or its failure.
     void run(int i, StudyPoint& p) const {
-        const fs::path record = folder / ("point-" + std::to_string(i + 1) + ".txt");
+        const fs::path record = folder / ("point-" + std::to_string(i + 1) + ".json");
         const fs::path log = folder / ("point-" + std::to_string(i + 1) + ".log");
         std::error_code ec;  // "/proc/self/exe" names the program by a link: show its target in ps
         const fs::path real = fs::read_symlink(program, ec);
@@ -196,6 +186,21 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
     std::error_code ignored;
     fs::remove_all(folder, ignored);
     keep_on_interrupt(folder);
+}
+
+int run_worker_point(const WorkerPoint& w) {
+    const CaseSweep sweep = CaseSweep::read(w.case_file, w.table, w.mesh_level);
+    if (w.point < 0 || w.point >= sweep.n_points())
+        throw InputError("--worker-point " + std::to_string(w.point) + " is not a point of " + w.case_file);
+    StudyPoint p;
+    p.index = w.point;
+    try {
+        run_point(sweep.scene(w.point), p);
+    } catch (const InputError& e) {
+        p.error = e.what();
+    }
+    if (mpi_rank() == 0) write_text_file(w.output, point_record(p));
+    return 0;
 }
 
 }  // namespace coremodal

@@ -1,5 +1,5 @@
-// The record a worker child hands back to its study (app/study_workers.hpp).
-#include "app/study_workers.hpp"
+// The record a worker child hands back to its study (analyses/study/study_workers.hpp).
+#include "analyses/study/study_workers.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -41,8 +41,15 @@ TEST_CASE("A point's record reads back exactly, failed or not", "[app][study]") 
     StudyPoint r;
     read_point_record(point_record(failed), r);
     CHECK_FALSE(r.ok);
-    CHECK(r.error == "solve failed: converged 3 of 8 second line");
+    CHECK(r.error == failed.error);  // JSON keeps the line break
     CHECK_FALSE(r.f1_hz);
 
     CHECK_THROWS_WITH(read_point_record("something else\n", r), Catch::Contains("not a study point record"));
+    CHECK_THROWS_WITH(read_point_record("{\"ok\": true}", r), Catch::Contains("not a study point record"));
+    std::string cut = point_record(p);
+    cut.resize(cut.size() / 2);
+    CHECK_THROWS_WITH(read_point_record(cut, r), Catch::Contains("not a study point record (invalid JSON)"));
+    std::string no_modes = point_record(failed);
+    no_modes.replace(no_modes.find("\"modes\""), 7, "\"nodes\"");
+    CHECK_THROWS_WITH(read_point_record(no_modes, r), Catch::Contains("study point record:") && Catch::Contains("modes"));
 }

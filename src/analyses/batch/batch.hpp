@@ -1,6 +1,7 @@
 // `coremodal batch`: many case files, each run as a child process of the same
 // coremodal executable (`coremodal run CASE --output OUT/<stem> --quiet`), so
-// that a crash or an error in one case cannot take down the others.
+// that a crash or an error in one case cannot take down the others. The
+// result table is written by output/batch_report.hpp.
 #pragma once
 
 #include <optional>
@@ -56,24 +57,9 @@ bool is_winder_file(const std::string& case_file);
 // finished case to `progress`. Never throws for a failing case.
 std::vector<BatchCase> run_batch(const BatchOptions& options, std::ostream& progress);
 
-// Fills the summary fields of `c` from the text of its summary.json. Throws
-// std::runtime_error when the text is not JSON or lacks the beam keys.
+// Fills the summary fields of `c` from the text of its summary.json (read
+// with nlohmann-json). Throws std::runtime_error when the text is not JSON
+// or lacks the beam keys.
 void read_batch_summary(BatchCase& c, const std::string& summary_json);
-
-// The line of a child's log that explains its failure: the first
-// "coremodal: ..." line (prefix removed), else the first line mentioning an
-// error, else the last non-empty line; "" for an empty log.
-std::string first_error_line(const std::string& log_text);
-
-// A number or string in a JSON text by a dotted path of object keys, e.g.
-// "beam.fe_first_bending_hz"; nullopt when the path is absent or of another
-// kind. Throws std::runtime_error when the text is not valid JSON.
-std::optional<double> json_number(const std::string& json, const std::string& path);
-std::optional<std::string> json_string(const std::string& json, const std::string& path);
-
-// The result table: console text, CSV and Markdown.
-void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases);
-std::string batch_csv(const std::vector<BatchCase>& cases);
-std::string batch_markdown(const std::vector<BatchCase>& cases);
 
 }  // namespace coremodal

@@ -1,9 +1,10 @@
 // `coremodal calibrate`: the chuck factor k of every point of a
 // [calibration] sweep, fitted as a function of dimensionless groups
 // (beam/chuck_calibration.hpp), checked on held-out points (docs/calibration.md).
+// Its files: output/calibration_report.hpp and beam/chuck_calibration.hpp (calibration.toml).
 #pragma once
 
-#include "app/study.hpp"
+#include "analyses/study/study.hpp"
 #include "beam/chuck_calibration.hpp"
 
 #include <string>
@@ -32,10 +33,5 @@ struct CalibrationOutcome {
 // is held out; the rest are fitted. Throws InputError when too few points
 // are usable (fewer than 4 to fit or none to hold out).
 CalibrationOutcome calibrate_chuck_factor(const CaseSweep& sweep, const StudyResult& result);
-
-std::string calibration_csv(const CaseSweep& sweep, const CalibrationOutcome& outcome);
-std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResult& result,
-                                        const CalibrationOutcome& outcome, const std::vector<std::string>& pngs,
-                                        const std::string& plot_problem);
 
 }  // namespace coremodal
