@@ -142,7 +142,9 @@ struct Scene {
     // rho V of every part (roll, chuck bodies and shafts) and the frame masses, kg.
     double mass_from_dimensions() const;
 
-    // The effects this scene simulates, e.g. {"core", "rest_paper", "rigid_clamps"}.
+    // The effects this scene simulates, e.g. {"core", "rest_paper", "rigid_clamps"}:
+    // the names of the effects the model levels apply (effect_names in
+    // effects/support_effects.hpp, where this is defined).
     std::vector<std::string> effects() const;
 };
 
