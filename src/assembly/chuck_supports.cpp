@@ -121,9 +121,7 @@ CouplingElement spring_layer_face(const Mesh& mesh, const ChuckEffects& chuck, c
         for (int a = 0; a < n; ++a)
             for (int b = 0; b < n; ++b) Kab.block<3, 3>(3 * a, 3 * b) += p.area_weight * p.N[a] * p.N[b] * D;
     }
-    Eigen::MatrixXd K(6 * n, 6 * n);
-    K << Kab, -Kab, -Kab, Kab;
-    e.terms.push_back({SpringLayer::kTerm, std::move(K)});
+    e.terms.push_back({SpringLayer::kTerm, spring_between(Kab)});
     return e;
 }
 

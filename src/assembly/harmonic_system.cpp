@@ -130,9 +130,7 @@ void add_spring_layer(const SectionMesh& mesh, const ChuckEffects& chuck, const 
     const auto& body = mesh.edge_groups.at("interface_" + chuck.placement.chuck + "_chuck");
     const Eigen::Vector3d k = chuck.spring_layer->per_area_cylindrical();
     for (size_t e = 0; e < core.size(); ++e) {
-        const Eigen::MatrixXd Ke = harmonic_edge_spring(edge_coords(mesh, core[e]), k, n);
-        Eigen::MatrixXd K(18, 18);
-        K << Ke, -Ke, -Ke, Ke;
+        const Eigen::MatrixXd K = spring_between(harmonic_edge_spring(edge_coords(mesh, core[e]), k, n));
         std::vector<int> d = component_dofs(dofs, core[e].data(), 3);
         const std::vector<int> d_body = component_dofs(dofs, body[e].data(), 3);
         d.insert(d.end(), d_body.begin(), d_body.end());

@@ -1,6 +1,7 @@
 // Where on the core a chuck acts: the one statement of it that every model
-// level reads (the solid's bore faces, the beam's stations; the section mesh
-// puts its interface edges on ChuckSpec::z_range, the same ranges).
+// level reads (the section's interface segments and so the solid's bore faces
+// and the harmonic's interface edges, the solid's covered points, the beam's
+// stations, the rigid-clamp variant of a chuck scene).
 //
 // Axial positions in a ChuckSpec are measured from that chuck's own core end,
 // inwards; here they become z from the left core end (z = 0). The shaft runs
@@ -10,6 +11,7 @@
 #include "scene/scene.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace coremodal {
@@ -18,6 +20,7 @@ namespace coremodal {
 struct ZRange {
     double lo = 0, hi = 0;
     bool holds(double z, double tol) const { return z >= lo - tol && z <= hi + tol; }
+    std::pair<double, double> pair() const { return {lo, hi}; }
 };
 
 // An arc of the bore [from, to], rad (from < to; not reduced to [0, 2 pi)).

@@ -34,10 +34,4 @@ double ChuckSpec::li() const {
     return li;
 }
 
-std::pair<double, double> ChuckSpec::z_range(const ExpandingElement& e, double core_length) const {
-    const double near = e.center - e.width / 2, far = e.center + e.width / 2;
-    if (name == "right") return {core_length - far, core_length - near};
-    return {near, far};
-}
-
 }  // namespace coremodal

@@ -79,10 +79,8 @@ struct ChuckSpec {
     BearingSpec bearing;
 
     // Li: core end to the middle of the furthest expanding element (Ilomäki).
+    // Where the chuck acts along the core: effects/chuck_placement.hpp.
     double li() const;
-    // z range of an expanding element from the left core end (the right
-    // chuck measures from the right end).
-    std::pair<double, double> z_range(const ExpandingElement& e, double core_length) const;
 };
 
 enum class SupportKind { free, clamped, chucks };

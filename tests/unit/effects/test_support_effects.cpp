@@ -24,15 +24,6 @@ constexpr double kNormal = 3e10;  // Pa/m
 
 Scene chuck_scene() { return with_chucks(paper_core(0.6, 16, 16), InterfaceKind::spring, kNormal); }
 
-Scene on_elastic_bearings(Scene s) {
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.bearing.rigid = false;
-        c.bearing.radial_stiffness = 2e8;
-        c.bearing.tilting_stiffness = 3e6;
-    }
-    return s;
-}
-
 // Solid: u^T K u over the left chuck's spring-layer couplings, the core's
 // nodes moved by `u` (one metre along x or z), the chuck's held.
 double solid_layer(const Scene& s, int component) {
@@ -83,7 +74,7 @@ Matrix6 beam_layer(const Scene& s) {
 
 TEST_CASE("The effects list names what the levels apply", "[effects]") {
     CHECK(effect_names(paper_core(0.6), support_effects(paper_core(0.6))) == std::vector<std::string>{"core"});
-    const Scene s = on_elastic_bearings(chuck_scene());
+    const Scene s = on_elastic_bearings(chuck_scene(), 2e8, 3e6);
     CHECK(s.effects() == std::vector<std::string>{"core", "elastic_chucks", "contact_compliance", "bearing_springs"});
     const SupportEffects e = support_effects(s);
     REQUIRE(e.chucks.size() == 2);
@@ -146,7 +137,7 @@ TEST_CASE("The same chuck gives the same spring layer to all three levels", "[ef
 
 TEST_CASE("A rigid translation loads the bearings by exactly their stiffness at every level",
           "[effects][chuck][harmonic][beam]") {
-    const Scene s = on_elastic_bearings(chuck_scene());
+    const Scene s = on_elastic_bearings(chuck_scene(), 2e8, 3e6);
     const BearingSprings& springs = *support_effects(s).chucks[0].bearing_springs;
     REQUIRE(springs.radial == 2e8);
 
