@@ -1,5 +1,7 @@
 #include "app/rigid_comparison.hpp"
 
+#include "effects/chuck_placement.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -14,15 +16,15 @@ Scene rigid_clamp_variant(const Scene& scene) {
     rigid.supports = {};
     rigid.supports.kind = SupportKind::clamped;
     rigid.mesh.along_per_segment.clear();  // the clamps make other segments than the chucks
-    const double L = scene.core.length;
     for (const ChuckSpec& c : scene.supports.chucks) {
-        double near = L, far = 0;  // from this chuck's core end
+        // One clamp over all of the chuck's expanding elements.
+        const ChuckPlacement place = chuck_placement(scene, c);
+        ZRange zone = place.element_range(c.expanding.at(0));
         for (const ExpandingElement& e : c.expanding) {
-            near = std::min(near, e.center - e.width / 2);
-            far = std::max(far, e.center + e.width / 2);
+            zone.lo = std::min(zone.lo, place.element_range(e).lo);
+            zone.hi = std::max(zone.hi, place.element_range(e).hi);
         }
-        rigid.supports.clamps.push_back(c.name == "right" ? ClampSpec{c.name, L - far, L - near}
-                                                          : ClampSpec{c.name, near, far});
+        rigid.supports.clamps.push_back(ClampSpec{c.name, zone.lo, zone.hi});
     }
     return rigid;
 }

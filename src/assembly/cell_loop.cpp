@@ -64,4 +64,10 @@ double assemble_couplings(const std::vector<CouplingElement>& couplings, const D
     return mass;
 }
 
+Eigen::MatrixXd spring_between(const Eigen::MatrixXd& k) {
+    Eigen::MatrixXd K(2 * k.rows(), 2 * k.cols());
+    K << k, -k, -k, k;
+    return K;
+}
+
 }  // namespace coremodal

@@ -38,6 +38,11 @@ struct CouplingElement {
     const Eigen::MatrixXd& matrix(Term term) const;
 };
 
+// A spring k (square, over one set of DOFs) acting on the difference of two
+// such sets, first minus second: [k, -k; -k, k] (spring layers between
+// facing nodes of core and chuck).
+Eigen::MatrixXd spring_between(const Eigen::MatrixXd& k);
+
 // Receives one element matrix of one term with the element's global DOFs
 // (-1 for eliminated ones). A run's sink adds into PETSc matrices, a unit
 // test's into dense Eigen matrices: the loops below are the same for both.

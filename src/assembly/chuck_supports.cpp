@@ -1,6 +1,7 @@
 #include "assembly/chuck_supports.hpp"
 
 #include "common/error.hpp"
+#include "effects/support_effects.hpp"
 #include "element/face.hpp"
 
 #include <algorithm>
@@ -60,27 +61,11 @@ private:
     std::map<std::array<long, 3>, int> index_;
 };
 
-// Is the bore point (z, theta) on an expanding element of this chuck? Bands
-// cover all angles; N segments are centred at theta = 2 pi k / N.
-bool on_expanding_element(const Scene& scene, const ChuckSpec& chuck, double z, double theta) {
-    const double s = chuck.name == "right" ? scene.core.length - z : z;  // from this chuck's core end
-    constexpr double kEdge = 1e-9;
-    for (const ExpandingElement& e : chuck.expanding) {
-        if (std::abs(s - e.center) > e.width / 2 + kEdge) continue;
-        if (e.segments == 0) return true;
-        for (int k = 0; k < e.segments; ++k) {
-            const double d = std::remainder(theta - 2 * M_PI * k / e.segments, 2 * M_PI);
-            if (std::abs(d) <= e.segment_angle / 2 + kEdge) return true;
-        }
-    }
-    return false;
-}
-
 // Quadrature points on the part of a bore face that an expanding element
 // covers. Segment edges need not fall on element edges: the face is cut at
 // them (found by bisection on the angle along the face's circumferential
 // direction) and each piece integrated, so the covered area is exact.
-std::vector<FacePoint> covered_points(const Scene& scene, const ChuckSpec& chuck, const FaceCoords& x) {
+std::vector<FacePoint> covered_points(const ChuckPlacement& chuck, const FaceCoords& x) {
     const auto theta_at = [&](double xi, double eta) {
         const Eigen::Vector3d p = face_point(x, xi, eta);
         return std::atan2(p[1], p[0]);
@@ -93,10 +78,10 @@ std::vector<FacePoint> covered_points(const Scene& scene, const ChuckSpec& chuck
     std::vector<double> cuts = {-1, 1};
     const double t0 = theta_along(-1);
     const double span = std::remainder(theta_along(1) - t0, 2 * M_PI);
-    for (const ExpandingElement& e : chuck.expanding)
-        for (int k = 0; k < e.segments; ++k)
-            for (double edge : {-0.5, 0.5}) {
-                const double angle = 2 * M_PI * k / e.segments + edge * e.segment_angle;
+    for (const ExpandingElement& e : chuck.expanding) {
+        if (e.segments == 0) continue;  // a band has no edge around
+        for (const Arc& arc : contact_arcs(e))
+            for (double angle : {arc.from, arc.to}) {
                 const double d = std::remainder(angle - t0, 2 * M_PI);
                 if (d * span <= 0 || std::abs(d) >= std::abs(span)) continue;
                 double lo = -1, hi = 1;  // theta runs monotonically along the face
@@ -106,12 +91,13 @@ std::vector<FacePoint> covered_points(const Scene& scene, const ChuckSpec& chuck
                 }
                 cuts.push_back((lo + hi) / 2);
             }
+    }
     std::sort(cuts.begin(), cuts.end());
     std::vector<FacePoint> points;
     for (size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double a = cuts[i], b = cuts[i + 1];
         const Eigen::Vector3d mid = around_is_xi ? face_point(x, (a + b) / 2, 0) : face_point(x, 0, (a + b) / 2);
-        if (b - a < 1e-12 || !on_expanding_element(scene, chuck, mid[2], std::atan2(mid[1], mid[0]))) continue;
+        if (b - a < 1e-12 || !chuck.covers(mid[2], std::atan2(mid[1], mid[0]))) continue;
         const auto piece = around_is_xi ? face_quadrature(x, kSpringLayerGauss, a, b, -1, 1)
                                         : face_quadrature(x, kSpringLayerGauss, -1, 1, a, b);
         points.insert(points.end(), piece.begin(), piece.end());
@@ -119,58 +105,52 @@ std::vector<FacePoint> covered_points(const Scene& scene, const ChuckSpec& chuck
     return points;
 }
 
-// Spring layer over one bore face: relative displacement (core - chuck) at
-// each point, stiffness k_n along the radius and k_t in the tangent plane,
-// per unit bore area.
-CouplingElement spring_layer_face(const Scene& scene, const Mesh& mesh, const ChuckSpec& chuck, const FaceSet& set,
-                                  int f, const FacingNodes& facing, double& covered_area) {
+// The spring layer (effects/support_effects.hpp) over one bore face: the
+// relative displacement (core - chuck) at each covered point against D per
+// unit bore area.
+CouplingElement spring_layer_face(const Mesh& mesh, const ChuckEffects& chuck, const FaceSet& set, int f,
+                                  const FacingNodes& facing, double& covered_area) {
     const int n = set.nodes_per_face;
     CouplingElement e;
     for (int a = 0; a < n; ++a) e.nodes.push_back(set.face(f)[a]);
     for (int a = 0; a < n; ++a) e.nodes.push_back(facing(set.face(f)[a]));
     Eigen::MatrixXd Kab = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-    for (const FacePoint& p : covered_points(scene, chuck, face_coords(mesh, set, f))) {
-        const double theta = std::atan2(p.x[1], p.x[0]);
+    for (const FacePoint& p : covered_points(chuck.placement, face_coords(mesh, set, f))) {
         covered_area += p.area_weight;
-        const Eigen::Vector3d er(std::cos(theta), std::sin(theta), 0);
-        const Eigen::Matrix3d D = chuck.interface.tangential_stiffness * Eigen::Matrix3d::Identity() +
-                                  (chuck.interface.normal_stiffness - chuck.interface.tangential_stiffness) *
-                                      er * er.transpose();
+        const Eigen::Matrix3d D = chuck.spring_layer->per_area(std::atan2(p.x[1], p.x[0]));
         for (int a = 0; a < n; ++a)
             for (int b = 0; b < n; ++b) Kab.block<3, 3>(3 * a, 3 * b) += p.area_weight * p.N[a] * p.N[b] * D;
     }
-    Eigen::MatrixXd K(6 * n, 6 * n);
-    K << Kab, -Kab, -Kab, Kab;
-    e.terms.push_back({Term::stiffness, std::move(K)});
+    e.terms.push_back({SpringLayer::kTerm, spring_between(Kab)});
     return e;
 }
 
-void hold_core_by_chuck(const Scene& scene, const Mesh& mesh, const ChuckSpec& chuck, ChuckSupports& out) {
-    const std::string core_group = "interface_" + chuck.name + "_core";
+void hold_core_by_chuck(const Mesh& mesh, const ChuckEffects& chuck, ChuckSupports& out) {
+    const std::string& name = chuck.placement.chuck;
+    const std::string core_group = "interface_" + name + "_core";
     const FaceSet& bore = faces_of(mesh, core_group);
-    const FacingNodes facing(mesh, mesh.node_groups.at("interface_" + chuck.name + "_chuck"));
-    if (chuck.interface.kind == InterfaceKind::spring) {
+    const FacingNodes facing(mesh, mesh.node_groups.at("interface_" + name + "_chuck"));
+    if (chuck.spring_layer) {
         for (int f = 0; f < bore.n_faces(); ++f)
-            out.couplings.push_back(spring_layer_face(scene, mesh, chuck, bore, f, facing, out.coupled_area_m2));
+            out.couplings.push_back(spring_layer_face(mesh, chuck, bore, f, facing, out.coupled_area_m2));
         return;
     }
     // Bonded: every bore node on an expanding element shares its chuck node's DOFs.
     for (int node : mesh.node_groups.at(core_group)) {
         const auto& x = mesh.nodes[node];
-        if (on_expanding_element(scene, chuck, x[2], std::atan2(x[1], x[0]))) out.ties.push_back({node, facing(node)});
+        if (chuck.placement.covers(x[2], std::atan2(x[1], x[0]))) out.ties.push_back({node, facing(node)});
     }
     for (int f = 0; f < bore.n_faces(); ++f)
-        for (const FacePoint& p : covered_points(scene, chuck, face_coords(mesh, bore, f)))
+        for (const FacePoint& p : covered_points(chuck.placement, face_coords(mesh, bore, f)))
             out.coupled_area_m2 += p.area_weight;
 }
 
-// Bearing springs spread over the shaft end face: c_r = k_radial / A in x
-// and y, c_z = k_tilt / I_x along z, so that the face translates against
-// k_radial and tilts against k_tilt as a whole (docs/chucks.md). To the
-// ground, or to the frame node when there is a frame mass.
-void hold_chuck_by_bearing(const Mesh& mesh, const ChuckSpec& chuck, ChuckSupports& out) {
-    const std::string group = "bearing_" + chuck.name;
-    if (chuck.bearing.rigid) {
+// The stand (effects/support_effects.hpp): a rigid bearing eliminates the
+// shaft end face; bearing springs spread over it, to the ground or to the
+// frame node when there is a frame mass.
+void hold_chuck_by_bearing(const Mesh& mesh, const ChuckEffects& chuck, ChuckSupports& out) {
+    const std::string group = "bearing_" + chuck.placement.chuck;
+    if (!chuck.bearing_springs) {
         const auto& nodes = mesh.node_groups.at(group);
         out.eliminated.insert(out.eliminated.end(), nodes.begin(), nodes.end());
         return;
@@ -182,57 +162,52 @@ void hold_chuck_by_bearing(const Mesh& mesh, const ChuckSpec& chuck, ChuckSuppor
             area += p.area_weight;
             second_moment += p.area_weight * p.x[0] * p.x[0];
         }
-    const Eigen::Vector3d c(chuck.bearing.radial_stiffness / area, chuck.bearing.radial_stiffness / area,
-                            chuck.bearing.tilting_stiffness / second_moment);
-    const bool to_frame = chuck.bearing.frame_mass.has_value();
-    if (to_frame)
-        out.grounded.push_back(mesh.node_groups.at("frame_" + chuck.name).at(0));
+    const Eigen::Vector3d c = chuck.bearing_springs->per_face_area(area, second_moment);
+    const int frame_node = chuck.frame ? mesh.node_groups.at("frame_" + chuck.placement.chuck).at(0) : -1;
+    if (chuck.frame)
+        out.grounded.push_back(frame_node);
     else
         out.grounded.insert(out.grounded.end(), face.faces.begin(), face.faces.end());
     for (int f = 0; f < face.n_faces(); ++f) {
-        const int n = face.nodes_per_face, m = n + (to_frame ? 1 : 0);
+        const int n = face.nodes_per_face, m = n + (chuck.frame ? 1 : 0);
         CouplingElement e;
         e.nodes.assign(face.face(f), face.face(f) + n);
-        if (to_frame) e.nodes.push_back(mesh.node_groups.at("frame_" + chuck.name).at(0));
+        if (chuck.frame) e.nodes.push_back(frame_node);
         Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * m, 3 * m);
         for (const FacePoint& p : face_quadrature(face_coords(mesh, face, f), kBearingGauss)) {
             Eigen::VectorXd N(m);  // relative displacement: face minus frame
             N.head(n) = p.N;
-            if (to_frame) N[n] = -1;
+            if (chuck.frame) N[n] = -1;
             for (int a = 0; a < m; ++a)
                 for (int b = 0; b < m; ++b)
                     K.block<3, 3>(3 * a, 3 * b) += p.area_weight * N[a] * N[b] * c.asDiagonal().toDenseMatrix();
         }
-        e.terms.push_back({Term::stiffness, std::move(K)});
+        e.terms.push_back({BearingSprings::kTerm, std::move(K)});
         out.couplings.push_back(std::move(e));
     }
-    if (to_frame) {  // the frame: a lumped mass on a spring to the ground, in all three directions
+    if (chuck.frame) {  // the frame: a lumped mass on a spring to the ground, in all three directions
         CouplingElement frame;
-        frame.nodes = {mesh.node_groups.at("frame_" + chuck.name).at(0)};
-        frame.terms = {{Term::stiffness, *chuck.bearing.frame_stiffness * Eigen::MatrixXd::Identity(3, 3)},
-                       {Term::mass, *chuck.bearing.frame_mass * Eigen::MatrixXd::Identity(3, 3)}};
+        frame.nodes = {frame_node};
+        frame.terms = {{Term::stiffness, chuck.frame->stiffness * Eigen::MatrixXd::Identity(3, 3)},
+                       {Term::mass, chuck.frame->mass * Eigen::MatrixXd::Identity(3, 3)}};
         out.couplings.push_back(std::move(frame));
     }
 }
 
 }  // namespace
 
-double bearing_z(const Scene& scene, const ChuckSpec& chuck) {
-    return chuck.name == "right" ? scene.core.length + chuck.shaft_length : -chuck.shaft_length;
-}
-
 void add_frame_nodes(const Scene& scene, Mesh& mesh) {
-    for (const ChuckSpec& chuck : scene.supports.chucks) {
-        if (chuck.bearing.rigid || !chuck.bearing.frame_mass) continue;
-        mesh.node_groups["frame_" + chuck.name] = {mesh.n_nodes()};
-        mesh.nodes.push_back({0.0, 0.0, bearing_z(scene, chuck)});
+    for (const ChuckEffects& chuck : support_effects(scene).chucks) {
+        if (!chuck.frame) continue;
+        mesh.node_groups["frame_" + chuck.placement.chuck] = {mesh.n_nodes()};
+        mesh.nodes.push_back({0.0, 0.0, chuck.frame->z});
     }
 }
 
 ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh) {
     ChuckSupports out;
-    for (const ChuckSpec& chuck : scene.supports.chucks) {
-        hold_core_by_chuck(scene, mesh, chuck, out);
+    for (const ChuckEffects& chuck : support_effects(scene).chucks) {
+        hold_core_by_chuck(mesh, chuck, out);
         hold_chuck_by_bearing(mesh, chuck, out);
     }
     return out;

@@ -1,7 +1,9 @@
-// Elastic chucks in the system: how the core is held by each chuck over its
-// expanding elements (ties or a spring layer), and how the chuck is held by
-// the stand (a rigid bearing eliminates the shaft end face; an elastic one
-// spreads springs over it, optionally through a frame mass on a frame spring).
+// The chuck and stand effects (effects/support_effects.hpp) at the solid
+// level: how the core is held by each chuck over its expanding elements (ties
+// or a spring layer per bore face), and how the chuck is held by the stand (a
+// rigid bearing eliminates the shaft end face; bearing springs are spread
+// over it, optionally through a frame node carrying the frame mass). This
+// file only translates those effects into the solid's nodes and faces;
 // docs/chucks.md gives the formulas.
 #pragma once
 
@@ -32,8 +34,5 @@ ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh);
 // centre, in node group "frame_<chuck>". No cell uses it; springs and the
 // lumped mass attach to it.
 void add_frame_nodes(const Scene& scene, Mesh& mesh);
-
-// z of a chuck's bearing (its shaft end): below 0 on the left, beyond the core length on the right.
-double bearing_z(const Scene& scene, const ChuckSpec& chuck);
 
 }  // namespace coremodal

@@ -1,7 +1,7 @@
 #include "assembly/harmonic_system.hpp"
 
-#include "assembly/chuck_supports.hpp"  // bearing_z
 #include "common/error.hpp"
+#include "effects/support_effects.hpp"
 #include "element/harmonic_element.hpp"
 
 #include <algorithm>
@@ -48,15 +48,17 @@ HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
     const auto hold_node = [&](int node) {
         for (int c = 0; c < 3; ++c) map.hold(3 * node + c);
     };
-    for (const ClampSpec& c : scene.supports.clamps)
+    const SupportEffects effects = support_effects(scene);
+    for (const RigidClamp& c : effects.clamps)
         for (int node : mesh.node_groups.at("clamp_" + c.name)) hold_node(node);
-    for (const ChuckSpec& chuck : scene.supports.chucks) {
-        if (chuck.bearing.rigid)
-            for (const SectionEdge& e : mesh.edge_groups.at("bearing_" + chuck.name))
+    for (const ChuckEffects& chuck : effects.chucks) {
+        const std::string& name = chuck.placement.chuck;
+        if (!chuck.bearing_springs)  // a rigid bearing
+            for (const SectionEdge& e : mesh.edge_groups.at("bearing_" + name))
                 for (int node : e) hold_node(node);
-        if (chuck.interface.kind != InterfaceKind::bonded) continue;
-        const auto& core = mesh.edge_groups.at("interface_" + chuck.name + "_core");
-        const auto& body = mesh.edge_groups.at("interface_" + chuck.name + "_chuck");
+        if (!chuck.bonded) continue;
+        const auto& core = mesh.edge_groups.at("interface_" + name + "_core");
+        const auto& body = mesh.edge_groups.at("interface_" + name + "_chuck");
         for (size_t k = 0; k < core.size(); ++k)
             for (int p = 0; p < 3; ++p)
                 for (int c = 0; c < 3; ++c) map.tie(3 * core[k][p] + c, 3 * body[k][p] + c);
@@ -75,8 +77,8 @@ HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
             }
         }
     HarmonicDofs dofs = map.number();
-    for (const ChuckSpec& chuck : scene.supports.chucks)
-        dofs.frame.push_back(!chuck.bearing.rigid && chuck.bearing.frame_mass && n <= 1 ? dofs.n_dofs++ : -1);
+    for (const ChuckEffects& chuck : effects.chucks)
+        dofs.frame.push_back(chuck.frame && n <= 1 ? dofs.n_dofs++ : -1);
     return dofs;
 }
 
@@ -120,31 +122,29 @@ Eigen::Matrix<double, 3, 2> edge_coords(const SectionMesh& mesh, const SectionEd
     return x;
 }
 
-// Core minus chuck over the expanding elements: k_n radially, k_t in the bore's tangent plane.
-void add_spring_layer(const SectionMesh& mesh, const ChuckSpec& chuck, const HarmonicDofs& dofs, int n,
+// The spring layer (effects/support_effects.hpp), core minus chuck over the
+// expanding elements' interface edges: k_n radially, k_t in the bore's tangent plane.
+void add_spring_layer(const SectionMesh& mesh, const ChuckEffects& chuck, const HarmonicDofs& dofs, int n,
                       const TermInsert& insert) {
-    const auto& core = mesh.edge_groups.at("interface_" + chuck.name + "_core");
-    const auto& body = mesh.edge_groups.at("interface_" + chuck.name + "_chuck");
-    const Eigen::Vector3d k(chuck.interface.normal_stiffness, chuck.interface.tangential_stiffness,
-                            chuck.interface.tangential_stiffness);
+    const auto& core = mesh.edge_groups.at("interface_" + chuck.placement.chuck + "_core");
+    const auto& body = mesh.edge_groups.at("interface_" + chuck.placement.chuck + "_chuck");
+    const Eigen::Vector3d k = chuck.spring_layer->per_area_cylindrical();
     for (size_t e = 0; e < core.size(); ++e) {
-        const Eigen::MatrixXd Ke = harmonic_edge_spring(edge_coords(mesh, core[e]), k, n);
-        Eigen::MatrixXd K(18, 18);
-        K << Ke, -Ke, -Ke, Ke;
+        const Eigen::MatrixXd K = spring_between(harmonic_edge_spring(edge_coords(mesh, core[e]), k, n));
         std::vector<int> d = component_dofs(dofs, core[e].data(), 3);
         const std::vector<int> d_body = component_dofs(dofs, body[e].data(), 3);
         d.insert(d.end(), d_body.begin(), d_body.end());
-        insert(Term::stiffness, d, K);
+        insert(SpringLayer::kTerm, d, K);
     }
 }
 
-// Springs spread over the shaft end face as in the solid (chuck_supports.cpp):
-// c_r = k_radial / A on u_r and u_theta, c_z = k_tilt / I on u_z; relative to
-// the frame DOF where there is one (n = 1: U and V follow the frame's
-// sideways motion; n = 0: W its axial motion).
-void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof, const HarmonicDofs& dofs, int n,
+// The bearing springs (effects/support_effects.hpp) spread over the shaft end
+// face: c_r on u_r and u_theta, c_z on u_z; relative to the frame DOF where
+// there is one (n = 1: U and V follow the frame's sideways motion; n = 0: W
+// its axial motion).
+void add_bearing(const SectionMesh& mesh, const ChuckEffects& chuck, int frame_dof, const HarmonicDofs& dofs, int n,
                  const TermInsert& insert) {
-    const auto& edges = mesh.edge_groups.at("bearing_" + chuck.name);
+    const auto& edges = mesh.edge_groups.at("bearing_" + chuck.placement.chuck);
     // The face's area and second moment about a diameter, from its radial edges.
     double area = 0, second_moment = 0;
     for (const SectionEdge& e : edges) {
@@ -153,8 +153,7 @@ void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof,
         area += M_PI * (r1 * r1 - r0 * r0);
         second_moment += M_PI / 4 * (std::pow(r1, 4) - std::pow(r0, 4));
     }
-    const Eigen::Vector3d c(chuck.bearing.radial_stiffness / area, chuck.bearing.radial_stiffness / area,
-                            chuck.bearing.tilting_stiffness / second_moment);
+    const Eigen::Vector3d c = chuck.bearing_springs->per_face_area(area, second_moment);
     Eigen::VectorXd follow = Eigen::VectorXd::Zero(9);  // face components that move with the frame DOF
     for (int p = 0; p < 3; ++p) {
         if (n == 1) follow[3 * p] = follow[3 * p + 1] = 1;
@@ -164,7 +163,7 @@ void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof,
         const Eigen::Matrix<double, 9, 9> Ke = harmonic_edge_spring(edge_coords(mesh, e), c, n);
         std::vector<int> d = component_dofs(dofs, e.data(), 3);
         if (frame_dof < 0) {
-            insert(Term::stiffness, d, Ke);
+            insert(BearingSprings::kTerm, d, Ke);
             continue;
         }
         Eigen::MatrixXd K(10, 10);  // relative motion u - follow * X: [I, -follow]^T Ke [I, -follow]
@@ -173,11 +172,11 @@ void add_bearing(const SectionMesh& mesh, const ChuckSpec& chuck, int frame_dof,
         K.bottomLeftCorner(1, 9) = -(Ke * follow).transpose();
         K(9, 9) = follow.dot(Ke * follow);
         d.push_back(frame_dof);
-        insert(Term::stiffness, d, K);
+        insert(BearingSprings::kTerm, d, K);
     }
     if (frame_dof >= 0) {
-        insert(Term::stiffness, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_stiffness));
-        insert(Term::mass, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, *chuck.bearing.frame_mass));
+        insert(Term::stiffness, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, chuck.frame->stiffness));
+        insert(Term::mass, {frame_dof}, Eigen::MatrixXd::Constant(1, 1, chuck.frame->mass));
     }
 }
 
@@ -210,11 +209,12 @@ double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, cons
         insert(Term::mass, cell_dofs, e.M);
         mass += e.mass;
     }
-    for (size_t k = 0; k < scene.supports.chucks.size(); ++k) {
-        const ChuckSpec& chuck = scene.supports.chucks[k];
-        if (chuck.interface.kind == InterfaceKind::spring) add_spring_layer(mesh, chuck, dofs, n, insert);
-        if (!chuck.bearing.rigid) add_bearing(mesh, chuck, dofs.frame[k], dofs, n, insert);
-        mass += chuck.bearing.rigid ? 0.0 : chuck.bearing.frame_mass.value_or(0.0);
+    const SupportEffects effects = support_effects(scene);
+    for (size_t k = 0; k < effects.chucks.size(); ++k) {
+        const ChuckEffects& chuck = effects.chucks[k];
+        if (chuck.spring_layer) add_spring_layer(mesh, chuck, dofs, n, insert);
+        if (chuck.bearing_springs) add_bearing(mesh, chuck, dofs.frame[k], dofs, n, insert);
+        mass += chuck.frame ? chuck.frame->mass : 0.0;
     }
     return mass;
 }

@@ -4,6 +4,7 @@
 #include "beam/network_modes.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
+#include "effects/support_effects.hpp"
 #include "eigensolve/rigid_modes.hpp"
 
 #include <algorithm>
@@ -29,37 +30,15 @@ constexpr int kCoreBeam = 0;
 
 // ---- stations along z ------------------------------------------------------
 
-bool is_right(const ChuckSpec& chuck) { return chuck.name == "right"; }
-
-// z of a point `offset` from this chuck's own core end, inwards.
-double chuck_z(const Scene& scene, const ChuckSpec& chuck, double offset) {
-    return is_right(chuck) ? scene.core.length - offset : offset;
-}
-
-struct Range {
-    double lo = 0, hi = 0;
-    bool holds(double z, double tol) const { return z >= lo - tol && z <= hi + tol; }
-};
-
-Range expanding_range(const Scene& scene, const ChuckSpec& chuck, const ExpandingElement& e) {
-    const double a = chuck_z(scene, chuck, e.center - e.width / 2), b = chuck_z(scene, chuck, e.center + e.width / 2);
-    return {std::min(a, b), std::max(a, b)};
-}
-
-Range body_range(const Scene& scene, const ChuckSpec& chuck) {
-    const double a = chuck_z(scene, chuck, 0), b = chuck_z(scene, chuck, chuck.inserted_length);
-    return {std::min(a, b), std::max(a, b)};
-}
-
 // Every z where the supports need a core node.
-std::vector<double> support_edges(const Scene& scene) {
+std::vector<double> support_edges(const Scene& scene, const SupportEffects& effects) {
     std::vector<double> edges = {0.0, scene.core.length};
-    for (const ClampSpec& c : scene.supports.clamps) edges.insert(edges.end(), {c.z_start, c.z_end});
-    for (const ChuckSpec& chuck : scene.supports.chucks) {
-        const Range body = body_range(scene, chuck);
+    for (const RigidClamp& c : effects.clamps) edges.insert(edges.end(), {c.zone.lo, c.zone.hi});
+    for (const ChuckEffects& chuck : effects.chucks) {
+        const ZRange body = chuck.placement.body_range();
         edges.insert(edges.end(), {body.lo, body.hi});
-        for (const ExpandingElement& e : chuck.expanding) {
-            const Range r = expanding_range(scene, chuck, e);
+        for (const ExpandingElement& e : chuck.placement.expanding) {
+            const ZRange r = chuck.placement.element_range(e);
             edges.insert(edges.end(), {r.lo, r.hi});
         }
     }
@@ -72,8 +51,8 @@ std::vector<double> support_edges(const Scene& scene) {
 // The core's element ends: the support edges, and between them uniform
 // elements of about Lc / n_elements (at least kMinElementsPerGap per gap),
 // each gap's count then multiplied by `refine`.
-std::vector<double> core_stations(const Scene& scene, int n_elements, int refine) {
-    const std::vector<double> edges = support_edges(scene);
+std::vector<double> core_stations(const Scene& scene, const SupportEffects& effects, int n_elements, int refine) {
+    const std::vector<double> edges = support_edges(scene, effects);
     std::vector<double> z;
     for (size_t i = 0; i + 1 < edges.size(); ++i) {
         const double gap = edges[i + 1] - edges[i];
@@ -109,19 +88,21 @@ CoreNodes add_core(BeamNetwork& net, const Scene& scene, const std::vector<doubl
     return core;
 }
 
-void hold_clamp_zones(BeamNetwork& net, const Scene& scene, const CoreNodes& core) {
+// Rigid clamps (effects/support_effects.hpp): every core node in a zone held.
+void hold_clamp_zones(BeamNetwork& net, const Scene& scene, const std::vector<RigidClamp>& clamps,
+                      const CoreNodes& core) {
     const double tol = kStationTolerance * scene.core.length;
-    for (const ClampSpec& c : scene.supports.clamps)
+    for (const RigidClamp& c : clamps)
         for (size_t i = 0; i < core.z.size(); ++i)
-            if (Range{c.z_start, c.z_end}.holds(core.z[i], tol)) net.hold_all(core.node[i]);
+            if (c.zone.holds(core.z[i], tol)) net.hold_all(core.node[i]);
 }
 
 // Element ends of a chuck, ascending: the core's stations over the body,
 // then the shaft's own out to the bearing (or the reverse on the right).
-std::vector<double> chuck_stations(const Scene& scene, const ChuckSpec& chuck, const std::vector<double>& core_stations,
-                                   int n_elements, int refine) {
+std::vector<double> chuck_stations(const Scene& scene, const ChuckPlacement& chuck,
+                                   const std::vector<double>& core_stations, int n_elements, int refine) {
     const double tol = kStationTolerance * scene.core.length;
-    const Range body = body_range(scene, chuck);
+    const ZRange body = chuck.body_range();
     const double h = scene.core.length / n_elements;
     const int n_shaft = refine * std::max(kMinShaftElements, static_cast<int>(std::ceil(chuck.shaft_length / h)));
     std::vector<double> z;
@@ -129,7 +110,7 @@ std::vector<double> chuck_stations(const Scene& scene, const ChuckSpec& chuck, c
         if (body.holds(zc, tol)) z.push_back(zc);
     for (int k = 1; k <= n_shaft; ++k) {
         const double out = chuck.shaft_length * k / n_shaft;  // beyond the core end
-        z.push_back(is_right(chuck) ? scene.core.length + out : -out);
+        z.push_back(chuck.right ? scene.core.length + out : -out);
     }
     std::sort(z.begin(), z.end());
     return z;
@@ -137,11 +118,11 @@ std::vector<double> chuck_stations(const Scene& scene, const ChuckSpec& chuck, c
 
 // Bonded expanding elements tie the body to the core: over their width the
 // chuck's chain runs through the core's own nodes.
-int chuck_node(BeamNetwork& net, const Scene& scene, const ChuckSpec& chuck, const CoreNodes& core, double z) {
+int chuck_node(BeamNetwork& net, const Scene& scene, const ChuckEffects& chuck, const CoreNodes& core, double z) {
     const double tol = kStationTolerance * scene.core.length;
-    if (chuck.interface.kind == InterfaceKind::bonded)
-        for (const ExpandingElement& e : chuck.expanding)
-            if (expanding_range(scene, chuck, e).holds(z, tol)) {
+    if (chuck.bonded)
+        for (const ExpandingElement& e : chuck.placement.expanding)
+            if (chuck.placement.element_range(e).holds(z, tol)) {
                 const int shared = core.at(z, tol);
                 COREMODAL_ASSERT(shared >= 0);  // expanding-element edges are core stations
                 return shared;
@@ -149,23 +130,26 @@ int chuck_node(BeamNetwork& net, const Scene& scene, const ChuckSpec& chuck, con
     return net.add_node(z);
 }
 
-void add_bearing(BeamNetwork& net, const ChuckSpec& chuck, int shaft_end, std::vector<std::string>& notes) {
-    const BearingSpec& b = chuck.bearing;
-    if (b.rigid) {
+// The stand (effects/support_effects.hpp): a rigid bearing holds the shaft
+// end; bearing springs join it to the ground, the radial one through the
+// frame mass when there is one.
+void add_bearing(BeamNetwork& net, const ChuckEffects& chuck, int shaft_end, std::vector<std::string>& notes) {
+    if (!chuck.bearing_springs) {
         net.hold_all(shaft_end);
         return;
     }
+    const BearingSprings& b = *chuck.bearing_springs;
     // The scene gives radial and tilting stiffness only: axially the bearing
     // locates the shaft and in torsion the unwind brake holds it.
     net.hold(shaft_end, beam_dof::uz);
     net.hold(shaft_end, beam_dof::rz);
-    notes.push_back("chuck " + chuck.name + ": the elastic bearing holds the shaft end axially and in torsion "
-                    "(beam model; the scene gives radial and tilting stiffness only)");
+    notes.push_back("chuck " + chuck.placement.chuck + ": the elastic bearing holds the shaft end axially and in "
+                    "torsion (beam model; the scene gives radial and tilting stiffness only)");
     Matrix6 radial = Matrix6::Zero(), tilting = Matrix6::Zero();
-    radial(beam_dof::ux, beam_dof::ux) = radial(beam_dof::uy, beam_dof::uy) = b.radial_stiffness;
-    tilting(beam_dof::rx, beam_dof::rx) = tilting(beam_dof::ry, beam_dof::ry) = b.tilting_stiffness;
+    radial(beam_dof::ux, beam_dof::ux) = radial(beam_dof::uy, beam_dof::uy) = b.radial;
+    tilting(beam_dof::rx, beam_dof::rx) = tilting(beam_dof::ry, beam_dof::ry) = b.tilting;
     net.springs.push_back({shaft_end, -1, tilting});
-    if (!b.frame_mass) {
+    if (!chuck.frame) {
         net.springs.push_back({shaft_end, -1, radial});
         return;
     }
@@ -174,33 +158,34 @@ void add_bearing(BeamNetwork& net, const ChuckSpec& chuck, int shaft_end, std::v
     const int frame = net.add_node(net.node_z[shaft_end]);
     for (int d : {beam_dof::uz, beam_dof::rx, beam_dof::ry, beam_dof::rz}) net.hold(frame, d);
     Matrix6 frame_spring = Matrix6::Zero();
-    frame_spring(beam_dof::ux, beam_dof::ux) = frame_spring(beam_dof::uy, beam_dof::uy) = *b.frame_stiffness;
+    frame_spring(beam_dof::ux, beam_dof::ux) = frame_spring(beam_dof::uy, beam_dof::uy) = chuck.frame->stiffness;
     net.springs.push_back({shaft_end, frame, radial});
     net.springs.push_back({frame, -1, frame_spring});
-    net.masses.push_back({frame, *b.frame_mass});
+    net.masses.push_back({frame, chuck.frame->mass});
 }
 
-void add_chuck(BeamNetwork& net, const Scene& scene, const ChuckSpec& chuck, const std::vector<double>& core_stations,
-               const CoreNodes& core, int n_elements, int refine, std::vector<std::string>& notes) {
+void add_chuck(BeamNetwork& net, const Scene& scene, const ChuckSpec& spec, const ChuckEffects& chuck,
+               const std::vector<double>& core_stations, const CoreNodes& core, int n_elements, int refine,
+               std::vector<std::string>& notes) {
     const double tol = kStationTolerance * scene.core.length;
-    const Range body = body_range(scene, chuck);
-    const BeamSection body_section = tube_beam_section(chuck.body_diameter, 0, chuck.material);
-    const BeamSection shaft_section = tube_beam_section(chuck.shaft_diameter, 0, chuck.material);
-    const std::vector<double> z = chuck_stations(scene, chuck, core_stations, n_elements, refine);
+    const ChuckPlacement& place = chuck.placement;
+    const ZRange body = place.body_range();
+    const BeamSection body_section = tube_beam_section(spec.body_diameter, 0, spec.material);
+    const BeamSection shaft_section = tube_beam_section(spec.shaft_diameter, 0, spec.material);
+    const std::vector<double> z = chuck_stations(scene, place, core_stations, n_elements, refine);
     std::vector<BeamSection> sections;
     for (size_t e = 0; e + 1 < z.size(); ++e)
         sections.push_back(body.holds(0.5 * (z[e] + z[e + 1]), tol) ? body_section : shaft_section);
-    const int index = net.add_beam("chuck_" + chuck.name, z, sections,
+    const int index = net.add_beam("chuck_" + place.chuck, z, sections,
                                    [&](double zi) { return chuck_node(net, scene, chuck, core, zi); });
     const BeamNetwork::Beam& beam = net.beams[index];
-    const int shaft_end = is_right(chuck) ? beam.nodes.back() : beam.nodes.front();
-    if (chuck.interface.kind == InterfaceKind::spring) {
+    const int shaft_end = place.right ? beam.nodes.back() : beam.nodes.front();
+    if (chuck.spring_layer) {
         const double bore_radius = scene.core.inner_diameter / 2;
-        for (const ExpandingElement& e : chuck.expanding) {
-            const Range r = expanding_range(scene, chuck, e);
-            net.couplings.push_back({kCoreBeam, index, r.lo, r.hi,
-                                     spring_layer_per_length(e, bore_radius, chuck.interface.normal_stiffness,
-                                                             chuck.interface.tangential_stiffness)});
+        for (const ExpandingElement& e : place.expanding) {
+            const ZRange r = place.element_range(e);
+            net.couplings.push_back(
+                {kCoreBeam, index, r.lo, r.hi, spring_layer_per_length(*chuck.spring_layer, e, bore_radius)});
         }
     }
     add_bearing(net, chuck, shaft_end, notes);
@@ -221,16 +206,9 @@ struct ArcMoments {
     }
 };
 
-ArcMoments contact_arcs(const ExpandingElement& e) {
+ArcMoments arc_moments(const ExpandingElement& e) {
     ArcMoments m;
-    if (e.segments == 0) {
-        m.add(0, 2 * M_PI);
-        return m;
-    }
-    for (int i = 0; i < e.segments; ++i) {
-        const double centre = 2 * M_PI * i / e.segments;
-        m.add(centre - e.segment_angle / 2, centre + e.segment_angle / 2);
-    }
+    for (const Arc& arc : contact_arcs(e)) m.add(arc.from, arc.to);
     return m;
 }
 
@@ -329,12 +307,13 @@ long fully_held_nodes(const BeamNetwork& net) {
 
 }  // namespace
 
-Matrix6 spring_layer_per_length(const ExpandingElement& element, double R, double k_n, double k_t) {
+Matrix6 spring_layer_per_length(const SpringLayer& layer, const ExpandingElement& element, double R) {
+    const double k_n = layer.normal, k_t = layer.tangential;
     // A bore point at angle theta, (R cos, R sin), moves relative to the body by
     // d = du + dr x (R cos, R sin, 0): normal  c dux + s duy,
     // circumferential  -s dux + c duy + R drz,  axial  duz + R (s drx - c dry).
     // Energy per length: 1/2 int (k_n d_n^2 + k_t d_t^2 + k_t d_z^2) R dtheta.
-    const ArcMoments m = contact_arcs(element);
+    const ArcMoments m = arc_moments(element);
     using namespace beam_dof;
     Matrix6 k = Matrix6::Zero();
     k(ux, ux) = R * (k_n * m.cc + k_t * m.ss);
@@ -357,12 +336,14 @@ BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& optio
     COREMODAL_ASSERT(options.core_elements >= 1 && options.refine >= 1);
     std::vector<std::string> notes;
     BeamNetwork net;
-    const std::vector<double> stations = core_stations(scene, options.core_elements, options.refine);
+    const SupportEffects effects = support_effects(scene);
+    const std::vector<double> stations = core_stations(scene, effects, options.core_elements, options.refine);
     const CoreNodes core = add_core(net, scene, stations);
-    if (scene.supports.kind == SupportKind::clamped) hold_clamp_zones(net, scene, core);
+    if (scene.supports.kind == SupportKind::clamped) hold_clamp_zones(net, scene, effects.clamps, core);
     if (scene.supports.kind == SupportKind::chucks)
-        for (const ChuckSpec& chuck : scene.supports.chucks)
-            add_chuck(net, scene, chuck, stations, core, options.core_elements, options.refine, notes);
+        for (size_t k = 0; k < effects.chucks.size(); ++k)
+            add_chuck(net, scene, scene.supports.chucks[k], effects.chucks[k], stations, core, options.core_elements,
+                      options.refine, notes);
     if (assumptions) assumptions->insert(assumptions->end(), notes.begin(), notes.end());
     return net;
 }

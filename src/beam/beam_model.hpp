@@ -18,6 +18,7 @@
 #pragma once
 
 #include "beam/beam_network.hpp"
+#include "effects/support_effects.hpp"
 #include "modes/mode_set.hpp"
 #include "scene/scene.hpp"
 
@@ -78,11 +79,12 @@ struct BeamModelResult {
 BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& options,
                                std::vector<std::string>* assumptions = nullptr);
 
-// Stiffness per unit length (6x6 on ux, uy, uz, rx, ry, rz) of a spring
-// layer at radius R between a chuck body and the core bore, from the normal
-// and tangential stiffness per unit area k_n, k_t (Pa/m) over a full band or
-// `segments` pads (docs/beam.md, "Expanding elements").
-Matrix6 spring_layer_per_length(const ExpandingElement& element, double radius, double k_n, double k_t);
+// The spring layer (effects/support_effects.hpp) at the beam level: its
+// stiffness per unit length (6x6 on ux, uy, uz, rx, ry, rz) at radius R
+// between a chuck body and the core bore, from the normal and tangential
+// stiffness per unit area k_n, k_t (Pa/m) integrated over the element's
+// contact arcs (a full band or `segments` pads; docs/beam.md, "Expanding elements").
+Matrix6 spring_layer_per_length(const SpringLayer& layer, const ExpandingElement& element, double radius);
 
 // The modes the scene asks for ([analysis] modes or band), no I/O. Throws
 // SolveError when the eigensolver fails.

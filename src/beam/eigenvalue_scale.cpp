@@ -2,6 +2,7 @@
 
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"
+#include "effects/support_effects.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,12 +91,6 @@ void add_section_families(const Scene& scene, std::vector<EigenvalueEstimate>& o
     out.push_back({"ring out-of-plane n = 2", B / (rho_t * L * R4) * ring_factor(n) / (n2 + B / C)});
 }
 
-// The area of the bore an expanding element presses on, m^2.
-double contact_area(const ExpandingElement& e, double bore_radius) {
-    const double angle = e.segments > 0 ? e.segments * e.segment_angle : 2 * M_PI;
-    return angle * bore_radius * e.width;
-}
-
 // The roll on its supports' springs, by Rayleigh quotients K / m of rigid
 // trial motions (each an upper bound of the lowest eigenvalue):
 //   the roll sliding on spring interfaces while the chucks stand still
@@ -106,13 +101,11 @@ void add_support_families(const Scene& scene, std::vector<EigenvalueEstimate>& o
     const auto& chucks = scene.supports.chucks;
     if (chucks.empty()) return;
     double k_axial = 0, k_sideways = 0;
-    for (const ChuckSpec& c : chucks) {
-        if (c.interface.kind != InterfaceKind::spring) continue;
-        const double kn = c.interface.normal_stiffness, kt = c.interface.tangential_stiffness;
-        for (const ExpandingElement& e : c.expanding) {
-            const double A = contact_area(e, scene.core.inner_diameter / 2);
-            k_axial += kt * A;
-            k_sideways += (kn + kt) / 2 * A;
+    for (const ChuckEffects& c : support_effects(scene).chucks) {
+        if (!c.spring_layer) continue;
+        for (const ExpandingElement& e : c.placement.expanding) {
+            k_axial += c.spring_layer->axial_stiffness(e, scene.core.inner_diameter / 2);
+            k_sideways += c.spring_layer->sideways_stiffness(e, scene.core.inner_diameter / 2);
         }
     }
     if (k_axial > 0) out.push_back({"roll on the chuck interfaces", std::min(k_axial, k_sideways) / scene.roll_mass()});

@@ -1,6 +1,7 @@
 #include "geometry/tube_section.hpp"
 
 #include "common/error.hpp"
+#include "effects/chuck_placement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,10 @@ constexpr double kBreakpointMergeTolerance = 1e-9;
 std::vector<std::pair<double, double>> held_zones(const Scene& scene) {
     std::vector<std::pair<double, double>> zones;
     for (const auto& c : scene.supports.clamps) zones.push_back({c.z_start, c.z_end});
-    for (const auto& chuck : scene.supports.chucks)
-        for (const auto& e : chuck.expanding) zones.push_back(chuck.z_range(e, scene.core.length));
+    for (const auto& chuck : scene.supports.chucks) {
+        const ChuckPlacement place = chuck_placement(scene, chuck);
+        for (const auto& e : chuck.expanding) zones.push_back(place.element_range(e).pair());
+    }
     return zones;
 }
 
@@ -104,7 +107,8 @@ void add_chucks(const Scene& scene, TubeSection& section) {
         body.shaft_length = c.shaft_length;
         body.n_shaft = shaft_elements(c.shaft_length, body.shaft_radius, scene.mesh.n_around);
         section.chucks.push_back(body);
-        for (const auto& e : c.expanding) section.interfaces.push_back({c.name, c.z_range(e, L)});
+        const ChuckPlacement place = chuck_placement(scene, c);
+        for (const auto& e : c.expanding) section.interfaces.push_back({c.name, place.element_range(e).pair()});
     }
 }
 

@@ -5,24 +5,6 @@
 
 namespace coremodal {
 
-// The vocabulary of effects is shared with the summary and the result file:
-// "core" always, "rest_paper" when the scene has one, "rigid_clamps" for a
-// clamped support. A free-free scene adds nothing: free is the absence of supports.
-std::vector<std::string> Scene::effects() const {
-    std::vector<std::string> out{"core"};
-    if (rest_paper) out.push_back("rest_paper");
-    if (supports.kind == SupportKind::clamped) out.push_back("rigid_clamps");
-    if (supports.kind == SupportKind::chucks) {
-        out.push_back("elastic_chucks");
-        const auto any = [&](auto pred) { return std::any_of(supports.chucks.begin(), supports.chucks.end(), pred); };
-        if (any([](const ChuckSpec& c) { return c.interface.kind == InterfaceKind::spring; }))
-            out.push_back("contact_compliance");
-        if (any([](const ChuckSpec& c) { return !c.bearing.rigid; })) out.push_back("bearing_springs");
-        if (any([](const ChuckSpec& c) { return c.bearing.frame_mass.has_value(); })) out.push_back("frame_mass");
-    }
-    return out;
-}
-
 namespace {
 
 double disc_area(double d_out, double d_in) { return M_PI / 4 * (d_out * d_out - d_in * d_in); }
@@ -50,12 +32,6 @@ double ChuckSpec::li() const {
     double li = 0;
     for (const ExpandingElement& e : expanding) li = std::max(li, e.center);
     return li;
-}
-
-std::pair<double, double> ChuckSpec::z_range(const ExpandingElement& e, double core_length) const {
-    const double near = e.center - e.width / 2, far = e.center + e.width / 2;
-    if (name == "right") return {core_length - far, core_length - near};
-    return {near, far};
 }
 
 }  // namespace coremodal

@@ -79,10 +79,8 @@ struct ChuckSpec {
     BearingSpec bearing;
 
     // Li: core end to the middle of the furthest expanding element (Ilomäki).
+    // Where the chuck acts along the core: effects/chuck_placement.hpp.
     double li() const;
-    // z range of an expanding element from the left core end (the right
-    // chuck measures from the right end).
-    std::pair<double, double> z_range(const ExpandingElement& e, double core_length) const;
 };
 
 enum class SupportKind { free, clamped, chucks };
@@ -142,7 +140,9 @@ struct Scene {
     // rho V of every part (roll, chuck bodies and shafts) and the frame masses, kg.
     double mass_from_dimensions() const;
 
-    // The effects this scene simulates, e.g. {"core", "rest_paper", "rigid_clamps"}.
+    // The effects this scene simulates, e.g. {"core", "rest_paper", "rigid_clamps"}:
+    // the names of the effects the model levels apply (effect_names in
+    // effects/support_effects.hpp, where this is defined).
     std::vector<std::string> effects() const;
 };
 

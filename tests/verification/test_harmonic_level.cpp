@@ -21,14 +21,7 @@ namespace {
 // The paper core of the chuck tests on elastic bearings with a frame mass:
 // every term of the harmonic assembly (spring layer, bearing springs, frame DOF).
 Scene chucks_in_elastic_stand(int around) {
-    Scene s = with_chucks(paper_core(1.0, around, 24), InterfaceKind::spring);
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.bearing.rigid = false;
-        c.bearing.radial_stiffness = 2e8;
-        c.bearing.tilting_stiffness = 2e6;
-        c.bearing.frame_mass = 20.0;
-        c.bearing.frame_stiffness = 5e7;
-    }
+    Scene s = on_elastic_bearings(with_chucks(paper_core(1.0, around, 24), InterfaceKind::spring), 2e8, 2e6, 20.0, 5e7);
     s.analysis.n_modes = 14;
     return s;
 }

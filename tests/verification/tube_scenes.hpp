@@ -89,6 +89,20 @@ inline Scene with_chucks(Scene s, InterfaceKind interface, double k_normal = 3.1
     return s;
 }
 
+// The chucks' bearings made elastic: radial (N/m) and tilting (N m/rad)
+// springs, through a frame mass (kg) on a frame spring (N/m) when given.
+inline Scene on_elastic_bearings(Scene s, double radial, double tilting, std::optional<double> frame_mass = {},
+                                 std::optional<double> frame_stiffness = {}) {
+    for (ChuckSpec& c : s.supports.chucks) {
+        c.bearing.rigid = false;
+        c.bearing.radial_stiffness = radial;
+        c.bearing.tilting_stiffness = tilting;
+        c.bearing.frame_mass = frame_mass;
+        c.bearing.frame_stiffness = frame_stiffness;
+    }
+    return s;
+}
+
 // The mesh run_scene builds for a generated scene (same nodes, same order).
 inline Mesh generated_mesh(const Scene& s) {
     GmshSession gmsh;

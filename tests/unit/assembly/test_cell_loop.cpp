@@ -114,14 +114,8 @@ TEST_CASE("Cell loop, solid with chucks: an Eigen sink gets the same K and M as 
           "the physics' invariants", "[assembly][cell_loop]") {
     // A short, coarse 76x15 paper core on two chucks in elastic bearings with
     // frame masses: cells, spring layers, bearing springs and lumped masses.
-    Scene s = testing::with_chucks(testing::paper_core(0.4, 8, 6), InterfaceKind::spring);
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.bearing.rigid = false;
-        c.bearing.radial_stiffness = 3e8;
-        c.bearing.tilting_stiffness = 4e6;
-        c.bearing.frame_mass = 25.0;
-        c.bearing.frame_stiffness = 6e7;
-    }
+    const Scene s = testing::on_elastic_bearings(
+        testing::with_chucks(testing::paper_core(0.4, 8, 6), InterfaceKind::spring), 3e8, 4e6, 25.0, 6e7);
     const Mesh mesh = testing::generated_mesh(s);  // with the frame nodes
     const ChuckSupports supports = chuck_supports(s, mesh);
     const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);

@@ -70,12 +70,7 @@ TEST_CASE("A bonded band ties every bore node over it to a chuck node", "[assemb
 }
 
 TEST_CASE("Elastic bearing springs give the face k_radial in translation and k_tilt in tilt", "[assembly][chucks]") {
-    Scene s = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::bonded);
-    for (auto& c : s.supports.chucks) {
-        c.bearing.rigid = false;
-        c.bearing.radial_stiffness = 2e8;
-        c.bearing.tilting_stiffness = 3e6;
-    }
+    const Scene s = on_elastic_bearings(with_chucks(paper_core(0.6, 16, 16), InterfaceKind::bonded), 2e8, 3e6);
     const Mesh mesh = generated_mesh(s);
     const ChuckSupports supports = chuck_supports(s, mesh);
     double k_translation = 0, k_tilt = 0;

@@ -15,17 +15,9 @@ using namespace coremodal;
 namespace {
 
 Scene stand_scene(bool frames) {
-    Scene s = testing::with_chucks(testing::paper_core(0.8, 16, 12), InterfaceKind::spring);
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.bearing.rigid = false;
-        c.bearing.radial_stiffness = 3e8;
-        c.bearing.tilting_stiffness = 4e6;
-        if (frames) {
-            c.bearing.frame_mass = 25.0;
-            c.bearing.frame_stiffness = 6e7;
-        }
-    }
-    return s;
+    const Scene s = testing::with_chucks(testing::paper_core(0.8, 16, 12), InterfaceKind::spring);
+    if (frames) return testing::on_elastic_bearings(s, 3e8, 4e6, 25.0, 6e7);
+    return testing::on_elastic_bearings(s, 3e8, 4e6);
 }
 
 // x^T K x for a field given per node as (U, V, W) of (r, z), frame DOFs set to `frame`.

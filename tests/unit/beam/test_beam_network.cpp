@@ -202,7 +202,7 @@ TEST_CASE("A spring layer holds a rigid beam inside a fixed one at the closed-fo
     std::vector<double> z;
     for (int i = 0; i <= 3; ++i) z.push_back(L * i / 3);  // elements that do not line up with beam 0's
     net.add_beam("inner", z, std::vector<BeamSection>(3, s), [&](double zi) { return net.add_node(zi); });
-    net.couplings.push_back({0, 1, 0.0, L, spring_layer_per_length({}, R, kn, kt)});
+    net.couplings.push_back({0, 1, 0.0, L, spring_layer_per_length({kn, kt}, {}, R)});
     const double m = s.rho_A * L, k_lat = M_PI * R * (kn + kt);
     const NetworkModes modes = solve(net, 6, k_lat * L / m);
     REQUIRE(modes.verification.complete);
@@ -218,7 +218,7 @@ TEST_CASE("A spring layer's stiffness per length integrates its band or pads", "
     const double R = 0.075, kn = 3e10, kt = 2e10;
     using namespace beam_dof;
     SECTION("A full band: pi R (k_n + k_t) sideways, 2 pi R k_t along, 2 pi R^3 k_t in torsion") {
-        const Matrix6 k = spring_layer_per_length({}, R, kn, kt);
+        const Matrix6 k = spring_layer_per_length({kn, kt}, {}, R);
         CHECK(k(ux, ux) == Approx(M_PI * R * (kn + kt)));
         CHECK(k(uy, uy) == Approx(M_PI * R * (kn + kt)));
         CHECK(k(uz, uz) == Approx(2 * M_PI * R * kt));
@@ -231,7 +231,7 @@ TEST_CASE("A spring layer's stiffness per length integrates its band or pads", "
             ExpandingElement e;
             e.segments = n;
             e.segment_angle = 50 * M_PI / 180;
-            const Matrix6 k = spring_layer_per_length(e, R, kn, kt);
+            const Matrix6 k = spring_layer_per_length({kn, kt}, e, R);
             Matrix6 sum = Matrix6::Zero();
             const int steps = 20000;
             for (int i = 0; i < n; ++i)
@@ -267,7 +267,7 @@ TEST_CASE("The split into independent problems and the mirrored planes are exact
         ExpandingElement e;
         e.segments = pads;
         e.segment_angle = 60 * M_PI / 180;
-        net.couplings.push_back({0, 1, 0.1, 0.5, spring_layer_per_length(e, R, 3e9, 2e9)});
+        net.couplings.push_back({0, 1, 0.1, 0.5, spring_layer_per_length({3e9, 2e9}, e, R)});
         const NetworkModes m = solve(net, 16, 1e6);
         INFO(pads << " pads");
         CHECK(m.mirrored_planes == (pads == 4));
