@@ -28,29 +28,33 @@ std::optional<double> times(const std::optional<double>& v, double factor) {
     return v ? std::optional<double>(*v * factor) : std::nullopt;
 }
 
-// The displayed columns of one case: status, f1, ratio, D [mm], v_safe m/s, m/min, time.
+// The displayed columns of one case: status, f1, ratio, k, D [mm], v_safe m/s, m/min, time.
 std::vector<std::string> row_cells(const BatchCase& c) {
     return {c.name,
             c.ok ? "ok" : "FAILED",
             fixed(c.f1_hz, 2),
             fixed(c.fe_over_timoshenko, 4),
+            fixed(c.chuck_factor, 4),
             fixed(times(c.diameter_m, 1000), 1),
             fixed(c.v_safe_m_s, 2),
             fixed(times(c.v_safe_m_s, 60), 0),
             fixed(c.time_s, 1)};
 }
 
-const std::vector<std::string> kHeader = {"case",   "status",       "f1 [Hz]",        "FE/Timoshenko",
-                                          "D [mm]", "v_safe [m/s]", "v_safe [m/min]", "time [s]"};
+const std::vector<std::string> kHeader = {"case",         "status", "f1 [Hz]",      "FE/Timoshenko",
+                                          "k (chucks)",   "D [mm]", "v_safe [m/s]", "v_safe [m/min]",
+                                          "time [s]"};
 
 std::string footnote() {
     char buf[512];
     std::snprintf(buf, sizeof buf,
                   "f1: first bending mode (summary.json beam.fe_first_bending_hz); FE/Timoshenko: f1 over the "
-                  "Timoshenko beam formula.\n"
-                  "v_safe = %.1f * pi * D * f1 (safe web speed, DOMAIN.md I-5, with the factor %.1f); D = rest roll "
-                  "outer diameter, or the core's without rest paper; not given for free-free cases.\n",
-                  kSafeSpeedFactor, kSafeSpeedFactor);
+                  "Timoshenko beam formula; k: the chuck factor f1/f2 (summary.json chuck.chuck_factor; scenes on "
+                  "elastic chucks).\n"
+                  "v_safe = %.1f * pi * D * f1 (safe web speed, DOMAIN.md I-5, with the factor %.1f; summary.json "
+                  "speeds); D = rest roll outer diameter, or the core's without rest paper; not given for free-free "
+                  "cases.\n",
+                  kBatchSafeFactor, kBatchSafeFactor);
     return buf;
 }
 
@@ -98,12 +102,14 @@ void print_batch_table(std::ostream& out, const std::vector<BatchCase>& cases) {
 
 std::string batch_csv(const std::vector<BatchCase>& cases) {
     std::ostringstream s;
-    s << "case,file,status,f1_hz,fe_over_timoshenko,diameter_m,v_safe_m_per_s,v_safe_m_per_min,time_s,error,note\n";
+    s << "case,file,status,f1_hz,fe_over_timoshenko,chuck_factor_k,diameter_m,v_safe_m_per_s,v_safe_m_per_min,time_s,"
+         "error,note\n";
     for (const auto& c : cases) {
         char time[64];
         std::snprintf(time, sizeof time, "%.3f", c.time_s);
         s << csv_field(c.name) << ',' << csv_field(c.file) << ',' << (c.ok ? "ok" : "failed") << ','
-          << csv_number(c.f1_hz) << ',' << csv_number(c.fe_over_timoshenko) << ',' << csv_number(c.diameter_m) << ','
+          << csv_number(c.f1_hz) << ',' << csv_number(c.fe_over_timoshenko) << ',' << csv_number(c.chuck_factor) << ','
+          << csv_number(c.diameter_m) << ','
           << csv_number(c.v_safe_m_s) << ',' << csv_number(times(c.v_safe_m_s, 60)) << ',' << time << ','
           << csv_field(c.error) << ',' << csv_field(c.note) << '\n';
     }

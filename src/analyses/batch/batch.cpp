@@ -128,12 +128,17 @@ void read_batch_summary(BatchCase& c, const std::string& summary_json) {
     c.f1_hz = f1 && *f1 > 0 ? f1 : std::nullopt;
     const auto ratio = number("beam.fe_over_timoshenko");
     c.fe_over_timoshenko = ratio && *ratio > 0 ? ratio : std::nullopt;
-    c.diameter_m = number("case.rest_paper.outer_diameter");
-    if (!c.diameter_m) c.diameter_m = number("case.core.outer_diameter");
-    const nlohmann::json* supports = find("case.supports.type");
-    const bool free_free = supports && supports->is_string() && supports->get<std::string>() == "free";
+    // The speeds as the run gave them (summary.json "speeds", beam/speeds.hpp):
+    // none for a free-free case or one without a bending mode.
+    c.diameter_m = number("speeds.dp_m");
     c.v_safe_m_s.reset();
-    if (c.f1_hz && c.diameter_m && !free_free) c.v_safe_m_s = kSafeSpeedFactor * M_PI * *c.diameter_m * *c.f1_hz;
+    if (const nlohmann::json* safe = find("speeds.safe_web_speed"); safe && safe->is_array())
+        for (const nlohmann::json& row : *safe)
+            if (row.is_object() && row.value("safe", 0.0) == kBatchSafeFactor && row.contains("v_safe_m_s") &&
+                row["v_safe_m_s"].is_number())
+                c.v_safe_m_s = row["v_safe_m_s"].get<double>();
+    const auto k = number("chuck.chuck_factor");
+    c.chuck_factor = k && *k > 0 ? k : std::nullopt;
 }
 
 namespace {

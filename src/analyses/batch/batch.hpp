@@ -4,6 +4,8 @@
 // result table is written by output/batch_report.hpp.
 #pragma once
 
+#include "beam/speeds.hpp"
+
 #include <optional>
 #include <ostream>
 #include <string>
@@ -11,9 +13,10 @@
 
 namespace coremodal {
 
-// Safe web speed, DOMAIN.md formula I-5: v_safe = safe * pi * D * f1 with the
-// conservative factor safe = 0.7 (no safety cage).
-inline constexpr double kSafeSpeedFactor = 0.7;
+// The safe web speed the batch table shows (DOMAIN.md I-5, v_safe = safe · π
+// · Dp · f1, from summary.json's speeds): the conservative factor, no safety cage.
+inline constexpr double kBatchSafeFactor = kSafeFactors[0];
+static_assert(kBatchSafeFactor == 0.7);
 
 struct BatchOptions {
     std::vector<std::string> inputs;             // case files and folders (every *.toml in them)
@@ -37,8 +40,9 @@ struct BatchCase {
     // From OUT/<name>/summary.json, when the case succeeded:
     std::optional<double> f1_hz;               // beam.fe_first_bending_hz (first bending mode)
     std::optional<double> fe_over_timoshenko;  // beam.fe_over_timoshenko
-    std::optional<double> diameter_m;          // rest paper outer diameter, else the core's
-    std::optional<double> v_safe_m_s;          // kSafeSpeedFactor * pi * D * f1 (not for free-free)
+    std::optional<double> chuck_factor;        // chuck.chuck_factor k = f1/f2 (scenes on elastic chucks)
+    std::optional<double> diameter_m;          // speeds.dp_m: rest paper outer diameter, else the core's
+    std::optional<double> v_safe_m_s;          // speeds: kBatchSafeFactor * pi * D * f1 (none for free-free)
 };
 
 // Case files named by the inputs: a folder stands for every *.toml in it

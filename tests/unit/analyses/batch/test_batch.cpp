@@ -70,7 +70,10 @@ const char* kSummary = R"({
         "rest_paper" : { "outer_diameter" : 0.2021 },
         "supports" : { "clamps" : [ { "name" : "left", "z_end" : 0.3 } ], "type" : "clamped" }
     },
+    "chuck" : { "chuck_factor" : 0.8125, "f1_hz" : 35.5 },
     "modes" : [ { "frequency_hz" : 1.5e1, "index" : 1 } ],
+    "speeds" : { "dp_m" : 0.2021, "f1_hz" : 35.5,
+                 "safe_web_speed" : [ { "safe" : 0.7, "v_safe_m_s" : 15.777 }, { "safe" : 0.8, "v_safe_m_s" : 18.031 } ] },
     "verification" : { "complete" : true, "missing" : null, "shift" : -2.5E-3 }
 }
 )";
@@ -87,31 +90,26 @@ TEST_CASE("read_batch_summary refuses a summary that is not JSON, saying so", "[
     CHECK_NOTHROW(read_batch_summary(c, R"({"beam": {"fe_first_bending_hz": 1}, "case": {"supports": "x"}})"));
 }
 
-TEST_CASE("read_batch_summary takes f1, the beam ratio and v_safe = 0.7 pi D f1 with D of the rest roll", "[batch]") {
+TEST_CASE("read_batch_summary takes f1, the beam ratio, k and the 0.7 safe speed as summary.json gives them",
+          "[batch]") {
     BatchCase c;
     read_batch_summary(c, kSummary);
     REQUIRE(c.f1_hz);
     CHECK(*c.f1_hz == Approx(35.5));
     CHECK(*c.fe_over_timoshenko == Approx(0.9));
-    CHECK(*c.diameter_m == Approx(0.2021));  // the rest paper's, not the core's 0.1821
+    CHECK(*c.chuck_factor == Approx(0.8125));
+    CHECK(*c.diameter_m == Approx(0.2021));  // speeds.dp_m, not recomputed
     REQUIRE(c.v_safe_m_s);
-    CHECK(*c.v_safe_m_s == Approx(0.7 * M_PI * 0.2021 * 35.5));  // 15.78 m/s, 947 m/min
+    CHECK(*c.v_safe_m_s == 15.777);  // the 0.7 row, not the 0.8 one
 
-    SECTION("without rest paper D is the core's outer diameter") {
+    SECTION("no speeds in the summary (free-free, or no bending mode): no safe speed") {
         std::string s = kSummary;
-        s.replace(s.find("\"rest_paper\""), 12, "\"no_paper\"");
-        BatchCase d;
-        read_batch_summary(d, s);
-        CHECK(*d.diameter_m == Approx(0.1821));
-        CHECK(*d.v_safe_m_s == Approx(0.7 * M_PI * 0.1821 * 35.5));
-    }
-    SECTION("a free-free case has f1 but no safe web speed") {
-        std::string s = kSummary;
-        s.replace(s.find("\"clamped\" }"), 9, "\"free\"");
+        s.replace(s.find("\"speeds\""), 8, "\"nothing\"");
         BatchCase d;
         read_batch_summary(d, s);
         CHECK(d.f1_hz);
         CHECK_FALSE(d.v_safe_m_s);
+        CHECK_FALSE(d.diameter_m);
     }
     SECTION("no bending mode found (written as null since issue 11) leaves f1 empty") {
         BatchCase d;
@@ -119,6 +117,7 @@ TEST_CASE("read_batch_summary takes f1, the beam ratio and v_safe = 0.7 pi D f1 
         CHECK_FALSE(d.f1_hz);
         CHECK_FALSE(d.fe_over_timoshenko);
         CHECK_FALSE(d.v_safe_m_s);
+        CHECK_FALSE(d.chuck_factor);
     }
     SECTION("no bending mode found (written as 0 before) leaves f1 empty") {
         BatchCase d;
@@ -163,6 +162,7 @@ TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[ba
     ok.ok = true;
     ok.f1_hz = 35.5;
     ok.fe_over_timoshenko = 0.9;
+    ok.chuck_factor = 0.8125;
     ok.diameter_m = 0.2;
     ok.v_safe_m_s = 0.7 * M_PI * 0.2 * 35.5;
     ok.time_s = 1.25;
@@ -171,10 +171,10 @@ TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[ba
     bad.file = "cases/bad.toml";
     bad.error = "error: x, \"y\" | z";
     const std::string csv = batch_csv({ok, bad});
-    CHECK(csv.find("good,cases/good.toml,ok,35.5,0.9,0.2,15.6") != std::string::npos);
-    CHECK(csv.find("bad,cases/bad.toml,failed,,,,,,0.000,\"error: x, \"\"y\"\" | z\"") != std::string::npos);
+    CHECK(csv.find("good,cases/good.toml,ok,35.5,0.9,0.8125,0.2,15.6") != std::string::npos);
+    CHECK(csv.find("bad,cases/bad.toml,failed,,,,,,,0.000,\"error: x, \"\"y\"\" | z\"") != std::string::npos);
     const std::string md = batch_markdown({ok, bad});
-    CHECK(md.find("| good | ok | 35.50 | 0.9000 | 200.0 | 15.61 | 937 | 1.2 |") != std::string::npos);
+    CHECK(md.find("| good | ok | 35.50 | 0.9000 | 0.8125 | 200.0 | 15.61 | 937 | 1.2 |") != std::string::npos);
     CHECK(md.find("error: x, \"y\" \\| z") != std::string::npos);
     CHECK(md.find("0.7 * pi * D * f1") != std::string::npos);
     std::ostringstream console;
