@@ -105,6 +105,7 @@ def broken(path: str, change) -> dict:
     ("a missing required key", BASE, lambda d: d["core"].pop("length"), "'length' is a required property"),
     ("an unknown choice", BASE, lambda d: d["supports"].update(type="clampd"), "clampd"),
     ("an unknown library material", BASE, lambda d: d["core"].update(material="paperbord_core"), "material"),
+    ("an unknown base material", BASE, lambda d: d["core"].update(material={"base": "steal"}), "material"),
     ("a chuck key on a clamp zone", BASE, lambda d: d["supports"]["left"].update(inserted_length="110 mm"),
      "inserted_length"),
     ("a clamp key on a chuck", CHUCKS, lambda d: d["supports"]["left"].update(start="0 mm"), "start"),

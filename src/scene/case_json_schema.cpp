@@ -67,7 +67,8 @@ std::string unit_pattern(Dimension d, bool signed_number, bool any_unit) {
         unit = "\\s*(";
         bool first = true;
         for (std::string_view symbol : unit_symbols(d)) {
-            unit += (first ? "" : "|") + unit_regex(symbol);
+            if (!first) unit += '|';
+            unit += unit_regex(symbol);
             first = false;
         }
         unit += ")";
@@ -94,7 +95,8 @@ std::string description(const KeySpec& spec, const KeyDoc& doc) {
                     si_unit(spec.dimension) + " or a string with a unit (";
             bool first = true;
             for (std::string_view symbol : unit_symbols(spec.dimension)) {
-                text += (first ? "" : ", ") + std::string(symbol);
+                if (!first) text += ", ";
+            text += symbol;
                 first = false;
             }
             text += ").";
@@ -157,11 +159,14 @@ toml::table quantity_schema(const KeySpec& spec) {
     return toml::table{{"anyOf", toml::array{std::move(number), std::move(text)}}};
 }
 
-toml::table material_schema() {
+toml::table library_name_schema() {
     std::vector<std::string> names;
     for (const LibraryMaterial& m : material_library()) names.emplace_back(m.name);
-    return toml::table{
-        {"anyOf", toml::array{toml::table{{"type", "string"}, {"enum", strings(names)}}, ref_to("material")}}};
+    return toml::table{{"type", "string"}, {"enum", strings(names)}};
+}
+
+toml::table material_schema() {
+    return toml::table{{"anyOf", toml::array{library_name_schema(), ref_to("material")}}};
 }
 
 // The schema of one key's value, before its description and default.
@@ -176,6 +181,8 @@ toml::table value_schema(const KeySpec& spec, const KeyDoc& doc) {
             return t;
         }
         case ValueKind::text: {
+            // A material's base is a library name.
+            if (spec.table == "material" && spec.key == "base") return library_name_schema();
             toml::table t{{"type", "string"}};
             if (!doc.choices.empty()) t.insert("enum", strings(words(doc.choices)));
             // A sweep parameter may set several keys together: key = ["a.b", "c.d"].
