@@ -1,4 +1,6 @@
 #include "scene/case_key_docs.hpp"
+#include "common/error.hpp"
+#include "scene/case_file.hpp"
 #include "scene/case_schema.hpp"
 #include "scene/mesh_levels.hpp"
 
@@ -34,5 +36,59 @@ TEST_CASE("Every case-file key has a description and a default, and every row a 
             const std::string_view key = std::string_view(table) == "mesh" ? "level" : "mesh";
             CHECK(find_key_doc(table, key)->choices == levels);
         }
+    }
+}
+
+namespace {
+
+const std::string kCore =
+    "[core]\n"
+    "inner_diameter = \"76 mm\"\n"
+    "outer_diameter = \"106 mm\"\n"
+    "length = \"1.5 m\"\n";
+
+std::string chucks(const std::string& left_extra, const std::string& bearing) {
+    return kCore +
+           "[supports]\ntype = \"chucks\"\n"
+           "[supports.left]\ninserted_length = \"110 mm\"\n" +
+           left_extra +
+           "[[supports.left.expanding]]\ncenter = \"70 mm\"\nwidth = \"40 mm\"\n"
+           "[supports.left.bearing]\n" +
+           bearing;
+}
+
+std::string error_of(const std::string& text) {
+    try {
+        parse_case_text(text, "cases/x.toml");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+}  // namespace
+
+TEST_CASE("The documented choices of a string key are the reader's, in its order", "[schema][case_key_docs]") {
+    struct Probe {
+        std::string_view table, key;
+        std::string text;  // the key set to "nonsense"
+    };
+    const Probe probes[] = {
+        {"", "model", "model = \"nonsense\"\n" + kCore},
+        {"supports", "type", kCore + "[supports]\ntype = \"nonsense\"\n"},
+        {"mesh", "level", kCore + "[mesh]\nlevel = \"nonsense\"\n"},
+        {"mesh", "element", kCore + "[mesh]\nelement = \"nonsense\"\n"},
+        {"chuck", "interface", chucks("interface = \"nonsense\"\n", "type = \"rigid\"\n")},
+        {"bearing", "type", chucks("", "type = \"nonsense\"\n")},
+    };
+    for (const Probe& p : probes) {
+        INFO("[" << p.table << "] " << p.key);
+        // "solid harmonic auto beam" -> "expected one of solid, harmonic, auto, beam"
+        std::string expected = "expected one of ";
+        for (const char c : find_key_doc(p.table, p.key)->choices) expected += c == ' ' ? std::string(", ") : std::string(1, c);
+        CHECK_THAT(error_of(p.text), Catch::Contains("unknown value") && Catch::Contains(expected));
+    }
+    SECTION("and the probes' base texts are valid cases") {
+        CHECK(error_of(chucks("interface = \"bonded\"\n", "type = \"rigid\"\n")) == "(no error)");
     }
 }
