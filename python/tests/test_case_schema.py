@@ -89,7 +89,7 @@ def broken(path: str, change) -> dict:
     return document
 
 
-@pytest.mark.parametrize("what, path, change, expected", [
+BROKEN = [
     ("an unknown key", BASE, lambda d: d["core"].update(outer_diamter="106 mm"), "outer_diamter"),
     ("an unknown table", BASE, lambda d: d.update(anlysis={"modes": 3}), "anlysis"),
     ("a wrong type", BASE, lambda d: d["analysis"].update(modes="12"), "'12' is not of type 'integer'"),
@@ -110,11 +110,60 @@ def broken(path: str, change) -> dict:
      "inserted_length"),
     ("a clamp key on a chuck", CHUCKS, lambda d: d["supports"]["left"].update(start="0 mm"), "start"),
     ("a band of one frequency", BASE, lambda d: d["analysis"].update(band=["0 Hz"]), "band"),
-])
+]
+
+
+@pytest.mark.parametrize("what, path, change, expected", BROKEN)
 def test_broken_cases_are_rejected(validator, what: str, path: str, change, expected: str) -> None:
     found = errors(validator, broken(path, change))
     assert found, f"{what} was accepted"
     assert any(expected in e for e in found) or expected in json.dumps(found), found
+
+
+def toml_text(document: dict, path: str = "") -> str:
+    """Enough of a TOML writer for the cases: scalars, lists of scalars,
+    tables, arrays of tables."""
+    def value(v) -> str:
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (int, float)):
+            return repr(v)
+        if isinstance(v, str):
+            return json.dumps(v, ensure_ascii=False)
+        if isinstance(v, list):
+            return "[" + ", ".join(value(x) for x in v) + "]"
+        if isinstance(v, dict):
+            return "{ " + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + " }"
+        raise TypeError(v)
+
+    def is_tables(v) -> bool:
+        return isinstance(v, list) and v and all(isinstance(x, dict) for x in v)
+
+    lines = [f"{k} = {value(v)}" for k, v in document.items() if not isinstance(v, dict) and not is_tables(v)]
+    for k, v in document.items():
+        name = f"{path}.{k}" if path else k
+        if isinstance(v, dict):
+            lines += ["", f"[{name}]", toml_text(v, name)]
+        elif is_tables(v):
+            for item in v:
+                lines += ["", f"[[{name}]]", toml_text(item, name)]
+    return "\n".join(lines)
+
+
+@pytest.mark.parametrize("what, path, change, expected", BROKEN)
+def test_the_reader_refuses_the_broken_cases_too(tmp_path: Path, what: str, path: str, change, expected: str) -> None:
+    binary = os.environ.get("COREMODAL_BIN")
+    if not binary:
+        pytest.skip("COREMODAL_BIN is not set")
+    original = tmp_path / "original.toml"
+    original.write_text(toml_text(load(REPO / path)), encoding="utf-8")
+    assert tomllib.loads(original.read_text(encoding="utf-8")) == load(REPO / path)  # the writer is faithful
+    done = subprocess.run([binary, "check", str(original)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    case = tmp_path / "broken.toml"
+    case.write_text(toml_text(broken(path, change)), encoding="utf-8")
+    done = subprocess.run([binary, "check", str(case)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 1, f"{what}: the reader took it\n{done.stdout}"
 
 
 @pytest.mark.parametrize("value", ["76 mm", "76mm", "7.6 cm", "3 in", 0.076, "76 µm", "76 um", "+76 mm", "7.6e1 mm"])
