@@ -24,5 +24,6 @@ Command add_study_command(CLI::App& app);  // app/study_command.cpp
 Command add_calibrate_command(CLI::App& app);  // app/calibrate_command.cpp
 Command add_check_command(CLI::App& app);  // app/check_command.cpp
 Command add_winder_command(CLI::App& app);  // app/winder_command.cpp
+Command add_schema_command(CLI::App& app);  // app/schema_command.cpp
 
 }  // namespace coremodal

@@ -7,6 +7,7 @@
 //   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
 //   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
 //   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
+//   coremodal schema [--output FILE]             (the case file's JSON Schema, for editors)
 //   coremodal --version
 //
 // PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
@@ -158,7 +159,8 @@ int main(int argc, char** argv) {
         coremodal::add_run_command(app),      coremodal::add_check_command(app),
         coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
         coremodal::add_converge_command(app), coremodal::add_winder_command(app),
-        coremodal::add_study_command(app),    coremodal::add_calibrate_command(app)};
+        coremodal::add_study_command(app),    coremodal::add_calibrate_command(app),
+        coremodal::add_schema_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

@@ -2,6 +2,7 @@
 // its dimension and its factor to SI; parsing, messages and the list of
 // accepted units in messages all read that table.
 #include "scene/units.hpp"
+#include "scene/unit_symbols.hpp"
 
 #include <array>
 #include <charconv>
@@ -231,6 +232,13 @@ std::vector<UnitFactor> common_units(Dimension d) {
     std::vector<UnitFactor> out;
     for (const UnitSpec& u : kUnits)
         if (u.dimension == d && u.listed) out.push_back({u.symbol, u.to_si / u.divide_by});
+    return out;
+}
+
+std::vector<std::string_view> unit_symbols(Dimension d) {
+    std::vector<std::string_view> out;
+    for (const UnitSpec& u : kUnits)
+        if (u.dimension == d) out.push_back(u.symbol);
     return out;
 }
 
