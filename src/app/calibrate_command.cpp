@@ -16,16 +16,13 @@
 namespace coremodal {
 namespace {
 
-struct CalibrateOptions {
-    std::string case_file, output, mesh;
-    bool quiet = false, no_plots = false, force = false;
-    unsigned jobs = 0;  // 0: the number of cores
-};
+struct CalibrateOptions : SweepCommandOptions {};
 
 int run_calibrate_command(const CalibrateOptions& o) {
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "calibration",
-                                            o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh));
+                                            o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh))
+                                .with_model(o.model);
     print_warnings(sweep.warnings());
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
@@ -68,18 +65,7 @@ Command add_calibrate_command(CLI::App& app) {
         "calibrate", "Run the case's [calibration] table, tabulate the chuck factor k, fit it as a function of "
                      "dimensionless groups and check it on held-out points; writes calibration.toml for "
                      "`coremodal beam --calibration`");
-    cmd->add_option("case", o->case_file, "case file (TOML) with a [calibration] table")->required();
-    cmd->add_option("-o,--output", o->output,
-                    "results folder (default results/<case name>-calibration); replaces only an earlier coremodal "
-                    "result, which is kept as <folder>.previous (docs/results.md)");
-    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
-    cmd->add_option("-m,--mesh", o->mesh,
-                    "mesh level of every point, overriding [calibration] mesh: coarse, default, fine, very_fine");
-    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
-    cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
-    cmd->add_option("-j,--jobs", o->jobs,
-                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
-                    "after the other in this process, as always under mpirun)");
+    add_sweep_options(cmd, *o, "calibration");
     cmd->footer("Exit status 0 when every point ran and I-7 with the fitted k reproduces the FE f1 within "
                 "[calibration] max_error on fitted and held-out points; 1 otherwise (the results are written "
                 "either way). docs/calibration.md.");

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace coremodal {
 
@@ -15,6 +16,46 @@ struct Command {
     std::function<int()> run;  // returns the process exit code
     bool needs_petsc = true;
 };
+
+// Options several commands share, said once.
+// --model: the model level, overriding the case's model key (`what`: "" for
+// a run, " of every point" for a sweep).
+inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const std::string& what = "") {
+    return cmd->add_option("--model", model,
+                           "model level" + what + ", overriding the case's model key: solid (3D), harmonic "
+                           "(axisymmetric scenes, one 2D problem per wave number n), auto (harmonic where the scene "
+                           "allows it, else solid), beam")
+        ->check(CLI::IsMember({"solid", "harmonic", "auto", "beam"}));
+}
+// -o/--output and --force of a command that writes one results folder
+// (default results/<case name><suffix>).
+inline void add_results_options(CLI::App* cmd, std::string& output, bool& force, const std::string& suffix) {
+    cmd->add_option("-o,--output", output,
+                    "results folder (default results/<case name>" + suffix + "); replaces only an earlier coremodal "
+                    "result, which is kept as <folder>.previous (docs/results.md)");
+    cmd->add_flag("--force", force, "remove the earlier result at --output instead of keeping it as .previous");
+}
+
+// The command line of a sweep over a case's [study] or [calibration] table.
+struct SweepCommandOptions {
+    std::string case_file, output, mesh, model;
+    bool quiet = false, no_plots = false, force = false;
+    unsigned jobs = 0;  // 0: the number of cores
+};
+// Its case, results folder, --model, --mesh, -q, --no-plots and --jobs.
+inline void add_sweep_options(CLI::App* cmd, SweepCommandOptions& o, const std::string& table,
+                              const std::string& example = "") {
+    cmd->add_option("case", o.case_file, "case file (TOML) with a [" + table + "] table" + example)->required();
+    add_results_options(cmd, o.output, o.force, "-" + table);
+    add_model_option(cmd, o.model, " of every point");
+    cmd->add_option("-m,--mesh", o.mesh,
+                    "mesh level of every point, overriding [" + table + "] mesh: coarse, default, fine, very_fine");
+    cmd->add_flag("-q,--quiet", o.quiet, "no progress lines");
+    cmd->add_flag("--no-plots", o.no_plots, "do not run python3 for the PNG plots");
+    cmd->add_option("-j,--jobs", o.jobs,
+                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
+                    "after the other in this process, as always under mpirun)");
+}
 
 Command add_run_command(CLI::App& app);    // app/run_command.cpp
 Command add_beam_command(CLI::App& app);   // app/beam_command.cpp

@@ -20,10 +20,7 @@ Command add_run_command(CLI::App& app) {
     cmd->add_flag("--force", options->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-m,--mesh", *mesh_level,
                     "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
-    cmd->add_option("--model", *model,
-                    "model level, overriding the case's model key: solid (3D), harmonic (axisymmetric scenes, one "
-                    "2D problem per wave number n), auto (harmonic where the scene allows it, else solid), beam")
-        ->check(CLI::IsMember({"solid", "harmonic", "auto", "beam"}));
+    add_model_option(cmd, *model);
     cmd->add_flag("-q,--quiet", options->quiet, "no progress lines or tables");
     cmd->add_flag("--compare-rigid", options->compare_rigid,
                   "with elastic chucks: also run rigid clamps over the expanding elements and list both mode "

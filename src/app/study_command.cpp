@@ -15,10 +15,7 @@
 namespace coremodal {
 namespace {
 
-struct StudyCommandOptions {
-    std::string case_file, output, mesh;
-    bool quiet = false, no_plots = false, force = false;
-    unsigned jobs = 0;  // 0: the number of cores
+struct StudyCommandOptions : SweepCommandOptions {
     // A worker child of a study (analyses/study/study_workers.hpp): hidden options.
     int worker_point = -1;
     std::string worker_table = "study", worker_output;
@@ -40,9 +37,10 @@ void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
 
 int run_study_command(const StudyCommandOptions& o) {
     if (!o.worker_output.empty())
-        return run_worker_point({o.case_file, o.worker_table, mesh_option(o.mesh), o.worker_point, o.worker_output});
+        return run_worker_point(
+            {o.case_file, o.worker_table, mesh_option(o.mesh), o.model, o.worker_point, o.worker_output});
     const bool root = mpi_rank() == 0;
-    const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh));
+    const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh)).with_model(o.model);
     print_warnings(sweep.warnings());
     const std::filesystem::path out_dir =
         o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
@@ -75,19 +73,7 @@ Command add_study_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "study", "Run the case's [study] table: every point of a grid of case-file values, the modes tracked from "
                  "point to point by MAC; study.csv, plots and report.md");
-    cmd->add_option("case", o->case_file, "case file (TOML) with a [study] table, e.g. cases/06-study-safe-speed.toml")
-        ->required();
-    cmd->add_option("-o,--output", o->output,
-                    "results folder (default results/<case name>-study); replaces only an earlier coremodal result, "
-                    "which is kept as <folder>.previous (docs/results.md)");
-    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
-    cmd->add_option("-m,--mesh", o->mesh,
-                    "mesh level of every point, overriding [study] mesh: coarse, default, fine, very_fine");
-    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
-    cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
-    cmd->add_option("-j,--jobs", o->jobs,
-                    "points run at the same time, each in its own process (default: the number of cores; 1: one "
-                    "after the other in this process, as always under mpirun)");
+    add_sweep_options(cmd, *o, "study", ", e.g. cases/06-study-safe-speed.toml");
     cmd->add_option("--worker-point", o->worker_point)->group("");  // a study's child process
     cmd->add_option("--worker-table", o->worker_table)->group("");
     cmd->add_option("--worker-output", o->worker_output)->group("");

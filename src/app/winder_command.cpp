@@ -68,10 +68,7 @@ Command add_winder_command(CLI::App& app) {
                   "the rolls' rotation harmonics with the drum modes, X/F at a drum's centre; tables, a crossing "
                   "diagram and report.md");
     cmd->add_option("case", o->case_file, "winder case file (TOML), e.g. cases/11-two-drum-winder.toml")->required();
-    cmd->add_option("-o,--output", o->output,
-                    "results folder (default results/<case name>-winder); replaces only an earlier coremodal result, "
-                    "which is kept as <folder>.previous (docs/results.md)");
-    cmd->add_flag("--force", o->force, "remove the earlier result at --output instead of keeping it as .previous");
+    add_results_options(cmd, o->output, o->force, "-winder");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress line");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "

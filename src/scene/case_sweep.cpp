@@ -37,6 +37,7 @@ constexpr Alternative kAlternatives[] = {
 }  // namespace
 
 void CaseSweep::Impl::apply_options(toml::table& doc) const {
+    if (!options.model.empty()) doc.insert_or_assign("model", options.model);
     if (replace_mesh) {
         // A fresh [mesh]: the level's counts, not the case's own overrides.
         toml::table mesh{{"level", options.mesh_level}};
@@ -108,6 +109,15 @@ const std::string& CaseSweep::table() const { return impl_->table; }
 bool CaseSweep::from_file() const { return impl_->from_file; }
 const std::vector<SweepParameter>& CaseSweep::parameters() const { return impl_->parameters; }
 const SweepOptions& CaseSweep::options() const { return impl_->options; }
+
+CaseSweep CaseSweep::with_model(const std::string& model) const {
+    if (model.empty()) return *this;
+    auto impl = std::make_shared<Impl>(*impl_);
+    impl->options.model = model;
+    CaseSweep sweep;
+    sweep.impl_ = std::move(impl);
+    return sweep;
+}
 
 int CaseSweep::n_points() const {
     int n = 1;

@@ -39,6 +39,7 @@ struct SweepParameter {
 
 struct SweepOptions {
     std::string mesh_level;                // what every point uses; "" = the case's own [mesh]
+    std::string model;                     // model level of every point (--model); "" = the case's own
     int modes = 0;                         // [analysis] modes of every point; 0 = the case's own [analysis]
     double safe_factor = 0.7;              // I-5 factor for v_safe ([study] safe_factor)
     std::optional<double> web_speed_m_s;   // König's chart line ([study] web_speed)
@@ -71,6 +72,9 @@ public:
     const std::vector<std::string>& warnings() const;
     const std::vector<SweepParameter>& parameters() const;
     const SweepOptions& options() const;
+    // The same sweep with every point at model level `model` (the command
+    // line's --model: solid, harmonic, auto, beam); "" keeps the case's.
+    CaseSweep with_model(const std::string& model) const;
 
     int n_points() const;
     // Which value of each parameter point i takes (0-based, parameter order).

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -115,6 +117,40 @@ TEST_CASE("A study writes its whole folder; a refused point is reported and the 
     const std::string report = slurp(dir.path / "out" / "report.md");
     CHECK(report.find("## Failed points") != std::string::npos);
     CHECK(report.find("![f1_vs_core_length.png](f1_vs_core_length.png)") != std::string::npos);
+}
+
+// The value in column `name` of row `row` (1-based data rows) of a CSV text
+// without quoted fields.
+static std::string csv_cell(const std::string& csv, const std::string& name, int row) {
+    std::istringstream in(csv);
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::istringstream fields(line);
+        for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+        rows.push_back(cells);
+    }
+    const auto& header = rows.at(0);
+    const auto column = std::find(header.begin(), header.end(), name) - header.begin();
+    return rows.at(row).at(column);
+}
+
+TEST_CASE("study --model runs every point at that level, in worker processes too", "[app][study][cli]") {
+    TempDir dir;
+    dir.write("tiny.toml", kTinyStudy);
+    const Run study = run_coremodal(dir, "study tiny.toml --model beam --jobs 2 --no-plots -q -o out");
+    INFO("stderr: " << study.err);
+    CHECK(study.exit_code == 1);  // the 0.07 m point is still refused
+    const Run run = run_coremodal(dir, "run tiny.toml --model beam --no-plots -q -o run");
+    REQUIRE(run.exit_code == 0);
+    const std::string summary = slurp(dir.path / "run" / "summary.json");
+    const size_t at = summary.find("\"fe_first_bending_hz\" : ");
+    REQUIRE(at != std::string::npos);
+    const double f1_run = std::stod(summary.substr(at + 24));
+    // The beam level's f1 of the 0.5 m point, not the solid's (which differs by percent).
+    const double f1_study = std::stod(csv_cell(slurp(dir.path / "out" / "study.csv"), "f1_hz", 1));
+    CHECK(f1_study == Approx(f1_run).epsilon(1e-9));
+    CHECK(run_coremodal(dir, "study --help").out.find("--model") != std::string::npos);
 }
 
 TEST_CASE("A study with a bad key stops before running anything, naming file, line and key", "[app][study][cli]") {

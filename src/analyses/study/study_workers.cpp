@@ -126,6 +126,7 @@ struct Child {
                                          record.string(),
                                          "--quiet"};
         if (!sweep.options().mesh_level.empty()) args.insert(args.end(), {"--mesh", sweep.options().mesh_level});
+        if (!sweep.options().model.empty()) args.insert(args.end(), {"--model", sweep.options().model});
         const ChildExit child = run_child(program, args, env, log);
         if (!child.started()) {
             p.error = "cannot start " + program + ": " + std::strerror(child.spawn_error);
@@ -189,7 +190,7 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
 }
 
 int run_worker_point(const WorkerPoint& w) {
-    const CaseSweep sweep = CaseSweep::read(w.case_file, w.table, w.mesh_level);
+    const CaseSweep sweep = CaseSweep::read(w.case_file, w.table, w.mesh_level).with_model(w.model);
     if (w.point < 0 || w.point >= sweep.n_points())
         throw InputError("--worker-point " + std::to_string(w.point) + " is not a point of " + w.case_file);
     StudyPoint p;

@@ -38,6 +38,7 @@ struct WorkerPoint {
     std::string case_file;
     std::string table = "study";
     std::optional<std::string> mesh_level;
+    std::string model;  // --model of the parent; "" = the case's
     int point = -1;
     std::string output;
 };
