@@ -4,11 +4,14 @@
 #include "scene/case_schema.hpp"
 #include "scene/mesh_levels.hpp"
 
+#include "support/case_errors.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace coremodal;
+using coremodal::testing::error_of;
 
 TEST_CASE("Every case-file key has a description and a default, and every row a key", "[schema][case_key_docs]") {
     SECTION("each key of the key table has one row, with text in it") {
@@ -55,15 +58,6 @@ std::string chucks(const std::string& left_extra, const std::string& bearing) {
            "[[supports.left.expanding]]\ncenter = \"70 mm\"\nwidth = \"40 mm\"\n"
            "[supports.left.bearing]\n" +
            bearing;
-}
-
-std::string error_of(const std::string& text) {
-    try {
-        parse_case_text(text, "cases/x.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no error)";
 }
 
 }  // namespace

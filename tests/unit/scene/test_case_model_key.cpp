@@ -3,11 +3,14 @@
 
 #include "common/error.hpp"
 
+#include "support/case_errors.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace coremodal;
+using coremodal::testing::error_of;
 
 namespace {
 
@@ -16,15 +19,6 @@ const std::string kCore =
     "inner_diameter = \"76 mm\"\n"
     "outer_diameter = \"106 mm\"\n"
     "length = \"1.5 m\"\n";
-
-std::string error_of(const std::string& text) {
-    try {
-        parse_case_text(text, "cases/x.toml");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
 
 }  // namespace
 
