@@ -138,7 +138,8 @@ TEST_CASE("The same chuck gives the same spring layer to all three levels", "[ef
 TEST_CASE("A rigid translation loads the bearings by exactly their stiffness at every level",
           "[effects][chuck][harmonic][beam]") {
     const Scene s = on_elastic_bearings(chuck_scene(), 2e8, 3e6);
-    const BearingSprings& springs = *support_effects(s).chucks[0].bearing_springs;
+    const SupportEffects effects = support_effects(s);  // held: the springs below refer into it
+    const BearingSprings& springs = *effects.chucks[0].bearing_springs;
     REQUIRE(springs.radial == 2e8);
 
     SECTION("solid: the left shaft end face moved by one metre along x") {
