@@ -54,48 +54,8 @@ SIDE_VIEW_ARROWS = 16
 SIDE_VIEW_Z_TICKS = 8
 SIDE_VIEW_ACROSS_TICKS = 4
 
-__all__ = ["CentreLine", "SectionRing", "SideViewData", "boundary_polygons", "centreline_curves",
+__all__ = ["CentreLine", "SectionRing", "SideViewData", "centreline_curves",
            "clamp_spans", "draw_mode", "mode_figure", "section_ring", "side_view_data"]
-
-# Faces of each cell type as corner cycles (gmsh local numbering) and the gmsh
-# local node on each edge, so that a face can be drawn through its mid-edge
-# nodes: corner, edge node, corner, edge node, ...
-_HEX_FACES = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7)]
-_HEX_EDGE_NODE = {
-    (0, 1): 8, (0, 3): 9, (0, 4): 10, (1, 2): 11, (1, 5): 12, (2, 3): 13,
-    (2, 6): 14, (3, 7): 15, (4, 5): 16, (4, 7): 17, (5, 6): 18, (6, 7): 19,
-}  # fmt: skip
-_TET_FACES = [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]
-_TET_EDGE_NODE = {(0, 1): 4, (1, 2): 5, (0, 2): 6, (0, 3): 7, (2, 3): 8, (1, 3): 9}
-
-
-def _face_tables(cell_type: str) -> tuple[np.ndarray, np.ndarray]:
-    """(faces x corners) and (faces x polygon nodes) local index tables."""
-    faces, edge_node = (_TET_FACES, _TET_EDGE_NODE) if cell_type == "tet10" else (
-        _HEX_FACES, _HEX_EDGE_NODE)  # hex27 shares hex20's first 20 nodes
-    polygons = []
-    for face in faces:
-        polygon = []
-        for a, b in zip(face, face[1:] + face[:1]):
-            polygon += [a, edge_node[(min(a, b), max(a, b))]]
-        polygons.append(polygon)
-    return np.array(faces), np.array(polygons)
-
-
-def boundary_polygons(cells: np.ndarray, cell_type: str) -> np.ndarray:
-    """Node indices of every boundary face as a polygon through its corner and
-    mid-edge nodes: (F, 8) for hexahedra, (F, 6) for tetrahedra.
-
-    A face is on the boundary when no other cell has the same corner nodes.
-    """
-    corners, polygons = _face_tables(cell_type)
-    face_corners = cells[:, corners].reshape(-1, corners.shape[1])
-    face_polygons = cells[:, polygons].reshape(-1, polygons.shape[1])
-    _, inverse, counts = np.unique(
-        np.sort(face_corners, axis=1), axis=0, return_inverse=True, return_counts=True
-    )
-    return face_polygons[counts[inverse.reshape(-1)] == 1]
-
 
 @dataclass(frozen=True)
 class CentreLine:

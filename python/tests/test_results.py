@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import coremodal
-from coremodal.plot import (SECTION_SCALE_FRACTION, boundary_polygons, centreline_curves,
+from coremodal.plot import (SECTION_SCALE_FRACTION, centreline_curves,
                             clamp_spans, draw_mode, section_ring)
 
 N_MODES_ASKED = 10  # [analysis] modes in data/tiny.toml
@@ -167,16 +167,6 @@ def test_the_side_view_scale_is_the_modes_warp_scale(results: coremodal.Results,
     scale = draw_mode(results, 7, tmp_path / "m.png", size_px=(320, 240))
     assert scale == pytest.approx(results.warp_scales[6])
     assert draw_mode(results, 7, tmp_path / "m2.png", scale=2.5, size_px=(320, 240)) == 2.5
-
-
-def test_boundary_of_the_tube_is_its_four_surfaces(results: coremodal.Results) -> None:
-    polygons = boundary_polygons(results.cells, results.cell_type)
-    on_boundary = np.unique(polygons)
-    radius = np.hypot(results.nodes[on_boundary, 0], results.nodes[on_boundary, 1])
-    z = results.nodes[on_boundary, 2]
-    near = lambda a, b: np.isclose(a, b, rtol=0, atol=1e-9)  # noqa: E731
-    # Every boundary node lies on the inner or outer cylinder or an end face.
-    assert np.all(near(radius, 0.038) | near(radius, 0.041) | near(z, z.min()) | near(z, z.max()))
 
 
 # A synthetic tube: 121 planes of 48 nodes on each of 3 radii, for testing the
@@ -344,24 +334,3 @@ def test_a_file_that_is_not_coremodal_results_is_rejected(tmp_path: Path) -> Non
         f["x"] = np.zeros(3)
     with pytest.raises(coremodal.ResultsFormatError, match="not a coremodal results file"):
         coremodal.load(other)
-
-
-@pytest.mark.parametrize("cell_type, n_nodes, faces, polygon", [
-    ("hex20", 20, 6, 8), ("hex27", 27, 6, 8), ("tet10", 10, 4, 6)])
-def test_boundary_polygons_of_synthetic_cells(cell_type: str, n_nodes: int, faces: int,
-                                              polygon: int) -> None:
-    one = np.arange(n_nodes)[None, :]
-    assert boundary_polygons(one, cell_type).shape == (faces, polygon)
-    # Two cells glued face to face (the second is the first mirrored, with its
-    # glued face's nodes shared): that face is interior and disappears.
-    if cell_type == "tet10":
-        second = np.array([0, 2, 1, 10, 6, 5, 4, 11, 12, 13])  # shares face (0,1,2)
-    else:
-        second = np.arange(n_nodes) + 100
-        for a, b in [(0, 4), (1, 5), (2, 6), (3, 7), (8, 16), (11, 18), (13, 19), (9, 17)]:
-            second[a] = b  # second's bottom face is the first cell's top face
-    both = np.vstack([one, second[None, :]])
-    assert len(boundary_polygons(both, cell_type)) == 2 * faces - 2
-    # Every polygon alternates corner, mid-edge node, corner, ...
-    corners = 4 if cell_type == "tet10" else 8
-    assert np.all(boundary_polygons(one, cell_type)[:, ::2] < corners)
