@@ -285,8 +285,9 @@ def mode_figure(results: Results, index: int, scale: float | None = None, *,
 
 
 def _draw_side_view(axes, view: SideViewData, spans) -> None:
-    """The roll at rest (grey) and deformed (blue), its node planes as lines
-    and its section centres; across in mm, the height not to scale."""
+    """The roll at rest (dashed outline) and deformed (blue), its node
+    planes as lines and its section centres; across in mm, the height not
+    to scale."""
     rest_z, rest_low, rest_high = view.rest
     z, low, high = view.deformed
     shade_supports(axes, spans)
