@@ -50,10 +50,10 @@ def _parser() -> argparse.ArgumentParser:
     plot.add_argument("results", type=Path, help="modes.h5 written by coremodal")
     plot.add_argument("--mode", type=int, required=True, help="mode number, 1-based as in the table")
     plot.add_argument("--out", type=Path, help="PNG to write (default: mode_NN.png)")
-    plot.add_argument("--scale", type=float, help="displacement scale of the 3D view "
-                      "(default: largest "
-                      "displacement = 10%% of the model's largest extent, at most 25%% "
-                      "of its smallest)")
+    plot.add_argument("--scale", type=float, help="displacement scale of the side view "
+                      "(default: the mode's warp scale: a bending or axial mode's largest "
+                      "displacement = 10%% of the model's length, other modes' at most 25%% "
+                      "of its diameter)")
     plot.add_argument("--size", type=_size, default=(1200, 900), metavar="WxH",
                       help="picture size in pixels (default 1200x900)")
 

@@ -27,6 +27,7 @@ from matplotlib.figure import Figure
 
 from ._optional import require
 from .results import Results
+from .stations import stations
 
 #: The strip's frames: the swing at +1, +1/2, 0, -1/2, -1 of its amplitude
 #: (sin of the phase), top to bottom — a standing mode's whole motion.
@@ -40,8 +41,6 @@ STRIP_WIDTH_PX = 1000
 STRIP_MAX_HEIGHT_PX = 1400
 GIF_WIDTH_PX = 800
 DPI = 100
-#: Nodes closer in z than this fraction of the length are one node plane.
-PLANE_TOLERANCE = 1e-9
 
 
 @dataclass(frozen=True)
@@ -55,14 +54,12 @@ class SideView:
 
 
 def side_view(results: Results, index: int, shape: np.ndarray) -> SideView:
-    """Node planes (nodes of equal z), the transverse direction the mode
-    moves in most and its suggested warp scale."""
-    z = results.nodes[:, 2]
-    length = float(np.ptp(z)) or 1.0
-    _, plane = np.unique(np.round(z / (PLANE_TOLERANCE * length)), return_inverse=True)
-    plane = plane.reshape(-1)
+    """Node planes (nodes of equal z; bins of z for an unstructured mesh,
+    coremodal.stations), the transverse direction the mode moves in most
+    and its suggested warp scale."""
+    where = stations(results.nodes[:, 2])
     across = 0 if float(np.sum(shape[:, 0] ** 2)) >= float(np.sum(shape[:, 1] ** 2)) else 1
-    return SideView(plane=plane, n_planes=int(plane.max()) + 1, across=across,
+    return SideView(plane=where.index, n_planes=where.count, across=across,
                     scale=float(results.warp_scales[index - 1]))
 
 

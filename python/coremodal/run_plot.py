@@ -6,7 +6,8 @@ folder.
 draws into that folder (docs/results.md, "report.md"):
 
 - ``mode_NN.png`` for each listed mode: the three-panel picture of
-  coremodal.plot.draw_mode, a little smaller than the ``plot`` default;
+  coremodal.plot.draw_mode (side view, cross-section, curves along the
+  roll), a little smaller than the ``plot`` default;
 - ``spectrum.png``: every mode's frequency against its number, coloured by
   its type, so that the order of bending, torsion, axial and shell modes is
   seen at a glance;
@@ -15,8 +16,7 @@ draws into that folder (docs/results.md, "report.md"):
   (only where PIL is installed).
 
 The program chooses the modes (one of each type, lowest first) and calls this
-after writing modes.h5; the mesh's boundary faces are found once for all
-pictures.
+after writing modes.h5.
 """
 
 from __future__ import annotations

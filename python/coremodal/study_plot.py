@@ -31,6 +31,8 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from .key_names import human_name, written_unit
+
 #: Picture size in pixels at DPI.
 SIZE_PX = (1100, 750)
 DPI = 100
@@ -51,8 +53,26 @@ class Parameter:
     column: str  # "core.length_m" in study.csv
     numeric: bool
     unit: str  # SI unit, "" for plain numbers and text
-    labels: list[str]
-    values: list[float]
+    labels: list[str]  # the values as the case file wrote them: "10 mm"
+    values: list[float]  # SI
+    keys: list[str] = field(default_factory=list)  # every key set to the value
+
+    @property
+    def human_name(self) -> str:
+        """"roll width" for core.length (coremodal.key_names)."""
+        return human_name(self.keys[0] if self.keys else self.name)
+
+    @property
+    def shown_unit(self) -> tuple[str, float]:
+        """The unit the study's values were written in and the factor from
+        SI to it: ("mm", 1000) for values "10 mm", "30 mm"; else SI."""
+        if not self.numeric:
+            return "", 1.0
+        return written_unit(self.labels, self.values, self.unit)
+
+    def shown(self, si: float) -> float:
+        """An SI value of this parameter in the unit it was written in."""
+        return si * self.shown_unit[1]
 
 
 @dataclass
@@ -103,7 +123,7 @@ def load_study(folder: Path) -> Study:
         meta = json.loads(json_path.read_text())
         parameters = [
             Parameter(p["name"], p["column"], bool(p["numeric"]), p.get("unit", ""), list(p["labels"]),
-                      [float(v) for v in p.get("values", [])])
+                      [float(v) for v in p.get("values", [])], list(p.get("keys", [])))
             for p in meta["parameters"]
         ]
     except (ValueError, KeyError, TypeError) as error:
@@ -121,7 +141,10 @@ def file_stem(name: str) -> str:
 
 
 def axis_label(p: Parameter) -> str:
-    return f"{p.name} [{p.unit}]" if p.unit else p.name
+    """"roll width [m]": the parameter's human name and the unit its values
+    were written in (coremodal.key_names)."""
+    unit = p.shown_unit[0]
+    return f"{p.human_name} [{unit}]" if unit else p.human_name
 
 
 def change_diameters(diameter: np.ndarray, v_safe: np.ndarray, web_speed: float) -> list[float]:
@@ -150,7 +173,7 @@ def _group_label(study: Study, key: tuple, leave_out: set[str]) -> str:
             for lab, val in zip(p.labels, p.values):
                 if math.isclose(val, float(cell), rel_tol=1e-9, abs_tol=1e-300):
                     label = lab
-        parts.append(f"{p.name} = {label}")
+        parts.append(f"{p.human_name} = {label}")
     return ", ".join(parts)
 
 
@@ -162,7 +185,7 @@ def _new_figure(rows: int = 1, cols: int = 1) -> tuple[Figure, Any]:
 
 
 def _x_of(study: Study, p: Parameter, row: dict[str, str]) -> float:
-    return float(row[p.column]) if p.numeric else float(p.labels.index(row[p.column]))
+    return p.shown(float(row[p.column])) if p.numeric else float(p.labels.index(row[p.column]))
 
 
 def _categorical_ticks(ax: Any, p: Parameter) -> None:
@@ -238,14 +261,14 @@ def plot_point_value(study: Study, out: Path, column: str, name: str, ylabel: st
         ax = axes[0][0]
         for key, rs in curves.items():
             rs.sort(key=lambda r: float(r[p.column]))
-            ax.plot([float(r[p.column]) for r in rs], [number(r[column]) for r in rs], marker="o",
+            ax.plot([p.shown(float(r[p.column])) for r in rs], [number(r[column]) for r in rs], marker="o",
                     markersize=4, label=_group_label(study, key, {p.name}) or name)
         ax.set_xlabel(axis_label(p))
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
         if 1 < len(curves) <= MAX_LEGEND:
             ax.legend(fontsize=7)
-        ax.set_title(f"{study.meta.get('case', '')}: {ylabel} against {p.name}", fontsize=10)
+        ax.set_title(f"{study.meta.get('case', '')}: {ylabel} against {p.human_name}", fontsize=10)
         figure.tight_layout()
         path = out / f"{name}_vs_{file_stem(p.name)}.png"
         figure.savefig(path)

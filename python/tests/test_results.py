@@ -15,8 +15,7 @@ import numpy as np
 import pytest
 
 import coremodal
-from coremodal.plot import (AUTO_SCALE_CAP_FRACTION, AUTO_SCALE_FRACTION,
-                            SECTION_SCALE_FRACTION, boundary_polygons, centreline_curves,
+from coremodal.plot import (SECTION_SCALE_FRACTION, centreline_curves,
                             clamp_spans, draw_mode, section_ring)
 
 N_MODES_ASKED = 10  # [analysis] modes in data/tiny.toml
@@ -161,26 +160,13 @@ def test_draw_mode_writes_a_png_of_the_requested_size(results: coremodal.Results
     assert png_size(small) == (640, 480)
 
 
-def test_auto_scale_shows_a_tenth_of_the_length_within_a_quarter_of_the_diameter(
-        results: coremodal.Results, tmp_path: Path) -> None:
+def test_the_side_view_scale_is_the_modes_warp_scale(results: coremodal.Results,
+                                                     tmp_path: Path) -> None:
+    """The side view exaggerates as ParaView and the frame strip do, by the
+    mode's suggested warp scale; --scale sets it instead."""
     scale = draw_mode(results, 7, tmp_path / "m.png", size_px=(320, 240))
-    largest = np.linalg.norm(results.shape(7), axis=1).max()
-    extents = np.ptp(results.nodes, axis=0)
-    expected = min(AUTO_SCALE_FRACTION * extents.max(), AUTO_SCALE_CAP_FRACTION * extents.min())
-    assert scale * largest == pytest.approx(expected)
-    # The tiny tube is 0.5 m long and 82 mm across: the cap decides.
-    assert scale * largest == pytest.approx(0.25 * 0.082, rel=1e-6)
+    assert scale == pytest.approx(results.warp_scales[6])
     assert draw_mode(results, 7, tmp_path / "m2.png", scale=2.5, size_px=(320, 240)) == 2.5
-
-
-def test_boundary_of_the_tube_is_its_four_surfaces(results: coremodal.Results) -> None:
-    polygons = boundary_polygons(results.cells, results.cell_type)
-    on_boundary = np.unique(polygons)
-    radius = np.hypot(results.nodes[on_boundary, 0], results.nodes[on_boundary, 1])
-    z = results.nodes[on_boundary, 2]
-    near = lambda a, b: np.isclose(a, b, rtol=0, atol=1e-9)  # noqa: E731
-    # Every boundary node lies on the inner or outer cylinder or an end face.
-    assert np.all(near(radius, 0.038) | near(radius, 0.041) | near(z, z.min()) | near(z, z.max()))
 
 
 # A synthetic tube: 121 planes of 48 nodes on each of 3 radii, for testing the
@@ -202,15 +188,14 @@ def test_centreline_of_a_bending_sine_is_the_sine() -> None:
     nodes, z, _, _ = synthetic_tube()
     shape = np.zeros_like(nodes)
     shape[:, 0] = np.sin(np.pi * z / TUBE_LENGTH)
-    curves = centreline_curves(nodes, shape, n_stations=60)
-    assert curves.z.shape == (60,) and curves.edges.shape == (61,)
-    np.testing.assert_allclose(curves.ux, np.sin(np.pi * curves.z / TUBE_LENGTH), atol=2e-3)
-    assert np.abs(curves.ux).max() == pytest.approx(1.0, abs=2e-3)
+    curves = centreline_curves(nodes, shape)
+    assert curves.planes and curves.z.shape == (TUBE_PLANES,)
+    np.testing.assert_allclose(curves.ux, np.sin(np.pi * curves.z / TUBE_LENGTH), atol=1e-12)
+    assert np.abs(curves.ux).max() == pytest.approx(1.0, abs=1e-12)
     for other in (curves.uy, curves.uz, curves.twist):
         np.testing.assert_allclose(other, 0.0, atol=1e-12)
-    # The section moves but keeps its shape (up to the curvature of the sine
-    # within a station).
-    assert np.abs(curves.ring_shape).max() < 1e-3
+    # The section moves but keeps its shape.
+    assert np.abs(curves.ring_shape).max() < 1e-12
 
 
 def test_centreline_shows_axial_displacement_and_twist() -> None:
@@ -220,7 +205,7 @@ def test_centreline_shows_axial_displacement_and_twist() -> None:
     twist = 0.01 * z  # rad: the section turns as a rigid disc, u = twist * (-y, x)
     shape[:, 0], shape[:, 1] = -twist * nodes[:, 1], twist * nodes[:, 0]
     curves = centreline_curves(nodes, shape)
-    np.testing.assert_allclose(curves.uz, np.cos(np.pi * curves.z / TUBE_LENGTH), atol=2e-3)
+    np.testing.assert_allclose(curves.uz, np.cos(np.pi * curves.z / TUBE_LENGTH), atol=1e-12)
     np.testing.assert_allclose(curves.twist, 0.01 * curves.z, rtol=1e-9, atol=1e-12)
     for other in (curves.ux, curves.uy, curves.ring_shape):
         np.testing.assert_allclose(other, 0.0, atol=1e-12)
@@ -234,7 +219,7 @@ def test_section_ring_of_an_ovalling_field_is_an_n2_ring() -> None:
     ring = section_ring(nodes, shape)
     outer = max(TUBE_RADII)
     assert ring.radius == pytest.approx(outer)
-    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=TUBE_LENGTH / 60)
+    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=1e-9)  # the middle node plane
     assert len(ring.theta) == TUBE_ANGLES and np.all(np.diff(ring.theta) > 0)
     np.testing.assert_allclose(np.hypot(*ring.xy.T), outer)
     # The deformed ring's largest radial change is 20 % of the radius...
@@ -259,7 +244,7 @@ def test_section_ring_of_a_bending_field_is_a_shifted_circle() -> None:
     shape = np.zeros_like(nodes)
     shape[:, 1] = np.sin(np.pi * z / TUBE_LENGTH)
     ring = section_ring(nodes, shape)
-    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=TUBE_LENGTH / 60)
+    assert ring.z == pytest.approx(TUBE_LENGTH / 2, abs=1e-9)  # the middle node plane
     shift = ring.deformed - ring.xy
     np.testing.assert_allclose(shift[:, 0], 0.0, atol=1e-15)
     np.testing.assert_allclose(shift[:, 1], SECTION_SCALE_FRACTION * max(TUBE_RADII), rtol=1e-3)
@@ -349,24 +334,3 @@ def test_a_file_that_is_not_coremodal_results_is_rejected(tmp_path: Path) -> Non
         f["x"] = np.zeros(3)
     with pytest.raises(coremodal.ResultsFormatError, match="not a coremodal results file"):
         coremodal.load(other)
-
-
-@pytest.mark.parametrize("cell_type, n_nodes, faces, polygon", [
-    ("hex20", 20, 6, 8), ("hex27", 27, 6, 8), ("tet10", 10, 4, 6)])
-def test_boundary_polygons_of_synthetic_cells(cell_type: str, n_nodes: int, faces: int,
-                                              polygon: int) -> None:
-    one = np.arange(n_nodes)[None, :]
-    assert boundary_polygons(one, cell_type).shape == (faces, polygon)
-    # Two cells glued face to face (the second is the first mirrored, with its
-    # glued face's nodes shared): that face is interior and disappears.
-    if cell_type == "tet10":
-        second = np.array([0, 2, 1, 10, 6, 5, 4, 11, 12, 13])  # shares face (0,1,2)
-    else:
-        second = np.arange(n_nodes) + 100
-        for a, b in [(0, 4), (1, 5), (2, 6), (3, 7), (8, 16), (11, 18), (13, 19), (9, 17)]:
-            second[a] = b  # second's bottom face is the first cell's top face
-    both = np.vstack([one, second[None, :]])
-    assert len(boundary_polygons(both, cell_type)) == 2 * faces - 2
-    # Every polygon alternates corner, mid-edge node, corner, ...
-    corners = 4 if cell_type == "tet10" else 8
-    assert np.all(boundary_polygons(one, cell_type)[:, ::2] < corners)

@@ -12,7 +12,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from coremodal.study_plot import StudyFormatError, change_diameters, draw_all, load_study
+from coremodal import study_plot
+from coremodal.key_names import human_name, written_unit
+from coremodal.study_plot import (StudyFormatError, axis_label, change_diameters, draw_all, load_study,
+                                  plot_point_value)
 
 WEB_SPEED = 14.0
 HEADER = ("point,rest_paper.thickness_m,core.length_m,status,predecessor,track,label,type,n,m,multiplicity,"
@@ -121,3 +124,50 @@ def test_the_command_line_draws_and_reports(tmp_path: Path, cli_env: dict[str, s
                              capture_output=True, text=True, env=cli_env, timeout=300)
     assert missing.returncode == 1
     assert missing.stderr.startswith("coremodal: error:")
+
+
+def test_axes_are_in_human_words_and_in_the_units_the_values_were_written_in(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    study = load_study(write_study(tmp_path))
+    thickness, length = study.parameters
+    assert axis_label(thickness) == "rest paper thickness [mm]"  # written "10 mm", not core.length [m]
+    assert axis_label(length) == "roll width [m]"
+    # The pictures: f1 against the thickness has its x axis in mm.
+    figures = []
+    original = study_plot._new_figure
+
+    def recording(*args, **kwargs):
+        figure, axes = original(*args, **kwargs)
+        figures.append(figure)
+        return figure, axes
+
+    monkeypatch.setattr(study_plot, "_new_figure", recording)
+    [path] = [p for p in plot_point_value(study, tmp_path, "f1_hz", "f1", "f1 [Hz]")
+              if p.name == "f1_vs_rest_paper_thickness.png"]
+    [axes] = [f.axes[0] for f in figures if f.axes[0].get_xlabel() == "rest paper thickness [mm]"]
+    x = np.concatenate([line.get_xdata() for line in axes.get_lines()])
+    np.testing.assert_allclose(sorted(set(x)), [10.0, 30.0, 50.0])
+    legend = [t.get_text() for t in axes.get_legend().get_texts()]
+    assert legend == ["roll width = 2 m", "roll width = 3 m"]
+
+
+def test_human_names_have_a_table_and_a_fallback() -> None:
+    assert human_name("core.length") == "roll width"
+    assert human_name("supports.left.center") == "clamp zone centre"
+    assert human_name("supports.right.expanding.1.width") == "expanding element width"
+    assert human_name("supports.left.bearing.radial_stiffness") == "bearing radial stiffness"
+    assert human_name("core.material.E_z") == "core axial modulus E_z"
+    assert human_name("rest_paper.material.density") == "rest paper density"
+    assert human_name("analysis.tolerance") == "tolerance (analysis)"  # not in the table
+    assert human_name("model") == "model"
+
+
+def test_the_written_unit_is_read_back_from_the_labels() -> None:
+    assert written_unit(["10 mm", "30 mm"], [0.01, 0.03], "m") == ("mm", 1000.0)
+    assert written_unit(["6 bar", "8 bar"], [6e5, 8e5], "Pa") == ("bar", pytest.approx(1e-5))
+    # A range's labels have 4 significant digits: 13.34 mm of 0.0133352 m.
+    unit, factor = written_unit(["10 mm", "13.34 mm"], [0.01, 0.0133352], "m")
+    assert (unit, factor) == ("mm", 1000.0)
+    assert written_unit(["2", "3"], [2.0, 3.0], "") == ("", 1.0)  # plain numbers
+    assert written_unit(["10 mm", "0.03 m"], [0.01, 0.03], "m") == ("m", 1.0)  # mixed: SI
+    assert written_unit(["steel", "aluminium"], [0.0, 1.0], "") == ("", 1.0)

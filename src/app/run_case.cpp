@@ -12,6 +12,7 @@
 #include "beam/eigenvalue_scale.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/heartbeat.hpp"
 #include "common/stopwatch.hpp"
 #include "common/warnings.hpp"
 #include "eigensolve/modal_solver.hpp"
@@ -290,7 +291,10 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).
     say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
-    const Mesh mesh = make_mesh(scene);
+    const Mesh mesh = [&] {
+        const Heartbeat beat("meshing", say);
+        return make_mesh(scene);
+    }();
     const std::string mesh_source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
     report.timing_s.mesh = stage.lap();
 
@@ -321,7 +325,10 @@ RunReport run_scene(Scene scene_in, const RunOptions& options) {
 
     // 4. Assemble K and M.
     say("[3/7] assembling stiffness and mass");
-    const OperatorSet system = assemble_petsc(mesh, part_materials(scene, mesh.part_names, mesh_source), dofs, chucks.couplings);
+    const OperatorSet system = [&] {
+        const Heartbeat beat("assembling", say);
+        return assemble_petsc(mesh, part_materials(scene, mesh.part_names, mesh_source), dofs, chucks.couplings);
+    }();
     report.model.mass_kg = system.model_mass;
     report.timing_s.assemble = stage.lap();
 

@@ -1,6 +1,7 @@
 #include "eigensolve/modal_solver.hpp"
 
 #include "common/error.hpp"
+#include "common/heartbeat.hpp"
 
 #include <slepceps.h>
 
@@ -195,6 +196,7 @@ struct BandCount {
 // what the mesh resolves), or one that needs more modes than the limit.
 BandCount count_band(Mat K, Mat M, const SolveRequest& r, long n_dofs, const Progress& progress) {
     progress("counting the modes below the band's edges (inertia of K - sigma M)");
+    const Heartbeat beat("counting the modes below the band's edges", progress);
     BandCount c;
     c.below_upper = count_below(K, M, *r.lambda_max);
     if (r.lambda_min.value_or(0.0) > rigid_line(r)) c.below_lower = count_below(K, M, *r.lambda_min);
@@ -314,7 +316,10 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     for (int attempt = 0;; ++attempt) {
         progress("factorising K - sigma M (sigma = " + std::to_string(sigma) + ") and solving for " +
                  std::to_string(nev) + " modes");
-        Attempt a = run_eps(K, M, sigma, nev, request);
+        Attempt a = [&] {
+            const Heartbeat beat("factorising K - sigma M and solving", progress);
+            return run_eps(K, M, sigma, nev, request);
+        }();
         const int n_report = reported_count(a.lambdas, wanted, scale);
         if (n_report < wanted) {
             std::ostringstream s;
@@ -329,7 +334,10 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
                                  ? 0.5 * (last + a.lambdas[n_report])
                                  : last + kClusterTolerance * std::max(std::abs(last), scale);
         progress("checking completeness: inertia of K - sigma M at the band edge");
-        const long pivots = count_below(K, M, check);
+        const long pivots = [&] {
+            const Heartbeat beat("checking completeness", progress);
+            return count_below(K, M, check);
+        }();
         if (pivots != n_report) {
             if (attempt < kMaxRetries && pivots > n_report && pivots < n_dofs) {
                 // A shift far below the wanted modes squeezes them together in
