@@ -160,7 +160,8 @@ int main(int argc, char** argv) {
         coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
         coremodal::add_converge_command(app), coremodal::add_winder_command(app),
         coremodal::add_study_command(app),    coremodal::add_calibrate_command(app),
-        coremodal::add_schema_command(app)};
+        coremodal::add_schema_command(app),
+        coremodal::add_sensitivity_command(app), coremodal::add_fit_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {
