@@ -7,6 +7,8 @@
 //   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
 //   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
 //   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
+//   coremodal sensitivity CASE.toml [-p KEY ...]  (d ln f / d ln p of the modes and of k)
+//   coremodal fit MEASUREMENTS.toml [--output DIR] (case-file keys fitted to measured frequencies)
 //   coremodal schema [--output FILE]             (the case file's JSON Schema, for editors)
 //   coremodal --version
 //
