@@ -124,3 +124,15 @@ TEST_CASE("fit: bad measurements files are named with file, line and key", "[fit
                                          "mode = \"torsion n=0 m=7\"\nfrequency = \"100 Hz\"\n", path);
     CHECK_THROWS_WITH(run_fit(in2), Catch::Contains("m.toml:2:1") && Catch::Contains("torsion n=0 m=7"));
 }
+
+TEST_CASE("fit: the field validation's measurements and cases read (docs/validation.md)", "[fit]") {
+    const std::string dir = std::string(COREMODAL_SOURCE_DIR) + "/cases/validation/";
+    const FitInput in = read_fit_input(dir + "ilomaki-table1.toml");
+    REQUIRE(in.measurements.size() == 2);
+    CHECK(in.measurements[0].frequency_hz == Approx(39.06));
+    CHECK(in.measurements[1].frequency_hz == Approx(37.11));
+    const CaseParameters stand = CaseParameters::read(dir + "ilomaki-table1-stand.toml", {"supports.left.normal_stiffness"});
+    CHECK(stand.values()[0] == Approx(50 * (0.6e6 + 20e3) / 1e-3));  // the library law at 6 bar
+    for (const char* c : {"predict-07-expanded", "predict-07-not-expanded", "predict-08-expanded", "predict-08-not-expanded"})
+        CHECK_NOTHROW(CaseParameters::read(dir + c + ".toml", {"supports.left.normal_stiffness"}));
+}
