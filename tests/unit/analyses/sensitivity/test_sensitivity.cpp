@@ -131,3 +131,20 @@ TEST_CASE("sensitivity: bad keys are named", "[sensitivity]") {
     CHECK(solid.values()[0] == Approx(1.5));
     CHECK_THROWS_WITH(eigen_sensitivities(solid, solid.values()), Catch::Contains("the beam and the harmonic level"));
 }
+
+TEST_CASE("sensitivity: a length, f ∝ 1/L for torsion, by operators (beam) or re-solved (harmonic)", "[sensitivity]") {
+    // Free–free torsion: f = m/(2L) sqrt(G/ρ), exactly 1/L at every level.
+    const ModeKey torsion{"torsion", 0, 1, 1}, bending{"bending", 1, 2, 1};
+    const CaseParameters beam = CaseParameters::from_text(free_tube("beam"), "iso.toml", {"core.length"});
+    const SensitivityResult b = eigen_sensitivities(beam, beam.values());
+    CHECK(b.methods[0] == "operators");  // the nodes move with L, the DOFs stay
+    CHECK(b.find(torsion)->dlnf_dlnp[0] == Approx(-1).margin(1e-6));
+    // Bending: -2 for Euler–Bernoulli, less steep with shear.
+    CHECK(b.find(bending)->dlnf_dlnp[0] < -1.9);
+    CHECK(b.find(bending)->dlnf_dlnp[0] > -2);
+    const CaseParameters harmonic = CaseParameters::from_text(free_tube("harmonic"), "iso.toml", {"core.length"});
+    const SensitivityResult h = eigen_sensitivities(harmonic, harmonic.values());
+    CHECK(h.methods[0] == "re-solved");  // the element count along the core follows L
+    CHECK(h.find(torsion)->dlnf_dlnp[0] == Approx(-1).margin(2e-3));
+    CHECK(h.find(bending)->dlnf_dlnp[0] == Approx(b.find(bending)->dlnf_dlnp[0]).margin(0.02));
+}
