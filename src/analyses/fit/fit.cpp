@@ -79,8 +79,11 @@ std::vector<FitParameter> resolve_parameters(const FitInput& in, std::vector<Cas
                 const CaseParameters one = CaseParameters::from_text(text, g.case_file, {in.parameters[j].key}, {source}, g.model);
                 const CaseParameter& p = one.parameters().front();
                 if (!found[j]) {
-                    params[j] = {p.key, p.dimension, p.value, std::max(p.min, p.value / kDefaultBoundFactor),
-                                 std::min(p.max, p.value * kDefaultBoundFactor)};
+                    params[j].key = p.key;
+                    params[j].dimension = p.dimension;
+                    params[j].start = p.value;
+                    params[j].min = std::max(p.min, p.value / kDefaultBoundFactor);
+                    params[j].max = std::min(p.max, p.value * kDefaultBoundFactor);
                     found[j] = true;
                 }
                 keys.push_back(in.parameters[j].key);
@@ -205,6 +208,55 @@ void covariance(const Linear& l, FitOutcome& out) {
 
 }  // namespace
 
+namespace {
+
+// Where Levenberg–Marquardt ends: x, its evaluation and linearisation.
+struct Minimum {
+    Eigen::VectorXd x;
+    Evaluation e;
+    Linear l;
+    int iterations = 0;
+    bool converged = false;
+};
+
+Minimum levenberg_marquardt(const FitInput& in, const std::vector<CaseGroup>& groups, Eigen::VectorXd x,
+                            const Eigen::VectorXd& lo, const Eigen::VectorXd& hi, const FitProgress& say) {
+    Minimum m{x, evaluate(in, groups, x), {}, 0, false};
+    m.l = linearise(in, m.e);
+    double mu = kInitialDamping;
+    for (m.iterations = 1; m.iterations <= kMaxIterations; ++m.iterations) {
+        const Eigen::MatrixXd A = m.l.J.transpose() * m.l.J;
+        const Eigen::VectorXd g = m.l.J.transpose() * m.l.r;
+        Eigen::MatrixXd D = A.diagonal().asDiagonal();
+        // A parameter no measurement sees has a zero column: keep the system regular.
+        D.diagonal() = D.diagonal().cwiseMax(1e-12 * std::max(A.diagonal().maxCoeff(), 1e-300));
+        const Eigen::VectorXd x_new = clamp(m.x + (A + mu * D).ldlt().solve(-g), lo, hi);
+        const Evaluation e_new = evaluate(in, groups, x_new);
+        const Linear l_new = linearise(in, e_new);
+        const double moved = (x_new - m.x).cwiseAbs().maxCoeff();
+        if (l_new.cost() <= m.l.cost()) {
+            m.x = x_new, m.e = e_new, m.l = l_new;
+            mu = std::max(mu / 3, 1e-12);
+            say("iteration " + std::to_string(m.iterations) + ": chi^2 = " + significant(m.l.cost()));
+            if (moved < kStepTolerance) {
+                m.converged = true;
+                return m;
+            }
+        } else {
+            mu *= 5;
+            // No step lowers the cost: a minimum (or a bound).
+            if (mu > kMaxDamping || moved < kStepTolerance) {
+                m.converged = true;
+                return m;
+            }
+        }
+    }
+    m.iterations = kMaxIterations;
+    return m;
+}
+
+}  // namespace
+
 FitOutcome run_fit(const FitInput& in, const FitProgress& progress) {
     const auto say = [&](const std::string& s) {
         if (progress) progress(s);
@@ -218,54 +270,26 @@ FitOutcome run_fit(const FitInput& in, const FitProgress& progress) {
         const FitParameter& p = out.parameters[static_cast<size_t>(j)];
         x[j] = std::log(p.start), lo[j] = std::log(p.min), hi[j] = std::log(p.max);
     }
-    Evaluation e = evaluate(in, groups, x);
-    const Evaluation start = e;
-    Linear l = linearise(in, e);
-    out.chi2_start = l.cost();
-    say("start: chi^2 = " + significant(l.cost()));
-    double mu = kInitialDamping;
-    for (out.iterations = 1; out.iterations <= kMaxIterations; ++out.iterations) {
-        const Eigen::MatrixXd A = l.J.transpose() * l.J;
-        const Eigen::VectorXd g = l.J.transpose() * l.r;
-        Eigen::MatrixXd D = A.diagonal().asDiagonal();
-        // A parameter no measurement sees has a zero column: keep the system regular.
-        D.diagonal() = D.diagonal().cwiseMax(1e-12 * std::max(A.diagonal().maxCoeff(), 1e-300));
-        const Eigen::VectorXd step = (A + mu * D).ldlt().solve(-g);
-        const Eigen::VectorXd x_new = clamp(x + step, lo, hi);
-        const Evaluation e_new = evaluate(in, groups, x_new);
-        const Linear l_new = linearise(in, e_new);
-        const double moved = (x_new - x).cwiseAbs().maxCoeff();
-        if (l_new.cost() <= l.cost()) {
-            x = x_new, e = e_new, l = l_new;
-            mu = std::max(mu / 3, 1e-12);
-            say("iteration " + std::to_string(out.iterations) + ": chi^2 = " + significant(l.cost()));
-            if (moved < kStepTolerance) {
-                out.converged = true;
-                break;
-            }
-        } else {
-            mu *= 5;
-            if (mu > kMaxDamping || moved < kStepTolerance) {  // no step lowers the cost: a minimum
-                out.converged = true;
-                break;
-            }
-        }
-    }
-    out.iterations = std::min(out.iterations, kMaxIterations);
-    out.chi2 = l.cost();
+    const Evaluation start = evaluate(in, groups, x);
+    out.chi2_start = linearise(in, start).cost();
+    say("start: chi^2 = " + significant(out.chi2_start));
+    const Minimum m = levenberg_marquardt(in, groups, x, lo, hi, say);
+    out.iterations = m.iterations;
+    out.converged = m.converged;
+    out.chi2 = m.l.cost();
     for (Eigen::Index j = 0; j < n; ++j) {
         FitParameter& p = out.parameters[static_cast<size_t>(j)];
-        p.value = std::exp(x[j]);
-        p.at_bound = x[j] <= lo[j] + 1e-9 || x[j] >= hi[j] - 1e-9;
+        p.value = std::exp(m.x[j]);
+        p.at_bound = m.x[j] <= lo[j] + 1e-9 || m.x[j] >= hi[j] - 1e-9;
         if (p.at_bound)
             out.warnings.push_back(p.key + " stopped at its bound " + format_quantity(p.value, p.dimension) +
                                    ": the measurements ask for a value outside [" + format_quantity(p.min, p.dimension) +
                                    ", " + format_quantity(p.max, p.dimension) + "]; check the model or widen the bounds");
     }
     if (!out.converged) out.warnings.push_back("not converged in " + std::to_string(kMaxIterations) + " iterations");
-    covariance(l, out);
+    covariance(m.l, out);
     for (size_t i = 0; i < in.measurements.size(); ++i)
-        out.measurements.push_back({in.measurements[i], e.f_hz[i], start.f_hz[i], e.dlnf[i], e.level[i]});
+        out.measurements.push_back({in.measurements[i], m.e.f_hz[i], start.f_hz[i], m.e.dlnf[i], m.e.level[i]});
     for (const CaseGroup& g : groups) {
         std::vector<double> values;
         for (size_t j : g.parameters) values.push_back(out.parameters[j].value);

@@ -52,8 +52,12 @@ Linearised beam_linearised(const Scene& scene) {
     std::vector<Mode> all;
     for (size_t i = 0; i < result->modes.size(); ++i) {
         const BeamMode& b = result->modes[i];
-        all.push_back(Mode{.index = static_cast<int>(i) + 1, .eigenvalue = b.eigenvalue,
-                           .frequency_hz = b.frequency_hz, .label = b.label});
+        Mode mode;
+        mode.index = static_cast<int>(i) + 1;
+        mode.eigenvalue = b.eigenvalue;
+        mode.frequency_hz = b.frequency_hz;
+        mode.label = b.label;
+        all.push_back(std::move(mode));
     }
     Linearised lin;
     lin.modes = distinct_modes(all);
