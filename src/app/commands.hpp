@@ -63,6 +63,8 @@ Command add_batch_command(CLI::App& app);  // app/batch_command.cpp
 Command add_converge_command(CLI::App& app);  // app/converge_command.cpp
 Command add_study_command(CLI::App& app);  // app/study_command.cpp
 Command add_calibrate_command(CLI::App& app);  // app/calibrate_command.cpp
+Command add_sensitivity_command(CLI::App& app);  // app/sensitivity_command.cpp
+Command add_fit_command(CLI::App& app);          // app/fit_command.cpp
 Command add_check_command(CLI::App& app);  // app/check_command.cpp
 Command add_winder_command(CLI::App& app);  // app/winder_command.cpp
 Command add_schema_command(CLI::App& app);  // app/schema_command.cpp

@@ -7,6 +7,8 @@
 //   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
 //   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
 //   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
+//   coremodal sensitivity CASE.toml [-p KEY ...]  (d ln f / d ln p of the modes and of k)
+//   coremodal fit MEASUREMENTS.toml [--output DIR] (case-file keys fitted to measured frequencies)
 //   coremodal schema [--output FILE]             (the case file's JSON Schema, for editors)
 //   coremodal --version
 //
@@ -160,7 +162,8 @@ int main(int argc, char** argv) {
         coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
         coremodal::add_converge_command(app), coremodal::add_winder_command(app),
         coremodal::add_study_command(app),    coremodal::add_calibrate_command(app),
-        coremodal::add_schema_command(app)};
+        coremodal::add_schema_command(app),
+        coremodal::add_sensitivity_command(app), coremodal::add_fit_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

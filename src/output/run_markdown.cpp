@@ -2,6 +2,7 @@
 
 #include "beam/beam_theory.hpp"
 #include "beam/formulas.hpp"
+#include "beam/iso_test.hpp"
 #include "common/format.hpp"
 
 #include <cmath>
@@ -183,6 +184,22 @@ void chuck_section(std::ostream& out, const ChuckFactor& k) {
         << " |\n\n";
 }
 
+// A free bare core: the flexural modulus ISO 11093-8 would report (I-13/I-14).
+void iso_section(std::ostream& out, const IsoFlexuralTest& t) {
+    out << "## Virtual ISO 11093-8 test\n\nThe flexural modulus the standard's free-hanging test reports from "
+           "this run's first bending frequency, Ec = 7.88e-8 · f² · M · L⁴ · Q / Ic (I-13: N/mm² with M in kg/m, L in mm, Ic in mm⁴), "
+           "Q = 82.66 · Ic / (Ac · L²) + 1 (I-14), beside the wall's E_z put in (docs/calibration.md).\n\n"
+        << "| quantity | value |\n|---|---:|\n"
+        << "| f_free (FE, first bending) | " << hz(t.f_free_hz) << " Hz |\n"
+        << "| M = ρc·Ac | " << significant(t.mass_per_length) << " kg/m |\n"
+        << "| L | " << significant(t.length_m) << " m |\n"
+        << "| Q (I-14) | " << formatted("%.5f", t.Q) << " |\n"
+        << "| **Ec by ISO 11093-8 (I-13)** | **" << significant(t.flexural_modulus_pa / 1e6, 5) << " N/mm²** |\n"
+        << "| E_z put in | " << significant(t.E_z_pa / 1e6, 5) << " N/mm² |\n"
+        << "| difference Ec / E_z − 1 | " << formatted("%+.2f", 100 * t.difference) << " % |\n\n";
+    for (const std::string& n : t.notes) out << "Note: " << n << ".\n\n";
+}
+
 void speed_section(std::ostream& out, const RunReport& r) {
     const Scene& s = r.scene;
     const RollSpeeds speeds = report_speeds(r);
@@ -284,6 +301,7 @@ std::string run_report_markdown(const RunReport& r, const RunPictures& pictures)
     mode_section(out, r);
     beam_section(out, r);
     if (r.chuck) chuck_section(out, *r.chuck);
+    if (const auto iso = iso_flexural_test(r.scene, r.beam.fe_first_bending_hz)) iso_section(out, *iso);
     speed_section(out, r);
     if (!r.rigid_comparison.empty()) rigid_section(out, r.rigid_comparison);
     picture_section(out, pictures);

@@ -2,6 +2,8 @@
 
 #include "output/text_file.hpp"
 
+#include "beam/iso_test.hpp"
+
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -268,6 +270,15 @@ void write_summary_json(const std::string& path, const RunReport& r) {
         {"peak_memory_mb", r.peak_memory_mb},
         {"mpi_ranks", r.mpi_ranks}};
     if (r.chuck) summary.insert("chuck", chuck_table(*r.chuck));
+    if (const auto iso = iso_flexural_test(r.scene, r.beam.fe_first_bending_hz))
+        summary.insert("iso_11093_8", toml::table{{"f_free_hz", iso->f_free_hz},
+                                                  {"mass_per_length_kg_m", iso->mass_per_length},
+                                                  {"length_m", iso->length_m},
+                                                  {"Q", iso->Q},
+                                                  {"flexural_modulus_pa", iso->flexural_modulus_pa},
+                                                  {"E_z_pa", iso->E_z_pa},
+                                                  {"difference", iso->difference},
+                                                  {"notes", strings_array(iso->notes)}});
     if (!r.rigid_comparison.empty()) {
         toml::array rows;
         for (const ModeShift& m : r.rigid_comparison)
@@ -366,6 +377,13 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
                       "f2 free-free over L: FE %.4f Hz, Timoshenko %.4f Hz; k = f1/f2 = %.4f (beam f2: %.4f)\n",
                       k.li_m, k.li_left_m, k.li_right_m, k.free_span_m, k.f1_hz, k.f2_fe_hz, k.f2_beam_hz,
                       k.chuck_factor, k.chuck_factor_beam);
+        out << line;
+    }
+    if (const auto iso = iso_flexural_test(r.scene, b.fe_first_bending_hz)) {
+        std::snprintf(line, sizeof line,
+                      "virtual ISO 11093-8 test: Ec = %.5g N/mm^2 from f1 %.4f Hz (Q %.5f), E_z put in %.5g N/mm^2: "
+                      "%+.2f %%\n",
+                      iso->flexural_modulus_pa / 1e6, iso->f_free_hz, iso->Q, iso->E_z_pa / 1e6, 100 * iso->difference);
         out << line;
     }
 }

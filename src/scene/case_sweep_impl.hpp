@@ -3,6 +3,7 @@
 // case's document (case_sweep.cpp). Private to scene/.
 #pragma once
 
+#include "scene/case_schema.hpp"
 #include "scene/case_sweep.hpp"
 
 #include <toml++/toml.h>
@@ -33,6 +34,14 @@ using Value = std::variant<std::string, double, std::int64_t, bool>;
 // InputError: FILE:LINE:COL: what; expected.
 void read_sweep_table(const toml::table& root, const std::string& path, std::string_view table,
                       CaseSweep::Impl& out, const std::optional<std::string>& mesh_override);
+
+// A dotted key path ("core.material.G_rz") checked against the schema and the
+// case's document `root` as a sweep checks it; `where` is the node that names
+// the key, in the file `where_path` (a [study] table, a fit's measurements
+// file). Throws InputError FILE:LINE:COL: display key = "...": what; expected.
+std::pair<KeyPath, const KeySpec*> resolve_key_path(const toml::table& root, const std::string& key,
+                                                    const toml::node& where, const std::string& where_path,
+                                                    const std::string& display);
 
 }  // namespace case_sweeping
 

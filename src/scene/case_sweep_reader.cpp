@@ -81,6 +81,12 @@ public:
         read_parameters(root, t, out);
     }
 
+    // One key path resolved for `fit` and `sensitivity` (resolve_key_path).
+    std::pair<KeyPath, const KeySpec*> resolve_key(const toml::table& root, const std::string& text,
+                                                   const toml::node& where, const std::string& display) const {
+        return resolve(root, text, where, display);
+    }
+
 private:
     std::string path_, table_, display_;
 
@@ -473,6 +479,12 @@ private:
 void read_sweep_table(const toml::table& root, const std::string& path, std::string_view table,
                       CaseSweep::Impl& out, const std::optional<std::string>& mesh_override) {
     SweepReader(path, table).read(root, out, mesh_override);
+}
+
+std::pair<KeyPath, const KeySpec*> resolve_key_path(const toml::table& root, const std::string& key,
+                                                    const toml::node& where, const std::string& where_path,
+                                                    const std::string& display) {
+    return SweepReader(where_path, "study").resolve_key(root, key, where, display);
 }
 
 }  // namespace coremodal::case_sweeping

@@ -1,0 +1,68 @@
+// `coremodal fit MEASUREMENTS.toml [--output DIR]`: case-file parameters
+// fitted to measured frequencies (docs/calibration.md, "Fitting the model to
+// measured frequencies"); fit.toml, report.md and the calibrated case files.
+#include "analyses/fit/fit.hpp"
+#include "app/commands.hpp"
+#include "common/petsc_handle.hpp"
+#include "output/fit_report.hpp"
+#include "output/results_folder.hpp"
+#include "output/text_file.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+namespace coremodal {
+namespace {
+
+struct FitCommandOptions {
+    std::string measurements, output;
+    bool force = false, quiet = false;
+};
+
+int run_fit_command(const FitCommandOptions& o) {
+    const bool root = mpi_rank() == 0;
+    const FitInput input = read_fit_input(o.measurements);
+    const std::filesystem::path out_dir =
+        o.output.empty() ? std::filesystem::path("results") /
+                               (std::filesystem::path(o.measurements).stem().string() + "-fit")
+                         : std::filesystem::path(o.output);
+    prepare_output(out_dir, o.force);
+    const FitOutcome outcome = run_fit(input, [&](const std::string& line) {
+        if (root && !o.quiet) std::cout << "  fit: " << line << std::endl;
+    });
+    if (!root) return 0;
+    ResultsFolder folder(out_dir, o.force);
+    std::vector<std::string> files;
+    for (const FittedCase& c : outcome.cases) {
+        std::string name = std::filesystem::path(c.case_file).stem().string() + "-fitted.toml";
+        if (std::find(files.begin(), files.end(), name) != files.end())
+            name = std::filesystem::path(c.case_file).stem().string() + "-" + c.model + "-fitted.toml";
+        write_text_file(folder.dir() / name, c.calibrated_text);
+        files.push_back(name);
+    }
+    write_text_file(folder.dir() / "fit.toml", fit_toml(input, outcome));
+    write_text_file(folder.dir() / "report.md", fit_report_markdown(input, outcome, files));
+    folder.commit();
+    std::cout << fit_console(outcome) << "fit: " << out_dir.string() << "/report.md" << std::endl;
+    return outcome.converged ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_fit_command(CLI::App& app) {
+    auto o = std::make_shared<FitCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "fit", "Fit case-file parameters (any key a [study] can vary) to measured frequencies, matched by mode "
+               "label; Levenberg-Marquardt in log-parameters with exact eigenvalue sensitivities");
+    cmd->add_option("measurements", o->measurements, "measurements file (TOML): parameters and [[measurement]] tables")
+        ->required();
+    add_results_options(cmd, o->output, o->force, "-fit");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+    cmd->footer("Writes fit.toml, report.md and <case>-fitted.toml per case. Exit status 0 when the fit converged "
+                "(warnings about parameters the data cannot separate are in report.md); 1 otherwise. "
+                "docs/calibration.md.");
+    return {cmd, [o] { return run_fit_command(*o); }, true};
+}
+
+}  // namespace coremodal

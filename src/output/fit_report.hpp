@@ -1,0 +1,18 @@
+// The files of `coremodal fit` (docs/calibration.md, "Fitting the model to
+// measured frequencies"): fit.toml (each parameter's value ± standard
+// uncertainty, its start and bounds) and report.md (residuals per
+// measurement, the sensitivity matrix, correlations, warnings).
+#pragma once
+
+#include "analyses/fit/fit.hpp"
+
+#include <string>
+
+namespace coremodal {
+
+std::string fit_toml(const FitInput& input, const FitOutcome& outcome);
+std::string fit_report_markdown(const FitInput& input, const FitOutcome& outcome,
+                                const std::vector<std::string>& calibrated_files);
+std::string fit_console(const FitOutcome& outcome);
+
+}  // namespace coremodal
