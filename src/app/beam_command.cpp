@@ -3,7 +3,7 @@
 // Euler–Bernoulli and Timoshenko beam frequencies. No mesh, no PETSc:
 // it answers in milliseconds. Formulas: beam/formulas.hpp; docs/beam.md.
 #include "app/commands.hpp"
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "common/format.hpp"
 #include "beam/beam_theory.hpp"
 #include "beam/chuck_calibration.hpp"

@@ -4,7 +4,7 @@
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
 #include "analyses/batch/batch.hpp"  // is_winder_file
 #include "app/commands.hpp"
-#include "app/run_harmonic.hpp"  // why_not_axisymmetric, require_axisymmetric
+#include "models/choose.hpp"  // why_not_axisymmetric, require_axisymmetric
 #include "common/warnings.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"

@@ -1,11 +1,10 @@
-// The axisymmetric-harmonic model level (model = "harmonic", docs/harmonic.md):
-// the scene's r–z section meshed in 2D, one eigenproblem per circumferential
-// wave number n, the modes merged in frequency order, shown on the section
-// turned into 3D.
+// Which model level solves a scene: "auto" and the reasons a level cannot.
 #pragma once
 
-#include "app/run_case.hpp"
+#include "models/model_level.hpp"
+#include "scene/scene.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -20,7 +19,12 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 // for a scene the harmonic level cannot solve (`run` and `check` refuse it alike).
 void require_axisymmetric(const Scene& scene);
 
-// The harmonic run; require_axisymmetric first.
-RunReport run_harmonic_scene(Scene scene, const RunOptions& options);
+// The level a run of the scene uses: its `model`, with "auto" resolved to
+// the cheapest level that represents the whole scene (DESIGN.md): harmonic
+// when the scene is a body of revolution, else the solid.
+std::string chosen_level(const Scene& scene);
+
+// The level named chosen_level(scene) ("solid", "harmonic" or "beam").
+std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
 
 }  // namespace coremodal

@@ -1,0 +1,40 @@
+#include "models/choose.hpp"
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "models/beam/beam_level.hpp"
+#include "models/harmonic/harmonic_level.hpp"
+#include "models/solid/solid_level.hpp"
+
+namespace coremodal {
+
+std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
+    if (scene.mesh.file)
+        return "a [mesh] file: the harmonic level meshes the scene's own r-z section";
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding)
+            if (e.segments > 0)
+                return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
+                       " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
+    return std::nullopt;
+}
+
+void require_axisymmetric(const Scene& scene) {
+    if (const auto why = why_not_axisymmetric(scene))
+        throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
+                         "; expected full bands and no [mesh] file, or model = \"solid\"");
+}
+
+std::string chosen_level(const Scene& scene) {
+    if (scene.model != "auto") return scene.model;
+    return why_not_axisymmetric(scene) ? "solid" : "harmonic";
+}
+
+std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
+    const std::string level = chosen_level(scene);
+    if (level == "beam") return std::make_unique<BeamLevel>();
+    if (level == "harmonic") return std::make_unique<HarmonicLevel>();
+    return std::make_unique<SolidLevel>();
+}
+
+}  // namespace coremodal
