@@ -30,6 +30,21 @@ std::string chosen_level(const Scene& scene) {
     return why_not_axisymmetric(scene) ? "solid" : "harmonic";
 }
 
+std::string level_choice_text(const Scene& scene, const std::string& given) {
+    if (scene.model == "beam") return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
+    if (scene.model == "harmonic")
+        return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
+    const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
+    if (scene.model == "auto")
+        return not_axisymmetric ? "solid (" + given + "; not a body of revolution: " + *not_axisymmetric + ")"
+                                : "harmonic (" + given + "; a body of revolution: no segmented expanding element, "
+                                                         "no [mesh] file)";
+    return "solid (" + given + "): quadratic hexahedra" +
+           (not_axisymmetric ? std::string()
+                             : "; the scene is a body of revolution, so model = \"auto\" or \"harmonic\" would solve "
+                               "it on its r-z section, much faster");
+}
+
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
     const std::string level = chosen_level(scene);
     if (level == "beam") return std::make_unique<BeamLevel>();

@@ -24,6 +24,10 @@ void require_axisymmetric(const Scene& scene);
 // when the scene is a body of revolution, else the solid.
 std::string chosen_level(const Scene& scene);
 
+// The level chosen_level picks and why, in words (`coremodal check`);
+// `given`: where the scene's model key came from.
+std::string level_choice_text(const Scene& scene, const std::string& given);
+
 // The level named chosen_level(scene) ("solid", "harmonic" or "beam").
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
 
