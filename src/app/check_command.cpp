@@ -4,7 +4,7 @@
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
 #include "analyses/batch/batch.hpp"  // is_winder_file
 #include "app/commands.hpp"
-#include "app/run_harmonic.hpp"  // why_not_axisymmetric, require_axisymmetric
+#include "models/choose.hpp"  // level_choice_text, require_axisymmetric
 #include "common/warnings.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
@@ -25,23 +25,12 @@ struct CheckOptions {
     std::string mesh_level;  // "" = the case's
 };
 
-// The model level `run` would use, and why (run_scene's choice for "auto").
+// The model level `run` would use, and why (models/choose.hpp).
 std::string model_choice(const Scene& scene, const KeySources& sources) {
     const std::string given = sources.on_command_line.contains("model") ? "--model " + scene.model
                               : sources.in_file_has("model")            ? "model = \"" + scene.model + "\" in the file"
                                                                         : "the default: the file has no model key";
-    if (scene.model == "beam") return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
-    if (scene.model == "harmonic")
-        return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
-    const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
-    if (scene.model == "auto")
-        return not_axisymmetric ? "solid (" + given + "; not a body of revolution: " + *not_axisymmetric + ")"
-                                : "harmonic (" + given + "; a body of revolution: no segmented expanding element, "
-                                                         "no [mesh] file)";
-    return "solid (" + given + "): quadratic hexahedra" +
-           (not_axisymmetric ? std::string()
-                             : "; the scene is a body of revolution, so model = \"auto\" or \"harmonic\" would solve "
-                               "it on its r-z section, much faster");
+    return level_choice_text(scene, given);
 }
 
 std::string read_text(const std::string& path) {

@@ -1,6 +1,6 @@
 // `coremodal run CASE.toml`: the main job.
 #include "app/commands.hpp"
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
 

@@ -41,7 +41,7 @@ HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n);
 double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const HarmonicDofs& dofs, int n, const TermInsert& insert);
 
-// The scene must be axisymmetric (run_harmonic checks: no segmented
+// The scene must be axisymmetric (models/choose.hpp, require_axisymmetric: no segmented
 // expanding elements).
 HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
                                  const std::vector<PartMaterial>& materials, int n,

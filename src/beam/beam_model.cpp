@@ -5,7 +5,7 @@
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/support_effects.hpp"
-#include "eigensolve/rigid_modes.hpp"
+#include "eigensolve/tolerances.hpp"
 
 #include <algorithm>
 #include <array>
@@ -282,15 +282,8 @@ EffectiveMass effective_mass(const Eigen::VectorXd& mass_shape) {
 }
 
 NetworkSolveRequest solve_request(const Scene& scene, const BeamModelOptions& options) {
-    NetworkSolveRequest r;
-    r.n_modes = scene.analysis.n_modes;
-    if (scene.analysis.f_max_hz) {
-        r.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
-        r.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
-    }
     // The beam network has no section modes: only its own families set the scale.
-    r.lambda_scale = elastic_eigenvalue_scale(scene, ModeFamilies::beam).lambda;
-    r.tolerance = scene.analysis.tolerance;
+    NetworkSolveRequest r{mode_request(scene, ModeFamilies::beam)};
     r.force_dense = options.force_dense;
     return r;
 }

@@ -142,4 +142,16 @@ EigenvalueEstimate elastic_eigenvalue_scale(const Scene& scene, ModeFamilies fam
                              [](const EigenvalueEstimate& a, const EigenvalueEstimate& b) { return a.lambda < b.lambda; });
 }
 
+ModeRequest mode_request(const Scene& scene, ModeFamilies families) {
+    ModeRequest r;
+    r.n_modes = scene.analysis.n_modes;
+    if (scene.analysis.f_max_hz) {
+        r.lambda_max = std::pow(2 * M_PI * *scene.analysis.f_max_hz, 2);
+        r.lambda_min = std::pow(2 * M_PI * scene.analysis.f_min_hz.value_or(0.0), 2);
+    }
+    r.lambda_scale = elastic_eigenvalue_scale(scene, families).lambda;
+    r.tolerance = scene.analysis.tolerance;
+    return r;
+}
+
 }  // namespace coremodal

@@ -18,6 +18,7 @@
 // smallest is the tightest. Constraints (clamps) only raise eigenvalues.
 #pragma once
 
+#include "eigensolve/mode_request.hpp"
 #include "scene/scene.hpp"
 
 #include <string>
@@ -40,5 +41,11 @@ std::vector<EigenvalueEstimate> elastic_eigenvalue_estimates(const Scene& scene,
 
 // The smallest of those estimates.
 EigenvalueEstimate elastic_eigenvalue_scale(const Scene& scene, ModeFamilies families);
+
+// What the scene's [analysis] asks of the eigensolver of a level with these
+// families: the lowest modes or a band, the residual, and the shift's scale
+// from the lowest of the closed-form estimates (the right order for a long
+// core, a ring and a disc alike). One rule for every model level.
+ModeRequest mode_request(const Scene& scene, ModeFamilies families);
 
 }  // namespace coremodal

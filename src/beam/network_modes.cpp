@@ -1,6 +1,7 @@
 #include "beam/network_modes.hpp"
 
 #include "common/error.hpp"
+#include "eigensolve/tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +15,6 @@ namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-// Eigenvalues closer than this share of max(|lambda|, lambda_scale) form one
-// cluster: degenerate partners are reported together or not at all.
-constexpr double kClusterTolerance = 1e-6;
 // sigma = -kShiftFraction * lambda_scale: far enough below zero that rigid
 // modes factor safely, near enough that the lowest elastic modes dominate.
 constexpr double kShiftFraction = 0.1;

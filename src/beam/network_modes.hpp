@@ -20,6 +20,7 @@
 #pragma once
 
 #include "beam/beam_network.hpp"
+#include "eigensolve/mode_request.hpp"
 #include "modes/mode_set.hpp"  // Verification
 
 #include <Eigen/Dense>
@@ -29,14 +30,8 @@
 
 namespace coremodal {
 
-struct NetworkSolveRequest {
-    int n_modes = 20;                  // lowest modes wanted (if no band); pairs are never cut
-    std::optional<double> lambda_min;  // band request, rad^2/s^2 (both set, or neither)
-    std::optional<double> lambda_max;
-    // Typical first elastic eigenvalue (rad^2/s^2): sets the negative shift and
-    // the scale of "zero" for rigid-body modes.
-    double lambda_scale = 1.0;
-    double tolerance = 1e-10;  // relative residual ||K x - lambda M x|| / (||K|| ||x||)
+// The case's request (eigensolve/mode_request.hpp) and the choice of solver.
+struct NetworkSolveRequest : ModeRequest {
     bool force_dense = false;  // tests: the dense solver whatever the size
 };
 

@@ -21,9 +21,6 @@ constexpr double kShiftFraction = 0.5;
 // Extra modes computed beyond those reported: they locate the gap where the
 // inertia check is placed and catch a degenerate partner of the last mode.
 constexpr int kMinExtraModes = 4;
-// Two eigenvalues closer than this (relative to max(|lambda|, lambda_scale))
-// belong to one cluster (degenerate bending pairs split by ~1e-10 here).
-constexpr double kClusterTolerance = 1e-6;
 
 PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
     PetscHandle<EPS, EPSDestroy> eps;
@@ -172,7 +169,7 @@ std::string format_count_mismatch(long pivots, long found, double sigma) {
     return s.str();
 }
 
-// |lambda| below this is a rigid-body mode (rigid_modes.hpp).
+// |lambda| below this is a rigid-body mode (tolerances.hpp).
 double rigid_line(const SolveRequest& r) { return kRigidEigenvalueFraction * r.lambda_scale; }
 
 std::string band_text(const SolveRequest& r) {

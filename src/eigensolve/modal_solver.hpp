@@ -5,7 +5,8 @@
 
 #include "assembly/operator_set.hpp"
 #include "common/petsc_handle.hpp"
-#include "eigensolve/rigid_modes.hpp"
+#include "eigensolve/mode_request.hpp"
+#include "eigensolve/tolerances.hpp"
 #include "modes/mode_set.hpp"
 
 #include <functional>
@@ -15,14 +16,8 @@
 
 namespace coremodal {
 
-struct SolveRequest {
-    int n_modes = 20;                   // lowest modes wanted (if no band)
-    std::optional<double> lambda_min;   // band request, rad^2/s^2 (both set, or neither)
-    std::optional<double> lambda_max;
-    // Typical eigenvalue of the first elastic mode (from beam theory), rad^2/s^2.
-    // Sets the negative shift and the scale below which a mode counts as rigid.
-    double lambda_scale = 1.0;
-    double tolerance = 1e-10;
+// The case's request (mode_request.hpp) and SLEPc's iteration limit.
+struct SolveRequest : ModeRequest {
     int max_iterations = 500;
 };
 

@@ -77,6 +77,30 @@ GmshSession::GmshSession() {
 
 GmshSession::~GmshSession() { gmsh::finalize(); }
 
+namespace {
+
+// The nodes (our numbering, sorted) and quadrilateral faces of every
+// physical surface; index_of maps gmsh node tags to our nodes (-1: unused).
+void read_surface_groups(const std::vector<int>& index_of, Mesh& mesh) {
+    const std::size_t max_tag = index_of.empty() ? 0 : index_of.size() - 1;
+    gmsh::vectorpair surface_groups;
+    gmsh::model::getPhysicalGroups(surface_groups, 2);
+    for (auto [dim, group] : surface_groups) {
+        std::vector<std::size_t> tags;
+        std::vector<double> xyz;
+        gmsh::model::mesh::getNodesForPhysicalGroup(dim, group, tags, xyz);
+        std::vector<int> nodes;
+        for (std::size_t t : tags)
+            if (t <= max_tag && index_of[t] >= 0) nodes.push_back(index_of[t]);
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+        mesh.node_groups[physical_name(dim, group)] = std::move(nodes);
+        read_quad_faces(dim, group, index_of, mesh);
+    }
+}
+
+}  // namespace
+
 Mesh read_current_gmsh_mesh(const std::string& source) {
     Mesh mesh;
     gmsh::vectorpair volume_groups;
@@ -128,20 +152,7 @@ Mesh read_current_gmsh_mesh(const std::string& source) {
     mesh.cells.reserve(cell_node_tags.size());
     for (std::size_t t : cell_node_tags) mesh.cells.push_back(index_of[t]);
 
-    gmsh::vectorpair surface_groups;
-    gmsh::model::getPhysicalGroups(surface_groups, 2);
-    for (auto [dim, group] : surface_groups) {
-        std::vector<std::size_t> tags;
-        std::vector<double> xyz;
-        gmsh::model::mesh::getNodesForPhysicalGroup(dim, group, tags, xyz);
-        std::vector<int> nodes;
-        for (std::size_t t : tags)
-            if (t <= max_tag && index_of[t] >= 0) nodes.push_back(index_of[t]);
-        std::sort(nodes.begin(), nodes.end());
-        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-        mesh.node_groups[physical_name(dim, group)] = std::move(nodes);
-        read_quad_faces(dim, group, index_of, mesh);
-    }
+    read_surface_groups(index_of, mesh);
     return mesh;
 }
 

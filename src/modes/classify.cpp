@@ -26,6 +26,79 @@ struct StationFit {
     std::array<std::array<std::complex<double>, kHarmonics>, kComponents> c{};
 };
 
+// Mean square amplitude per component and harmonic, summed over the stations.
+using Energy = std::array<std::array<double, kHarmonics>, kComponents>;
+
+// One station's least-squares fit of the shape's cylindrical components by
+// 1, cos t, sin t, ... up to n_max; adds its energy and its |u|^2 to `total`.
+StationFit fit_station(const std::vector<int>& nodes, const std::vector<double>& theta, int n_max,
+                       const std::vector<double>& shape, Energy& energy, double& total) {
+    StationFit fit;
+    const int n_basis = 1 + 2 * n_max;
+    Eigen::MatrixXd A(nodes.size(), n_basis);
+    Eigen::MatrixXd U(nodes.size(), kComponents);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+        const int node = nodes[k];
+        const double t = theta[node], c = std::cos(t), sn = std::sin(t);
+        const double ux = shape[3 * node], uy = shape[3 * node + 1], uz = shape[3 * node + 2];
+        U(k, 0) = c * ux + sn * uy;
+        U(k, 1) = -sn * ux + c * uy;
+        U(k, 2) = uz;
+        total += ux * ux + uy * uy + uz * uz;
+        A(k, 0) = 1;
+        for (int h = 1; h <= n_max; ++h) {
+            A(k, 2 * h - 1) = std::cos(h * t);
+            A(k, 2 * h) = std::sin(h * t);
+        }
+    }
+    const Eigen::MatrixXd coef = A.colPivHouseholderQr().solve(U);
+    const double count = double(nodes.size());
+    for (int comp = 0; comp < kComponents; ++comp) {
+        fit.c[comp][0] = coef(0, comp);
+        energy[comp][0] += count * coef(0, comp) * coef(0, comp);
+        for (int h = 1; h <= n_max; ++h) {
+            const double a = coef(2 * h - 1, comp), b = coef(2 * h, comp);
+            fit.c[comp][h] = {a, b};
+            energy[comp][h] += count * 0.5 * (a * a + b * b);  // mean of (a cos + b sin)^2
+        }
+    }
+    return fit;
+}
+
+// The dominant harmonic's amplitude along z, in its principal phase.
+std::vector<double> axial_profile(const std::vector<StationFit>& fits, int comp, int n) {
+    std::vector<double> profile;
+    if (n == 0) {
+        for (const auto& f : fits) profile.push_back(f.c[comp][0].real());
+        return profile;
+    }
+    double sxx = 0, syy = 0, sxy = 0;
+    for (const auto& f : fits) {
+        const auto v = f.c[comp][n];
+        sxx += v.real() * v.real(), syy += v.imag() * v.imag(), sxy += v.real() * v.imag();
+    }
+    const double phi = 0.5 * std::atan2(2 * sxy, sxx - syy);
+    for (const auto& f : fits) {
+        const auto v = f.c[comp][n];
+        profile.push_back(v.real() * std::cos(phi) + v.imag() * std::sin(phi));
+    }
+    return profile;
+}
+
+// Sign changes of a profile, ignoring values below the noise share of its peak.
+int sign_changes(const std::vector<double>& profile) {
+    double peak = 0;
+    for (double p : profile) peak = std::max(peak, std::abs(p));
+    int sign = 0, changes = 0;
+    for (double p : profile) {
+        if (std::abs(p) < kProfileNoiseShare * peak) continue;
+        const int s = p > 0 ? 1 : -1;
+        if (sign != 0 && s != sign) ++changes;
+        sign = s;
+    }
+    return changes;
+}
+
 }  // namespace
 
 int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
@@ -66,42 +139,14 @@ ModeClassifier::ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes) 
 
 ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lambda, double lambda_scale) const {
     ModeLabel label;
-    std::array<std::array<double, kHarmonics>, kComponents> energy{};
+    Energy energy{};
     double total = 0;
     std::vector<StationFit> fits(stations_.size());
     for (size_t s = 0; s < stations_.size(); ++s) {
-        const auto& nodes = stations_[s];
         // Basis: 1, cos t, sin t, ..., limited to what the station's distinct
         // angles can resolve (a harmonic at the Nyquist limit would alias).
-        const int n_max = std::min<int>(kMaxWaveNumber, (distinct_angles(nodes) - 1) / 2);
-        const int n_basis = 1 + 2 * n_max;
-        Eigen::MatrixXd A(nodes.size(), n_basis);
-        Eigen::MatrixXd U(nodes.size(), kComponents);
-        for (size_t k = 0; k < nodes.size(); ++k) {
-            const int node = nodes[k];
-            const double t = theta_[node], c = std::cos(t), sn = std::sin(t);
-            const double ux = shape[3 * node], uy = shape[3 * node + 1], uz = shape[3 * node + 2];
-            U(k, 0) = c * ux + sn * uy;
-            U(k, 1) = -sn * ux + c * uy;
-            U(k, 2) = uz;
-            total += ux * ux + uy * uy + uz * uz;
-            A(k, 0) = 1;
-            for (int h = 1; h <= n_max; ++h) {
-                A(k, 2 * h - 1) = std::cos(h * t);
-                A(k, 2 * h) = std::sin(h * t);
-            }
-        }
-        const Eigen::MatrixXd coef = A.colPivHouseholderQr().solve(U);
-        const double count = double(nodes.size());
-        for (int comp = 0; comp < kComponents; ++comp) {
-            fits[s].c[comp][0] = coef(0, comp);
-            energy[comp][0] += count * coef(0, comp) * coef(0, comp);
-            for (int h = 1; h <= n_max; ++h) {
-                const double a = coef(2 * h - 1, comp), b = coef(2 * h, comp);
-                fits[s].c[comp][h] = {a, b};
-                energy[comp][h] += count * 0.5 * (a * a + b * b);  // mean of (a cos + b sin)^2
-            }
-        }
+        const int n_max = std::min<int>(kMaxWaveNumber, (distinct_angles(stations_[s]) - 1) / 2);
+        fits[s] = fit_station(stations_[s], theta_, n_max, shape, energy, total);
     }
     if (total <= 0) return label;
 
@@ -121,30 +166,7 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
     label.dominant_share = (best_n == 0 ? energy[best_comp][0] : best_family) / total;
 
     // Principal phase of the dominant harmonic along z, then sign changes.
-    std::vector<double> profile;
-    if (best_n == 0) {
-        for (const auto& f : fits) profile.push_back(f.c[best_comp][0].real());
-    } else {
-        double sxx = 0, syy = 0, sxy = 0;
-        for (const auto& f : fits) {
-            const auto v = f.c[best_comp][best_n];
-            sxx += v.real() * v.real(), syy += v.imag() * v.imag(), sxy += v.real() * v.imag();
-        }
-        const double phi = 0.5 * std::atan2(2 * sxy, sxx - syy);
-        for (const auto& f : fits) {
-            const auto v = f.c[best_comp][best_n];
-            profile.push_back(v.real() * std::cos(phi) + v.imag() * std::sin(phi));
-        }
-    }
-    double peak = 0;
-    for (double p : profile) peak = std::max(peak, std::abs(p));
-    int sign = 0;
-    for (double p : profile) {
-        if (std::abs(p) < kProfileNoiseShare * peak) continue;
-        const int s = p > 0 ? 1 : -1;
-        if (sign != 0 && s != sign) ++label.m;
-        sign = s;
-    }
+    label.m = sign_changes(axial_profile(fits, best_comp, best_n));
 
     if (std::abs(lambda) < kRigidEigenvalueFraction * lambda_scale) {
         label = {"rigid", 0, 0, 1.0};  // any mix of rigid motions: n and m mean nothing

@@ -14,7 +14,7 @@
 // degenerate pair, arbitrarily rotated, get the same m).
 #pragma once
 
-#include "eigensolve/modal_solver.hpp"  // kRigidEigenvalueFraction
+#include "eigensolve/tolerances.hpp"
 #include "mesh/mesh.hpp"
 #include "modes/mode_set.hpp"
 

@@ -14,6 +14,7 @@
 //    distinct mode of a type at the last run) even where a run lacks them.
 #pragma once
 
+#include "eigensolve/tolerances.hpp"
 #include "modes/mode_set.hpp"
 
 #include <optional>
@@ -34,11 +35,8 @@ struct ModeKey {
     std::string text() const;  // "bending n=1 m=0" (+ " #2" for a second occurrence)
 };
 
-// Partners closer than this (relative frequency) with the same label are one
-// mode. Exact pairs agree to ~1e-10; two distinct modes of one label are far
-// apart. A pair split by a mesh that is not 45-degree symmetric (around a
-// multiple of 4 only) differs by ~1e-5 to 1e-4, still one mode.
-inline constexpr double kDegenerateTolerance = 1e-3;
+// Partners with the same label closer than kDegenerateTolerance
+// (eigensolve/tolerances.hpp) are one mode.
 
 struct DistinctMode {
     ModeKey key;

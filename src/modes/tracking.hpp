@@ -15,6 +15,7 @@
 //    another candidate comes within kCloseCandidateMac of it.
 #pragma once
 
+#include "eigensolve/tolerances.hpp"
 #include "modes/mac.hpp"
 #include "modes/mode_set.hpp"
 
@@ -24,10 +25,8 @@
 
 namespace coremodal {
 
-// Modes closer than this relative frequency gap are one degenerate group
-// (exact pairs of a symmetric mesh split by ~1e-10; distinct ovalling modes
-// of one family by ~1e-4 and more, DOMAIN.md section 6).
-constexpr double kDegenerateGap = 1e-5;
+// Modes closer than kDegenerateGap (eigensolve/tolerances.hpp) are one
+// degenerate group.
 // Two neighbouring modes with the same label (type, n >= 1, m) closer than
 // this are one pair even so: a mesh without rotational symmetry (tetrahedra)
 // splits a pair by up to ~1e-3.

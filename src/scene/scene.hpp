@@ -118,7 +118,7 @@ struct Scene {
     std::string source_file;  // path of the case file, as given
     std::string description;  // free text from the case file, "" when not given
     // Model level: "solid" (3D FE), "harmonic" (axisymmetric, one 2D problem
-    // per wave number n), "auto" (harmonic where the scene allows, run_scene
+    // per wave number n), "auto" (harmonic where the scene allows, models/choose.cpp
     // decides) or "beam" (Timoshenko beam network).
     std::string model = "solid";
     CoreSpec core;

@@ -2,7 +2,7 @@
 // modes that cross are followed by MAC, and the calibrated chuck factor
 // reproduces FE frequencies it was not fitted to.
 #include "analyses/calibrate/calibrate.hpp"
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "analyses/study/study.hpp"
 #include "beam/formulas.hpp"
 #include "output/study_report.hpp"

@@ -1,6 +1,6 @@
 // Case 05 (cases/05-beam-level-rest-roll-150x15.8-4320.toml), the beam model
 // level of case 03's rest roll, run as a user runs it: results in a folder.
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 
 #include <catch2/catch.hpp>
 

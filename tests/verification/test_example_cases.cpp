@@ -3,7 +3,7 @@
 // reference frequencies were computed at the default mesh level and the
 // tolerances cover the coarse mesh's discretisation error (measured: < 0.4 %
 // with the axial mesh graded towards the clamp edges).
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 
 #include <catch2/catch.hpp>
 

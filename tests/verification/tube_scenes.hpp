@@ -2,7 +2,7 @@
 // independently of the case-file parser.
 #pragma once
 
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "geometry/tube_model.hpp"
 #include "mesh/gmsh_mesh.hpp"

@@ -1,8 +1,8 @@
 #include "analyses/converge/model_ladder.hpp"
 
-#include "app/run_beam.hpp"
-#include "app/run_case.hpp"
-#include "app/run_harmonic.hpp"
+#include "models/beam/beam_level.hpp"
+#include "analyses/run/run.hpp"
+#include "models/choose.hpp"
 #include "beam/beam_model.hpp"
 #include "common/format.hpp"
 #include "common/petsc_handle.hpp"

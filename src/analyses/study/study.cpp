@@ -3,7 +3,7 @@
 #include "analyses/study/study.hpp"
 
 #include "analyses/study/study_workers.hpp"
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "beam/beam_theory.hpp"
 #include "beam/chuck_calibration.hpp"
 #include "beam/formulas.hpp"

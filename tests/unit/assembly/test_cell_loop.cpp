@@ -9,7 +9,7 @@
 #include "assembly/harmonic_system.hpp"
 #include "assembly/petsc_system.hpp"
 
-#include "app/run_steps.hpp"
+#include "models/part_materials.hpp"
 #include "verification/tube_scenes.hpp"
 
 #include <catch2/catch.hpp>

@@ -3,7 +3,7 @@
 // exactly the stiffnesses the scene gives (docs/harmonic.md, "Supports").
 #include "assembly/harmonic_system.hpp"
 
-#include "app/run_steps.hpp"
+#include "models/part_materials.hpp"
 #include "verification/tube_scenes.hpp"
 
 #include <catch2/catch.hpp>

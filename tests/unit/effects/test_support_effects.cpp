@@ -4,7 +4,7 @@
 // bearings by exactly their stiffness at every level.
 #include "effects/support_effects.hpp"
 
-#include "app/run_steps.hpp"  // part_materials
+#include "models/part_materials.hpp"  // part_materials
 #include "assembly/chuck_supports.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "beam/beam_model.hpp"

@@ -1,17 +1,22 @@
-// The harmonic model level reads like run_case: numbered steps, each one
-// stage of the pipeline, with one eigenproblem per wave number n in step 4.
-#include "app/run_harmonic.hpp"
+// The harmonic model level's steps 2–6, numbered as in a run, with one
+// eigenproblem per wave number n in steps 3–5.
+#include "models/harmonic/harmonic_level.hpp"
 
-#include "app/run_steps.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/stopwatch.hpp"
+#include "geometry/tube_model.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "geometry/section_mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
+#include "models/choose.hpp"
+#include "models/part_materials.hpp"
+#include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
+#include "output/run_folder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -61,12 +66,15 @@ PetscVector mass_times(Mat M, const std::vector<double>& values) {
     return Mr;
 }
 
-HarmonicModes solve_harmonic(HarmonicSystem& system, const SectionMesh& section, const SolveRequest& request) {
+HarmonicModes solve_harmonic(const Scene& scene, HarmonicSystem& system, const SectionMesh& section,
+                             const SolveRequest& request) {
     HarmonicModes h;
     h.n = system.n;
     h.dofs = system.dofs;
     h.solved = true;
-    SolvedModes solved = solve_modes(system.operators, request, [](const std::string&) {});
+    const SolvedModes solved =
+        solve_for_case(scene, system.operators, request, [](const std::string&) {},
+                       "the problem of wave number n = " + std::to_string(system.n) + " (each is solved on its own): ");
     h.eigenvalues = solved.eigenvalues;
     h.residuals = solved.relative_residuals;
     h.verification = solved.verification;
@@ -212,10 +220,10 @@ std::string beyond_last_harmonic(const Scene& scene, const SolveRequest& request
 
 // Harmonics n = 0, 1, 2, ... until two in a row have no mode below the
 // band edge and the lowest eigenvalue rises (kEmptyHarmonicsToStop). Fills
-// the report's mass and timings.
+// the model's mass and the timings.
 std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh& section,
                                            const std::vector<PartMaterial>& materials, SolveRequest request,
-                                           const Printer& say, RunReport& report) {
+                                           const Printer& say, LevelModes& out) {
     const bool band = request.lambda_max.has_value();
     std::vector<HarmonicModes> harmonics;
     int empty_in_a_row = 0;
@@ -224,8 +232,8 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
         if (n > kMaxHarmonic) throw SolveError(beyond_last_harmonic(scene, request));
         Stopwatch lap;
         HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
-        if (n == 0) report.model.mass_kg = system.operators.model_mass;
-        report.timing_s.assemble += lap.lap();
+        if (n == 0) out.info.mass_kg = system.operators.model_mass;
+        out.timing.assemble += lap.lap();
         const std::string line = "      n = " + std::to_string(n) + ": " + std::to_string(system.dofs.n_dofs) + " DOFs, ";
         const std::optional<double> edge = band ? request.lambda_max : band_edge(harmonics, scene.analysis.n_modes);
         if (n >= 2 && edge) {
@@ -236,7 +244,7 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
                 empty.n = n;
                 empty.dofs = system.dofs;
                 empty.lowest = lowest_eigenvalue(system, request);
-                report.timing_s.factor_and_solve += lap.lap();
+                out.timing.factor_and_solve += lap.lap();
                 say(line + "no mode below the band edge (lowest " +
                     significant(std::sqrt(std::max(empty.lowest, 0.0)) / (2 * M_PI)) + " Hz)");
                 const bool rising = empty_in_a_row > 0 && empty.lowest > previous_lowest;
@@ -251,15 +259,8 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
             request.n_modes = n == 0 ? scene.analysis.n_modes : (scene.analysis.n_modes + 1) / 2;
         }
         empty_in_a_row = 0;
-        HarmonicModes h = [&] {
-            try {
-                return solve_harmonic(system, section, request);
-            } catch (const InputError& e) {  // about the case's [analysis] table: name the file and the harmonic
-                throw InputError(scene.source_file + ": the problem of wave number n = " + std::to_string(n) +
-                                 " (each is solved on its own): " + e.what());
-            }
-        }();
-        report.timing_s.factor_and_solve += lap.lap();
+        HarmonicModes h = solve_harmonic(scene, system, section, request);
+        out.timing.factor_and_solve += lap.lap();
         say(line + std::to_string(h.eigenvalues.size()) + " modes" +
             (h.eigenvalues.empty() ? std::string()
                                    : " from " + significant(std::sqrt(std::max(h.eigenvalues.front(), 0.0)) / (2 * M_PI)) + " Hz") +
@@ -301,11 +302,7 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
         const bool second_of_pair = h.n > 0 && pick.phase > 0;
         if (!band && static_cast<int>(modes.size()) >= scene.analysis.n_modes && !second_of_pair) break;
         if (!in_band(pick.lambda, request)) continue;
-        Mode mode;
-        mode.index = static_cast<int>(modes.size()) + 1;
-        mode.eigenvalue = pick.lambda;
-        mode.frequency_hz = std::sqrt(std::max(pick.lambda, 0.0)) / (2 * M_PI);
-        mode.relative_residual = h.residuals[pick.k];
+        Mode mode = numbered_mode(static_cast<int>(modes.size()) + 1, pick.lambda, h.residuals[pick.k]);
         if (root) {
             const auto& g = h.gamma[pick.k];
             if (h.n == 1)  // sideways: the pair's first member along x, the second (turned by 90°) along y
@@ -325,38 +322,18 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
 
 }  // namespace
 
-std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
-    if (scene.mesh.file)
-        return "a [mesh] file: the harmonic level meshes the scene's own r-z section";
-    for (const ChuckSpec& chuck : scene.supports.chucks)
-        for (const ExpandingElement& e : chuck.expanding)
-            if (e.segments > 0)
-                return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
-                       " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
-    return std::nullopt;
-}
-
-void require_axisymmetric(const Scene& scene) {
-    if (const auto why = why_not_axisymmetric(scene))
-        throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
-                         "; expected full bands and no [mesh] file, or model = \"solid\"");
-}
-
-RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
-    const bool root = mpi_rank() == 0;
-    const Printer say{root && !options.quiet};
-    Stopwatch total, stage;
-    RunReport report = new_report(std::move(scene_in));
-    const Scene& scene = report.scene;
+LevelModes HarmonicLevel::solve(const Scene& scene, const Printer& say) {
+    Stopwatch stage;
+    LevelModes out;
     require_axisymmetric(scene);
 
     // 2. Mesh: the r–z section in quad8 cells (and its revolution, for showing the modes).
     say("[2/7] meshing the r-z section");
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
-    RevolvedMesh revolved = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
-    add_frame_nodes(scene, revolved.mesh);  // as the solid has them, for the frame's motion in the shapes
+    revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
+    add_frame_nodes(scene, revolved_->mesh);  // as the solid has them, for the frame's motion in the shapes
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
-    report.timing_s.mesh = stage.lap();
+    out.timing.mesh = stage.lap();
 
     // 3-5. Per wave number n: assemble, solve, verify, prove complete.
     say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
@@ -364,18 +341,20 @@ RunReport run_harmonic_scene(Scene scene_in, const RunOptions& options) {
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the counts)");
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));
-    const std::vector<HarmonicModes> harmonics = solve_harmonics(scene, section, materials, request, say, report);
-    report.modes.verification = merged_verification(harmonics);
-    report.model = harmonic_model_info(scene, section, harmonics, report.model.mass_kg);
+    const std::vector<HarmonicModes> harmonics = solve_harmonics(scene, section, materials, request, say, out);
+    out.verification = merged_verification(harmonics);
+    out.info = harmonic_model_info(scene, section, harmonics, out.info.mass_kg);
     stage.lap();
 
     // 6. Name every mode (on the revolved mesh, with the solid's classifier) and its effective masses.
     say("[5/7] classifying the modes");
-    report.modes.modes = named_modes(scene, request, harmonics, revolved);
-    report.timing_s.classify = stage.lap();
+    out.modes = named_modes(scene, request, harmonics, *revolved_);
+    out.timing.classify = stage.lap();
+    return out;
+}
 
-    finish_run(report, revolved.mesh, options, total, stage);
-    return report;
+RunPictures HarmonicLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
+    return write_mesh_shapes(folder, report, revolved_->mesh, plots);
 }
 
 }  // namespace coremodal

@@ -6,7 +6,6 @@
 
 #include "output/run_report.hpp"
 
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -19,8 +18,5 @@ Scene rigid_clamp_variant(const Scene& scene);
 // Pairs modes by type, n and order; a degenerate pair stays two rows. Modes without a
 // partner get a row with the other side's index 0.
 std::vector<ModeShift> pair_by_label(const std::vector<Mode>& elastic, const std::vector<Mode>& rigid);
-
-void print_side_by_side(std::ostream& out, const std::vector<ModeShift>& shifts);
-std::string side_by_side_csv(const std::vector<ModeShift>& shifts);
 
 }  // namespace coremodal

@@ -1,4 +1,5 @@
-#include "app/rigid_comparison.hpp"
+#include "analyses/run/rigid_comparison.hpp"
+#include "output/side_by_side.hpp"
 
 #include "support/test_modes.hpp"
 

@@ -1,4 +1,9 @@
-// The main analysis: one case file in, one verified and named mode set out.
+// The main analysis: one case file in, one verified and named mode set out,
+// in numbered steps that are the same for every model level (models/): 1
+// read the case; 2–6 the level builds, solves and names (ModelLevel::solve);
+// 7 beam theory, the chuck factor (a run of the derived free-span scene) and
+// the rigid-clamp variant (a run of the derived clamped scene); 8 the console
+// tables and the results folder.
 #pragma once
 
 #include "output/run_report.hpp"
@@ -35,9 +40,14 @@ RunReport run_case(const RunOptions& options);
 // once on stderr from rank 0, for a command that has just read a case file.
 void print_scene_warnings(const Scene& scene);
 
-// Steps 2 onwards for a scene already in memory (options.case_file unused).
-// A scene with model = "beam" goes to run_beam_scene (app/run_beam.hpp).
+// Steps 2 onwards for a scene already in memory (options.case_file unused),
+// at the level models/choose.hpp picks (the report's scene names it).
 RunReport run_scene(Scene scene, const RunOptions& options);
+
+// Steps 2–7a of a scene derived from the case (the free span, the rigid
+// clamps): its modes and its beam comparison, quietly, nothing written, no
+// chuck factor or variant of its own.
+RunReport analyse_derived_scene(Scene scene);
 
 // Ilomäki's chuck factor of a scene with chucks whose first bending mode is
 // at f1: f2 by the scene's own model level on the free-free roll over the free
@@ -48,5 +58,13 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model);
 // The scene's first bending mode in `modes` against Euler-Bernoulli and
 // Timoshenko beam theory over beam_span (any model level).
 BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes);
+
+// Rigid-body motions of a free body in three dimensions.
+constexpr int kFreeBodyRigidModes = 6;
+
+// A free scene (generated model, band from 0 if any) must show exactly its
+// six rigid-body modes as its lowest; SolveError otherwise: the body is too
+// thin for double precision to tell them from its elastic modes.
+void check_rigid_modes(const RunReport& report);
 
 }  // namespace coremodal

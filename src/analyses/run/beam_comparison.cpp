@@ -1,0 +1,125 @@
+// Step 7 of a run, at any model level: the first bending mode against beam
+// theory, the chuck factor (a run of the derived free-span scene), and the
+// check that a free scene shows its six rigid modes.
+#include "analyses/run/run.hpp"
+
+#include "beam/beam_theory.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "common/petsc_handle.hpp"
+#include "scene/mesh_levels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coremodal {
+namespace {
+
+// The free-free roll over the free span: the same core and rest paper, cut
+// to L, no supports. Its first bending mode is smooth (no clamp edge), so
+// it converges at h^4: the coarse level is within 0.1 % of the converged
+// value (case 01: 133.46 against 133.36 Hz), far inside the uncertainty of
+// any k, at a fraction of the scene's cost; finer scene meshes do not
+// coarsen it further.
+Scene free_span_scene(const Scene& scene, double span) {
+    Scene free = scene;
+    free.name = scene.name + "-free-span";
+    free.core.length = span;
+    free.supports = {};
+    free.analysis = {};
+    free.analysis.n_modes = 8;  // 6 rigid modes and the bending pair
+    free.mesh.along_per_segment.clear();  // a ladder's counts are for the scene's segments, not the span's
+    const MeshLevel& coarse = *find_mesh_level("coarse");
+    free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
+    free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
+    free.mesh.n_around = std::min(scene.mesh.n_around, coarse.n_around);
+    free.mesh.n_along = std::min(
+        static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)),
+        elements_along(span, free.core.outer_diameter,
+                       free.mesh.n_around, coarse.axial_aspect)
+            .value_or(kMaxElementsAlong));
+    free.mesh.n_along = std::max(free.mesh.n_along, kMinElementsAlong);
+    return free;
+}
+
+// In words, for the console, report.md and summary.json.
+std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<Mode>& modes) {
+    const long rigid = std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "rigid"; });
+    if (analysis.f_max_hz) {
+        const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
+                                 significant(*analysis.f_max_hz) + " Hz";
+        return modes.empty() ? "no modes " + band
+                             : "no bending mode among the " + std::to_string(modes.size()) + " modes " + band +
+                                   " (widen the band)";
+    }
+    return "no bending mode among the " + std::to_string(modes.size()) + " modes found (" + std::to_string(rigid) +
+           " rigid); ask for more modes";
+}
+
+}  // namespace
+
+ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model) {
+    const auto& chucks = scene.supports.chucks;
+    ChuckFactor k;
+    k.li_left_m = chucks.at(0).li();
+    k.li_right_m = chucks.at(1).li();
+    k.li_m = (k.li_left_m + k.li_right_m) / 2;
+    k.free_span_m = scene.core.length - k.li_left_m - k.li_right_m;
+    k.f1_hz = f1;
+    if (by_model) {
+        k.f2_fe_hz = analyse_derived_scene(free_span_scene(scene, k.free_span_m)).beam.fe_first_bending_hz;
+    }
+    k.f2_beam_hz = timoshenko_bending_hz(beam_section(scene), k.free_span_m, BeamEnds::free_free, 1).at(0);
+    k.chuck_factor = k.f2_fe_hz > 0 ? f1 / k.f2_fe_hz : 0;
+    k.chuck_factor_beam = f1 / k.f2_beam_hz;
+    return k;
+}
+
+BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& modes) {
+    BeamComparison b;
+    const BeamSection section = beam_section(scene);
+    const bool free = scene.supports.kind == SupportKind::free;
+    b.span_m = beam_span(scene);
+    b.ends = free ? "free-free" : "clamped-clamped";
+    b.euler_bernoulli_hz = euler_bernoulli_first_bending_hz(section, b.span_m);
+    b.timoshenko_hz =
+        timoshenko_bending_hz(section, b.span_m, free ? BeamEnds::free_free : BeamEnds::clamped_clamped, 1).at(0);
+    for (const auto& m : modes)
+        if (m.label.type == "bending") {
+            b.fe_first_bending_hz = m.frequency_hz;
+            b.fe_mode_index = m.index;
+            b.fe_over_timoshenko = m.frequency_hz / b.timoshenko_hz;
+            b.fe_over_euler_bernoulli = m.frequency_hz / b.euler_bernoulli_hz;
+            return b;
+        }
+    b.fe_missing = why_no_bending_mode(scene.analysis, modes);
+    return b;
+}
+
+void check_rigid_modes(const RunReport& report) {
+    const Scene& s = report.scene;
+    // A user mesh may hold parts that touch nothing (warned about: six rigid modes each).
+    if (s.supports.kind != SupportKind::free || s.mesh.file || s.analysis.f_min_hz.value_or(0.0) > 0) return;
+    const std::vector<Mode>& modes = report.modes.modes;
+    const int expected = std::min<int>(kFreeBodyRigidModes, static_cast<int>(modes.size()));
+    int rigid = 0, lowest_rigid = 0;
+    for (size_t i = 0; i < modes.size(); ++i) {
+        rigid += modes[i].label.type == "rigid";
+        lowest_rigid += modes[i].label.type == "rigid" && static_cast<int>(i) < expected;
+    }
+    // Modes are named on rank 0 only: its verdict holds for every rank, so
+    // that all stop together (a rank alone in a collective would wait forever).
+    int ok = rigid == expected && lowest_rigid == expected;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    MPI_Bcast(&rigid, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    if (ok) return;
+    throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
+                     "(DOMAIN.md section 5), but " + std::to_string(rigid) + " of the lowest " +
+                     std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "
+                     "the body's lowest elastic eigenvalues, so they cannot be told apart. A core " +
+                     significant(s.core.length) + " m long and " + significant(s.core.outer_diameter) +
+                     " m across is beyond what double precision resolves at this model level; expected a body at "
+                     "least about a hundredth as long as its diameter");
+}
+
+}  // namespace coremodal

@@ -1,0 +1,118 @@
+// run_case reads like the method section of a paper: numbered steps, each one
+// stage of the pipeline (DESIGN.md), the same for every model level.
+#include "analyses/run/run.hpp"
+
+#include "analyses/run/rigid_comparison.hpp"
+#include "common/petsc_handle.hpp"
+#include "common/stopwatch.hpp"
+#include "common/warnings.hpp"
+#include "models/choose.hpp"
+#include "output/run_folder.hpp"
+#include "output/side_by_side.hpp"
+#include "output/summary.hpp"
+#include "scene/case_file.hpp"
+#include "scene/mesh_levels.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace coremodal {
+namespace {
+
+// "[k/N]" of a level with N steps.
+std::string step(int k, const ModelLevel& level) {
+    return "[" + std::to_string(k) + "/" + std::to_string(level.steps()) + "]";
+}
+
+// Steps 2–6 at the scene's level, and the rigid-mode check of a free scene.
+// The report keeps the case reader's warnings (printed when the file was
+// read) and adds the level's.
+RunReport level_report(Scene scene, ModelLevel& level, const Printer& say) {
+    RunReport report;
+    report.mpi_ranks = mpi_size();
+    report.warnings = scene.warnings;
+    report.scene = std::move(scene);
+    LevelModes solved = level.solve(report.scene, say);
+    report.model = std::move(solved.info);
+    report.modes.modes = std::move(solved.modes);
+    report.modes.verification = solved.verification;
+    report.timing_s = solved.timing;
+    report.warnings.insert(report.warnings.end(), solved.warnings.begin(), solved.warnings.end());
+    report.scene.assumptions.insert(report.scene.assumptions.end(), solved.assumptions.begin(),
+                                    solved.assumptions.end());
+    check_rigid_modes(report);
+    return report;
+}
+
+// Step 7: beam theory, the chuck factor, the rigid-clamp variant.
+void compare(RunReport& report, const ModelLevel& level, const RunOptions& options, const Printer& say) {
+    const Scene& scene = report.scene;
+    Stopwatch stage;
+    say(step(level.steps() - 1, level) + " comparing with beam theory");
+    report.beam = compare_with_beam(scene, report.modes.modes);
+    if (scene.supports.kind != SupportKind::chucks) return;
+    if (options.chuck_factor_by_fe) say("      chuck factor: the free-free roll over the free span (FE and beam)");
+    report.chuck = chuck_factor(scene, report.beam.fe_first_bending_hz, options.chuck_factor_by_fe);
+    report.timing_s.chuck_factor = stage.lap();
+    if (options.compare_rigid) {
+        say("      the same scene on rigid clamps over the expanding elements");
+        const RunReport rigid = analyse_derived_scene(rigid_clamp_variant(scene));
+        report.rigid_comparison = pair_by_label(report.modes.modes, rigid.modes.modes);
+    }
+}
+
+// Step 8: console tables, then the results folder (complete or not at all).
+void write(const RunReport& report, const ModelLevel& level, const RunOptions& options, const Printer& say) {
+    if (mpi_rank() != 0) return;
+    if (!options.quiet) {
+        print_mode_table(std::cout, report);
+        print_verification_and_beam(std::cout, report);
+        if (!report.rigid_comparison.empty()) print_side_by_side(std::cout, report.rigid_comparison);
+        std::cout << level.console_note();
+    }
+    if (!options.write_results) return;
+    const std::filesystem::path dir = options.output_dir ? std::filesystem::path(*options.output_dir)
+                                                         : std::filesystem::path("results") / report.scene.name;
+    say(step(level.steps(), level) + " writing " + dir.string());
+    write_run_folder(report, dir, options.force,
+                     [&](ResultsFolder& folder) { return level.write_shapes(folder, report, options.plots); });
+}
+
+}  // namespace
+
+void print_scene_warnings(const Scene& scene) { print_warnings(scene.warnings); }
+
+RunReport run_case(const RunOptions& options) {
+    // 1. Read and check the case file: every input error surfaces here.
+    if (mpi_rank() == 0 && !options.quiet) std::cout << "  [1/7] reading " << options.case_file << std::endl;
+    Scene scene = parse_case_file(options.case_file);
+    print_scene_warnings(scene);
+    if (options.mesh_level) apply_mesh_level(scene, *options.mesh_level);
+    if (options.model) scene.model = *options.model;
+    return run_scene(std::move(scene), options);
+}
+
+RunReport run_scene(Scene scene, const RunOptions& options) {
+    scene.model = chosen_level(scene);  // "auto" resolved, for the summary and the derived scenes
+    const Printer say{mpi_rank() == 0 && !options.quiet};
+    Stopwatch total;
+    const std::unique_ptr<ModelLevel> level = make_model_level(scene);
+    RunReport report = level_report(std::move(scene), *level, say);  // 2-6
+    compare(report, *level, options, say);                             // 7
+    double peak = peak_memory_mb();
+    MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    report.timing_s.total = total.seconds();
+    write(report, *level, options, say);  // 8
+    return report;
+}
+
+RunReport analyse_derived_scene(Scene scene) {
+    scene.model = chosen_level(scene);
+    const std::unique_ptr<ModelLevel> level = make_model_level(scene);
+    RunReport report = level_report(std::move(scene), *level, Printer{false});
+    report.beam = compare_with_beam(report.scene, report.modes.modes);
+    return report;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,55 @@
+#include "models/choose.hpp"
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "models/beam/beam_level.hpp"
+#include "models/harmonic/harmonic_level.hpp"
+#include "models/solid/solid_level.hpp"
+
+namespace coremodal {
+
+std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
+    if (scene.mesh.file)
+        return "a [mesh] file: the harmonic level meshes the scene's own r-z section";
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding)
+            if (e.segments > 0)
+                return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
+                       " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
+    return std::nullopt;
+}
+
+void require_axisymmetric(const Scene& scene) {
+    if (const auto why = why_not_axisymmetric(scene))
+        throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
+                         "; expected full bands and no [mesh] file, or model = \"solid\"");
+}
+
+std::string chosen_level(const Scene& scene) {
+    if (scene.model != "auto") return scene.model;
+    return why_not_axisymmetric(scene) ? "solid" : "harmonic";
+}
+
+std::string level_choice_text(const Scene& scene, const std::string& given) {
+    if (scene.model == "beam") return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
+    if (scene.model == "harmonic")
+        return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
+    const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
+    if (scene.model == "auto")
+        return not_axisymmetric ? "solid (" + given + "; not a body of revolution: " + *not_axisymmetric + ")"
+                                : "harmonic (" + given + "; a body of revolution: no segmented expanding element, "
+                                                         "no [mesh] file)";
+    return "solid (" + given + "): quadratic hexahedra" +
+           (not_axisymmetric ? std::string()
+                             : "; the scene is a body of revolution, so model = \"auto\" or \"harmonic\" would solve "
+                               "it on its r-z section, much faster");
+}
+
+std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
+    const std::string level = chosen_level(scene);
+    if (level == "beam") return std::make_unique<BeamLevel>();
+    if (level == "harmonic") return std::make_unique<HarmonicLevel>();
+    return std::make_unique<SolidLevel>();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,34 @@
+// Which model level solves a scene: "auto" and the reasons a level cannot.
+#pragma once
+
+#include "models/model_level.hpp"
+#include "scene/scene.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace coremodal {
+
+// Why the harmonic level cannot solve the scene (a user [mesh] file, a
+// segmented expanding element: both break the symmetry about the axis), or
+// nothing when it can.
+std::optional<std::string> why_not_axisymmetric(const Scene& scene);
+
+// An InputError naming the case file and why_not_axisymmetric's reason,
+// for a scene the harmonic level cannot solve (`run` and `check` refuse it alike).
+void require_axisymmetric(const Scene& scene);
+
+// The level a run of the scene uses: its `model`, with "auto" resolved to
+// the cheapest level that represents the whole scene (DESIGN.md): harmonic
+// when the scene is a body of revolution, else the solid.
+std::string chosen_level(const Scene& scene);
+
+// The level chosen_level picks and why, in words (`coremodal check`);
+// `given`: where the scene's model key came from.
+std::string level_choice_text(const Scene& scene, const std::string& given);
+
+// The level named chosen_level(scene) ("solid", "harmonic" or "beam").
+std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
+
+}  // namespace coremodal

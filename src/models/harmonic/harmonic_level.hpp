@@ -1,0 +1,26 @@
+// The axisymmetric-harmonic model level (model = "harmonic", docs/harmonic.md):
+// the scene's r–z section meshed in 2D, one independent problem (an
+// OperatorSet) per circumferential wave number n, the modes merged in
+// frequency order, each expanded onto the section turned into 3D and named
+// there with the solid's tools.
+#pragma once
+
+#include "geometry/section_mesh.hpp"
+#include "models/model_level.hpp"
+
+#include <optional>
+
+namespace coremodal {
+
+class HarmonicLevel : public ModelLevel {
+public:
+    int steps() const override { return 7; }
+    // require_axisymmetric (models/choose.hpp) first.
+    LevelModes solve(const Scene& scene, const Printer& say) override;
+    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+
+private:
+    std::optional<RevolvedMesh> revolved_;  // after solve: where the shapes live
+};
+
+}  // namespace coremodal

@@ -1,0 +1,69 @@
+// A model level: how a Scene becomes named modes (steps 2–6 of a run). The
+// run (analyses/run) does the other steps once for every level: read the
+// case, compare with beam theory, the chuck factor and the rigid-clamp
+// variant, the console tables and the results folder.
+//
+// Each level builds its model of the scene, splits it into independent
+// problems (the whole solid: one OperatorSet; the harmonic level: one
+// OperatorSet per wave number n; the beam network: one dense problem per
+// motion family), solves each with a verified, complete solver, and expands
+// every eigenvector into a Mode on a display mesh (the solid's own mesh, the
+// r–z section revolved, the beam network's nodes), where modes/ names it.
+// Why solve() is one call and not problems() + expand(): docs/architecture.md.
+#pragma once
+
+#include "output/run_pictures.hpp"
+#include "output/run_report.hpp"
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+class ResultsFolder;
+
+// Progress lines on standard output, when on.
+struct Printer {
+    bool on;
+    void operator()(const std::string& line) const {
+        if (on) std::cout << "  " << line << std::endl;
+    }
+};
+
+// What steps 2–6 give, at any model level.
+struct LevelModes {
+    ModelInfo info;
+    std::vector<Mode> modes;  // in frequency order, indexed from 1, named on rank 0
+    Verification verification;
+    Timing timing;  // mesh, assemble, factor_and_solve, classify
+    // About this level's model of the scene (printed already, from rank 0).
+    std::vector<std::string> warnings;
+    // What the level assumed beyond the scene (e.g. how an elastic bearing
+    // holds the shaft axially), for the run summary.
+    std::vector<std::string> assumptions;
+};
+
+class ModelLevel {
+public:
+    virtual ~ModelLevel() = default;
+    // How many numbered progress steps a run at this level has ("[k/N]").
+    virtual int steps() const = 0;
+    // Steps 2–6: build the model, solve every independent problem (verified,
+    // proven complete), expand and name the modes. Collective over
+    // PETSC_COMM_WORLD; InputError / SolveError with a message for the user.
+    virtual LevelModes solve(const Scene& scene, const Printer& say) = 0;
+    // Step 8 (rank 0): the level's mode shapes in the results folder
+    // (modes.h5 + modes.xdmf on the display mesh, or beam_shapes.csv) and
+    // the pictures of report.md drawn from them.
+    virtual RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const = 0;
+    // A line after the console tables, or "".
+    virtual std::string console_note() const { return ""; }
+};
+
+// A warning about the model of a scene: on stderr from rank 0, named after
+// `source`, and kept for the summary.
+void warn_about_model(const std::string& source, const std::string& warning, std::vector<std::string>& warnings);
+
+}  // namespace coremodal

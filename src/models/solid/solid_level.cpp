@@ -1,0 +1,188 @@
+// The solid level's steps 2–6, numbered as in a run: mesh, DOFs, the one
+// OperatorSet, the solve, each eigenvector expanded on the mesh and named.
+#include "models/solid/solid_level.hpp"
+
+#include "assembly/chuck_supports.hpp"
+#include "assembly/petsc_system.hpp"
+#include "beam/eigenvalue_scale.hpp"
+#include "common/error.hpp"
+#include "common/heartbeat.hpp"
+#include "common/stopwatch.hpp"
+#include "eigensolve/modal_solver.hpp"
+#include "geometry/tube_model.hpp"
+#include "mesh/connectivity.hpp"
+#include "mesh/gmsh_mesh.hpp"
+#include "models/part_materials.hpp"
+#include "models/solve_steps.hpp"
+#include "modes/classify.hpp"
+#include "modes/mac.hpp"
+#include "modes/mode_shapes.hpp"
+#include "output/run_folder.hpp"
+
+#include <cmath>
+#include <set>
+
+namespace coremodal {
+namespace {
+
+std::vector<std::string> clamp_group_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& c : scene.supports.clamps) names.push_back("clamp_" + c.name);
+    return names;
+}
+
+std::vector<std::string> chuck_group_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& c : scene.supports.chucks)
+        for (const char* g : {"interface_%_core", "interface_%_chuck", "bearing_%"}) {
+            std::string name = g;
+            name.replace(name.find('%'), 1, c.name);
+            names.push_back(name);
+        }
+    return names;
+}
+
+std::vector<int> clamped_nodes(const Scene& scene, const Mesh& mesh) {
+    std::set<int> nodes;
+    for (const auto& name : clamp_group_names(scene))
+        for (int n : mesh.node_groups.at(name)) nodes.insert(n);
+    return {nodes.begin(), nodes.end()};
+}
+
+// Nodes held by the ground (eliminated, or on springs to the ground) and the
+// links that join parts (spring layers, ties): for the "part not held" check.
+struct Holding {
+    std::vector<int> held;
+    std::vector<std::vector<int>> links;
+};
+
+Holding holding(const std::vector<int>& eliminated, const ChuckSupports& chucks) {
+    Holding h{eliminated, {}};
+    for (const NodeTie& t : chucks.ties) h.links.push_back({t.node, t.master});
+    for (const CouplingElement& e : chucks.couplings) h.links.push_back(e.nodes);
+    h.held.insert(h.held.end(), chucks.grounded.begin(), chucks.grounded.end());
+    return h;
+}
+
+// Step 3: the DOF map (clamped nodes and shaft ends in rigid bearings
+// eliminated; bonded core nodes take their chuck node's DOFs) and the model
+// summary; a warning for each part nothing holds.
+DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chucks, LevelModes& out) {
+    const std::string source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
+    std::vector<int> eliminated = clamped_nodes(scene, mesh);
+    eliminated.insert(eliminated.end(), chucks.eliminated.begin(), chucks.eliminated.end());
+    DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties);
+    out.info = {.level = "solid3d",
+                .element = cell_type_name(mesh.cell_type),
+                .n_dofs = dofs.n_dofs,
+                .n_nodes = mesh.n_nodes(),
+                .n_elements = mesh.n_cells(),
+                .n_eliminated_nodes = static_cast<long>(eliminated.size()),
+                .mass_kg = 0,  // step 4 sums it
+                .expected_mass_kg = scene.mass_from_dimensions(),
+                .mesh_source = source,
+                .harmonics = {}};
+    const Holding held = holding(eliminated, chucks);
+    for (const std::string& warning : unheld_parts(mesh, held.held, held.links))
+        warn_about_model(source, warning, out.warnings);
+    return dofs;
+}
+
+// Step 6: every eigenvector in the request's band expanded to the mesh's
+// nodes, named, with its effective masses and signature.
+std::vector<Mode> solid_modes(const Mesh& mesh, const DofMap& dofs, const OperatorSet& system,
+                              const SolvedModes& solved, const SolveRequest& request) {
+    const bool root = mpi_rank() == 0;
+    const ModeClassifier classifier(mesh, roll_nodes(mesh));
+    const std::optional<ModeSignatureSampler> signature =
+        root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
+    const EffectiveMassCalculator effective_mass(system.M(), mesh, dofs);
+    std::vector<Mode> modes;
+    for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
+        const double lambda = solved.eigenvalues[i];
+        if (!in_band(lambda, request)) continue;  // computed from the bottom, below the band
+        Mode mode = numbered_mode(static_cast<int>(modes.size()) + 1, lambda, solved.relative_residuals[i]);
+        mode.effective_mass = effective_mass(solved.vectors[i]);
+        mode.shape = gather_node_displacements(solved.vectors[i], mesh, dofs);
+        if (root) mode.label = classifier.classify(mode.shape, lambda, request.lambda_scale);
+        if (root) mode.signature = (*signature)(mode.shape);
+        modes.push_back(std::move(mode));
+    }
+    return modes;
+}
+
+}  // namespace
+
+Mesh make_solid_mesh(const Scene& scene) {
+    GmshSession gmsh;
+    if (scene.mesh.file && scene.supports.kind == SupportKind::chucks)
+        throw InputError(scene.source_file + ": [mesh] file with [supports] type = \"chucks\": elastic chucks are "
+                         "built into the generated mesh (core and chuck nodes must face each other); expected "
+                         "no [mesh] file, or rigid clamps with a user mesh");
+    if (scene.mesh.file) {
+        Mesh mesh = read_msh_file(*scene.mesh.file);
+        std::vector<std::string> parts = {"core"};
+        if (scene.rest_paper) parts.push_back("rest_paper");
+        require_groups(mesh, parts, clamp_group_names(scene), *scene.mesh.file,
+                       scene.supports.kind == SupportKind::clamped ? "[supports] type = \"clamped\"" : "the scene");
+        return mesh;
+    }
+    build_tube_model(make_tube_section(scene), scene.supports.clamps, scene.mesh.element);
+    Mesh mesh = read_current_gmsh_mesh("generated mesh");
+    require_groups(mesh, {"core"}, clamp_group_names(scene), "generated mesh", "the clamps");
+    require_groups(mesh, {}, chuck_group_names(scene), "generated mesh", "the chucks");
+    add_frame_nodes(scene, mesh);
+    return mesh;
+}
+
+LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
+    Stopwatch stage;
+    LevelModes out;
+    // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).
+    say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
+    {
+        const Heartbeat beat("meshing", say);
+        mesh_ = make_solid_mesh(scene);
+    }
+    const Mesh& mesh = *mesh_;
+    out.timing.mesh = stage.lap();
+
+    // 3. Degrees of freedom.
+    const ChuckSupports chucks = chuck_supports(scene, mesh);
+    const DofMap dofs = solid_dofs(scene, mesh, chucks, out);
+    say("      " + std::to_string(mesh.n_cells()) + " " + out.info.element + " cells, " +
+        std::to_string(mesh.n_nodes()) + " nodes, " + std::to_string(dofs.n_dofs) + " DOFs (" +
+        std::to_string(out.info.n_eliminated_nodes) + " clamped nodes eliminated)");
+
+    // 4. The one problem: the OperatorSet of the whole solid.
+    say("[3/7] assembling stiffness and mass");
+    const OperatorSet system = [&] {
+        const Heartbeat beat("assembling", say);
+        return assemble_petsc(mesh, part_materials(scene, mesh.part_names, out.info.mesh_source), dofs,
+                              chucks.couplings);
+    }();
+    out.info.mass_kg = system.model_mass;
+    out.timing.assemble = stage.lap();
+
+    // 5. Solve, verify, prove complete. The scale of the first elastic
+    //    eigenvalue sets the shift (and what counts as rigid).
+    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
+        shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
+    const SolveRequest request = solve_request(scene);
+    say(shift_scale_text(scene));
+    const SolvedModes solved = solve_for_case(scene, system, request, say, "");
+    out.verification = solved.verification;
+    out.timing.factor_and_solve = stage.lap();
+
+    // 6. Name every mode and compute its effective masses.
+    say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
+    out.modes = solid_modes(mesh, dofs, system, solved, request);
+    out.timing.classify = stage.lap();
+    return out;
+}
+
+RunPictures SolidLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
+    return write_mesh_shapes(folder, report, *mesh_, plots);
+}
+
+}  // namespace coremodal

@@ -1,0 +1,30 @@
+// The 3D solid model level (model = "solid"): the scene's section extruded
+// into quadratic hexahedra (or the user's mesh), clamped nodes eliminated,
+// bonded bore nodes tied to their chuck nodes, the chuck supports as
+// coupling elements; one OperatorSet, solved with SLEPc, each mode named on
+// the mesh itself.
+#pragma once
+
+#include "mesh/mesh.hpp"
+#include "models/model_level.hpp"
+
+#include <optional>
+
+namespace coremodal {
+
+class SolidLevel : public ModelLevel {
+public:
+    int steps() const override { return 7; }
+    LevelModes solve(const Scene& scene, const Printer& say) override;
+    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+
+private:
+    std::optional<Mesh> mesh_;  // after solve: where the shapes live
+};
+
+// Step 2 of a solid run: the mesh, generated from the scene's section (with
+// the frame nodes of elastic bearings) or read from the user's file, its
+// physical groups checked against the scene.
+Mesh make_solid_mesh(const Scene& scene);
+
+}  // namespace coremodal

@@ -1,0 +1,132 @@
+#include "output/beam_formulas_report.hpp"
+
+#include "common/format.hpp"
+#include "scene/units.hpp"
+
+#include <toml++/toml.h>
+
+#include <cstdio>
+
+namespace coremodal {
+namespace {
+
+std::string mm(double metres) { return significant(metres * 1e3, 5) + " mm"; }
+
+std::string speed(double v) { return significant(v) + " m/s (" + significant(v * 60) + " m/min)"; }
+
+}  // namespace
+
+void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
+    const Scene& s = r.scene;
+    const RestRollSection& sec = r.section;
+    out << "coremodal beam: " << s.name;
+    if (!s.source_file.empty()) out << " (" << s.source_file << ")";
+    out << "\n\nSection\n";
+    out << "  core        Di " << mm(sec.Di) << ", Do " << mm(sec.Do) << ", Lc " << significant(r.Lc) << " m, Ec "
+        << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c " << significant(sec.rho_c) << " kg/m^3\n";
+    out << "              Ic " << significant(r.Ic) << " m^4, Ac " << significant(r.Ac) << " m^2\n";
+    if (s.rest_paper) {
+        out << "  rest paper  Dp " << mm(sec.Dp) << " (" << mm(r.paper_thickness) << " thick), Ep "
+            << format_quantity(sec.Ep, Dimension::pressure) << ", rho_p " << significant(sec.rho_p) << " kg/m^3\n";
+        out << "              Ip " << significant(r.Ip) << " m^4, Ap " << significant(r.Ap) << " m^2\n";
+    } else {
+        out << "  rest paper  none (bare core, Dp = Do)\n";
+    }
+    out << "  EcIc + EpIp = " << significant(r.beam.EI) << " N m^2, rho_c Ac + rho_p Ap = " << significant(r.beam.rho_A)
+        << " kg/m, kappa G A = " << significant(r.beam.kappa_GA) << " N (Cowper; for Timoshenko)\n";
+    out << "\nSpan\n";
+    out << "  Li = " << mm(r.Li) << " (" << r.li_source << "), free span L = Lc - 2 Li = " << significant(r.L) << " m\n";
+    out << "\nFirst bending frequency\n";
+    out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << significant(r.k) << ":  "
+        << significant(r.f1) << " Hz\n";
+    if (!r.k_source.empty())
+        out << "       k from the " << r.k_source << ": g1 = " << significant(r.groups->g1) << ", g2 = " << significant(r.groups->g2)
+            << ", g3 = " << significant(r.groups->g3) << "\n";
+    out << "                      Euler-Bernoulli   Timoshenko\n";
+    char line[160];
+    std::snprintf(line, sizeof line, "  clamped-clamped, L   %9.4g Hz   %9.4g Hz\n", r.eb_cc, r.timo_cc);
+    out << line;
+    std::snprintf(line, sizeof line, "  free-free, Lc        %9.4g Hz   %9.4g Hz\n", r.eb_ff, r.timo_ff);
+    out << line;
+    out << "\nSpeeds\n";
+    out << "  König " << r.koenig_formula << " (rest paper " << mm(r.paper_thickness)
+        << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor " << significant(r.koenig_factor)
+        << ", l = " << significant(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
+    out << "      f_krit = " << significant(r.koenig.f_krit_hz) << " Hz, v_krit = " << speed(r.koenig.v_krit_m_s) << "\n";
+    out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << significant(r.safe) << ": " << speed(r.v_safe) << "\n";
+    if (r.f_free) {
+        out << "\nFree-hanging measurement f_free = " << significant(*r.f_free) << " Hz at Lc = " << significant(r.Lc) << " m\n";
+        out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << significant(*r.f2) << " Hz\n";
+        if (r.k_measured)
+            out << "  I-6  k = f1/f2 = " << significant(*r.f_clamped) << "/" << significant(*r.f2) << " = " << significant(*r.k_measured) << "\n";
+        if (r.Ec_measured)
+            out << "  I-13/14  Q = 82.66 Ic/(Ac L^2) + 1 = " << significant(*r.Q, 5)
+                << ", Ec = 7.88e-8 f^2 M L^4 Q/Ic = " << format_quantity(*r.Ec_measured, Dimension::pressure)
+                << " (M = rho_c Ac = " << significant(sec.rho_c * r.Ac) << " kg/m)\n";
+        if (r.Ep_measured)
+            out << "  I-15  Ep (I-7 with k = 1 at Lc, solved for Ep) = "
+                << format_quantity(*r.Ep_measured, Dimension::pressure) << "\n";
+    }
+    const auto assumed = beam_formula_assumptions(s);
+    if (!r.notes.empty() || !assumed.empty()) {
+        out << "\nNotes\n";
+        for (const auto& n : r.notes) out << "  - " << n << "\n";
+        for (const auto& a : assumed) out << "  - " << a << "\n";
+    }
+}
+
+void print_beam_formulas_json(const BeamFormulas& r, std::ostream& out) {
+    const Scene& s = r.scene;
+    const RestRollSection& sec = r.section;
+    toml::table section{{"Di_m", sec.Di},          {"Do_m", sec.Do},
+                        {"Dp_m", sec.Dp},          {"Ec_Pa", sec.Ec},
+                        {"rho_c_kg_m3", sec.rho_c}, {"Ic_m4", r.Ic},
+                        {"Ac_m2", r.Ac},           {"EI_N_m2", r.beam.EI},
+                        {"mass_per_length_kg_m", r.beam.rho_A}, {"kappa_GA_N", r.beam.kappa_GA},
+                        {"rho_I_kg_m", r.beam.rho_I}};
+    if (s.rest_paper) {
+        section.insert("Ep_Pa", sec.Ep);
+        section.insert("rho_p_kg_m3", sec.rho_p);
+        section.insert("Ip_m4", r.Ip);
+        section.insert("Ap_m2", r.Ap);
+        section.insert("rest_paper_thickness_m", r.paper_thickness);
+    }
+    toml::table i7{{"k", r.k}, {"f1_hz", r.f1}};
+    if (!r.k_source.empty()) {
+        i7.insert("k_source", r.k_source);
+        i7.insert("g1", r.groups->g1);
+        i7.insert("g2", r.groups->g2);
+        i7.insert("g3", r.groups->g3);
+    }
+    toml::table t{
+        {"case", s.name},
+        {"source_file", s.source_file},
+        {"section", section},
+        {"span", toml::table{{"Lc_m", r.Lc}, {"Li_m", r.Li}, {"Li_source", r.li_source}, {"L_m", r.L}}},
+        {"i7", i7},
+        {"euler_bernoulli", toml::table{{"clamped_clamped_L_hz", r.eb_cc}, {"free_free_Lc_hz", r.eb_ff}}},
+        {"timoshenko", toml::table{{"clamped_clamped_L_hz", r.timo_cc}, {"free_free_Lc_hz", r.timo_ff}}},
+        {"koenig", toml::table{{"formula", r.koenig_formula},
+                               {"experience_factor", r.koenig_factor},
+                               {"l_m", r.koenig_l},
+                               {"l_source", r.koenig_l_source},
+                               {"f_krit_hz", r.koenig.f_krit_hz},
+                               {"v_krit_m_s", r.koenig.v_krit_m_s}}},
+        {"safe_web_speed", toml::table{{"safe", r.safe}, {"Dp_m", sec.Dp}, {"f1_hz", r.f1}, {"v_safe_m_s", r.v_safe}}},
+    };
+    if (r.f_free) {
+        toml::table m{{"f_free_hz", *r.f_free}, {"f2_hz", *r.f2}};
+        if (r.f_clamped) m.insert("f_clamped_hz", *r.f_clamped), m.insert("k", *r.k_measured);
+        if (r.Ec_measured) m.insert("Q", *r.Q), m.insert("Ec_Pa", *r.Ec_measured);
+        if (r.Ep_measured) m.insert("Ep_Pa", *r.Ep_measured);
+        t.insert("free_free_measurement", m);
+    }
+    toml::array notes, assumptions;
+    for (const auto& n : r.notes) notes.push_back(n);
+    for (const auto& a : beam_formula_assumptions(s)) assumptions.push_back(a);
+    t.insert("notes", notes);
+    t.insert("assumptions", assumptions);
+    out << toml::json_formatter{t} << "\n";
+}
+
+}  // namespace coremodal

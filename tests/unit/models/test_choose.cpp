@@ -1,0 +1,49 @@
+// The model level a run uses: "auto" resolves to the harmonic level for a
+// body of revolution and to the solid otherwise; a named level stays.
+#include "models/choose.hpp"
+
+#include "models/beam/beam_level.hpp"
+#include "models/harmonic/harmonic_level.hpp"
+#include "models/solid/solid_level.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace coremodal;
+
+namespace {
+
+Scene with_model(const std::string& model) {
+    Scene s;
+    s.model = model;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("auto picks the harmonic level for a body of revolution, else the solid", "[model][choose]") {
+    Scene plain = with_model("auto");
+    CHECK(chosen_level(plain) == "harmonic");
+    CHECK(dynamic_cast<HarmonicLevel*>(make_model_level(plain).get()) != nullptr);
+
+    Scene user_mesh = with_model("auto");
+    user_mesh.mesh.file = "tube.msh";
+    CHECK(chosen_level(user_mesh) == "solid");
+    CHECK(dynamic_cast<SolidLevel*>(make_model_level(user_mesh).get()) != nullptr);
+
+    Scene segmented = with_model("auto");
+    ChuckSpec chuck;
+    chuck.name = "left";
+    ExpandingElement element;
+    element.segments = 3;
+    chuck.expanding.push_back(element);
+    segmented.supports.chucks.push_back(chuck);
+    CHECK(chosen_level(segmented) == "solid");
+    CHECK_THAT(*why_not_axisymmetric(segmented), Catch::Contains("3 segments"));
+}
+
+TEST_CASE("a named model level is kept, and each has its own step count", "[model][choose]") {
+    for (const std::string level : {"solid", "harmonic", "beam"}) CHECK(chosen_level(with_model(level)) == level);
+    CHECK(make_model_level(with_model("beam"))->steps() == 4);
+    CHECK(make_model_level(with_model("solid"))->steps() == 7);
+    CHECK(dynamic_cast<BeamLevel*>(make_model_level(with_model("beam")).get()) != nullptr);
+}
