@@ -15,6 +15,7 @@
 // defaults, so an expert can override any solver setting.
 #include "common/argv.hpp"
 #include "app/commands.hpp"
+#include "app/rotation_run.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
@@ -160,7 +161,7 @@ int main(int argc, char** argv) {
         coremodal::add_beam_command(app),     coremodal::add_batch_command(app),
         coremodal::add_converge_command(app), coremodal::add_winder_command(app),
         coremodal::add_study_command(app),    coremodal::add_calibrate_command(app),
-        coremodal::add_schema_command(app)};
+        coremodal::add_schema_command(app),   coremodal::add_campbell_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {
