@@ -108,6 +108,19 @@ std::string critical_table(const CampbellResult& r) {
     return out;
 }
 
+// The modes at the last speed: with one speed (`run`), the modes at that speed.
+std::string last_speed_table(const CampbellResult& r) {
+    const CampbellPoint& p = r.points.back();
+    std::string out = "| mode | track | frequency | whirl | mode at rest | relative residual |\n|---|---|---|---|---|---|\n";
+    for (size_t i = 0; i < p.modes.size(); ++i) {
+        const CampbellMode& m = p.modes[i];
+        out += "| " + std::to_string(i + 1) + " | " + std::to_string(m.track) + " | " + significant(m.frequency_hz, 6) +
+               " Hz | " + whirl_word(m.whirl) + " | " + label_text(m.label) + " | " + significant(m.relative_residual, 2) +
+               " |\n";
+    }
+    return out;
+}
+
 std::string safe_speed_lines(const CampbellResult& r) {
     const RollSpeeds& s = r.speeds_at_rest;
     std::string out;
@@ -148,6 +161,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     out << "\n## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
            "(linear between the sweep's speeds), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
         << critical_table(r) << "\n" << safe_speed_lines(r) << "\n";
+    out << "## Modes at " << rpm(r.points.back().speed_hz) << "\n\n" << last_speed_table(r) << "\n";
     out << "## Diagram\n\n";
     for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
     if (pngs.empty()) out << "No picture: " << plot_problem << ".\n\n";

@@ -65,6 +65,9 @@ TEST_CASE("coremodal run on a case with one speed reports the modes at that spee
     const std::string csv = slurp(dir.path / "out" / "campbell.csv");
     CHECK(csv.find("\n3000,50,") != std::string::npos);
     CHECK(csv.find("\n0,0,") == std::string::npos);  // only the speed asked for
+    const std::string report = slurp(dir.path / "out" / "report.md");
+    CHECK(report.find("## Modes at 3000 rpm") != std::string::npos);
+    CHECK(report.find(" Hz | FW | bending n=1 m=0 |") != std::string::npos);
 }
 
 TEST_CASE("coremodal campbell refuses what it cannot do before any work, and writes nothing", "[app][rotation]") {
