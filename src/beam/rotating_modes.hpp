@@ -94,15 +94,26 @@ private:
         Eigen::VectorXd lambda;         // ascending
         Eigen::MatrixXd Ghat;           // Phi^T G Phi
         double norm_K = 0, norm_M = 0, norm_G = 0;
+        // The x-z bending plane standing for both (the planes alike): in
+        // u = ux + i uy the problem is K a - omega^2 M a + omega Omega G a = 0
+        // with G = rho_J N N on ry (symmetric) and omega > 0 forward, < 0
+        // backward whirl: real, half the size (docs/rotation.md).
+        bool plane = false;
     };
+    // How a candidate's rows become network DOFs: as they are, or from the
+    // x-z plane: planar in x-z, planar in y-z, or whirling (the sign of omega).
+    enum class Kind { rows, planar_x, planar_y, whirl };
     // A mode before its shape is finished: its problem, omega and eta.
     struct Candidate {
         const Problem* problem;
-        double omega;
+        double omega;  // signed for Kind::whirl
         Eigen::VectorXcd eta;
+        Kind kind = Kind::rows;
     };
+    void add_plane_candidates(const Problem& p, double omega_spin, std::vector<Candidate>& out) const;
+    Eigen::VectorXcd network_shape(const Problem& p, const Eigen::VectorXcd& x, Kind kind, double omega) const;
     void add_candidates(const Problem& p, double omega_spin, std::vector<Candidate>& out) const;
-    RotatingMode finish(const Problem& p, const Eigen::VectorXcd& eta, double omega, double omega_spin) const;
+    RotatingMode finish(const Candidate& c, double omega_spin) const;
 
     const BeamNetwork* network_;
     double lambda_scale_;
