@@ -3,7 +3,8 @@
 ``python3 -m coremodal converge-plot CONVERGE_DIR``,
 ``python3 -m coremodal study-plot STUDY_FOLDER``,
 ``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython) and
-``python3 -m coremodal winder-plot WINDER_FOLDER``.
+``python3 -m coremodal winder-plot WINDER_FOLDER`` and
+``python3 -m coremodal campbell-plot CAMPBELL_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -12,6 +13,7 @@
     python3 -m coremodal study-plot results/06-study-safe-speed-study
     python3 -m coremodal paraview results/02-clamped-76x15 --mode 1 --out mode1.png   # needs pvpython
     python3 -m coremodal winder-plot results/11-two-drum-winder-winder  # crossing_diagram.png, response.png
+    python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -86,7 +88,22 @@ def _parser() -> argparse.ArgumentParser:
     winder = commands.add_parser(
         "winder-plot", help="draw the crossing diagram and the response (PNG) of a `coremodal winder` folder")
     winder.add_argument("folder", type=Path, help="results folder of coremodal winder")
+    campbell = commands.add_parser(
+        "campbell-plot", help="draw campbell.png of a `coremodal campbell` folder")
+    campbell.add_argument("folder", type=Path, help="results folder of coremodal campbell")
     return parser
+
+
+def _campbell_plot(folder: Path) -> int:
+    from . import campbell_plot  # matplotlib only when drawing
+
+    try:
+        path = campbell_plot.draw(folder)
+    except (campbell_plot.CampbellFormatError, KeyError, ValueError, OSError) as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    _print(str(path))
+    return 0
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -159,6 +176,8 @@ def main(argv: list[str] | None = None) -> int:
         return _converge_plot(args)
     if args.command == "winder-plot":
         return _winder_plot(args.folder)
+    if args.command == "campbell-plot":
+        return _campbell_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

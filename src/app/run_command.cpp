@@ -1,8 +1,10 @@
 // `coremodal run CASE.toml`: the main job.
 #include "app/commands.hpp"
 #include "analyses/run/run.hpp"
+#include "app/rotation_run.hpp"
 #include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
+#include "scene/rotation_spec.hpp"
 
 namespace coremodal {
 
@@ -32,6 +34,10 @@ Command add_run_command(CLI::App& app) {
         options->plots = !*no_plots;
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         if (!model->empty()) options->model = *model;
+        // A spinning scene: its modes at its speed(s), docs/rotation.md.
+        if (const RotatingCase c = parse_rotating_case(options->case_file); c.rotation)
+            return run_rotating_case(options->case_file, *model, !output->empty() ? *output : "results/" + c.scene.name,
+                                     options->force, !options->plots, options->quiet);
         // The results folder is checked before any work (its default needs
         // the case's name).
         options->output_dir = !output->empty() ? *output : "results/" + parse_case_file(options->case_file).name;

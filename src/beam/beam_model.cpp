@@ -1,5 +1,7 @@
 #include "beam/beam_model.hpp"
 
+#include "beam/rotating_modes.hpp"  // label_beam_mode
+
 #include "beam/eigenvalue_scale.hpp"
 #include "beam/network_modes.hpp"
 #include "common/error.hpp"
@@ -322,6 +324,11 @@ Matrix6 spring_layer_per_length(const SpringLayer& layer, const ExpandingElement
     k(rx, ry) = -R * R * R * k_t * m.sc;
     k(ry, ry) = R * R * R * k_t * m.cc;
     return Matrix6(k.selfadjointView<Eigen::Upper>());
+}
+
+ModeLabel label_beam_mode(const BeamNetwork& network, const Eigen::VectorXd& shape, const Eigen::VectorXd& mass_shape,
+                          double eigenvalue, double lambda_scale) {
+    return label_mode(network, shape, mass_shape, eigenvalue, lambda_scale);
 }
 
 BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& options,

@@ -30,6 +30,7 @@ Scene CaseReader::read(const toml::table& root) {
     scene.supports = read_supports(top, scene);
     scene.analysis = read_analysis(top);
     scene.mesh = read_mesh(top, scene);
+    read_rotation(top, scene);  // checked with every key; parse_rotating_case keeps it
     scene.warnings = warnings_;
     return scene;
 }

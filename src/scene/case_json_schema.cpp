@@ -269,6 +269,7 @@ constexpr TableTitle kTables[] = {
     {"study", "[study]: a sweep for `coremodal study` (docs/studies.md)"},
     {"calibration", "[calibration]: a sweep whose chuck factor is fitted, for `coremodal calibrate`"},
     {"parameter", "an item of parameters: key, and values or from/to/steps"},
+    {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/rotation.md)"},
 };
 
 }  // namespace

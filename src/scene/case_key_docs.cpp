@@ -17,6 +17,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"", "mesh", "level \"default\"", "mesh refinement, or a gmsh mesh file"},
         {"", "study", "none", "a sweep over this file's keys, for `coremodal study` (`run` ignores it)"},
         {"", "calibration", "none", "a sweep whose chuck factors are fitted, for `coremodal calibrate` (`run` ignores it)"},
+        {"", "rotation", "none: the roll stands still", "the roll, chucks and shafts spin: modes at a speed, or a Campbell sweep (`coremodal campbell`)"},
 
         {"core", "inner_diameter", kRequired, "inner diameter Di of the core, smaller than the outer diameter"},
         {"core", "outer_diameter", "none: give outer_diameter or wall", "outer diameter Do; give exactly one of outer_diameter and wall"},
@@ -87,6 +88,14 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"mesh", "along", "from the level", "elements along the core; overrides the level's"},
         {"mesh", "element", "\"hex20\"", "quadratic serendipity (hex20) or Lagrange (hex27) hexahedra", "hex20 hex27"},
         {"mesh", "file", "none: a generated mesh", "a gmsh .msh file of your own, relative to the case file's folder; excludes the other mesh keys except element"},
+
+        {"rotation", "speed", "none: give one of speed, speeds, web_speed, web_speeds", "one rotation speed, e.g. \"1200 rpm\" (a plain number is in Hz)"},
+        {"rotation", "speeds", "none: give one of speed, speeds, web_speed, web_speeds", "rotation speeds: a list, or [first, last] with points"},
+        {"rotation", "points", "none: speeds is a list", "number of equally spaced speeds from the first to the last of speeds (or web_speeds)"},
+        {"rotation", "web_speed", "none: give one of speed, speeds, web_speed, web_speeds", "one web speed v; f_rot = v / (pi Dp), Dp the roll's outer diameter"},
+        {"rotation", "web_speeds", "none: give one of speed, speeds, web_speed, web_speeds", "web speeds: a list, or [first, last] with points; each f_rot = v / (pi Dp)"},
+        {"rotation", "excitation_orders", "[1, 2]", "orders k of the excitation lines f = k f_rot (1: unbalance, 2: ovality, sag)"},
+        {"rotation", "centrifugal_stiffening", "true", "the centrifugal prestress as geometric stiffness, where the level has a term for it (not at the beam level)"},
 
         {"study", "parameters", kRequired, "what to vary, one table per parameter; several make a grid (first slowest)"},
         {"study", "mesh", "the case's [mesh], else \"coarse\"", "mesh level of every point", "coarse default fine very_fine"},

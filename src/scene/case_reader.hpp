@@ -4,12 +4,14 @@
 //   case_reader_core.cpp      [core], [rest_paper] and their materials
 //   case_reader_supports.cpp  [supports]: clamps, chucks, interfaces, bearings
 //   case_reader_mesh.cpp      [analysis] and [mesh]
+//   case_reader_rotation.cpp  [rotation]
 // Private to scene/: everything else reads a case through case_file.hpp.
 #pragma once
 
 #include "scene/case_schema.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 #include "scene/units.hpp"
 
@@ -81,6 +83,8 @@ public:
     explicit CaseReader(std::string path) : path_(std::move(path)) {}
 
     Scene read(const toml::table& root);
+    // [rotation] of the same document (checked by read too).
+    std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
 
 private:
     std::string path_;
@@ -220,6 +224,15 @@ private:
     void apply_mesh_overrides(const Section& mesh, MeshSpec& spec) const;
 
     std::string read_mesh_file(const Section& mesh) const;
+
+    // ---- [rotation] -----------------------------------------------------
+
+    std::optional<RotationSpec> read_rotation(const Section& top, const Scene& scene) const;
+
+    // The speeds of speeds/web_speeds: a list, or [first, last] with points.
+    std::vector<double> read_speed_list(const Section& rotation, std::string_view key, Dimension d) const;
+
+    std::vector<int> read_excitation_orders(const Section& rotation) const;
 };
 
 }  // namespace coremodal::case_reading

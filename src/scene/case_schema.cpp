@@ -19,6 +19,11 @@ constexpr int kMaxElementsThrough = 100;
 constexpr int kMaxElementsAround = 4096;
 constexpr double kMaxWebSpeed = 100.0;  // m/s; presses run up to ~20 m/s
 constexpr int kMaxSweepSteps = 10000;
+// 1000 Hz = 60 000 rpm: ten times a rotation tester's 4000 rpm and far above
+// any press roll (a 76 mm core at 30 m/s turns at 7500 rpm); a larger value
+// is a unit slip (a plain number is in Hz, not rpm).
+constexpr double kMaxRotationHz = 1000.0;
+constexpr int kMaxRotationPoints = 1000;
 
 // Plausible ranges: one row per kind of value, each with its reason. They
 // catch unit slips, which are factors of 1e3 to 1e9, so they are wide.
@@ -81,6 +86,7 @@ const std::vector<KeySpec>& case_schema() {
         // docs/studies.md, docs/calibration.md); `coremodal run` ignores them.
         plain_key("", "study", ValueKind::table),
         plain_key("", "calibration", ValueKind::table),
+        plain_key("", "rotation", ValueKind::table),
 
         length_key("core", "inner_diameter", kMaxDiameter, kPlausibleDiameter),
         length_key("core", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
@@ -152,6 +158,15 @@ const std::vector<KeySpec>& case_schema() {
         integer_key("mesh", "along", 2, 100000),
         plain_key("mesh", "element", ValueKind::text),
         plain_key("mesh", "file", ValueKind::text),
+
+        // [rotation]: the roll spins (docs/rotation.md).
+        {"rotation", "speed", ValueKind::quantity, Dimension::frequency, 0.0, kMaxRotationHz},
+        plain_key("rotation", "speeds", ValueKind::list),
+        integer_key("rotation", "points", 2, kMaxRotationPoints),
+        {"rotation", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed},
+        plain_key("rotation", "web_speeds", ValueKind::list),
+        plain_key("rotation", "excitation_orders", ValueKind::list),
+        plain_key("rotation", "centrifugal_stiffening", ValueKind::boolean),
 
         // [study]: a sweep over case-file keys, with the modes tracked by MAC.
         plain_key("study", "parameters", ValueKind::tables),

@@ -3,9 +3,10 @@
 // harmonic level.
 #include "analyses/sensitivity/sensitivity.hpp"
 
-#include "app/run_case.hpp"
-#include "app/run_harmonic.hpp"
-#include "app/run_steps.hpp"
+#include "analyses/run/run.hpp"
+#include "models/choose.hpp"
+#include "models/part_materials.hpp"
+#include "models/solve_steps.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"

@@ -2,7 +2,7 @@
 // run's first bending frequency.
 #include "beam/iso_test.hpp"
 
-#include "app/run_case.hpp"
+#include "analyses/run/run.hpp"
 #include "beam/formulas.hpp"
 #include "scene/case_file.hpp"
 

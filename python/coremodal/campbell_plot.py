@@ -1,0 +1,92 @@
+"""The Campbell diagram of a ``coremodal campbell`` results folder (docs/rotation.md):
+
+    python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell
+
+reads ``campbell.csv``, ``critical_speeds.csv`` and ``summary.json`` and draws
+``campbell.png`` into that folder: every tracked mode's frequency against the
+rotation speed in rpm (forward whirl solid, backward whirl dashed, no whirl
+grey), the excitation lines f = k f_rot dotted, and the critical speeds (the
+crossings) ringed and numbered by order.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from collections import defaultdict
+from pathlib import Path
+
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+#: Picture size in pixels at DPI.
+SIZE_PX = (1100, 750)
+DPI = 100
+FILES = ("campbell.csv", "critical_speeds.csv", "summary.json")
+#: Line style of each whirl ("" for none: axial, torsion, rigid, at rest).
+STYLE = {"FW": ("tab:blue", "-"), "BW": ("tab:red", "--"), "": ("0.55", "-")}
+
+
+class CampbellFormatError(Exception):
+    """The folder holds no readable Campbell results."""
+
+
+def _rows(path: Path) -> list[dict[str, str]]:
+    with path.open(newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def load(folder: Path) -> tuple[dict, list[dict[str, str]], list[dict[str, str]]]:
+    for name in FILES:
+        if not (folder / name).is_file():
+            raise CampbellFormatError(f"{folder}: no {name} (not a coremodal campbell folder)")
+    summary = json.loads((folder / "summary.json").read_text())
+    return summary, _rows(folder / "campbell.csv"), _rows(folder / "critical_speeds.csv")
+
+
+def draw(folder: Path) -> Path:
+    summary, modes, critical = load(folder)
+    tracks: dict[int, list[tuple[float, float, str]]] = defaultdict(list)
+    for row in modes:
+        tracks[int(row["track"])].append((float(row["speed_rpm"]), float(row["frequency_hz"]), row["whirl"]))
+    if not tracks:
+        raise CampbellFormatError(f"{folder}: campbell.csv holds no modes")
+    fig = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI)
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot(1, 1, 1)
+    speeds = sorted({s for points in tracks.values() for s, _, _ in points})
+    # Up to where the highest excitation line ends, and at least the first
+    # elastic mode: the crossings, not every mode of the sweep.
+    highest = max(f for points in tracks.values() for _, f, _ in points)
+    first = min((f for points in tracks.values() for _, f, _ in points if f > 0), default=highest)
+    reach = max(summary["rotation"]["excitation_orders"]) * speeds[-1] / 60
+    top = min(highest, max(1.5 * reach, 1.3 * first)) * 1.05 or 1.0
+    shown = set()
+    for points in tracks.values():
+        points.sort()
+        whirl = next((w for _, _, w in points if w), "")
+        colour, dash = STYLE.get(whirl, STYLE[""])
+        label = {"FW": "forward whirl", "BW": "backward whirl", "": "no whirl"}[whirl] if whirl not in shown else None
+        shown.add(whirl)
+        xs, ys = [p[0] for p in points], [p[1] for p in points]
+        ax.plot(xs, ys, dash, color=colour, lw=1.6, label=label, marker="." if len(xs) == 1 else None)
+    for order in summary["rotation"]["excitation_orders"]:
+        xs = [speeds[0], speeds[-1]]
+        ax.plot(xs, [order * x / 60 for x in xs], ":", color="k", lw=1.0)
+        end = min(speeds[-1], top * 60 / order)
+        ax.annotate(f"{order}x", (end, order * end / 60), textcoords="offset points", xytext=(4, 0), fontsize=9)
+    for i, c in enumerate(critical):  # labels alternate below and above: crossings of a split pair lie close
+        x, y = float(c["speed_rpm"]), float(c["frequency_hz"])
+        ax.plot([x], [y], "o", mfc="none", mec="k", ms=10)
+        ax.annotate(f"{c['order']}x {c['whirl']}: {x:.0f} rpm", (x, y), textcoords="offset points",
+                    xytext=(6, -14 if i % 2 == 0 else 8), fontsize=8)
+    ax.set_xlim(speeds[0], speeds[-1] if speeds[-1] > speeds[0] else speeds[0] + 1)
+    ax.set_ylim(0, top)
+    ax.set_xlabel("rotation speed (rpm)")
+    ax.set_ylabel("natural frequency (Hz)")
+    ax.set_title(f"Campbell diagram: {summary['case']['name']}")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", fontsize=9)
+    out = folder / "campbell.png"
+    fig.savefig(out)
+    return out

@@ -1,0 +1,84 @@
+// A Campbell diagram of a spinning scene ([rotation], docs/rotation.md) at
+// the beam level: the modes at every speed of the sweep (beam/rotating_modes),
+// followed from speed to speed by MAC, labelled forward/backward whirl, and
+// the critical speeds where an excitation line f = k f_rot crosses a natural
+// frequency.
+//
+// The sweep starts at rest: speed 0 is today's solve (solve_beam_model, the
+// very modes `run` reports), and a sweep or single speed above 0 is reached
+// by continuation from it (kContinuationSteps speeds in between when the
+// scene's first speed is above 0), so that every mode keeps the label it has
+// at rest and a crossing of two curves does not swap them.
+#pragma once
+
+#include "beam/beam_model.hpp"
+#include "beam/rotating_modes.hpp"
+#include "beam/speeds.hpp"
+#include "scene/rotation_spec.hpp"
+#include "scene/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// Continuation from rest to a scene's first speed above 0.
+constexpr int kContinuationSteps = 8;
+// A planar mode at rest has MAC 1/2 with each of the circular forward and
+// backward modes it splits into; below this a match is another mode.
+constexpr double kSameModeMac = 0.3;
+// Modes followed beyond the ones reported, so that a backward whirl coming
+// down from above the window enters it on its own track.
+constexpr int kExtraTrackedModes = 8;
+
+struct CampbellMode {
+    int track = 0;  // the same physical mode at every speed
+    double frequency_hz = 0;
+    Whirl whirl = Whirl::none;  // at rest: the whirl its track takes when spinning
+    ModeLabel label;            // the track's label at rest
+    double relative_residual = 0;
+};
+
+struct CampbellPoint {
+    double speed_hz = 0;  // f_rot
+    std::vector<CampbellMode> modes;  // the lowest ones, as many as at rest
+};
+
+// A crossing of the excitation line f = order * f_rot with a tracked
+// natural frequency, by linear interpolation between two speeds of the sweep.
+struct WhirlCrossing {
+    int order = 1;
+    int track = 0;
+    Whirl whirl = Whirl::none;
+    ModeLabel label;
+    double speed_hz = 0;      // f_rot at the crossing
+    double frequency_hz = 0;  // = order * speed_hz
+    double web_speed_m_s = 0; // pi Dp f_rot
+};
+
+struct CampbellResult {
+    std::vector<CampbellPoint> points;       // the scene's speeds, ascending
+    std::vector<WhirlCrossing> critical;     // ascending speed
+    std::vector<int> excitation_orders;
+    double roll_outer_diameter = 0;          // m, Dp
+    bool from_web_speed = false;
+    BeamModelResult rest;                    // the solve at rest (today's modes)
+    RollSpeeds speeds_at_rest;               // I-5 safe web speed from the first bending frequency at rest
+    double max_relative_residual = 0;        // of the quadratic problem, every mode at every speed
+    long n_dofs = 0;
+    double solve_seconds = 0;
+    std::vector<std::string> effects;        // the terms included
+    std::vector<std::string> notes;          // what is included and what is not
+    // The first order-1 crossing, if any.
+    const WhirlCrossing* first_order_one() const;
+};
+
+// Throws InputError when the scene is not at the beam level; SolveError from
+// the solver.
+CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {});
+
+// Crossings of f = order f_rot with every track of `points` (tests, and run_campbell).
+std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& points, const std::vector<int>& orders,
+                                           double roll_outer_diameter);
+
+}  // namespace coremodal

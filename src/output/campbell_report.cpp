@@ -1,0 +1,189 @@
+#include "output/campbell_report.hpp"
+
+#include "common/format.hpp"
+#include "modes/tracking.hpp"  // label_text
+#include "output/csv.hpp"
+#include "output/text_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <cstdio>
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+constexpr double kRpmPerHz = 60.0;
+
+// Ten significant digits: a reader gets back what was computed.
+std::string num(double v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
+}
+
+std::string whirl_word(Whirl w) { return w == Whirl::none ? "" : whirl_name(w); }
+
+std::string campbell_rows(const CampbellResult& r) {
+    std::string out = "speed_rpm,speed_hz,track,frequency_hz,whirl,label,relative_residual\n";
+    for (const CampbellPoint& p : r.points)
+        for (const CampbellMode& m : p.modes)
+            out += num(p.speed_hz * kRpmPerHz) + "," + num(p.speed_hz) + "," + std::to_string(m.track) + "," +
+                   num(m.frequency_hz) + "," + whirl_word(m.whirl) + "," + csv_field(label_text(m.label)) + "," +
+                   num(m.relative_residual) + "\n";
+    return out;
+}
+
+std::string critical_rows(const CampbellResult& r) {
+    std::string out = "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label\n";
+    for (const WhirlCrossing& c : r.critical)
+        out += std::to_string(c.order) + "," + num(c.speed_hz * kRpmPerHz) + "," + num(c.speed_hz) + "," +
+               num(c.frequency_hz) + "," + num(c.web_speed_m_s) + "," + std::to_string(c.track) + "," +
+               whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "\n";
+    return out;
+}
+
+toml::table critical_json(const WhirlCrossing& c) {
+    return toml::table{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
+                       {"speed_hz", c.speed_hz},    {"frequency_hz", c.frequency_hz},
+                       {"web_speed_m_s", c.web_speed_m_s}, {"track", c.track},
+                       {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)}};
+}
+
+toml::table safe_speed_json(const CampbellResult& r) {
+    toml::table t;
+    const RollSpeeds& s = r.speeds_at_rest;
+    if (!s.given()) {
+        t.insert("not_given", s.not_given);
+        return t;
+    }
+    t.insert("first_bending_at_rest_hz", s.f1_hz);
+    t.insert("dp_m", s.dp_m);
+    toml::array safe;
+    for (const SafeSpeed& v : s.safe) safe.push_back(toml::table{{"factor", v.safe}, {"v_safe_m_s", v.v_safe_m_s}});
+    t.insert("i5_safe_web_speed", safe);
+    if (const WhirlCrossing* c = r.first_order_one()) t.insert("first_order_1_critical", critical_json(*c));
+    return t;
+}
+
+std::string summary_json(const Scene& scene, const RotationSpec& rotation, const CampbellResult& r) {
+    toml::array speeds, critical, effects, notes, orders;
+    for (const CampbellPoint& p : r.points) speeds.push_back(p.speed_hz * kRpmPerHz);
+    for (const WhirlCrossing& c : r.critical) critical.push_back(critical_json(c));
+    for (const std::string& e : r.effects) effects.push_back(e);
+    for (const std::string& n : r.notes) notes.push_back(n);
+    for (int k : r.excitation_orders) orders.push_back(k);
+    toml::table t{{"program", "coremodal campbell"},
+                  {"version", COREMODAL_VERSION},
+                  {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
+                  {"model", toml::table{{"level", "beam"}, {"dofs", r.n_dofs},
+                                        {"solver", "dense: exact linearization of the quadratic problem (Hermitian, "
+                                                   "size 2n, in the modes at rest)"}}},
+                  {"effects", effects},
+                  {"notes", notes},
+                  {"rotation", toml::table{{"speeds_rpm", speeds}, {"excitation_orders", orders},
+                                           {"roll_outer_diameter_m", r.roll_outer_diameter},
+                                           {"from_web_speed", r.from_web_speed},
+                                           {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening}}},
+                  {"critical_speeds", critical},
+                  {"safe_speed", safe_speed_json(r)},
+                  {"verification", toml::table{{"max_relative_residual", r.max_relative_residual},
+                                               {"complete", true},
+                                               {"completeness", "every eigenvalue of the Hermitian linearization (dense)"}}},
+                  {"time_s", r.solve_seconds}};
+    std::ostringstream out;
+    out << toml::json_formatter{t} << "\n";
+    return out.str();
+}
+
+std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
+
+std::string critical_table(const CampbellResult& r) {
+    if (r.critical.empty()) return "No excitation line crosses a natural frequency within the sweep.\n";
+    std::string out = "| order | speed | web speed at Dp | frequency | whirl | mode (at rest) |\n|---|---|---|---|---|---|\n";
+    for (const WhirlCrossing& c : r.critical)
+        out += "| " + std::to_string(c.order) + " | " + rpm(c.speed_hz) + " | " + significant(c.web_speed_m_s, 4) +
+               " m/s | " + significant(c.frequency_hz, 5) + " Hz | " + whirl_word(c.whirl) + " | " +
+               label_text(c.label) + " |\n";
+    return out;
+}
+
+// The modes at the last speed: with one speed (`run`), the modes at that speed.
+std::string last_speed_table(const CampbellResult& r) {
+    const CampbellPoint& p = r.points.back();
+    std::string out = "| mode | track | frequency | whirl | mode at rest | relative residual |\n|---|---|---|---|---|---|\n";
+    for (size_t i = 0; i < p.modes.size(); ++i) {
+        const CampbellMode& m = p.modes[i];
+        out += "| " + std::to_string(i + 1) + " | " + std::to_string(m.track) + " | " + significant(m.frequency_hz, 6) +
+               " Hz | " + whirl_word(m.whirl) + " | " + label_text(m.label) + " | " + significant(m.relative_residual, 2) +
+               " |\n";
+    }
+    return out;
+}
+
+std::string safe_speed_lines(const CampbellResult& r) {
+    const RollSpeeds& s = r.speeds_at_rest;
+    std::string out;
+    if (!s.given()) return "I-5 safe web speed: not given (" + s.not_given + ").\n";
+    for (const SafeSpeed& v : s.safe)
+        out += "- I-5 safe web speed (factor " + significant(v.safe, 2) + ", first bending at rest " +
+               significant(s.f1_hz, 5) + " Hz, Dp " + significant(s.dp_m * 1e3, 4) + " mm): " +
+               significant(v.v_safe_m_s, 4) + " m/s\n";
+    if (const WhirlCrossing* c = r.first_order_one())
+        out += "- first order-1 critical speed: " + rpm(c->speed_hz) + " = " + significant(c->web_speed_m_s, 4) +
+               " m/s web speed (" + whirl_word(c->whirl) + ", " + label_text(c->label) + ")\n";
+    else
+        out += "- no order-1 critical speed within the sweep\n";
+    return out;
+}
+
+}  // namespace
+
+void write_campbell_tables(const std::filesystem::path& dir, const Scene& scene, const RotationSpec& rotation,
+                           const CampbellResult& result) {
+    write_text_file(dir / "campbell.csv", campbell_rows(result));
+    write_text_file(dir / "critical_speeds.csv", critical_rows(result));
+    write_text_file(dir / "summary.json", summary_json(scene, rotation, result));
+}
+
+std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r, const std::vector<std::string>& pngs,
+                                     const std::string& plot_problem) {
+    std::ostringstream out;
+    out << "# Campbell diagram: " << scene.name << "\n\n";
+    if (!scene.description.empty()) out << scene.description << "\n\n";
+    out << "Beam level, " << r.n_dofs << " DOFs; " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
+        << " to " << rpm(r.points.back().speed_hz) << "; excitation orders";
+    for (int k : r.excitation_orders) out << " " << k;
+    out << "; Dp = " << significant(r.roll_outer_diameter * 1e3, 4) << " mm. Effects:";
+    for (const std::string& e : r.effects) out << " " << e;
+    out << ".\n\n";
+    for (const std::string& n : r.notes) out << "- " << n << "\n";
+    out << "\n## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
+           "(linear between the sweep's speeds), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
+        << critical_table(r) << "\n" << safe_speed_lines(r) << "\n";
+    out << "## Modes at " << rpm(r.points.back().speed_hz) << "\n\n" << last_speed_table(r) << "\n";
+    out << "## Diagram\n\n";
+    for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
+    if (pngs.empty()) out << "No picture: " << plot_problem << ".\n\n";
+    out << "## Verification\n\nLargest relative residual of the quadratic problem "
+           "||(K + i w W G - w^2 M) x|| / ((||K|| + w W ||G|| + w^2 ||M||) ||x||) over every mode at every speed: "
+        << significant(r.max_relative_residual, 2)
+        << ". Complete: every eigenvalue of the Hermitian linearization is computed (dense); at rest the modes are "
+           "those of `coremodal run` (inertia count). Modes are followed from speed to speed by MAC, starting at rest.\n\n"
+        << "Tables: campbell.csv (speed, tracked mode, frequency, whirl), critical_speeds.csv, summary.json. Solve "
+        << minutes_or_seconds(r.solve_seconds) << ".\n";
+    return out.str();
+}
+
+std::string campbell_console_summary(const Scene& scene, const CampbellResult& r) {
+    std::ostringstream out;
+    out << "campbell: " << scene.name << ": " << r.points.size() << " speeds, " << r.critical.size()
+        << " critical speeds, max residual " << significant(r.max_relative_residual, 2) << "\n";
+    for (const WhirlCrossing& c : r.critical)
+        out << "  order " << c.order << ": " << rpm(c.speed_hz) << " (" << significant(c.web_speed_m_s, 4) << " m/s)  "
+            << significant(c.frequency_hz, 5) << " Hz " << whirl_word(c.whirl) << " " << label_text(c.label) << "\n";
+    out << safe_speed_lines(r);
+    return out.str();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,96 @@
+// `coremodal campbell` (and `run` on a [rotation] case) as a user meets it:
+// the real binary on the rotation tester's case; bad input and an occupied
+// output folder refused before any work, nothing written.
+#include "support/program_run.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+using namespace coremodal::testing;
+
+namespace {
+
+bool written(const fs::path& p) { return fs::is_regular_file(p) && fs::file_size(p) > 0; }
+
+const std::string kTester = std::string(COREMODAL_SOURCE_DIR) + "/cases/12-rotation-tester-76x15.toml";
+
+const std::string kSmall = R"(name = "small"
+model = "beam"
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "2211 mm"
+material = { base = "paperboard_core", E_z = "6500 MPa" }
+[supports]
+type = "clamped"
+[supports.left]
+length = "70 mm"
+[analysis]
+modes = 6
+)";
+
+}  // namespace
+
+TEST_CASE("coremodal campbell writes the Campbell table, the critical speeds, the picture and the report",
+          "[app][rotation]") {
+    TempDir dir("campbell");
+    const Run r = run_coremodal(dir, "campbell '" + kTester + "' --output out");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    for (const char* f : {"campbell.csv", "critical_speeds.csv", "summary.json", "report.md", "campbell.png"})
+        CHECK(written(dir.path / "out" / f));
+    const std::string csv = slurp(dir.path / "out" / "campbell.csv");
+    CHECK(csv.rfind("speed_rpm,speed_hz,track,frequency_hz,whirl,label,relative_residual\n", 0) == 0);
+    CHECK(csv.find(",FW,") != std::string::npos);
+    CHECK(csv.find(",BW,") != std::string::npos);
+    const std::string summary = slurp(dir.path / "out" / "summary.json");
+    CHECK(summary.find("\"gyroscopic\"") != std::string::npos);
+    CHECK(summary.find("\"centrifugal_stiffening\"") == std::string::npos);  // not included at the beam level
+    CHECK(summary.find("i5_safe_web_speed") != std::string::npos);
+    CHECK(summary.find("first_order_1_critical") != std::string::npos);
+    const std::string report = slurp(dir.path / "out" / "report.md");
+    CHECK(report.find("## Critical speeds") != std::string::npos);
+    CHECK(report.find("I-5 safe web speed") != std::string::npos);
+}
+
+TEST_CASE("coremodal run on a case with one speed reports the modes at that speed", "[app][rotation]") {
+    TempDir dir("campbell_run");
+    dir.write("one.toml", kSmall + "[rotation]\nspeed = \"3000 rpm\"\n");
+    const Run r = run_coremodal(dir, "run one.toml --output out --no-plots");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string csv = slurp(dir.path / "out" / "campbell.csv");
+    CHECK(csv.find("\n3000,50,") != std::string::npos);
+    CHECK(csv.find("\n0,0,") == std::string::npos);  // only the speed asked for
+    const std::string report = slurp(dir.path / "out" / "report.md");
+    CHECK(report.find("## Modes at 3000 rpm") != std::string::npos);
+    CHECK(report.find(" Hz | FW | bending n=1 m=0 |") != std::string::npos);
+}
+
+TEST_CASE("coremodal campbell refuses what it cannot do before any work, and writes nothing", "[app][rotation]") {
+    TempDir dir("campbell_bad");
+    dir.write("still.toml", kSmall);
+    const Run still = run_coremodal(dir, "campbell still.toml --output out");
+    CHECK(still.exit_code == 1);
+    CHECK(still.err.find("still.toml: no [rotation] table") != std::string::npos);
+    dir.write("solid.toml", kSmall + "[rotation]\nspeed = \"10 Hz\"\n");
+    const Run solid = run_coremodal(dir, "campbell solid.toml --model solid --output out");
+    CHECK(solid.exit_code == 1);
+    CHECK(solid.err.find("beam level only") != std::string::npos);
+    dir.write("bad.toml", kSmall + "[rotation]\nspeeds = [\"10 Hz\", \"5 Hz\"]\n");
+    const Run bad = run_coremodal(dir, "campbell bad.toml --output out");
+    CHECK(bad.exit_code == 1);
+    CHECK(bad.err.find("bad.toml:15:20:") != std::string::npos);
+    CHECK(!fs::exists(dir.path / "out"));
+    // An existing folder that is not a coremodal result is never touched.
+    fs::create_directories(dir.path / "mine");
+    dir.write("mine/notes.txt", "mine");
+    dir.write("ok.toml", kSmall + "[rotation]\nspeed = \"10 Hz\"\n");
+    const Run occupied = run_coremodal(dir, "campbell ok.toml --output mine --no-plots");
+    CHECK(occupied.exit_code == 1);
+    CHECK(slurp(dir.path / "mine" / "notes.txt") == "mine");
+    CHECK(!fs::exists(dir.path / "mine" / "campbell.csv"));
+}
