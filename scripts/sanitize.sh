@@ -29,6 +29,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 # The environment above is set before building: the build runs the test
 # binary once to list its tests (catch_discover_tests).
+# -g1 writes the build folder into the objects, and ccache hashes it: without
+# this, a second checkout (a work tree, CI's clone) recompiles everything.
+export CCACHE_NOHASHDIR=1
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O0 -g1 (line tables only, enough for the reports' stacks): compiling with

@@ -8,6 +8,7 @@
 #include "common/stopwatch.hpp"
 #include "effects/support_effects.hpp"
 #include "eigensolve/tolerances.hpp"
+#include "modes/classify.hpp"
 
 #include <algorithm>
 #include <array>
@@ -25,9 +26,6 @@ constexpr int kMinShaftElements = 2;
 // a decay length of the order of its width, which one element cannot follow
 // (one element left case 05's chucked f1 3e-4 high, two 3e-5).
 constexpr int kMinElementsPerGap = 2;
-// Ignore core nodes whose amplitude is below this share of the largest when
-// counting sign changes along the core (the solid classifier's rule).
-constexpr double kProfileNoiseShare = 0.05;
 constexpr int kCoreBeam = 0;
 
 // ---- stations along z ------------------------------------------------------
@@ -241,16 +239,7 @@ int axial_sign_changes(const BeamNetwork& net, const Eigen::VectorXd& shape, Mot
         const double phi = 0.5 * std::atan2(2 * sxy, sxx - syy);
         for (int n : nodes) profile.push_back(at(n, beam_dof::ux) * std::cos(phi) + at(n, beam_dof::uy) * std::sin(phi));
     }
-    double peak = 0;
-    for (double p : profile) peak = std::max(peak, std::abs(p));
-    int changes = 0, sign = 0;
-    for (double p : profile) {
-        if (std::abs(p) < kProfileNoiseShare * peak) continue;
-        const int s = p > 0 ? 1 : -1;
-        if (sign != 0 && s != sign) ++changes;
-        sign = s;
-    }
-    return changes;
+    return sign_changes(profile);
 }
 
 ModeLabel label_mode(const BeamNetwork& net, const Eigen::VectorXd& shape, const Eigen::VectorXd& mass_shape,

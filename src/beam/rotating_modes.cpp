@@ -2,7 +2,7 @@
 
 #include "common/error.hpp"
 #include "effects/rotation.hpp"
-#include "eigensolve/rigid_modes.hpp"
+#include "eigensolve/tolerances.hpp"
 
 #include <Eigen/Eigenvalues>
 

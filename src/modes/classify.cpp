@@ -85,6 +85,9 @@ std::vector<double> axial_profile(const std::vector<StationFit>& fits, int comp,
     return profile;
 }
 
+
+}  // namespace
+
 // Sign changes of a profile, ignoring values below the noise share of its peak.
 int sign_changes(const std::vector<double>& profile) {
     double peak = 0;
@@ -98,8 +101,6 @@ int sign_changes(const std::vector<double>& profile) {
     }
     return changes;
 }
-
-}  // namespace
 
 int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
     // Angles closer than this (radians) are one ring position: mesh nodes on a

@@ -43,4 +43,9 @@ private:
     std::vector<std::vector<int>> stations_;  // nodes of each station, in z order
 };
 
+// Sign changes of a profile along the axis (the axial order m of a mode),
+// ignoring values below 5 % of its peak (noise of a nodal point). The solid,
+// harmonic and beam levels count m the same way.
+int sign_changes(const std::vector<double>& profile);
+
 }  // namespace coremodal
