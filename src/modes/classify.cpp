@@ -17,7 +17,6 @@ namespace {
 constexpr int kStations = 64;
 // Ignore stations whose amplitude is below this share of the largest when
 // counting sign changes: near a node the projected amplitude is noise.
-constexpr double kProfileNoiseShare = 0.05;
 constexpr int kComponents = 3;  // r, theta, z
 constexpr int kHarmonics = kMaxWaveNumber + 1;
 
@@ -88,19 +87,6 @@ std::vector<double> axial_profile(const std::vector<StationFit>& fits, int comp,
 
 }  // namespace
 
-// Sign changes of a profile, ignoring values below the noise share of its peak.
-int sign_changes(const std::vector<double>& profile) {
-    double peak = 0;
-    for (double p : profile) peak = std::max(peak, std::abs(p));
-    int sign = 0, changes = 0;
-    for (double p : profile) {
-        if (std::abs(p) < kProfileNoiseShare * peak) continue;
-        const int s = p > 0 ? 1 : -1;
-        if (sign != 0 && s != sign) ++changes;
-        sign = s;
-    }
-    return changes;
-}
 
 int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
     // Angles closer than this (radians) are one ring position: mesh nodes on a

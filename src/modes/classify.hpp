@@ -18,6 +18,8 @@
 #include "mesh/mesh.hpp"
 #include "modes/mode_set.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace coremodal {
@@ -46,6 +48,19 @@ private:
 // Sign changes of a profile along the axis (the axial order m of a mode),
 // ignoring values below 5 % of its peak (noise of a nodal point). The solid,
 // harmonic and beam levels count m the same way.
-int sign_changes(const std::vector<double>& profile);
+// (Inline: the fuzzer's beam level links it without the rest of modes/.)
+inline int sign_changes(const std::vector<double>& profile) {
+    constexpr double kProfileNoiseShare = 0.05;
+    double peak = 0;
+    for (double p : profile) peak = std::max(peak, std::abs(p));
+    int sign = 0, changes = 0;
+    for (double p : profile) {
+        if (std::abs(p) < kProfileNoiseShare * peak) continue;
+        const int s = p > 0 ? 1 : -1;
+        if (sign != 0 && s != sign) ++changes;
+        sign = s;
+    }
+    return changes;
+}
 
 }  // namespace coremodal
