@@ -94,16 +94,22 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _drawn(draw, errors: tuple) -> int:
+    """Run a drawing function; print the paths it wrote, or its error (exit 1)."""
+    try:
+        paths = draw()
+    except errors as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    _print("\n".join(str(p) for p in paths))
+    return 0
+
+
 def _campbell_plot(folder: Path) -> int:
     from . import campbell_plot  # matplotlib only when drawing
 
-    try:
-        path = campbell_plot.draw(folder)
-    except (campbell_plot.CampbellFormatError, KeyError, ValueError, OSError) as error:
-        print(f"coremodal: error: {error}", file=sys.stderr)
-        return 1
-    _print(str(path))
-    return 0
+    return _drawn(lambda: [campbell_plot.draw(folder)],
+                  (campbell_plot.CampbellFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -131,13 +137,8 @@ def _study_plot(folder: Path) -> str:
 def _winder_plot(folder: Path) -> int:
     from . import winder_plot  # matplotlib only when drawing
 
-    try:
-        paths = winder_plot.draw_all(folder)
-    except (winder_plot.WinderFormatError, KeyError, ValueError, OSError) as error:
-        print(f"coremodal: error: {error}", file=sys.stderr)
-        return 1
-    _print("\n".join(str(p) for p in paths))
-    return 0
+    return _drawn(lambda: winder_plot.draw_all(folder),
+                  (winder_plot.WinderFormatError, KeyError, ValueError, OSError))
 
 
 def _run_plot(args: argparse.Namespace) -> int:

@@ -1,5 +1,6 @@
 // `coremodal fit` and `coremodal sensitivity` as a user runs them: the files,
 // the output-folder rule, errors with file:line that write nothing.
+#include "support/tiny_case.hpp"
 #include "support/program_run.hpp"
 
 #include <catch2/catch.hpp>
@@ -9,16 +10,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kIso = R"(name = "iso"
-model = "beam"
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "1.5 m"
-material = "paperboard_core"
-[analysis]
-modes = 14
-)";
+const std::string kIso = coremodal::testing::iso_sample_case("beam", 14);
 
 // Three free-free bending modes of a 76x15 sample, 1.5 m.
 const char* kMeasurements = R"(parameters = ["core.material.E_z", "core.material.G_thetaz"]

@@ -25,4 +25,18 @@ along = 4
 through_wall = 1
 )";
 
+// An ISO 11093-8 free-hanging sample: a free 76x15 paperboard tube, 1.5 m
+// (case 01's tube), at `model`, asking `modes` modes; `tail` adds tables
+// (e.g. a [mesh] level).
+inline std::string iso_sample_case(const std::string& model, int modes, const std::string& tail = "") {
+    return "name = \"iso\"\nmodel = \"" + model + R"("
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "1.5 m"
+material = "paperboard_core"
+[analysis]
+modes = )" + std::to_string(modes) + "\n" + tail;
+}
+
 }  // namespace coremodal::testing

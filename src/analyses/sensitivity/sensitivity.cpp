@@ -185,7 +185,9 @@ Linearised linearised(const Scene& scene) {
 }
 
 // The free–free roll over the free span (as `run`'s chuck factor,
-// app/run_case.cpp): the same sections and materials, cut to L, no supports.
+// analyses/run/beam_comparison.cpp): the same sections and materials, cut to
+// L, no supports. Unlike the run's, it keeps the scene's mesh counts: the
+// derivative differences operators on one fixed set of DOFs.
 Scene free_span_variant(const Scene& scene) {
     double li = 0;
     for (const ChuckSpec& c : scene.supports.chucks) li += c.li();

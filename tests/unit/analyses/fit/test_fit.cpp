@@ -9,9 +9,11 @@
 
 #include <catch2/catch.hpp>
 
+// Last: <signal.h> (in program_run) defines si_value, a parameter name in scene/units.hpp.
+#include "support/program_run.hpp"
+#include "support/tiny_case.hpp"
+
 #include <filesystem>
-#include <fstream>
-#include <unistd.h>
 
 using namespace coremodal;
 
@@ -19,24 +21,11 @@ namespace {
 
 // An ISO 11093-8 free-hanging sample, solved at the beam level (a free tube:
 // the beam represents its low bending modes).
-const char* kIsoCase = R"(name = "iso"
-model = "beam"
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "1.5 m"
-material = "paperboard_core"
-[analysis]
-modes = 16
-)";
+const std::string kIsoCase = coremodal::testing::iso_sample_case("beam", 16);
 
-struct TempDir {
-    std::filesystem::path path;
-    TempDir() : path(std::filesystem::temp_directory_path() / ("coremodal-fit-" + std::to_string(::getpid()))) {
-        std::filesystem::create_directories(path);
-        std::ofstream(path / "iso.toml") << kIsoCase;
-    }
-    ~TempDir() { std::filesystem::remove_all(path); }
+// A scratch folder holding the sample as iso.toml.
+struct IsoFolder : coremodal::testing::TempDir {
+    IsoFolder() : TempDir("fit") { write("iso.toml", kIsoCase); }
 };
 
 // The frequencies of the sample with E_z and G_thetaz set: what a lab would measure.
@@ -62,7 +51,7 @@ std::string measurements(const std::string& parameters, const std::vector<double
 }  // namespace
 
 TEST_CASE("fit: the ISO recipe recovers E_z and G_thetaz from three free-free bending modes", "[fit]") {
-    const TempDir dir;
+    const IsoFolder dir;
     const std::string case_file = (dir.path / "iso.toml").string();
     // The truth: a wall stiffer along the core and softer in shear than the library's 6.5 / 1.8 GPa.
     constexpr double E_true = 5.2e9, G_true = 0.9e9;
@@ -88,7 +77,7 @@ TEST_CASE("fit: the ISO recipe recovers E_z and G_thetaz from three free-free be
 }
 
 TEST_CASE("fit: stiffness and density from frequencies alone are flagged as not separable", "[fit]") {
-    const TempDir dir;
+    const IsoFolder dir;
     const std::string case_file = (dir.path / "iso.toml").string();
     const std::vector<double> f = synthetic_hz(case_file, 5.2e9, 1.8e9);
     // f depends on E/ρ (and weakly, through the shear share, on E/G): E_z, G_thetaz and
@@ -105,7 +94,7 @@ TEST_CASE("fit: stiffness and density from frequencies alone are flagged as not 
 }
 
 TEST_CASE("fit: bad measurements files are named with file, line and key", "[fit]") {
-    const TempDir dir;
+    const IsoFolder dir;
     const std::string path = (dir.path / "m.toml").string();
     CHECK_THROWS_WITH(parse_fit_input("parameters = [\"core.material.E_z\"]\n[[measurement]]\ncase = \"iso.toml\"\n"
                                       "mode = \"bending n=1\"\nfrequency = \"100 Hz\"\n", path),

@@ -1,5 +1,6 @@
 // Eigenvalue sensitivities from the assembled operators (analyses/sensitivity)
 // against closed forms and against re-solved frequencies.
+#include "support/tiny_case.hpp"
 #include "analyses/sensitivity/sensitivity.hpp"
 
 #include "beam/beam_model.hpp"
@@ -17,17 +18,7 @@ namespace {
 
 // An ISO 11093-8 sample: a free 76x15 paperboard tube, 1.5 m (case 01's tube).
 std::string free_tube(const std::string& model) {
-    return "name = \"iso\"\nmodel = \"" + model + R"("
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "1.5 m"
-material = "paperboard_core"
-[analysis]
-modes = 14
-[mesh]
-level = "coarse"
-)";
+    return coremodal::testing::iso_sample_case(model, 14, "[mesh]\nlevel = \"coarse\"\n");
 }
 
 std::string case_08_coarse() {
