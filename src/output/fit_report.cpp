@@ -71,7 +71,9 @@ std::string fit_report_markdown(const FitInput& input, const FitOutcome& out,
     for (const FittedMeasurement& m : out.measurements)
         s << "| " << m.measurement.case_file << " | " << m.level << " | " << m.measurement.mode.text() << " | "
           << significant(m.measurement.frequency_hz, 6) << " Hz | " << significant(m.measurement.uncertainty_hz, 3)
-          << " Hz | " << significant(m.start_hz, 6) << " Hz | " << significant(m.model_hz, 6) << " Hz | "
+          << " Hz" << (m.measurement.uncertainty_assumed
+                  ? " (assumed: " + significant(100 * kDefaultRelativeUncertainty, 2) + " %, none given)"
+                  : "") << " | " << significant(m.start_hz, 6) << " Hz | " << significant(m.model_hz, 6) << " Hz | "
           << significant((m.model_hz - m.measurement.frequency_hz) / m.measurement.uncertainty_hz, 3) << " |\n";
     s << "\n## Sensitivity matrix d ln f / d ln p (at the fitted values)\n\n| measurement |";
     for (const FitParameter& p : out.parameters) s << " `" << p.key << "` |";

@@ -41,7 +41,14 @@ TEST_CASE("fit writes fit.toml, report.md and a calibrated case that runs", "[fi
     INFO(r.out << r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(contains(slurp(dir.path / "out" / "fit.toml"), "key = \"core.material.G_thetaz\""));
-    CHECK(contains(slurp(dir.path / "out" / "report.md"), "## Correlations"));
+    const std::string report = slurp(dir.path / "out" / "report.md");
+    CHECK(contains(report, "## Correlations"));
+    // Two measurements give no uncertainty: the report says which value it assumed.
+    size_t assumed = 0;
+    for (size_t at = report.find("(assumed: 1 %, none given)"); at != std::string::npos;
+         at = report.find("(assumed: 1 %, none given)", at + 1))
+        ++assumed;
+    CHECK(assumed == 2);
     const Run again = run_coremodal(dir, "run out/iso-fitted.toml -o run -q --no-plots");
     INFO(again.err);
     CHECK(again.exit_code == 0);

@@ -110,9 +110,12 @@ public:
                                                 "(type n=N m=M, optionally \" #2\" for its second occurrence)");
         m.mode = *key;
         m.frequency_hz = quantity(need("frequency", "\"133.2 Hz\""), Dimension::frequency, display + " frequency", "\"133.2 Hz\"");
-        m.uncertainty_hz = kDefaultRelativeUncertainty * m.frequency_hz;
-        if (const toml::node* u = t.get("uncertainty"))
+        if (const toml::node* u = t.get("uncertainty")) {
             m.uncertainty_hz = quantity(*u, Dimension::frequency, display + " uncertainty", "\"0.3 Hz\"");
+        } else {
+            m.uncertainty_hz = kDefaultRelativeUncertainty * m.frequency_hz;
+            m.uncertainty_assumed = true;
+        }
         if (const toml::node* model = t.get("model")) {
             const auto s = model->value<std::string>();
             if (!s || (*s != "beam" && *s != "harmonic" && *s != "auto"))

@@ -36,6 +36,7 @@ struct Measurement {
     ModeKey mode;
     double frequency_hz = 0;
     double uncertainty_hz = 0;
+    bool uncertainty_assumed = false;  // not given: kDefaultRelativeUncertainty of the frequency
     toml::source_region where;  // the [[measurement]] table
 };
 
