@@ -180,7 +180,8 @@ void add_bearing(const SectionMesh& mesh, const ChuckEffects& chuck, int frame_d
     }
 }
 
-PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const CooEntries& t, const std::vector<PetscScalar>& values) {
+PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const CooEntries& t, const std::vector<PetscScalar>& values,
+                       bool symmetric = true) {
     // PETSc may reorder the index arrays it is given: each matrix gets its own copy.
     std::vector<PetscInt> i = t.i, j = t.j;
     PetscMatrix A;
@@ -189,8 +190,8 @@ PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const CooEntries& t, const std
     COREMODAL_PETSC(MatSetType(A, MATAIJ));
     COREMODAL_PETSC(MatSetPreallocationCOO(A, static_cast<PetscCount>(i.size()), i.data(), j.data()));
     COREMODAL_PETSC(MatSetValuesCOO(A, values.data(), ADD_VALUES));
-    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, symmetric ? PETSC_TRUE : PETSC_FALSE));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, symmetric ? PETSC_TRUE : PETSC_FALSE));
     return A;
 }
 
@@ -238,6 +239,20 @@ HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
     for (Term t : {Term::stiffness, Term::mass})
         ops.matrices[t] = coo_matrix(comm, system.dofs.n_dofs, entries, entries.values_of(t));
     return system;
+}
+
+PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                            const HarmonicDofs& dofs, int n, MPI_Comm comm) {
+    CooEntries entries;
+    if (mpi_rank(comm) == 0)
+        for (int c = 0; c < mesh.n_cells(); ++c) {
+            Quad8Coords x;
+            for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
+            const Quad8Matrix gamma = harmonic_quad8_spin_coupling(x, materials.at(mesh.cell_part[c]).density, n);
+            entries.add(Term::gyroscopic, component_dofs(dofs, mesh.cells[c].data(), 8), gamma);
+        }
+    // Symmetric for n >= 1 (it couples the two families), skew for n = 0.
+    return coo_matrix(comm, dofs.n_dofs, entries, entries.values_of(Term::gyroscopic), n > 0);
 }
 
 std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const HarmonicDofs& dofs, int n, RigidMotion motion) {

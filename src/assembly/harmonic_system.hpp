@@ -47,6 +47,14 @@ HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
                                  const std::vector<PartMaterial>& materials, int n,
                                  MPI_Comm comm = PETSC_COMM_WORLD);
 
+// Gamma_n of wave number n (element/harmonic_element.hpp,
+// harmonic_quad8_spin_coupling) over every section cell: the core, rest
+// paper, chuck bodies and shafts all spin; springs and frame masses (the
+// stand) do not. Symmetric for n >= 1, skew for n = 0; on the DOFs of one
+// family (the spinning level, models/harmonic/spinning_harmonic, builds G).
+PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                            const HarmonicDofs& dofs, int n, MPI_Comm comm = PETSC_COMM_WORLD);
+
 // Rigid-body fields of harmonic n on the DOFs: translation along x (n = 1:
 // U = V = 1), along z (n = 0: W = 1) and rotation about z (n = 0: V = r);
 // all zero in the harmonics they do not live in. For effective masses.

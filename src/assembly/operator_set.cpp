@@ -23,4 +23,12 @@ bool OperatorSet::quadratic() const {
     return false;
 }
 
+EffectiveStiffness::EffectiveStiffness(const OperatorSet& ops) : matrix_(ops.K()) {
+    if (!ops.has(Term::geometric_stiffness)) return;
+    COREMODAL_PETSC(MatDuplicate(ops.K(), MAT_COPY_VALUES, sum_.out()));
+    COREMODAL_PETSC(MatAXPY(sum_, 1.0, ops[Term::geometric_stiffness], DIFFERENT_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatSetOption(sum_, MAT_SYMMETRIC, PETSC_TRUE));
+    matrix_ = sum_.get();
+}
+
 }  // namespace coremodal

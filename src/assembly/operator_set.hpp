@@ -29,4 +29,17 @@ struct OperatorSet {
     bool quadratic() const;
 };
 
+// The stiffness every eigenproblem of the set sees: K, plus the geometric
+// stiffness of a prestress when the set has one (a copy then; K itself
+// otherwise).
+class EffectiveStiffness {
+public:
+    explicit EffectiveStiffness(const OperatorSet& ops);
+    Mat get() const { return matrix_; }
+
+private:
+    PetscMatrix sum_;
+    Mat matrix_;
+};
+
 }  // namespace coremodal

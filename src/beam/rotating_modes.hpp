@@ -69,6 +69,10 @@ struct RotatingMode {
     // ||(K + i omega Omega G - omega^2 M) x|| / ((||K|| + omega Omega ||G|| + omega^2 ||M||) ||x||)
     double relative_residual = 0;
     Eigen::VectorXcd shape;  // per network DOF (6 per node), x^H M x = 1, zero where held
+    // Which independent problem the shape's DOFs belong to: modes of
+    // different blocks never match by MAC (the harmonic level: the wave
+    // number n; the beam network: 0, one vector for all).
+    int block = 0;
 };
 
 class RotatingNetwork {

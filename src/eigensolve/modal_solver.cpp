@@ -2,12 +2,14 @@
 
 #include "common/error.hpp"
 #include "common/heartbeat.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 
 #include <slepceps.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 namespace coremodal {
@@ -51,12 +53,6 @@ PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, cons
     return eps;
 }
 
-double vector_norm(Vec x) {
-    PetscReal n;
-    COREMODAL_PETSC(VecNorm(x, NORM_2, &n));
-    return n;
-}
-
 // Relative residual ||K x - lambda M x|| / (||K||_1 ||x||); ||K||_1 bounds the
 // spectral norm of the symmetric K from above and is cheap to compute.
 double relative_residual(Mat K, Mat M, double K_norm, Vec x, double lambda) {
@@ -69,14 +65,7 @@ double relative_residual(Mat K, Mat M, double K_norm, Vec x, double lambda) {
     return vector_norm(Kx) / (K_norm * vector_norm(x));
 }
 
-void m_normalise(Mat M, Vec x) {
-    PetscVector Mx;
-    COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
-    COREMODAL_PETSC(MatMult(M, x, Mx));
-    PetscScalar xMx;
-    COREMODAL_PETSC(VecDot(x, Mx, &xMx));
-    COREMODAL_PETSC(VecScale(x, 1.0 / std::sqrt(xMx)));
-}
+void m_normalise(Mat M, Vec x) { COREMODAL_PETSC(VecScale(x, 1.0 / std::sqrt(quadratic_form(M, x)))); }
 
 double max_orthonormality_error(Mat M, const std::vector<PetscVector>& X) {
     double worst = 0;
@@ -235,49 +224,12 @@ const char* shift_invert_factor_package(MPI_Comm comm) { return mpi_size(comm) =
 namespace {
 
 long count_below(Mat K, Mat M, double sigma) {
-    PetscMatrix A, F;
+    PetscMatrix A;
     COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
     COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
-    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
-    // ICNTL(13) = 1 keeps the root front off ScaLAPACK, so MUMPS can count
-    // negative pivots in parallel too.
-    COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
-    PetscIndexSet row_perm, col_perm;
-    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
-    MatFactorInfo info;
-    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
-    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
-    COREMODAL_PETSC(MatCholeskyFactorNumeric(F, A, &info));
-    MatFactorError factor_error;
-    COREMODAL_PETSC(MatFactorGetError(F, &factor_error));
-    if (factor_error != MAT_FACTOR_NOERROR)
-        throw SolveError("the LDL^T factorisation of K - sigma M failed at sigma = " + std::to_string(sigma) +
-                         " rad^2/s^2 (MUMPS error); the model may have a part that is not held");
-    // Zero and positive counts would need MUMPS null-pivot detection
-    // (ICNTL(24)); the negative count is all the check needs.
-    PetscInt n_negative;
-    COREMODAL_PETSC(MatGetInertia(F, &n_negative, nullptr, nullptr));
-    return n_negative;
+    const std::string what = "K - sigma M at sigma = " + std::to_string(sigma) + " rad^2/s^2";
+    return negative_eigenvalue_count(A, what.c_str());
 }
-
-// The stiffness the symmetric problem sees: K, plus the geometric stiffness
-// of a prestress when the set has one (a copy then; K itself otherwise).
-class EffectiveStiffness {
-public:
-    explicit EffectiveStiffness(const OperatorSet& ops) : matrix_(ops.K()) {
-        if (!ops.has(Term::geometric_stiffness)) return;
-        COREMODAL_PETSC(MatDuplicate(ops.K(), MAT_COPY_VALUES, sum_.out()));
-        COREMODAL_PETSC(MatAXPY(sum_, 1.0, ops[Term::geometric_stiffness], DIFFERENT_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatSetOption(sum_, MAT_SYMMETRIC, PETSC_TRUE));
-        matrix_ = sum_.get();
-    }
-    Mat get() const { return matrix_; }
-
-private:
-    PetscMatrix sum_;
-    Mat matrix_;
-};
 
 void require_symmetric_problem(const OperatorSet& ops) {
     if (ops.quadratic())
@@ -285,30 +237,76 @@ void require_symmetric_problem(const OperatorSet& ops) {
                          "symmetric solver cannot take");
 }
 
+// How many modes the request needs (every one below a band's upper edge, by
+// inertia), or an empty band's proof without a solve.
+struct Wanted {
+    int n_modes = 0;
+    std::optional<Verification> empty_band;
+};
+
+Wanted wanted_modes(Mat K, Mat M, const SolveRequest& request, long n_dofs, const Progress& progress) {
+    Wanted w{request.n_modes, std::nullopt};
+    if (request.lambda_max) {
+        const BandCount band = count_band(K, M, request, n_dofs, progress);
+        if (band.empty()) {
+            w.empty_band = empty_band_verification(band, *request.lambda_max);
+            return w;
+        }
+        w.n_modes = static_cast<int>(band.below_upper);
+    }
+    if (w.n_modes > n_dofs)
+        throw InputError("[analysis] modes = " + std::to_string(w.n_modes) + " asks for more modes than the model "
+                         "has degrees of freedom (" + std::to_string(n_dofs) + "); ask for at most " +
+                         std::to_string(n_dofs) + " or refine the mesh");
+    COREMODAL_ASSERT(w.n_modes > 0);
+    return w;
+}
+
+// The first n_report modes of a proven-complete attempt, M-normalised, with
+// their residuals and the verification.
+SolvedModes verified_modes(Mat K, Mat M, Attempt& a, int n_report, double check, long pivots) {
+    PetscReal K_norm;
+    COREMODAL_PETSC(MatNorm(K, NORM_1, &K_norm));
+    SolvedModes out;
+    for (int i = 0; i < n_report; ++i) {
+        m_normalise(M, a.vectors[i]);
+        out.relative_residuals.push_back(relative_residual(K, M, K_norm, a.vectors[i], a.lambdas[i]));
+        out.eigenvalues.push_back(a.lambdas[i]);
+        out.vectors.push_back(std::move(a.vectors[i]));
+    }
+    auto& v = out.verification;
+    v.max_relative_residual = *std::max_element(out.relative_residuals.begin(), out.relative_residuals.end());
+    v.max_orthonormality_error = max_orthonormality_error(M, out.vectors);
+    v.check_shift = check;
+    v.negative_pivots_at_shift = pivots;
+    v.modes_below_shift = n_report;
+    v.complete = true;
+    return out;
+}
+
+std::string unconverged_text(int n_converged, int wanted, const SolveRequest& request) {
+    std::ostringstream s;
+    s << "converged " << n_converged << " of " << wanted << " requested modes (tolerance " << request.tolerance
+      << "); raise [analysis] max_iterations (now " << request.max_iterations << ") or loosen [analysis] tolerance";
+    return s.str();
+}
+
+// The inertia check sits in the gap after the last reported mode.
+double check_point(const std::vector<double>& lambdas, int n_report, double scale) {
+    const double last = lambdas[n_report - 1];
+    return n_report < int(lambdas.size()) ? 0.5 * (last + lambdas[n_report])
+                                          : last + kClusterTolerance * std::max(std::abs(last), scale);
+}
+
 SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
     const double scale = request.lambda_scale;
+    const Wanted w = wanted_modes(K, M, request, n_dofs, progress);
+    if (w.empty_band) return SolvedModes{{}, {}, {}, *w.empty_band};
+    const int wanted = w.n_modes;
+
     double sigma = -kShiftFraction * scale;
-
-    SolvedModes out;
-    int wanted = request.n_modes;
-    if (request.lambda_max) {
-        const BandCount band = count_band(K, M, request, n_dofs, progress);
-        if (band.empty()) {
-            out.verification = empty_band_verification(band, *request.lambda_max);
-            return out;
-        }
-        wanted = static_cast<int>(band.below_upper);
-    }
-    if (wanted > n_dofs)
-        throw InputError("[analysis] modes = " + std::to_string(wanted) + " asks for more modes than the model has "
-                         "degrees of freedom (" + std::to_string(n_dofs) + "); ask for at most " +
-                         std::to_string(n_dofs) + " or refine the mesh");
-    COREMODAL_ASSERT(wanted > 0);
-
-    PetscReal K_norm;
-    COREMODAL_PETSC(MatNorm(K, NORM_1, &K_norm));
     int nev = std::min<int>(n_dofs, wanted + std::max(kMinExtraModes, wanted / 4));
     for (int attempt = 0;; ++attempt) {
         progress("factorising K - sigma M (sigma = " + std::to_string(sigma) + ") and solving for " +
@@ -318,50 +316,23 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
             return run_eps(K, M, sigma, nev, request);
         }();
         const int n_report = reported_count(a.lambdas, wanted, scale);
-        if (n_report < wanted) {
-            std::ostringstream s;
-            s << "converged " << a.n_converged << " of " << wanted << " requested modes (tolerance "
-              << request.tolerance << "); raise [analysis] max_iterations (now " << request.max_iterations
-              << ") or loosen [analysis] tolerance";
-            throw SolveError(s.str());
-        }
-        // The inertia check sits in the gap after the last reported mode.
-        const double last = a.lambdas[n_report - 1];
-        const double check = n_report < int(a.lambdas.size())
-                                 ? 0.5 * (last + a.lambdas[n_report])
-                                 : last + kClusterTolerance * std::max(std::abs(last), scale);
+        if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));
+        const double check = check_point(a.lambdas, n_report, scale);
         progress("checking completeness: inertia of K - sigma M at the band edge");
         const long pivots = [&] {
             const Heartbeat beat("checking completeness", progress);
             return count_below(K, M, check);
         }();
-        if (pivots != n_report) {
-            if (attempt < kMaxRetries && pivots > n_report && pivots < n_dofs) {
-                // A shift far below the wanted modes squeezes them together in
-                // the transformed spectrum and Krylov-Schur may skip some: move
-                // the shift next to the lowest elastic mode found, and make room.
-                sigma = better_shift(a.lambdas, scale, sigma);
-                progress("inertia count says " + std::to_string(pivots) + " modes lie below the edge, " +
-                         std::to_string(n_report) + " found: solving again with a larger subspace");
-                nev = std::min<int>(n_dofs, int(pivots) + std::max(kMinExtraModes, int(pivots) / 4));
-                continue;
-            }
+        if (pivots == n_report) return verified_modes(K, M, a, n_report, check, pivots);
+        if (attempt >= kMaxRetries || pivots < n_report || pivots >= n_dofs)
             throw SolveError(format_count_mismatch(pivots, n_report, check));
-        }
-        for (int i = 0; i < n_report; ++i) {
-            m_normalise(M, a.vectors[i]);
-            out.relative_residuals.push_back(relative_residual(K, M, K_norm, a.vectors[i], a.lambdas[i]));
-            out.eigenvalues.push_back(a.lambdas[i]);
-            out.vectors.push_back(std::move(a.vectors[i]));
-        }
-        auto& v = out.verification;
-        v.max_relative_residual = *std::max_element(out.relative_residuals.begin(), out.relative_residuals.end());
-        v.max_orthonormality_error = max_orthonormality_error(M, out.vectors);
-        v.check_shift = check;
-        v.negative_pivots_at_shift = pivots;
-        v.modes_below_shift = n_report;
-        v.complete = true;
-        return out;
+        // A shift far below the wanted modes squeezes them together in the
+        // transformed spectrum and Krylov-Schur may skip some: move the shift
+        // next to the lowest elastic mode found, and make room.
+        sigma = better_shift(a.lambdas, scale, sigma);
+        progress("inertia count says " + std::to_string(pivots) + " modes lie below the edge, " +
+                 std::to_string(n_report) + " found: solving again with a larger subspace");
+        nev = std::min<int>(n_dofs, int(pivots) + std::max(kMinExtraModes, int(pivots) / 4));
     }
 }
 

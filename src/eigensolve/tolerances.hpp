@@ -15,6 +15,15 @@ namespace coremodal {
 // falls under the line (tests/verification/test_short_bodies.cpp).
 constexpr double kRigidEigenvalueFraction = 1e-6;
 
+// The quadratic (gyroscopic) solver's rigid line, as a share of the first
+// elastic frequency sqrt(lambda_scale): a rigid mode is a double zero of the
+// quadratic problem, which SLEPc's PEP computes to about the square root of
+// the working precision, so rigid modes come out at omega up to ~1e-3 of the
+// scale (1.1e-3 measured on a free spinning ring), where the symmetric
+// solver gives ~1e-5. Modes below this line are rigid (or the slow
+// precession of a free spinning body) and are reported at 0 Hz.
+constexpr double kQuadraticRigidFrequencyFraction = 1e-2;
+
 // Two eigenvalues closer than this share of max(|lambda|, lambda_scale) are
 // one cluster: a solver reports degenerate partners together or not at all
 // (modal_solver.cpp, network_modes.cpp). Exact pairs of a symmetric mesh or

@@ -100,6 +100,26 @@ HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C,
     return out;
 }
 
+Quad8Matrix harmonic_quad8_spin_coupling(const Quad8Coords& x, double density, int n) {
+    Eigen::Matrix3d L;
+    if (n == 0)
+        L << 0, 1, 0, -1, 0, 0, 0, 0, 0;
+    else
+        L << n, -1, 0, -1, n, 0, 0, 0, n;
+    const double w_n = harmonic_weight(n);
+    Quad8Matrix out = Quad8Matrix::Zero();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const Eigen::Matrix<double, 8, 1> N = quad8_values(kGaussPoints[i], kGaussPoints[j]);
+            const Eigen::Matrix2d J = x.transpose() * quad8_gradients(kGaussPoints[i], kGaussPoints[j]);
+            const double r = N.dot(x.col(0));
+            const double weight = w_n * density * kGaussWeights[i] * kGaussWeights[j] * J.determinant() * r;
+            for (int a = 0; a < 8; ++a)
+                for (int b = 0; b < 8; ++b) out.block<3, 3>(3 * a, 3 * b) += (weight * N[a] * N[b]) * L;
+        }
+    return out;
+}
+
 Eigen::Matrix<double, 9, 9> harmonic_edge_spring(const Eigen::Matrix<double, 3, 2>& x, const Eigen::Vector3d& k, int n) {
     Eigen::Matrix<double, 9, 9> K = Eigen::Matrix<double, 9, 9>::Zero();
     const double w_n = harmonic_weight(n);

@@ -50,6 +50,22 @@ struct HarmonicMatrices {
 // for a cell with a non-positive Jacobian or a node at r < 0.
 HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C, double density, int n);
 
+// The spin coupling of one section cell (effects/rotation.hpp, docs/rotation.md):
+// a body of revolution spinning at Omega about z, seen from the stationary
+// frame, moves its material through every point at Omega d/dtheta, so its
+// kinetic energy has the cross term Omega int rho u' . L u dV, L u = d u /
+// d theta in Cartesian components = (u_r,t - u_t, u_t,t + u_r, u_z,t) in
+// cylindrical ones. For wave number n >= 1 L takes the cos family to the
+// sin family: with the pair's amplitudes (a, b), u = a phi_cos + b phi_sin,
+// the cross term is Omega (a'^T Gamma b - b'^T Gamma a), and Gamma =
+// w_n int rho N^T L_n N r dr dz with L_n = [[n, -1, 0], [-1, n, 0], [0, 0, n]]
+// on (U, V, W) is symmetric. For n = 0 L stays in the one family: L_0 =
+// [[0, 1, 0], [-1, 0, 0], [0, 0, 0]] (radial against tangential motion) and
+// the matrix returned is skew. Either way the gyroscopic matrix per unit
+// spin is twice the skew form of the cross term: G = 2 [[0, Gamma], [-Gamma,
+// 0]] on (a, b) for n >= 1, G = 2 Gamma_0 for n = 0.
+Quad8Matrix harmonic_quad8_spin_coupling(const Quad8Coords& x, double density, int n);
+
 // A distributed spring along a straight 3-node section edge (ends a, b and
 // middle node m, in the order a, b, m), stiffness per unit revolved area
 // diag(k_r, k_theta, k_z) on (U, V, W): returns the 9 x 9 matrix

@@ -76,9 +76,7 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
     toml::table t{{"program", "coremodal campbell"},
                   {"version", COREMODAL_VERSION},
                   {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
-                  {"model", toml::table{{"level", "beam"}, {"dofs", r.n_dofs},
-                                        {"solver", "dense: exact linearization of the quadratic problem (Hermitian, "
-                                                   "size 2n, in the modes at rest)"}}},
+                  {"model", toml::table{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}}},
                   {"effects", effects},
                   {"notes", notes},
                   {"rotation", toml::table{{"speeds_rpm", speeds}, {"excitation_orders", orders},
@@ -89,7 +87,7 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
                   {"safe_speed", safe_speed_json(r)},
                   {"verification", toml::table{{"max_relative_residual", r.max_relative_residual},
                                                {"complete", true},
-                                               {"completeness", "every eigenvalue of the Hermitian linearization (dense)"}}},
+                                               {"completeness", r.completeness}}},
                   {"time_s", r.solve_seconds}};
     std::ostringstream out;
     out << toml::json_formatter{t} << "\n";
@@ -151,7 +149,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     std::ostringstream out;
     out << "# Campbell diagram: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << "Beam level, " << r.n_dofs << " DOFs; " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
+    out << (r.level == "beam" ? "Beam" : "Harmonic") << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
         << " to " << rpm(r.points.back().speed_hz) << "; excitation orders";
     for (int k : r.excitation_orders) out << " " << k;
     out << "; Dp = " << significant(r.roll_outer_diameter * 1e3, 4) << " mm. Effects:";
@@ -168,8 +166,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     out << "## Verification\n\nLargest relative residual of the quadratic problem "
            "||(K + i w W G - w^2 M) x|| / ((||K|| + w W ||G|| + w^2 ||M||) ||x||) over every mode at every speed: "
         << significant(r.max_relative_residual, 2)
-        << ". Complete: every eigenvalue of the Hermitian linearization is computed (dense); at rest the modes are "
-           "those of `coremodal run` (inertia count). Modes are followed from speed to speed by MAC, starting at rest.\n\n"
+        << ". Complete: " << r.completeness << ". Modes are followed from speed to speed by MAC, starting at rest.\n\n"
         << "Tables: campbell.csv (speed, tracked mode, frequency, whirl), critical_speeds.csv, summary.json. Solve "
         << minutes_or_seconds(r.solve_seconds) << ".\n";
     return out.str();

@@ -79,7 +79,7 @@ TEST_CASE("coremodal campbell refuses what it cannot do before any work, and wri
     dir.write("solid.toml", kSmall + "[rotation]\nspeed = \"10 Hz\"\n");
     const Run solid = run_coremodal(dir, "campbell solid.toml --model solid --output out");
     CHECK(solid.exit_code == 1);
-    CHECK(solid.err.find("beam level only") != std::string::npos);
+    CHECK(solid.err.find("the solid level has no gyroscopic term yet") != std::string::npos);
     dir.write("bad.toml", kSmall + "[rotation]\nspeeds = [\"10 Hz\", \"5 Hz\"]\n");
     const Run bad = run_coremodal(dir, "campbell bad.toml --output out");
     CHECK(bad.exit_code == 1);

@@ -3,10 +3,12 @@
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/rotation.hpp"
+#include "models/harmonic/rotating_harmonics.hpp"
 #include "modes/tracking.hpp"  // assign_maximum
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 
 namespace coremodal {
@@ -47,7 +49,9 @@ void follow(const Step& previous, Step& current, int& next_track) {
     std::vector<std::vector<double>> weight(current.modes.size(), std::vector<double>(previous.modes.size()));
     for (size_t i = 0; i < current.modes.size(); ++i)
         for (size_t j = 0; j < previous.modes.size(); ++j)
-            weight[i][j] = complex_mac(current.modes[i].shape, previous.modes[j].shape);
+            weight[i][j] = current.modes[i].block == previous.modes[j].block
+                               ? complex_mac(current.modes[i].shape, previous.modes[j].shape)
+                               : 0.0;
     const std::vector<int> match = assign_maximum(weight);
     current.tracks.assign(current.modes.size(), -1);
     for (size_t i = 0; i < current.modes.size(); ++i)
@@ -70,7 +74,7 @@ std::map<int, TrackInfo> track_info(const std::vector<Step>& steps) {
     return info;
 }
 
-std::vector<std::string> rotation_notes(const RotationSpec& rotation) {
+std::vector<std::string> beam_notes(const RotationSpec& rotation) {
     std::vector<std::string> notes{
         "rotation at the beam level: the gyroscopic term of every spinning beam (core with rest paper, chuck bodies "
         "and shafts; polar inertia rho_J per length); bearings and frames do not spin"};
@@ -81,10 +85,94 @@ std::vector<std::string> rotation_notes(const RotationSpec& rotation) {
     return notes;
 }
 
-double first_bending_hz(const BeamModelResult& rest) {
-    for (const BeamMode& m : rest.modes)
+std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std::vector<int>& wave_numbers) {
+    std::string ns;
+    for (int n : wave_numbers) ns += (ns.empty() ? "" : ", ") + std::to_string(n);
+    std::vector<std::string> notes{
+        "rotation at the harmonic level: the gyroscopic term of every spinning body of revolution (core, rest paper, "
+        "chuck bodies and shafts: the material carried through the stationary frame at Omega d/dtheta, which couples "
+        "the two families of each wave number n >= 1 into forward and backward travelling waves); bearings and "
+        "frames do not spin; wave numbers n = " + ns + ", chosen at rest"};
+    notes.push_back(
+        std::string("terms of order Omega^2 not included: ") +
+        (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal prestress, "
+                                           "which is not built yet, and " : "") +
+        "the convective Omega^2 term is left out with it (the two balance in part; a gyroscopic model to first order "
+        "in Omega, as the beam level's)");
+    return notes;
+}
+
+double first_bending_hz(const std::vector<RotatingMode>& rest) {
+    for (const RotatingMode& m : rest)
         if (m.label.type == "bending") return m.frequency_hz;
     return 0;
+}
+
+// The sweep from rest over the scene's speeds, the modes followed by MAC;
+// fills the points, their residuals and the critical speeds.
+void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
+           const std::function<std::vector<RotatingMode>(double)>& modes_at, const RotationSpec& rotation,
+           CampbellResult& out) {
+    std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
+    int next_track = 1;
+    for (size_t s = 0; s < steps.size(); ++s) {
+        Step& step = steps[s];
+        step.modes = s == 0 ? at_rest : modes_at(step.speed_hz);
+        if (s == 0) {
+            for (size_t i = 0; i < step.modes.size(); ++i) step.tracks.push_back(next_track++);
+        } else {
+            follow(steps[s - 1], step, next_track);
+        }
+    }
+    const std::map<int, TrackInfo> info = track_info(steps);
+    for (const Step& step : steps) {
+        if (!step.reported) continue;
+        CampbellPoint point{step.speed_hz, {}};
+        for (size_t i = 0; i < std::min(reported, step.modes.size()); ++i) {
+            const RotatingMode& m = step.modes[i];
+            const TrackInfo& track = info.at(step.tracks[i]);
+            point.modes.push_back({step.tracks[i], m.frequency_hz, m.whirl == Whirl::none ? track.whirl : m.whirl,
+                                   track.label, m.relative_residual});
+            out.max_relative_residual = std::max(out.max_relative_residual, m.relative_residual);
+        }
+        out.points.push_back(std::move(point));
+    }
+    out.critical = critical_speeds(out.points, out.excitation_orders, out.roll_outer_diameter);
+}
+
+void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
+                       CampbellResult& out) {
+    out.notes = beam_notes(rotation);
+    out.solver = "dense: exact linearization of the quadratic problem (Hermitian, size 2n, in the modes at rest)";
+    out.completeness = "every eigenvalue of the Hermitian linearization is computed (dense); at rest the modes are "
+                       "those of `coremodal run` (inertia count)";
+    out.rest = solve_beam_model(scene, options);
+    const RotatingNetwork network(out.rest.network, out.rest.lambda_scale);
+    out.n_dofs = network.n_free_dofs();
+    const std::vector<RotatingMode> at_rest = modes_at_rest(out.rest);
+    const double f1 = first_bending_hz(at_rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    const size_t reported = out.rest.modes.size();
+    const int window = static_cast<int>(reported) + kExtraTrackedModes;
+    sweep(at_rest, reported, [&](double speed) { return network.modes_at(speed, window); }, rotation, out);
+}
+
+void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
+    if (mpi_size() > 1)
+        throw InputError(scene.source_file + ": a Campbell sweep at the harmonic level runs in one process; run it "
+                                             "without mpirun");
+    out.level = "harmonic";
+    out.solver = "SLEPc PEP (TOAR, shift-and-invert with a MUMPS LU factor) per wave number n";
+    out.completeness = "per wave number n, the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G "
+                       "at the band edge counts the modes below it (every eigenvalue of Q crosses zero downwards)";
+    const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
+    const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes);
+    out.notes = harmonic_notes(rotation, harmonics.wave_numbers());
+    out.n_dofs = harmonics.n_dofs();
+    const std::vector<RotatingMode> at_rest = harmonics.modes_at(0.0);
+    const double f1 = first_bending_hz(at_rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    sweep(at_rest, reported, [&](double speed) { return harmonics.modes_at(speed); }, rotation, out);
 }
 
 }  // namespace
@@ -118,47 +206,20 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
 
 CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options) {
     COREMODAL_ASSERT(!rotation.speeds_hz.empty());
-    if (scene.model != "beam")
-        throw InputError(scene.source_file + ": [rotation] is simulated at the beam level only so far; expected model = \"beam\" "
-                                             "(or --model beam); the solid and harmonic levels have no gyroscopic term yet");
+    if (scene.model != "beam" && scene.model != "harmonic")
+        throw InputError(scene.source_file + ": [rotation] is simulated at the beam and harmonic levels so far (model = \"" +
+                         scene.model + "\"); expected model = \"beam\" or \"harmonic\" (or --model); the solid level "
+                                       "has no gyroscopic term yet");
     Stopwatch clock;
     CampbellResult out;
     out.excitation_orders = rotation.excitation_orders;
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.from_web_speed = rotation.from_web_speed;
     out.effects = rotating_effect_names(scene, rotation);
-    out.notes = rotation_notes(rotation);
-    out.rest = solve_beam_model(scene, options);
-    out.speeds_at_rest = roll_speeds(scene, first_bending_hz(out.rest), first_bending_hz(out.rest) > 0 ? "" : "no bending mode");
-    const RotatingNetwork network(out.rest.network, out.rest.lambda_scale);
-    out.n_dofs = network.n_free_dofs();
-    const size_t reported = out.rest.modes.size(), window = reported + kExtraTrackedModes;
-
-    std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
-    int next_track = 1;
-    for (size_t s = 0; s < steps.size(); ++s) {
-        Step& step = steps[s];
-        step.modes = s == 0 ? modes_at_rest(out.rest) : network.modes_at(step.speed_hz, static_cast<int>(window));
-        if (s == 0) {
-            for (size_t i = 0; i < step.modes.size(); ++i) step.tracks.push_back(next_track++);
-        } else {
-            follow(steps[s - 1], step, next_track);
-        }
-    }
-    const std::map<int, TrackInfo> info = track_info(steps);
-    for (const Step& step : steps) {
-        if (!step.reported) continue;
-        CampbellPoint point{step.speed_hz, {}};
-        for (size_t i = 0; i < std::min(reported, step.modes.size()); ++i) {
-            const RotatingMode& m = step.modes[i];
-            const TrackInfo& track = info.at(step.tracks[i]);
-            point.modes.push_back({step.tracks[i], m.frequency_hz, m.whirl == Whirl::none ? track.whirl : m.whirl,
-                                   track.label, m.relative_residual});
-            out.max_relative_residual = std::max(out.max_relative_residual, m.relative_residual);
-        }
-        out.points.push_back(std::move(point));
-    }
-    out.critical = critical_speeds(out.points, out.excitation_orders, out.roll_outer_diameter);
+    if (scene.model == "beam")
+        run_beam_campbell(scene, rotation, options, out);
+    else
+        run_harmonic_campbell(scene, rotation, out);
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -12,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "eigensolve/modal_solver.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 #include "geometry/section_mesh.hpp"
 #include "geometry/tube_section.hpp"
 #include "scene/materials_library.hpp"
@@ -85,15 +86,6 @@ Linearised beam_linearised(const Scene& scene) {
 }
 
 // ---- harmonic level ----------------------------------------------------------
-
-double quadratic_form(Mat A, Vec x) {
-    PetscVector y;
-    COREMODAL_PETSC(VecDuplicate(x, y.out()));
-    COREMODAL_PETSC(MatMult(A, x, y));
-    PetscScalar v;
-    COREMODAL_PETSC(VecDot(x, y, &v));
-    return PetscRealPart(v);
-}
 
 HarmonicSystem harmonic_system(const Scene& scene, int n) {
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);

@@ -13,6 +13,7 @@
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "models/choose.hpp"
+#include "models/harmonic/harmonic_shapes.hpp"
 #include "models/part_materials.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
@@ -31,14 +32,6 @@ namespace {
 // whose lowest eigenvalue rises from the one to the next end the search
 // (docs/harmonic.md).
 constexpr int kEmptyHarmonicsToStop = 2;
-// Far beyond any physical band of a roll: reaching it means a wrong input.
-constexpr int kMaxHarmonic = 64;
-// Cells around the revolved mesh the modes are named and drawn on, at most:
-// 32 quadratic cells (64 node angles) resolve every wave number the
-// classifier looks for (kMaxWaveNumber = 8) and draw smoothly; finer mesh
-// levels refine the section, not this picture (at 64 around naming and
-// writing took half of a very fine run).
-constexpr int kMaxDisplayAround = 32;
 
 // One harmonic's verified modes, values gathered on rank 0.
 struct HarmonicModes {
@@ -122,46 +115,15 @@ std::optional<double> band_edge(const std::vector<HarmonicModes>& harmonics, int
 }
 
 // The displacement of every node of the revolved mesh (and the frame nodes
-// after them) for one pick.
+// after them) for one pick: the cos family turned by `phase`, cos n(theta -
+// phase) = cos n phase cos n theta + sin n phase sin n theta.
 std::vector<double> revolved_shape(const RevolvedMesh& revolved, const HarmonicModes& h, int k, double phase,
                                    const std::vector<int>& frame_nodes) {
-    const std::vector<double>& x = h.vectors[k];
-    const auto value = [&](int component) {
-        const int d = h.dofs.of_component[component];
-        return d < 0 ? 0.0 : x[d];
-    };
-    std::vector<double> u(3 * static_cast<size_t>(revolved.mesh.n_nodes()), 0.0);
-    for (size_t i = 0; i < revolved.section_node.size(); ++i) {
-        const int s = revolved.section_node[i];
-        const double theta = revolved.theta[i], a = h.n * (theta - phase);
-        const double c = std::cos(a), sn = h.n == 0 ? 1.0 : std::sin(a);
-        const double ur = value(3 * s) * c, ut = -value(3 * s + 1) * sn, uz = value(3 * s + 2) * c;
-        u[3 * i] = ur * std::cos(theta) - ut * std::sin(theta);
-        u[3 * i + 1] = ur * std::sin(theta) + ut * std::cos(theta);
-        u[3 * i + 2] = uz;
-    }
-    for (size_t f = 0; f < frame_nodes.size(); ++f) {
-        if (frame_nodes[f] < 0 || h.dofs.frame[f] < 0) continue;
-        const double X = x[h.dofs.frame[f]];
-        const size_t i = 3 * static_cast<size_t>(frame_nodes[f]);
-        if (h.n == 1) {
-            u[i] = X * std::cos(phase);
-            u[i + 1] = X * std::sin(phase);
-        } else {
-            u[i + 2] = X;
-        }
-    }
-    return u;
-}
-
-// The frame nodes add_frame_nodes made, per scene chuck (-1: no frame mass).
-std::vector<int> frame_nodes_of(const Scene& scene, const Mesh& mesh) {
-    std::vector<int> nodes;
-    for (const ChuckSpec& chuck : scene.supports.chucks) {
-        const auto it = mesh.node_groups.find("frame_" + chuck.name);
-        nodes.push_back(it == mesh.node_groups.end() ? -1 : it->second.at(0));
-    }
-    return nodes;
+    if (phase == 0) return revolved_field(revolved, h.dofs, h.n, h.vectors[k], {}, frame_nodes);
+    std::vector<double> a = h.vectors[k], b = h.vectors[k];
+    for (double& v : a) v *= std::cos(h.n * phase);
+    for (double& v : b) v *= std::sin(h.n * phase);
+    return revolved_field(revolved, h.dofs, h.n, a, b, frame_nodes);
 }
 
 std::string harmonics_text(const std::vector<HarmonicModes>& harmonics) {

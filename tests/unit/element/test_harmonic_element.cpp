@@ -96,3 +96,27 @@ TEST_CASE("harmonic edge spring: unit stiffness integrates the revolved area", "
     for (int p = 0; p < 3; ++p) u[3 * p] = 1;
     CHECK(u.dot(Kd * u) == Approx(M_PI * 0.05 * 0.05 / 2).epsilon(1e-12));  // cos^2 over the disc
 }
+
+TEST_CASE("harmonic quad8 spin coupling: symmetric for n >= 1, skew for n = 0; a tilt carries rho I, a translation "
+          "nothing", "[harmonic][rotation]") {
+    const Quad8Coords x = ring_cell();
+    const double rho = 700;
+    const Quad8Matrix g1 = harmonic_quad8_spin_coupling(x, rho, 1);
+    const Quad8Matrix g0 = harmonic_quad8_spin_coupling(x, rho, 0);
+    // Round-off only: the products of the same numbers summed in another order.
+    CHECK((g1 - g1.transpose()).cwiseAbs().maxCoeff() <= 1e-15 * g1.cwiseAbs().maxCoeff());
+    CHECK((g0 + g0.transpose()).cwiseAbs().maxCoeff() <= 1e-15 * g0.cwiseAbs().maxCoeff());
+    // A sideways translation (n = 1: U = V = 1) is not moved by the spin: L u = 0.
+    const auto translation = field(x, [](double, double) { return Eigen::Vector3d(1, 1, 0); });
+    CHECK((g1 * translation).cwiseAbs().maxCoeff() < 1e-12 * g1.cwiseAbs().maxCoeff());
+    // A tilt about y (u_x = z, u_z = -x: U = V = z, W = -r) has
+    // a^T Gamma a = pi int rho r^2 r dr dz = rho I_y over the cell's length:
+    // the beam's rho_I, half its rho_J (G = 2 Gamma: effects/rotation.hpp).
+    // On a straight-edged cell r^3 det J is cubic: the 3 x 3 rule is exact.
+    Quad8Coords straight = x;
+    straight(5, 0) -= 0.002;
+    const double ri = 0.038, ro = 0.053, length = 0.03;
+    const auto tilt = field(straight, [](double r, double z) { return Eigen::Vector3d(z, z, -r); });
+    const Quad8Matrix g = harmonic_quad8_spin_coupling(straight, rho, 1);
+    CHECK(tilt.dot(g * tilt) == Approx(M_PI * rho * (std::pow(ro, 4) - std::pow(ri, 4)) / 4 * length).epsilon(1e-12));
+}

@@ -1,0 +1,299 @@
+#include "eigensolve/gyroscopic_solver.hpp"
+
+#include "common/error.hpp"
+#include "common/heartbeat.hpp"
+#include "eigensolve/petsc_algebra.hpp"
+
+#include <slepcpep.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+// The target tau = this fraction of the first elastic frequency's scale
+// (sqrt(lambda_scale)): any tau > 0 finds the lowest modes first (header);
+// one of the order of the wanted frequencies keeps them well apart in the
+// transformed spectrum 1 / (lambda - tau).
+constexpr double kTargetFraction = 0.5;
+// Extra eigenvalues computed beyond the wanted ones, as in modal_solver.cpp:
+// they locate the gap for the count and catch a partner of the last mode.
+constexpr int kMinExtraModes = 4;
+constexpr int kMaxRetries = 2;
+// A reported mode whose relative residual exceeds this did not converge
+// (SLEPc's own test runs on the linearization): an error, never a number.
+constexpr double kMaxAcceptedResidual = 1e-6;
+
+using Pep = PetscHandle<PEP, PEPDestroy>;
+
+// K (with any geometric stiffness), C = Omega G (zero without a gyroscopic
+// term), M, and the 1-norms the residuals are scaled by.
+struct SpinningOperators {
+    EffectiveStiffness stiffness;
+    PetscMatrix C;
+    Mat K, M;
+    double norm_K = 0, norm_C = 0, norm_M = 0;
+
+    SpinningOperators(const OperatorSet& ops, double spin) : stiffness(ops), K(stiffness.get()), M(ops.M()) {
+        if (ops.has(Term::gyroscopic)) {
+            COREMODAL_PETSC(MatDuplicate(ops[Term::gyroscopic], MAT_COPY_VALUES, C.out()));
+            COREMODAL_PETSC(MatScale(C, spin));
+        } else {
+            COREMODAL_PETSC(MatDuplicate(M, MAT_DO_NOT_COPY_VALUES, C.out()));
+            COREMODAL_PETSC(MatZeroEntries(C));
+        }
+        PetscReal n;
+        COREMODAL_PETSC(MatNorm(K, NORM_1, &n));
+        norm_K = n;
+        COREMODAL_PETSC(MatNorm(C, NORM_1, &n));
+        norm_C = n;
+        COREMODAL_PETSC(MatNorm(M, NORM_1, &n));
+        norm_M = n;
+    }
+};
+
+// neg Q(omega) of the real symmetric form [[A, -B], [B, A]], A = K - omega^2 M,
+// B = omega C: twice the Hermitian Q's count (header).
+long embedded_negative_count(const SpinningOperators& op, double omega) {
+    PetscMatrix A, B, minus_B, nest, S;
+    COREMODAL_PETSC(MatDuplicate(op.K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -omega * omega, op.M, DIFFERENT_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatDuplicate(op.C, MAT_COPY_VALUES, B.out()));
+    COREMODAL_PETSC(MatScale(B, omega));
+    COREMODAL_PETSC(MatDuplicate(B, MAT_COPY_VALUES, minus_B.out()));
+    COREMODAL_PETSC(MatScale(minus_B, -1.0));
+    Mat blocks[4] = {A, minus_B, B, A};
+    COREMODAL_PETSC(MatCreateNest(PetscObjectComm((PetscObject)op.K), 2, nullptr, 2, nullptr, blocks, nest.out()));
+    COREMODAL_PETSC(MatConvert(nest, MATAIJ, MAT_INITIAL_MATRIX, S.out()));
+    const std::string what = "Q(omega) at omega = " + std::to_string(omega) + " rad/s";
+    return negative_eigenvalue_count(S, what.c_str());
+}
+
+Pep configure(const SpinningOperators& op, double tau, int nev, const SolveRequest& request) {
+    Pep pep;
+    COREMODAL_PETSC(PEPCreate(PetscObjectComm((PetscObject)op.K), pep.out()));
+    Mat A[3] = {op.K, op.C.get(), op.M};
+    COREMODAL_PETSC(PEPSetOperators(pep, 3, A));
+    COREMODAL_PETSC(PEPSetProblemType(pep, PEP_GENERAL));
+    COREMODAL_PETSC(PEPSetType(pep, PEPTOAR));
+    COREMODAL_PETSC(PEPSetTarget(pep, tau));
+    COREMODAL_PETSC(PEPSetWhichEigenpairs(pep, PEP_TARGET_MAGNITUDE));
+    COREMODAL_PETSC(PEPSetDimensions(pep, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    COREMODAL_PETSC(PEPSetTolerances(pep, request.tolerance, request.max_iterations));
+    // The eigenvector is read off the linearization's by the smallest
+    // residual: the default (the block of larger norm) returned rigid modes
+    // (lambda ~ 1e-14) with relative residuals of 0.5 on a free spinning body.
+    COREMODAL_PETSC(PEPSetExtract(pep, PEP_EXTRACT_RESIDUAL));
+    // Scale lambda by sqrt(||K|| / ||M||) (Fan, Lin and Van Dooren): without
+    // it TOAR reported eigenvalues off the imaginary axis by 1.5 % as
+    // converged on a harmonic of a steel tube, ||K|| / ||M|| ~ 1e9.
+    COREMODAL_PETSC(PEPSetScale(pep, PEP_SCALE_SCALAR, PETSC_DEFAULT, nullptr, nullptr, PETSC_DEFAULT, PETSC_DEFAULT));
+    ST st;
+    KSP ksp;
+    PC pc;
+    COREMODAL_PETSC(PEPGetST(pep, &st));
+    COREMODAL_PETSC(STSetType(st, STSINVERT));
+    COREMODAL_PETSC(STGetKSP(st, &ksp));
+    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    // P(tau) = K + tau C + tau^2 M is not symmetric (C is skew): an LU factor.
+    COREMODAL_PETSC(PCSetType(pc, PCLU));
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    COREMODAL_PETSC(PEPSetFromOptions(pep));
+    return pep;
+}
+
+struct Candidate {
+    double omega = 0;
+    PetscVector real, imag;
+};
+
+// Every converged eigenpair with Im lambda >= 0 (the conjugate of each
+// complex pair dropped; a real eigenvalue, which round-off makes of a rigid
+// mode's 0, kept when it is not negative), ascending in omega = |lambda|.
+std::vector<Candidate> run_pep(const SpinningOperators& op, double tau, int nev, const SolveRequest& request,
+                               int& n_converged) {
+    Pep pep = configure(op, tau, nev, request);
+    COREMODAL_PETSC(PEPSolve(pep));
+    PetscInt nconv;
+    COREMODAL_PETSC(PEPGetConverged(pep, &nconv));
+    n_converged = int(nconv);
+    std::vector<Candidate> out;
+    for (PetscInt i = 0; i < nconv; ++i) {
+        PetscScalar kr, ki;
+        Candidate c;
+        COREMODAL_PETSC(MatCreateVecs(op.K, c.real.out(), nullptr));
+        COREMODAL_PETSC(VecDuplicate(c.real, c.imag.out()));
+        COREMODAL_PETSC(PEPGetEigenpair(pep, i, &kr, &ki, c.real, c.imag));
+        if (ki < 0 || (ki == 0 && kr < 0)) continue;
+        c.omega = std::hypot(double(kr), double(ki));
+        out.push_back(std::move(c));
+    }
+    std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.omega < b.omega; });
+    return out;
+}
+
+// x^H A x split into its real and imaginary parts, for real A and x = a + i b
+// against y = c + i d: y^H A x = c^T A a + d^T A b + i (c^T A b - d^T A a).
+std::complex<double> hermitian_form(Mat A, Vec c, Vec d, Vec a, Vec b) {
+    return {bilinear_form(A, c, a) + bilinear_form(A, d, b), bilinear_form(A, c, b) - bilinear_form(A, d, a)};
+}
+
+double relative_residual(const SpinningOperators& op, const Candidate& c) {
+    // Q x = (K - w^2 M) x + i w C x: real part (K - w^2 M) a - w C b, imaginary (K - w^2 M) b + w C a.
+    const double w = c.omega;
+    auto part = [&](Vec u, Vec v, double sign) {
+        PetscVector r, t;
+        COREMODAL_PETSC(VecDuplicate(u, r.out()));
+        COREMODAL_PETSC(VecDuplicate(u, t.out()));
+        COREMODAL_PETSC(MatMult(op.K, u, r));
+        COREMODAL_PETSC(MatMult(op.M, u, t));
+        COREMODAL_PETSC(VecAXPY(r, -w * w, t));
+        COREMODAL_PETSC(MatMult(op.C, v, t));
+        COREMODAL_PETSC(VecAXPY(r, sign * w, t));
+        return vector_norm(r);
+    };
+    const double residual = std::hypot(part(c.real, c.imag, -1.0), part(c.imag, c.real, +1.0));
+    const double x_norm = std::hypot(vector_norm(c.real), vector_norm(c.imag));
+    return residual / ((op.norm_K + w * op.norm_C + w * w * op.norm_M) * x_norm);
+}
+
+void m_normalise(Mat M, Candidate& c) {
+    const double scale = 1.0 / std::sqrt(quadratic_form(M, c.real) + quadratic_form(M, c.imag));
+    COREMODAL_PETSC(VecScale(c.real, scale));
+    COREMODAL_PETSC(VecScale(c.imag, scale));
+}
+
+// x_j^H ((w_i + w_j) M - i C) x_i, normalised by the modes' own norms in that
+// product, over elastic modes of distinct frequency (header).
+double max_orthogonality_error(const SpinningOperators& op, const std::vector<GyroscopicMode>& modes,
+                               double rigid_omega) {
+    const auto product = [&](const GyroscopicMode& j, const GyroscopicMode& i) {
+        const std::complex<double> m = hermitian_form(op.M, j.real, j.imag, i.real, i.imag);
+        const std::complex<double> c = hermitian_form(op.C, j.real, j.imag, i.real, i.imag);
+        return (i.omega + j.omega) * m - std::complex<double>(0, 1) * c;
+    };
+    std::vector<double> norm(modes.size());
+    for (size_t i = 0; i < modes.size(); ++i) norm[i] = std::abs(product(modes[i], modes[i]));
+    double worst = 0;
+    for (size_t i = 0; i < modes.size(); ++i)
+        for (size_t j = 0; j < i; ++j) {
+            const double wi = modes[i].omega, wj = modes[j].omega;
+            if (wj < rigid_omega || (wi * wi - wj * wj) <= kClusterTolerance * wi * wi) continue;
+            worst = std::max(worst, std::abs(product(modes[j], modes[i])) / std::sqrt(norm[i] * norm[j]));
+        }
+    return worst;
+}
+
+// How many candidates to report: the wanted count, extended over the last
+// mode's cluster (eigenvalues omega^2 within kClusterTolerance).
+int reported_count(const std::vector<Candidate>& c, int wanted, double scale) {
+    int n = std::min<int>(wanted, c.size());
+    const auto lambda = [&](int i) { return c[i].omega * c[i].omega; };
+    while (n > 0 && n < int(c.size()) && lambda(n) - lambda(n - 1) <= kClusterTolerance * std::max(lambda(n - 1), scale))
+        ++n;
+    return n;
+}
+
+// The count's point, in the gap after the last reported mode (omega, rad/s).
+double check_omega(const std::vector<Candidate>& c, int n_report, double scale) {
+    const double last = c[n_report - 1].omega * c[n_report - 1].omega;
+    const double check = n_report < int(c.size()) ? 0.5 * (last + c[n_report].omega * c[n_report].omega)
+                                                   : last + kClusterTolerance * std::max(last, scale);
+    return std::sqrt(check);
+}
+
+GyroscopicModes verified(const SpinningOperators& op, std::vector<Candidate>& c, int n_report, double rigid_omega,
+                         double check, long counted) {
+    GyroscopicModes out;
+    for (int i = 0; i < n_report; ++i) {
+        m_normalise(op.M, c[i]);
+        GyroscopicMode m;
+        m.omega = c[i].omega;
+        m.relative_residual = relative_residual(op, c[i]);
+        m.real = std::move(c[i].real);
+        m.imag = std::move(c[i].imag);
+        out.modes.push_back(std::move(m));
+    }
+    auto& v = out.verification;
+    for (const auto& m : out.modes) v.max_relative_residual = std::max(v.max_relative_residual, m.relative_residual);
+    v.max_orthonormality_error = max_orthogonality_error(op, out.modes, rigid_omega);
+    v.check_shift = check * check;
+    v.negative_pivots_at_shift = counted;
+    v.modes_below_shift = counted;
+    v.complete = true;
+    return out;
+}
+
+std::string count_mismatch_text(long counted, long found, double check) {
+    std::ostringstream s;
+    s << "the inertia of Q(omega) at omega = " << check << " rad/s (" << check / (2 * M_PI) << " Hz) counts "
+      << counted << " modes of the spinning structure above the rigid line and below it, but " << found
+      << " were found: raise [analysis] max_iterations or the number of modes";
+    return s.str();
+}
+
+}  // namespace
+
+double gyroscopic_rigid_omega(const SolveRequest& request) {
+    return kQuadraticRigidFrequencyFraction * std::sqrt(request.lambda_scale);
+}
+
+long count_gyroscopic_below(const OperatorSet& operators, double spin, double omega) {
+    return embedded_negative_count(SpinningOperators(operators, spin), omega) / 2;
+}
+
+GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, const SolveRequest& request,
+                                 const Progress& progress) {
+    if (operators.has(Term::damping))
+        throw SolveError("the operator set has a damping term: a quadratic problem without the Hermitian structure "
+                         "the gyroscopic solver's completeness count needs; not supported yet");
+    if (request.lambda_max)
+        throw InputError("a band ([analysis] band) is not supported for a spinning scene yet; ask for the lowest "
+                         "modes ([analysis] modes)");
+    const SpinningOperators op(operators, spin);
+    PetscInt n_dofs;
+    COREMODAL_PETSC(MatGetSize(op.K, &n_dofs, nullptr));
+    const double scale = request.lambda_scale;
+    const double tau = kTargetFraction * std::sqrt(scale);
+    const double rigid_omega = gyroscopic_rigid_omega(request);
+    const int wanted = std::min<int>(request.n_modes, n_dofs);
+    int nev = std::min<int>(2 * n_dofs, 2 * (wanted + std::max(kMinExtraModes, wanted / 4)));
+    const long below_rigid = embedded_negative_count(op, rigid_omega) / 2;
+    for (int attempt = 0;; ++attempt) {
+        progress("factorising P(tau) = K + tau Omega G + tau^2 M and solving the quadratic problem for " +
+                 std::to_string(nev) + " eigenvalues");
+        int n_converged = 0;
+        std::vector<Candidate> c = [&] {
+            const Heartbeat beat("solving the quadratic problem", progress);
+            return run_pep(op, tau, nev, request, n_converged);
+        }();
+        const int n_report = reported_count(c, wanted, scale);
+        if (n_report < wanted)
+            throw SolveError("converged " + std::to_string(n_converged) + " eigenvalues of the quadratic problem, " +
+                             std::to_string(n_report) + " of the " + std::to_string(wanted) +
+                             " modes requested; raise [analysis] max_iterations");
+        const double check = check_omega(c, n_report, scale);
+        progress("checking completeness: inertia of Q(omega) at the band edge");
+        const long counted = embedded_negative_count(op, check) / 2 - below_rigid;
+        const long found = std::count_if(c.begin(), c.begin() + n_report,
+                                         [&](const Candidate& x) { return x.omega >= rigid_omega; });
+        if (counted == found) {
+            GyroscopicModes out = verified(op, c, n_report, rigid_omega, check, counted);
+            if (out.verification.max_relative_residual > kMaxAcceptedResidual)
+                throw SolveError("the quadratic problem's modes did not converge: largest relative residual " +
+                                 std::to_string(out.verification.max_relative_residual) +
+                                 "; raise [analysis] max_iterations or lower [analysis] tolerance");
+            return out;
+        }
+        if (attempt >= kMaxRetries || counted < found) throw SolveError(count_mismatch_text(counted, found, check));
+        progress("the count says " + std::to_string(counted) + " modes, " + std::to_string(found) +
+                 " found: solving again with a larger subspace");
+        nev = std::min<int>(2 * n_dofs, 2 * (int(counted) + n_report - int(found) + kMinExtraModes + wanted / 4));
+    }
+}
+
+}  // namespace coremodal

@@ -1,0 +1,49 @@
+#include "eigensolve/petsc_algebra.hpp"
+
+#include "common/error.hpp"
+
+#include <string>
+
+namespace coremodal {
+
+double vector_norm(Vec x) {
+    PetscReal n;
+    COREMODAL_PETSC(VecNorm(x, NORM_2, &n));
+    return n;
+}
+
+double bilinear_form(Mat A, Vec y, Vec x) {
+    PetscVector Ax;
+    COREMODAL_PETSC(VecDuplicate(x, Ax.out()));
+    COREMODAL_PETSC(MatMult(A, x, Ax));
+    PetscScalar v;
+    COREMODAL_PETSC(VecDot(Ax, y, &v));
+    return PetscRealPart(v);
+}
+
+long negative_eigenvalue_count(Mat A, const char* what) {
+    PetscMatrix F;
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
+    // ICNTL(13) = 1 keeps the root front off ScaLAPACK, so MUMPS can count
+    // negative pivots in parallel too.
+    COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
+    PetscIndexSet row_perm, col_perm;
+    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
+    MatFactorInfo info;
+    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
+    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
+    COREMODAL_PETSC(MatCholeskyFactorNumeric(F, A, &info));
+    MatFactorError factor_error;
+    COREMODAL_PETSC(MatFactorGetError(F, &factor_error));
+    if (factor_error != MAT_FACTOR_NOERROR)
+        throw SolveError(std::string("the LDL^T factorisation of ") + what +
+                         " failed (MUMPS error); the model may have a part that is not held");
+    // Zero and positive counts would need MUMPS null-pivot detection
+    // (ICNTL(24)); the negative count is all the checks need.
+    PetscInt n_negative;
+    COREMODAL_PETSC(MatGetInertia(F, &n_negative, nullptr, nullptr));
+    return n_negative;
+}
+
+}  // namespace coremodal

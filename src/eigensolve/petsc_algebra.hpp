@@ -1,0 +1,22 @@
+// Small PETSc vector algebra that several solvers and analyses need: norms,
+// x^T A y, and the inertia count (negative eigenvalues of a symmetric matrix)
+// that proves a solve complete. One definition each.
+#pragma once
+
+#include "common/petsc_handle.hpp"
+
+namespace coremodal {
+
+double vector_norm(Vec x);
+
+// y^T A x (real; PETSc is built with real scalars here).
+double bilinear_form(Mat A, Vec y, Vec x);
+// x^T A x.
+inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
+
+// The number of negative eigenvalues of the symmetric matrix A (Sylvester's
+// law of inertia: the negative pivots of its MUMPS LDL^T factor). `what`
+// names A in the error raised when the factorisation fails.
+long negative_eigenvalue_count(Mat A, const char* what);
+
+}  // namespace coremodal

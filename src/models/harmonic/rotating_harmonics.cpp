@@ -1,0 +1,197 @@
+#include "models/harmonic/rotating_harmonics.hpp"
+
+#include "assembly/chuck_supports.hpp"
+#include "common/error.hpp"
+#include "eigensolve/gyroscopic_solver.hpp"
+#include "geometry/tube_section.hpp"
+#include "models/harmonic/harmonic_shapes.hpp"
+#include "models/part_materials.hpp"
+#include "models/solve_steps.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+namespace {
+
+// Modes solved per wave number beyond those it has among the window at rest:
+// a backward wave coming down with speed, or a pair's second member.
+constexpr int kExtraModesPerHarmonic = 2;
+// As the harmonic level: two harmonics in a row with no mode in the window,
+// whose lowest eigenvalue rises, end the search (docs/harmonic.md).
+constexpr int kEmptyHarmonicsToStop = 2;
+
+const Progress kQuiet = [](const std::string&) {};
+
+// The window-th lowest eigenvalue of the modes at rest found so far, or none.
+std::optional<double> window_edge(std::vector<double> lambdas, int window) {
+    if (static_cast<int>(lambdas.size()) < window) return std::nullopt;
+    std::nth_element(lambdas.begin(), lambdas.begin() + (window - 1), lambdas.end());
+    return lambdas[window - 1];
+}
+
+// The eigenvalues at rest of wave number n (each pair's twice for n >= 1)
+// up to the window, or none when n has no mode below the edge.
+std::vector<double> rest_eigenvalues(const Scene& scene, HarmonicSystem& system, SolveRequest request,
+                                     std::optional<double> edge, int window) {
+    request.n_modes = system.n == 0 ? window : (window + 1) / 2;
+    if (edge) {
+        request.n_modes = static_cast<int>(count_eigenvalues_below(system.operators, *edge * (1 + 1e-9)));
+        if (request.n_modes == 0) return {};
+    }
+    const SolvedModes m =
+        solve_for_case(scene, system.operators, request, kQuiet, "the problem of wave number n = " + std::to_string(system.n) + ": ");
+    std::vector<double> out;
+    for (double lambda : m.eigenvalues)
+        for (int k = 0; k < (system.n == 0 ? 1 : 2); ++k) out.push_back(lambda);
+    return out;
+}
+
+double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
+    request.n_modes = 1;
+    return solve_modes(system.operators, request, kQuiet).eigenvalues.at(0);
+}
+
+// Forward (+1) to backward (-1): 2 Im(a . conj b) / (|a|^2 + |b|^2) of the
+// two families' complex amplitudes (spinning_harmonic.hpp).
+double circularity(const FamilyValues& re, const FamilyValues& im) {
+    double cross = 0, norm = 0;
+    for (size_t k = 0; k < re.cos_values.size(); ++k) {
+        const std::complex<double> a(re.cos_values[k], im.cos_values[k]), b(re.sin_values[k], im.sin_values[k]);
+        cross += (a * std::conj(b)).imag();
+        norm += std::norm(a) + std::norm(b);
+    }
+    return norm > 0 ? 2 * cross / norm : 0.0;
+}
+
+Eigen::VectorXcd complex_shape(const FamilyValues& re, const FamilyValues& im) {
+    const size_t n = re.cos_values.size(), m = re.sin_values.size();
+    Eigen::VectorXcd x(n + m);
+    for (size_t k = 0; k < n; ++k) x[k] = {re.cos_values[k], im.cos_values[k]};
+    for (size_t k = 0; k < m; ++k) x[n + k] = {re.sin_values[k], im.sin_values[k]};
+    return x;
+}
+
+double squared_norm(const FamilyValues& v) {
+    double s = 0;
+    for (double x : v.cos_values) s += x * x;
+    for (double x : v.sin_values) s += x * x;
+    return s;
+}
+
+}  // namespace
+
+struct RotatingHarmonics::Harmonic {
+    SpinningHarmonic problem;
+    int n_modes = 0;  // solved at every speed (both members of a pair counted)
+    // The scale the solver's target and rigid line take (SolveRequest): the
+    // scene's for n <= 1, which hold its rigid modes; for n >= 2 this
+    // harmonic's own lowest eigenvalue at rest, so that the target sits
+    // next to its modes (a ring harmonic's lie far above the scene's first).
+    double lambda_scale = 1;
+};
+
+RotatingHarmonics::~RotatingHarmonics() = default;
+
+RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window)
+    : scene_(scene),
+      window_(window),
+      section_(make_section_mesh(make_tube_section(scene), scene.supports.clamps)),
+      revolved_(revolve_section(section_, std::min(scene.mesh.n_around, kMaxDisplayAround))) {
+    add_frame_nodes(scene, revolved_.mesh);
+    frame_nodes_ = frame_nodes_of(scene, revolved_.mesh);
+    classifier_ = std::make_unique<ModeClassifier>(revolved_.mesh, roll_nodes(revolved_.mesh));
+    const std::vector<PartMaterial> materials = part_materials(scene, section_.part_names, "generated section");
+    const SolveRequest request = solve_request(scene);
+    lambda_scale_ = request.lambda_scale;
+
+    // The search at rest, as the harmonic level's: which n, how many modes each.
+    std::vector<std::vector<double>> rest;  // per n
+    std::vector<double> rest_lowest;        // per n: its lowest eigenvalue at rest
+    std::vector<double> merged;
+    int empty_in_a_row = 0;
+    double previous_lowest = 0;
+    for (int n = 0;; ++n) {
+        if (n > kMaxHarmonic) throw SolveError("every wave number up to n = 64 has modes among the lowest " +
+                                               std::to_string(window) + ": ask for fewer modes");
+        HarmonicSystem system = assemble_harmonic(scene, section_, materials, n);
+        const std::optional<double> edge = n >= 2 ? window_edge(merged, window) : std::nullopt;
+        std::vector<double> lambdas = rest_eigenvalues(scene, system, request, edge, window);
+        rest.push_back(lambdas);
+        if (!lambdas.empty()) {
+            rest_lowest.push_back(lambdas.front());
+            merged.insert(merged.end(), lambdas.begin(), lambdas.end());
+            empty_in_a_row = 0;
+            continue;
+        }
+        const double lowest = lowest_eigenvalue(system, request);
+        rest_lowest.push_back(lowest);
+        const bool rising = empty_in_a_row > 0 && lowest > previous_lowest;
+        previous_lowest = lowest;
+        if (++empty_in_a_row >= kEmptyHarmonicsToStop && rising) break;
+    }
+    const double edge = window_edge(merged, window).value_or(1e300);
+    for (size_t n = 0; n < rest.size(); ++n) {
+        auto h = std::make_unique<Harmonic>();
+        h->problem = assemble_spinning_harmonic(scene, section_, materials, static_cast<int>(n));
+        const long in_window = std::count_if(rest[n].begin(), rest[n].end(), [&](double l) { return l <= edge * (1 + 1e-9); });
+        h->n_modes = static_cast<int>(in_window) + kExtraModesPerHarmonic;
+        h->lambda_scale = n <= 1 ? request.lambda_scale : rest_lowest[n];
+        harmonics_.push_back(std::move(h));
+    }
+}
+
+std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz) const {
+    const double spin = 2 * M_PI * speed_hz;
+    SolveRequest request = solve_request(scene_);
+    std::vector<RotatingMode> out;
+    for (const auto& h : harmonics_) {
+        request.n_modes = h->n_modes;
+        request.lambda_scale = h->lambda_scale;
+        const GyroscopicModes solved = solve_gyroscopic(h->problem.operators, spin, request, kQuiet);
+        if (!solved.verification.complete)
+            throw SolveError("the modes of wave number n = " + std::to_string(h->problem.n) + " at " +
+                             std::to_string(speed_hz * 60) + " rpm are not proven complete");
+        const double rigid_omega = gyroscopic_rigid_omega(request);
+        for (const GyroscopicMode& g : solved.modes) {
+            const double omega = g.omega < rigid_omega ? 0.0 : g.omega;  // rigid: at 0 Hz
+            const FamilyValues re = family_values(h->problem, g.real), im = family_values(h->problem, g.imag);
+            RotatingMode m;
+            m.block = h->problem.n;
+            m.frequency_hz = omega / (2 * M_PI);
+            m.relative_residual = g.relative_residual;
+            max_residual_ = std::max(max_residual_, g.relative_residual);
+            m.shape = complex_shape(re, im);
+            if (h->problem.n > 0) m.circularity = circularity(re, im);
+            // At rest the two travelling waves are one frequency and the
+            // solver returns any mix of them: standing, no whirl.
+            if (speed_hz > 0 && std::abs(m.circularity) >= kPlanarCircularity)
+                m.whirl = m.circularity > 0 ? Whirl::forward : Whirl::backward;
+            // The label of its largest real snapshot, on the revolved section.
+            const FamilyValues& snapshot = squared_norm(re) >= squared_norm(im) ? re : im;
+            const std::vector<double> field = revolved_field(revolved_, h->problem.dofs, h->problem.n,
+                                                             snapshot.cos_values, snapshot.sin_values, frame_nodes_);
+            m.label = classifier_->classify(field, omega * omega, lambda_scale_);
+            out.push_back(std::move(m));
+        }
+    }
+    std::stable_sort(out.begin(), out.end(),
+                     [](const RotatingMode& a, const RotatingMode& b) { return a.frequency_hz < b.frequency_hz; });
+    if (static_cast<int>(out.size()) > window_) out.resize(window_);
+    return out;
+}
+
+long RotatingHarmonics::n_dofs() const {
+    long most = 0;
+    for (const auto& h : harmonics_) most = std::max<long>(most, h->problem.n_families() * long(h->problem.dofs.n_dofs));
+    return most;
+}
+
+std::vector<int> RotatingHarmonics::wave_numbers() const {
+    std::vector<int> n;
+    for (const auto& h : harmonics_) n.push_back(h->problem.n);
+    return n;
+}
+
+}  // namespace coremodal

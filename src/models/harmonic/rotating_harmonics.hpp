@@ -1,0 +1,57 @@
+// The harmonic level of a spinning scene ([rotation], docs/rotation.md): per
+// wave number n the spinning operator set (spinning_harmonic.hpp) solved by
+// the quadratic solver (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every
+// mode verified by its residual, complete by the inertia of the Hermitian
+// Q(omega)), the modes of every n merged in frequency order, each labelled
+// on the revolved section (its largest real snapshot, with the solid's
+// classifier) and marked forward or backward (travelling with the spin or
+// against it: whirl for n = 1, the travelling wave for n >= 2).
+//
+// Which wave numbers and how many modes of each: fixed once, at rest, as the
+// harmonic level searches (n = 0, 1, 2, ... until two harmonics in a row
+// have no mode among the lowest `window` and their lowest frequency rises),
+// so that every speed solves the same problems and modes can be followed by
+// MAC from speed to speed within each n.
+#pragma once
+
+#include "beam/rotating_modes.hpp"
+#include "geometry/section_mesh.hpp"
+#include "models/harmonic/spinning_harmonic.hpp"
+#include "modes/classify.hpp"
+#include "scene/scene.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace coremodal {
+
+class RotatingHarmonics {
+public:
+    // The section, its materials and the spinning operator sets of the wave
+    // numbers the lowest `window` modes at rest (pairs counted twice) need.
+    RotatingHarmonics(const Scene& scene, int window);
+    ~RotatingHarmonics();
+
+    // The lowest `window` modes at spin speed f_rot (Hz), ascending; each
+    // RotatingMode's `block` is its wave number n and its shape the values
+    // of its problem's DOFs (a, b), so MAC compares modes of one n only.
+    std::vector<RotatingMode> modes_at(double speed_hz) const;
+
+    long n_dofs() const;                      // the largest problem's DOFs
+    std::vector<int> wave_numbers() const;    // the n solved at every speed
+    double max_relative_residual() const { return max_residual_; }
+
+private:
+    struct Harmonic;
+    const Scene& scene_;
+    int window_;
+    SectionMesh section_;
+    RevolvedMesh revolved_;
+    std::vector<int> frame_nodes_;
+    std::unique_ptr<ModeClassifier> classifier_;
+    std::vector<std::unique_ptr<Harmonic>> harmonics_;
+    double lambda_scale_ = 1;
+    mutable double max_residual_ = 0;
+};
+
+}  // namespace coremodal

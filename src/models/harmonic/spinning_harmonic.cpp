@@ -1,0 +1,71 @@
+#include "models/harmonic/spinning_harmonic.hpp"
+
+#include "common/error.hpp"
+#include "modes/mode_shapes.hpp"
+
+namespace coremodal {
+namespace {
+
+// A 2 x 2 block matrix (null blocks are zero) as one AIJ matrix; `rows`
+// receives where each block row sits in it (PETSc interleaves the blocks
+// rank by rank in parallel).
+PetscMatrix block_matrix(MPI_Comm comm, Mat a00, Mat a01, Mat a10, Mat a11, bool symmetric,
+                         PetscIndexSet* rows = nullptr) {
+    PetscMatrix nest, out;
+    Mat blocks[4] = {a00, a01, a10, a11};
+    COREMODAL_PETSC(MatCreateNest(comm, 2, nullptr, 2, nullptr, blocks, nest.out()));
+    COREMODAL_PETSC(MatConvert(nest, MATAIJ, MAT_INITIAL_MATRIX, out.out()));
+    if (symmetric) COREMODAL_PETSC(MatSetOption(out, MAT_SYMMETRIC, PETSC_TRUE));
+    if (rows) {
+        IS is[2];
+        COREMODAL_PETSC(MatNestGetISs(nest, is, nullptr));
+        for (int k = 0; k < 2; ++k) COREMODAL_PETSC(ISDuplicate(is[k], rows[k].out()));
+    }
+    return out;
+}
+
+std::vector<double> sub_values(Vec x, IS rows) {
+    Vec part;
+    COREMODAL_PETSC(VecGetSubVector(x, rows, &part));
+    std::vector<double> values = gather_to_root(part);
+    COREMODAL_PETSC(VecRestoreSubVector(x, rows, &part));
+    return values;
+}
+
+}  // namespace
+
+SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMesh& mesh,
+                                            const std::vector<PartMaterial>& materials, int n) {
+    HarmonicSystem rest = assemble_harmonic(scene, mesh, materials, n);
+    SpinningHarmonic out;
+    out.n = n;
+    out.dofs = rest.dofs;
+    out.operators.model_mass = rest.operators.model_mass;
+    const MPI_Comm comm = PetscObjectComm((PetscObject)rest.operators.K());
+    PetscMatrix gamma = assemble_harmonic_spin_coupling(mesh, materials, rest.dofs, n, comm);
+    COREMODAL_PETSC(MatScale(gamma, 2.0));  // G = 2 x the cross term's matrix (header)
+    if (n == 0) {
+        out.operators.matrices[Term::stiffness] = std::move(rest.operators.matrices[Term::stiffness]);
+        out.operators.matrices[Term::mass] = std::move(rest.operators.matrices[Term::mass]);
+        out.operators.matrices[Term::gyroscopic] = std::move(gamma);
+        return out;
+    }
+    PetscMatrix minus_gamma;
+    COREMODAL_PETSC(MatDuplicate(gamma, MAT_COPY_VALUES, minus_gamma.out()));
+    COREMODAL_PETSC(MatScale(minus_gamma, -1.0));
+    const Mat K = rest.operators.K(), M = rest.operators.M();
+    PetscIndexSet rows[2];
+    out.operators.matrices[Term::stiffness] = block_matrix(comm, K, nullptr, nullptr, K, true, rows);
+    out.operators.matrices[Term::mass] = block_matrix(comm, M, nullptr, nullptr, M, true);
+    out.operators.matrices[Term::gyroscopic] = block_matrix(comm, nullptr, gamma, minus_gamma, nullptr, false);
+    out.cos_rows = std::move(rows[0]);
+    out.sin_rows = std::move(rows[1]);
+    return out;
+}
+
+FamilyValues family_values(const SpinningHarmonic& h, Vec x) {
+    if (h.n == 0) return {gather_to_root(x), {}};
+    return {sub_values(x, h.cos_rows), sub_values(x, h.sin_rows)};
+}
+
+}  // namespace coremodal
