@@ -84,8 +84,9 @@ Command add_campbell_command(CLI::App& app) {
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for campbell.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [rotation] table: docs/rotation.md.");
+    // PETSc and SLEPc: the harmonic level solves with them (the beam level does not need them).
     return {cmd, [o] { return run_rotating_case(o->case_file, o->model, o->output, o->force, o->no_plots, o->quiet); },
-            false};
+            true};
 }
 
 }  // namespace coremodal
