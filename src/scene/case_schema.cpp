@@ -35,11 +35,13 @@ constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest
 constexpr PlausibleRange kPlausibleLogDecrement{6e-3, 1.3, 0.06, "2 pi times 0.001-0.2 (cores and rest rolls: 0.03-0.13)"};
 // Straightness deviations of cores (ISO 11093-5) are tenths of a millimetre
 // per metre; a bowed rest roll a few millimetres. Roundness deviations alike.
-constexpr PlausibleRange kPlausibleBow{10e-6, 20e-3, 0.5e-3, "core straightness deviations are ~0.1-5 mm (ISO 11093-5)"};
-constexpr PlausibleRange kPlausibleOvality{10e-6, 10e-3, 0.3e-3, "core roundness deviations are ~0.1-2 mm (ISO 11093-5)"};
-constexpr PlausibleRange kPlausibleEccentricity{1e-6, 20e-3, 0.5e-3, "an eccentric rest roll: ~0.1-5 mm"};
+// Zero is a perfect roll (the default), so the ranges start at 0: they catch
+// the slip that matters, a plain 0.5 read as 0.5 m.
+constexpr PlausibleRange kPlausibleBow{0.0, 20e-3, 0.5e-3, "core straightness deviations are ~0.1-5 mm (ISO 11093-5)"};
+constexpr PlausibleRange kPlausibleOvality{0.0, 10e-3, 0.3e-3, "core roundness deviations are ~0.1-2 mm (ISO 11093-5)"};
+constexpr PlausibleRange kPlausibleEccentricity{0.0, 20e-3, 0.5e-3, "an eccentric rest roll: ~0.1-5 mm"};
 // Unbalance: balancing grades put a 100 kg roll at ~1e-3-1e-2 kg m.
-constexpr PlausibleRange kPlausibleUnbalance{1e-6, 1.0, 2e-3, "rolls and cores: ~0.1-100 g m (balancing grades, ISO 21940)"};
+constexpr PlausibleRange kPlausibleUnbalance{0.0, 1.0, 2e-3, "rolls and cores: ~0.1-100 g m (balancing grades, ISO 21940)"};
 constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (DOMAIN.md section 7)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
@@ -195,7 +197,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("damping", "decay", ValueKind::table),
         {"decay", "amplitude_ratio", ValueKind::quantity, Dimension::dimensionless, 1.0, 1e6, true},
         {"decay", "cycles", ValueKind::quantity, Dimension::dimensionless, 0.0, 1e4, true},
-        length_key("excitation", "bow", 0.1, kPlausibleBow),
+        {"excitation", "bow", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleBow},
         plain_key("excitation", "bow_shape", ValueKind::text),
         {"excitation", "unbalance", ValueKind::quantity, Dimension::unbalance, 0.0, 100.0, false, kPlausibleUnbalance},
         {"excitation", "eccentricity", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleEccentricity},
