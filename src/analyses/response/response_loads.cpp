@@ -32,15 +32,21 @@ Eigen::VectorXcd turning(const Eigen::VectorXd& p) {
     return f;
 }
 
-// sum over the core's elements of K_e u_e, with each element's own section
-// or, when given, `only` (the core's bending stiffness alone).
-Eigen::VectorXd core_stiffness_load(const BeamNetwork& net, const Eigen::VectorXd& u, const BeamSection* only) {
+// sum over the core's elements of K_e u_e, with each element's own section;
+// with extra_EI > 0, only the part of K_e that bending stiffness extra_EI
+// (N m^2) adds: K_e is linear in EI, and the element needs every stiffness
+// positive, so that part is K_e(EI + extra_EI) - K_e(EI).
+Eigen::VectorXd core_stiffness_load(const BeamNetwork& net, const Eigen::VectorXd& u, double extra_EI = 0) {
     const BeamNetwork::Beam& core = net.beams.front();
     Eigen::VectorXd out = Eigen::VectorXd::Zero(u.size());
     for (size_t e = 0; e < core.sections.size(); ++e) {
         const int nodes[kElementNodes] = {core.nodes[2 * e], core.nodes[2 * e + 1], core.nodes[2 * e + 2]};
-        const TimoshenkoElement element{net.node_z[nodes[2]] - net.node_z[nodes[0]], only ? *only : core.sections[e]};
-        const BeamElementMatrix K = element_matrices(element).K;
+        TimoshenkoElement element{net.node_z[nodes[2]] - net.node_z[nodes[0]], core.sections[e]};
+        BeamElementMatrix K = element_matrices(element).K;
+        if (extra_EI > 0) {
+            element.section.EI += extra_EI;
+            K = element_matrices(element).K - K;
+        }
         Eigen::Matrix<double, kElementDofs, 1> ue;
         for (int i = 0; i < kElementDofs; ++i) ue(i) = u(dof(nodes[i / beam_dof::per_node], i % beam_dof::per_node));
         const Eigen::Matrix<double, kElementDofs, 1> fe = K * ue;
@@ -140,14 +146,14 @@ ResponseLoads build_response_loads(const Scene& scene, const ExcitationSpec& x, 
         add(out.orders, 1, zero, turning(p), Eccentricity::kName);
     }
     if (x.bow_m > 0)
-        add(out.orders, 1, turning(core_stiffness_load(net, bow_shape(scene, x, net, first_bending), nullptr)), zero,
+        add(out.orders, 1, turning(core_stiffness_load(net, bow_shape(scene, x, net, first_bending))), zero,
             Bow::kName);
     if (x.gravity) out.sag = gravity_sag(lateral);
     if (x.ovality_m > 0 && x.gravity) {
         out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);
-        BeamSection bending;  // the core's E_c I_c alone: the part the ovality splits
-        bending.EI = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material).EI;
-        add(out.orders, 2, turning(out.ovality_split * core_stiffness_load(net, out.sag, &bending)), zero,
+        // The core's E_c I_c alone: the part the ovality splits.
+        const double EIc = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material).EI;
+        add(out.orders, 2, turning(out.ovality_split * core_stiffness_load(net, out.sag, EIc)), zero,
             OvalityGravity::kName);
         out.assumptions.push_back(
             "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "

@@ -19,7 +19,7 @@ using coremodal::testing::error_of;
 
 namespace {
 
-// 4 lines, then [supports] (lines 5-6), then [rest_paper] (lines 7-8): the tables under test start on line 9.
+// 11 lines: the tables under test start on line 12.
 const std::string kRoll =
     "[core]\n"
     "inner_diameter = \"150 mm\"\n"
@@ -27,6 +27,9 @@ const std::string kRoll =
     "length = \"2 m\"\n"
     "[supports]\n"
     "type = \"clamped\"\n"
+    "[supports.left]\n"
+    "length = \"100 mm\"\n"
+    "start = \"0 mm\"\n"
     "[rest_paper]\n"
     "thickness = \"10 mm\"\n";
 const std::string kDamping = "[damping]\nratio = 0.01\n";
@@ -103,44 +106,44 @@ TEST_CASE("The ovality's stiffness split: thin-wall limit 3 delta / (2 R)", "[re
 TEST_CASE("[damping], [excitation], [response] mistakes are refused with the key, the place and what is expected",
           "[response][scene]") {
     CHECK(error_of(kRoll + kDamping) ==
-          "cases/x.toml:9:1: [damping] is used only by the forced response; expected a [response] table too "
+          "cases/x.toml:12:1: [damping] is used only by the forced response; expected a [response] table too "
           "(web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or no [damping] (docs/response.md)");
-    CHECK(error_of(kRoll + kExcitation + kResponse).starts_with("cases/x.toml:11:1: [response] needs [damping]; "));
-    CHECK(error_of(kRoll + kDamping + kResponse).starts_with("cases/x.toml:11:1: [response] needs [excitation]; "));
+    CHECK(error_of(kRoll + kExcitation + kResponse).starts_with("cases/x.toml:14:1: [response] needs [damping]; "));
+    CHECK(error_of(kRoll + kDamping + kResponse).starts_with("cases/x.toml:14:1: [response] needs [excitation]; "));
     CHECK(error_of(kRoll + "[damping]\n" + kExcitation + kResponse) ==
-          "cases/x.toml:9:1: [damping] gives no damping; expected exactly one of ratio = 0.01, log_decrement = 0.06 or "
+          "cases/x.toml:12:1: [damping] gives no damping; expected exactly one of ratio = 0.01, log_decrement = 0.06 or "
           "decay = { amplitude_ratio = 3.2, cycles = 10 }");
     CHECK(error_of(kRoll + "[damping]\nratio = 0.01\nlog_decrement = 0.06\n" + kExcitation + kResponse)
-              .starts_with("cases/x.toml:11:17: [damping] log_decrement = 0.06 and [damping] ratio = 0.01 are both given"));
+              .starts_with("cases/x.toml:14:17: [damping] log_decrement = 0.06 and [damping] ratio = 0.01 are both given"));
     CHECK(error_of(kRoll + "[damping]\nratio = 1.5\n" + kExcitation + kResponse) ==
-          "cases/x.toml:10:9: [damping] ratio = 1.5 is too large: expected at most 1");
+          "cases/x.toml:13:9: [damping] ratio = 1.5 is too large: expected at most 1");
     CHECK(error_of(kRoll + "[damping]\nratio = 0\n" + kExcitation + kResponse) ==
-          "cases/x.toml:10:9: [damping] ratio = 0 must be positive");
+          "cases/x.toml:13:9: [damping] ratio = 0 must be positive");
     CHECK(error_of(kRoll + "[damping]\ndecay = { amplitude_ratio = 0.5, cycles = 3 }\n" + kExcitation + kResponse) ==
-          "cases/x.toml:10:29: [damping.decay] amplitude_ratio = 0.5 must be larger than 1");
+          "cases/x.toml:13:29: [damping.decay] amplitude_ratio = 0.5 must be larger than 1");
     CHECK(error_of(kRoll + "[damping]\ndecay = { amplitude_ratio = 3 }\n" + kExcitation + kResponse)
-              .starts_with("cases/x.toml:10:9: [damping.decay] cycles is missing; expected N"));
+              .starts_with("cases/x.toml:13:9: [damping.decay] cycles is missing; expected N"));
     CHECK(error_of(kRoll + kDamping + "[excitation]\ngravity = true\n" + kResponse)
-              .starts_with("cases/x.toml:11:1: [excitation] gives nothing that excites the roll; "));
+              .starts_with("cases/x.toml:14:1: [excitation] gives nothing that excites the roll; "));
     CHECK(error_of(kRoll + kDamping + "[excitation]\nunbalance = \"2 kg\"\n" + kResponse) ==
-          "cases/x.toml:12:13: [excitation] unbalance = \"2 kg\": unit 'kg' is a mass, expected an unbalance (mass "
+          "cases/x.toml:15:13: [excitation] unbalance = \"2 kg\": unit 'kg' is a mass, expected an unbalance (mass "
           "times eccentricity) (kg*m, kg*mm, g*mm)");
     CHECK(error_of(kRoll + kDamping + "[excitation]\nbow = \"0.5 mm\"\nbow_shape = \"sine\"\n" + kResponse)
-              .starts_with("cases/x.toml:13:13: [excitation] bow_shape = \"sine\": unknown value"));
+              .starts_with("cases/x.toml:16:13: [excitation] bow_shape = \"sine\": unknown value"));
     CHECK(error_of(kRoll + kDamping + "[excitation]\novality = \"30 mm\"\n" + kResponse)
-              .starts_with("cases/x.toml:12:11: [excitation] ovality = \"30 mm\" is more than a tenth of the core's outer "
+              .starts_with("cases/x.toml:15:11: [excitation] ovality = \"30 mm\" is more than a tenth of the core's outer "
                            "diameter 0.176 m"));
     CHECK(error_of(kRoll + kDamping + kExcitation + "[response]\npoints = 4\n")
-              .starts_with("cases/x.toml:13:1: [response] gives no speeds; expected exactly one of web_speeds"));
+              .starts_with("cases/x.toml:16:1: [response] gives no speeds; expected exactly one of web_speeds"));
     CHECK(error_of(kRoll + kDamping + kExcitation + "[response]\nweb_speeds = [\"0 m/s\", \"20 m/s\"]\npoints = 4\n")
-              .starts_with("cases/x.toml:14:14: [response] web_speeds = [\"0 m/s\", \"20 m/s\"]: the roll must turn"));
+              .starts_with("cases/x.toml:17:14: [response] web_speeds = [\"0 m/s\", \"20 m/s\"]: the roll must turn"));
     CHECK(error_of(kRoll + kDamping + kExcitation + kResponse + "probes = [\"3 m\"]\n") ==
-          "cases/x.toml:16:11: [response] probes = [\"3 m\"]: 3 m is off the core; expected \"mid-span\" or a position "
+          "cases/x.toml:19:11: [response] probes = [\"3 m\"]: 3 m is off the core; expected \"mid-span\" or a position "
           "from 0 to the core length 2 m");
     CHECK(error_of(kRoll + kDamping + kExcitation + kResponse + "probes = [\"mid-span\", \"1 m\"]\n") ==
-          "cases/x.toml:16:23: [response] probes = [\"mid-span\", \"1 m\"]: z = 1 m is given twice");
+          "cases/x.toml:19:23: [response] probes = [\"mid-span\", \"1 m\"]: z = 1 m is given twice");
     CHECK(error_of(kRoll + kDamping + kExcitation + kResponse + "limt = \"5 mm\"\n") ==
-          "cases/x.toml:16:1: unknown key 'limt' in [response]; did you mean 'limit'?");
+          "cases/x.toml:19:1: unknown key 'limt' in [response]; did you mean 'limit'?");
     // A free roll has no stand: refused.
     CHECK(error_of("[core]\ninner_diameter = \"76 mm\"\nouter_diameter = \"106 mm\"\nlength = \"1.5 m\"\n" + kDamping +
                    kExcitation + kResponse)

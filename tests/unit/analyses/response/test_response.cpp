@@ -64,7 +64,7 @@ struct RigidRotor {
 Scene clamped_roll() {
     return parse_case_text(
         "model = \"beam\"\n"
-        "[core]\ninner_diameter = \"150 mm\"\nouter_diameter = \"176 mm\"\nlength = \"2.5 m\"\n"
+        "[core]\ninner_diameter = \"150 mm\"\nouter_diameter = \"176 mm\"\nlength = \"4 m\"\n"
         "material = { E = \"6.5 GPa\", nu = 0.3, density = \"920 kg/m^3\" }\n"
         "[rest_paper]\nouter_diameter = \"196 mm\"\n"
         "material = { E = \"5 GPa\", nu = 0.3, density = \"1350 kg/m^3\" }\n"
@@ -80,7 +80,7 @@ ResponseSetup setup_of(double zeta, ExcitationSpec x, double v0, double v1, int 
     for (int i = 0; i < points; ++i) s.response.speeds_hz.push_back((v0 + (v1 - v0) * i / (points - 1)) / (M_PI * 0.196));
     s.response.from_web_speed = true;
     s.response.limit_m = kDefaultAmplitudeLimit;
-    s.response.probes = {{"mid-span", 1.25}};
+    s.response.probes = {{"mid-span", 2.0}};
     return s;
 }
 
@@ -140,9 +140,13 @@ TEST_CASE("The response of a roll: linear in bow and unbalance, checked, peaks l
     const Scene scene = clamped_roll();
     ExcitationSpec bow;
     bow.bow_m = 0.5e-3;
-    const ResponseResult one = run_forced_response(scene, setup_of(0.01, bow, 5, 40, 60));
-    bow.bow_m = 1e-3;
-    const ResponseResult two = run_forced_response(scene, setup_of(0.01, bow, 5, 40, 60));
+    // The clamps hold the half-sine bow straight at its ends: at rest the
+    // mid-span runout is ~0.1 mm, the peak ~4.4 mm; a 2 mm limit is reached.
+    ResponseSetup setup = setup_of(0.01, bow, 5, 40, 60);
+    setup.response.limit_m = 2e-3;
+    const ResponseResult one = run_forced_response(scene, setup);
+    setup.excitation.bow_m = 1e-3;
+    const ResponseResult two = run_forced_response(scene, setup);
     for (size_t i = 0; i < one.points.size(); ++i)
         CHECK(two.points[i].probes[0].total_m == Approx(2 * one.points[i].probes[0].total_m).epsilon(1e-12));
     CHECK(one.checks.direct_max_relative < 1e-6);
@@ -164,7 +168,11 @@ TEST_CASE("The response of a roll: linear in bow and unbalance, checked, peaks l
     const ResponseResult u1 = run_forced_response(scene, setup_of(0.01, unbalance, 5, 40, 60));
     unbalance.unbalance_kg_m = 6e-3;
     const ResponseResult u3 = run_forced_response(scene, setup_of(0.01, unbalance, 5, 40, 60));
-    CHECK(u3.max_amplitude_m == Approx(3 * u1.max_amplitude_m).epsilon(1e-9));
+    for (size_t i = 0; i < u1.points.size(); ++i)
+        CHECK(u3.points[i].probes[0].total_m == Approx(3 * u1.points[i].probes[0].total_m).epsilon(1e-12));
+    // The refined peak: the golden section ends within ~1e-9 of the grid
+    // spacing, at speeds that differ in round-off between the two runs.
+    CHECK(u3.max_amplitude_m == Approx(3 * u1.max_amplitude_m).epsilon(1e-7));
     // Twice the damping, half the peak: the off-resonant modes answer in
     // quadrature with the resonant one, so the ratio is 2 to O(zeta^2).
     unbalance.unbalance_kg_m = 2e-3;
