@@ -242,11 +242,13 @@ std::vector<std::string> effect_names(const Scene& scene, const ExcitationSpec& 
 }  // namespace
 
 double orbit_semi_major(cd ux, cd uy) {
-    // q(t) = Re(v) cos wt - Im(v) sin wt: the semi-axes are the singular
-    // values of [Re v, Im v]; s = the sum of their squares, d = their product.
-    const double s = std::norm(ux) + std::norm(uy);
-    const double d = ux.real() * uy.imag() - uy.real() * ux.imag();
-    return std::sqrt(0.5 * (s + std::sqrt(std::max(s * s - 4 * d * d, 0.0))));
+    // The orbit as a complex position qx + i qy = F e^{i w t} + B e^{-i w t}:
+    // a forward circle F = (ux + i uy) / 2 and a backward one B = (conj ux +
+    // i conj uy) / 2; the semi-major axis is |F| + |B| (the minor ||F| - |B||).
+    // (Not the singular values by their quadratic formula, which cancels for
+    // a circular orbit and loses half the digits.)
+    const cd I(0, 1);
+    return 0.5 * (std::abs(ux + I * uy) + std::abs(std::conj(ux) + I * std::conj(uy)));
 }
 
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options) {

@@ -192,3 +192,10 @@ TEST_CASE("Ovality with gravity resonates at half the order-1 speed", "[response
     CHECK(r.peaks[0].excitation_hz == Approx(r.speeds_at_rest.f1_hz).epsilon(0.02));
     CHECK(r.sag_m > 0);
 }
+
+TEST_CASE("The orbit's semi-major axis: circles, lines, ellipses", "[response][analyses]") {
+    CHECK(orbit_semi_major({2, 0}, {0, -2}) == Approx(2.0).epsilon(1e-15));  // forward circle, radius 2
+    CHECK(orbit_semi_major({2, 0}, {0, 2}) == Approx(2.0).epsilon(1e-15));   // backward circle
+    CHECK(orbit_semi_major({3, 0}, {4, 0}) == Approx(5.0).epsilon(1e-15));   // a line at 53 degrees
+    CHECK(orbit_semi_major({0, 3}, {1, 0}) == Approx(3.0).epsilon(1e-15));   // an ellipse 3 x 1
+}
