@@ -138,6 +138,20 @@ struct PeakContext {
     double dp;
 };
 
+// The order that peaks: the largest rise of its own amplitude over the
+// larger of the two grid neighbours' (not the largest amplitude: a small
+// order-2 resonance may sit on a larger order-1 background).
+size_t peaking_order(const ProbeAmplitude& at, const ProbeAmplitude& left, const ProbeAmplitude& right) {
+    size_t best = 0;
+    double best_rise = -1;
+    for (size_t k = 0; k < at.per_order_m.size(); ++k) {
+        const double base = std::max(left.per_order_m[k], right.per_order_m[k]);
+        const double rise = base > 0 ? at.per_order_m[k] / base : 0;
+        if (rise > best_rise) best_rise = rise, best = k;
+    }
+    return best;
+}
+
 std::vector<ResponsePeak> find_peaks(const PeakContext& c, const std::vector<ResponsePoint>& points) {
     std::vector<ResponsePeak> out;
     for (size_t i = 1; i + 1 < points.size(); ++i) {
@@ -148,7 +162,7 @@ std::vector<ResponsePeak> find_peaks(const PeakContext& c, const std::vector<Res
         peak.web_speed_m_s = web_speed(peak.speed_hz, c.dp);
         const ProbeAmplitude at = c.eval.at_probe(c.eval.solve(peak.speed_hz, Method::truncated), 0);
         peak.amplitude_m = at.total_m;
-        const size_t k = std::max_element(at.per_order_m.begin(), at.per_order_m.end()) - at.per_order_m.begin();
+        const size_t k = peaking_order(at, points[i - 1].probes[0], points[i + 1].probes[0]);
         peak.order = c.loads.orders[k].order;
         peak.excitation_hz = peak.order * peak.speed_hz;
         const int j = answering_mode(c.lateral, c.loads.orders[k], c.eval.probe(0), peak.speed_hz, c.n_used);

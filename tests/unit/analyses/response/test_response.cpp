@@ -191,6 +191,14 @@ TEST_CASE("Ovality with gravity resonates at half the order-1 speed", "[response
     CHECK(r.peaks[0].order == 2);
     CHECK(r.peaks[0].excitation_hz == Approx(r.speeds_at_rest.f1_hz).epsilon(0.02));
     CHECK(r.sag_m > 0);
+    // With a bow beside it, the small order-2 peak on the bow's order-1
+    // background is still labelled order 2.
+    oval.bow_m = 0.5e-3;
+    const ResponseResult both = run_forced_response(scene, setup_of(0.01, oval, 5, 40, 80));
+    REQUIRE(both.peaks.size() == 2);
+    CHECK(both.peaks[0].order == 2);
+    CHECK(both.peaks[1].order == 1);
+    CHECK(both.peaks[0].web_speed_m_s == Approx(0.5 * both.peaks[1].web_speed_m_s).epsilon(0.01));
 }
 
 TEST_CASE("The orbit's semi-major axis: circles, lines, ellipses", "[response][analyses]") {
