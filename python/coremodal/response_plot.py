@@ -12,35 +12,26 @@ the safe web speeds: from the amplitude limit, and I-5's at 0.7 and 0.8.
 
 from __future__ import annotations
 
-import csv
-import json
 import math
 from pathlib import Path
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from ._folder import read_folder
+
 #: Picture size in pixels at DPI.
 SIZE_PX = (1100, 700)
 DPI = 100
-FILES = ("response.csv", "peaks.csv", "summary.json")
+TABLES = ("response.csv", "peaks.csv")
 
 
 class ResponseFormatError(Exception):
     """The folder holds no readable response results."""
 
 
-def _rows(path: Path) -> list[dict[str, str]]:
-    with path.open(newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def load(folder: Path) -> tuple[dict, list[dict[str, str]], list[dict[str, str]]]:
-    for name in FILES:
-        if not (folder / name).is_file():
-            raise ResponseFormatError(f"{folder}: no {name} (not a coremodal response folder)")
-    summary = json.loads((folder / "summary.json").read_text())
-    return summary, _rows(folder / "response.csv"), _rows(folder / "peaks.csv")
+    return read_folder(folder, TABLES, ResponseFormatError, "response")
 
 
 def _speed_lines(ax, summary: dict) -> None:

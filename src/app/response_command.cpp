@@ -6,9 +6,9 @@
 // here too. Beam level, Eigen only: no mesh, no PETSc.
 #include "analyses/response/response.hpp"
 #include "app/commands.hpp"
+#include "app/folder_picture.hpp"
 #include "app/response_run.hpp"
 #include "common/error.hpp"
-#include "output/python_plots.hpp"
 #include "output/response_report.hpp"
 #include "output/results_folder.hpp"
 #include "output/text_file.hpp"
@@ -52,14 +52,8 @@ int run_response_case(const std::string& case_file, const std::string& model, co
     ResultsFolder folder(out_dir, force);
     const std::filesystem::path& dir = folder.dir();
     write_response_tables(dir, scene, *c.response, result);
-    std::vector<std::string> pngs;
-    const std::string problem = no_plots ? "switched off (--no-plots)" : run_python_plot("response-plot", dir);
-    if (problem.empty()) pngs = {kResponsePng};
-    else if (!no_plots)
-        std::cerr << "coremodal: warning: plots not drawn: " << problem
-                  << "; the tables and report.md are complete (draw them later with python3 -m coremodal "
-                     "response-plot DIR)" << std::endl;
-    write_text_file(dir / "report.md", response_report_markdown(scene, *c.response, result, pngs, problem));
+    const FolderPicture picture = draw_folder_picture("response-plot", dir, kResponsePng, no_plots);
+    write_text_file(dir / "report.md", response_report_markdown(scene, *c.response, result, picture.pngs, picture.problem));
     folder.commit();
     if (!quiet) std::cout << response_console_summary(scene, result);
     std::cout << "  results: " << out_dir.string() << "/report.md" << std::endl;

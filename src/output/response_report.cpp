@@ -3,11 +3,11 @@
 #include "common/format.hpp"
 #include "modes/tracking.hpp"  // label_text
 #include "output/csv.hpp"
+#include "output/i5_speeds.hpp"
 #include "output/text_file.hpp"
 
 #include <toml++/toml.h>
 
-#include <cstdio>
 #include <sstream>
 
 namespace coremodal {
@@ -17,11 +17,7 @@ constexpr double kRpmPerHz = 60.0;
 constexpr double kMm = 1e3;
 
 // Ten significant digits: a reader gets back what was computed.
-std::string num(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-}
+std::string num(double v) { return significant(v, 10); }
 
 std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
 std::string mm(double m) { return significant(m * kMm, 4) + " mm"; }
@@ -61,7 +57,9 @@ toml::table peak_json(const ResponsePeak& p) {
 }
 
 toml::table safe_speed_json(const ResponseResult& r) {
-    toml::table t{{"limit_mm", r.limit_m * kMm}, {"probe", r.probes.front().name}};
+    toml::table t = i5_speeds_json(r.speeds_at_rest);
+    t.insert("limit_mm", r.limit_m * kMm);
+    t.insert("probe", r.probes.front().name);
     toml::table amplitude{{"reached", r.safe.reached}};
     if (r.safe.reached) {
         amplitude.insert("below_range", r.safe.below_range);
@@ -70,16 +68,6 @@ toml::table safe_speed_json(const ResponseResult& r) {
         amplitude.insert("implied_safe_factor", r.safe.implied_factor);
     }
     t.insert("from_amplitude_limit", amplitude);
-    const RollSpeeds& s = r.speeds_at_rest;
-    if (!s.given()) {
-        t.insert("i5_not_given", s.not_given);
-        return t;
-    }
-    t.insert("first_bending_at_rest_hz", s.f1_hz);
-    t.insert("dp_m", s.dp_m);
-    toml::array safe;
-    for (const SafeSpeed& v : s.safe) safe.push_back(toml::table{{"factor", v.safe}, {"v_safe_m_s", v.v_safe_m_s}});
-    t.insert("i5_safe_web_speed", safe);
     return t;
 }
 
@@ -158,12 +146,7 @@ std::string safe_speed_lines(const ResponseResult& r) {
     else
         out += "- safe web speed from the amplitude limit " + limit + ": " + m_s(s.web_speed_m_s) + " (" +
                rpm(s.speed_hz) + "; implied I-5 factor " + significant(s.implied_factor, 3) + ")\n";
-    const RollSpeeds& i5 = r.speeds_at_rest;
-    if (!i5.given()) return out + "- I-5 safe web speed: not given (" + i5.not_given + ")\n";
-    for (const SafeSpeed& v : i5.safe)
-        out += "- I-5 safe web speed (factor " + significant(v.safe, 2) + ", first bending at rest " +
-               significant(i5.f1_hz, 5) + " Hz, Dp " + significant(i5.dp_m * kMm, 4) + " mm): " + m_s(v.v_safe_m_s) + "\n";
-    return out;
+    return out + i5_speed_lines(r.speeds_at_rest);
 }
 
 std::string inputs_lines(const ResponseSetup& setup, const ResponseResult& r) {
