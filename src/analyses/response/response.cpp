@@ -245,6 +245,27 @@ std::vector<std::string> response_notes(const ExcitationSpec& x) {
     return notes;
 }
 
+// What the run assumed beyond the file, each with its source (summary.json, report.md).
+std::vector<std::string> setup_assumptions(const ResponseSetup& setup) {
+    const ExcitationSpec& x = setup.excitation;
+    std::vector<std::string> out;
+    if (setup.response.limit_m == kDefaultAmplitudeLimit)
+        out.push_back("amplitude limit 5 mm at " + setup.response.probes.front().name +
+                      ": the default, Ilomaki's +-5 mm at mid-span (DOMAIN.md section 7)");
+    if (x.bow_m > 0)
+        out.push_back(x.bow_shape == BowShape::half_sine
+                          ? "bow: a half sine b sin(pi z / Lc) over the core length with its slope as the section "
+                            "rotation (the default bow_shape), stress-free in that shape; chucks and clamps straight"
+                          : "bow: the first bending mode at rest, scaled to the bow at mid-core, stress-free in that shape");
+    if ((x.unbalance_kg_m > 0 || x.eccentricity_m > 0) && x.bow_m > 0)
+        out.push_back("unbalance and bow at the same angle (in phase): their order-1 amplitudes add");
+    if (x.unbalance_kg_m > 0) out.push_back("unbalance: a point mass at mid-core");
+    if (x.gravity)
+        out.push_back("gravity: " + significant(kGravity, 6) + " m/s^2 (standard gravity), vertical" +
+                      std::string(x.ovality_m > 0 ? "; with the ovality, a load turning at twice the speed" : ""));
+    return out;
+}
+
 std::vector<std::string> effect_names(const Scene& scene, const ExcitationSpec& x) {
     std::vector<std::string> out = scene.effects();
     out.push_back(Gyroscopic::kName);
@@ -288,7 +309,8 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
     const Eigen::VectorXd first_shape =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
     const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
-    out.assumptions = loads.assumptions;
+    out.assumptions = setup_assumptions(setup);
+    for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
     for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
     std::vector<CorePoint> probes;
     for (const ResponseRange::Probe& p : range.probes) probes.push_back(core_point(rest.network, p.z_m));
