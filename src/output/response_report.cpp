@@ -145,7 +145,7 @@ std::string safe_speed_lines(const ResponseResult& r) {
         out += "- amplitude limit " + limit + ": already exceeded at the first speed, " + m_s(s.web_speed_m_s) + "\n";
     else
         out += "- safe web speed from the amplitude limit " + limit + ": " + m_s(s.web_speed_m_s) + " (" +
-               rpm(s.speed_hz) + "; implied I-5 factor " + significant(s.implied_factor, 3) + ")\n";
+               rpm(s.speed_hz) + "; implied I-5 factor " + formatted("%.3f", s.implied_factor) + ")\n";
     return out + i5_speed_lines(r.speeds_at_rest);
 }
 
