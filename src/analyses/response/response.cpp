@@ -309,6 +309,7 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
     const Eigen::VectorXd first_shape =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
     const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
+    COREMODAL_ASSERT(!loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
     out.assumptions = setup_assumptions(setup);
     for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
     for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
