@@ -4,7 +4,8 @@
 ``python3 -m coremodal study-plot STUDY_FOLDER``,
 ``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython) and
 ``python3 -m coremodal winder-plot WINDER_FOLDER`` and
-``python3 -m coremodal campbell-plot CAMPBELL_FOLDER``.
+``python3 -m coremodal campbell-plot CAMPBELL_FOLDER`` and
+``python3 -m coremodal response-plot RESPONSE_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -14,6 +15,7 @@
     python3 -m coremodal paraview results/02-clamped-76x15 --mode 1 --out mode1.png   # needs pvpython
     python3 -m coremodal winder-plot results/11-two-drum-winder-winder  # crossing_diagram.png, response.png
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
+    python3 -m coremodal response-plot results/13-rest-roll-response-response  # response.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -91,6 +93,9 @@ def _parser() -> argparse.ArgumentParser:
     campbell = commands.add_parser(
         "campbell-plot", help="draw campbell.png of a `coremodal campbell` folder")
     campbell.add_argument("folder", type=Path, help="results folder of coremodal campbell")
+    response = commands.add_parser(
+        "response-plot", help="draw response.png of a `coremodal response` folder")
+    response.add_argument("folder", type=Path, help="results folder of coremodal response")
     return parser
 
 
@@ -110,6 +115,13 @@ def _campbell_plot(folder: Path) -> int:
 
     return _drawn(lambda: [campbell_plot.draw(folder)],
                   (campbell_plot.CampbellFormatError, KeyError, ValueError, OSError))
+
+
+def _response_plot(folder: Path) -> int:
+    from . import response_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: [response_plot.draw(folder)],
+                  (response_plot.ResponseFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -179,6 +191,8 @@ def main(argv: list[str] | None = None) -> int:
         return _winder_plot(args.folder)
     if args.command == "campbell-plot":
         return _campbell_plot(args.folder)
+    if args.command == "response-plot":
+        return _response_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

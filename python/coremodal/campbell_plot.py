@@ -11,18 +11,18 @@ crossings) ringed and numbered by order.
 
 from __future__ import annotations
 
-import csv
-import json
 from collections import defaultdict
 from pathlib import Path
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from ._folder import read_folder
+
 #: Picture size in pixels at DPI.
 SIZE_PX = (1100, 750)
 DPI = 100
-FILES = ("campbell.csv", "critical_speeds.csv", "summary.json")
+TABLES = ("campbell.csv", "critical_speeds.csv")
 #: Line style of each whirl ("" for none: axial, torsion, rigid, at rest).
 STYLE = {"FW": ("tab:blue", "-"), "BW": ("tab:red", "--"), "": ("0.55", "-")}
 
@@ -31,17 +31,8 @@ class CampbellFormatError(Exception):
     """The folder holds no readable Campbell results."""
 
 
-def _rows(path: Path) -> list[dict[str, str]]:
-    with path.open(newline="") as f:
-        return list(csv.DictReader(f))
-
-
 def load(folder: Path) -> tuple[dict, list[dict[str, str]], list[dict[str, str]]]:
-    for name in FILES:
-        if not (folder / name).is_file():
-            raise CampbellFormatError(f"{folder}: no {name} (not a coremodal campbell folder)")
-    summary = json.loads((folder / "summary.json").read_text())
-    return summary, _rows(folder / "campbell.csv"), _rows(folder / "critical_speeds.csv")
+    return read_folder(folder, TABLES, CampbellFormatError, "campbell")
 
 
 def draw(folder: Path) -> Path:

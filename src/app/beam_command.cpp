@@ -48,6 +48,8 @@ const std::vector<QuantityOption>& quantity_options() {
         {"rho-p", Dimension::density, "rest paper density, e.g. 1350kg/m^3"},
         {"k", Dimension::dimensionless, "chuck factor k for I-7 (default 1; about 0.85 for good expanding chucks)"},
         {"safe", Dimension::dimensionless, "safety factor of the safe web speed I-5 (default 0.7; 0.7-0.8)"},
+        {"web-speed", Dimension::speed, "a web speed, e.g. 15m/s: the single-mode amplification d(r) there (I-2...4)"},
+        {"zeta", Dimension::dimensionless, "relative damping for --web-speed (default 0.01; cores 0.005-0.02)"},
         {"koenig-factor", Dimension::dimensionless,
          "experience factor of König's K-1/K-2 (default 0.66; 0.55 recommended for 150/176 cores)"},
         {"f-free", Dimension::frequency,
@@ -80,6 +82,7 @@ BeamFormulaInputs parse_inputs(const BeamOptions& options) {
     in.chuck_depth = get("chuck-depth"), in.ec = get("ec"), in.rho_c = get("rho-c"), in.ep = get("ep");
     in.rho_p = get("rho-p"), in.k = get("k"), in.safe = get("safe"), in.koenig_factor = get("koenig-factor");
     in.f_free = get("f-free"), in.f_clamped = get("f-clamped");
+    in.web_speed = get("web-speed"), in.zeta = get("zeta");
     return in;
 }
 

@@ -6,11 +6,11 @@
 // modes at that speed). Beam level, Eigen only: no mesh, no PETSc.
 #include "analyses/campbell/campbell.hpp"
 #include "app/commands.hpp"
+#include "app/folder_picture.hpp"
 #include "app/rotation_run.hpp"
 #include "models/choose.hpp"
 #include "common/error.hpp"
 #include "output/campbell_report.hpp"
-#include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
 #include "output/text_file.hpp"
 #include "scene/rotation_spec.hpp"
@@ -56,14 +56,8 @@ int run_rotating_case(const std::string& case_file, const std::string& model, co
     ResultsFolder folder(out_dir, force);
     const std::filesystem::path& dir = folder.dir();
     write_campbell_tables(dir, scene, *rotating.rotation, result);
-    std::vector<std::string> pngs;
-    const std::string problem = no_plots ? "switched off (--no-plots)" : run_python_plot("campbell-plot", dir);
-    if (problem.empty()) pngs = {kCampbellPng};
-    else if (!no_plots)
-        std::cerr << "coremodal: warning: plots not drawn: " << problem
-                  << "; the tables and report.md are complete (draw them later with python3 -m coremodal "
-                     "campbell-plot DIR)" << std::endl;
-    write_text_file(dir / "report.md", campbell_report_markdown(scene, result, pngs, problem));
+    const FolderPicture picture = draw_folder_picture("campbell-plot", dir, kCampbellPng, no_plots);
+    write_text_file(dir / "report.md", campbell_report_markdown(scene, result, picture.pngs, picture.problem));
     folder.commit();
     if (!quiet) std::cout << campbell_console_summary(scene, result);
     std::cout << "  results: " << out_dir.string() << "/report.md" << std::endl;

@@ -17,6 +17,7 @@
 // defaults, so an expert can override any solver setting.
 #include "common/argv.hpp"
 #include "app/commands.hpp"
+#include "app/response_run.hpp"
 #include "app/rotation_run.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
@@ -165,7 +166,8 @@ int main(int argc, char** argv) {
         coremodal::add_study_command(app),    coremodal::add_calibrate_command(app),
         coremodal::add_schema_command(app),
         coremodal::add_sensitivity_command(app), coremodal::add_fit_command(app),
-        coremodal::add_campbell_command(app)};
+        coremodal::add_campbell_command(app),
+        coremodal::add_response_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

@@ -1,9 +1,11 @@
 // `coremodal run CASE.toml`: the main job.
 #include "app/commands.hpp"
 #include "analyses/run/run.hpp"
+#include "app/response_run.hpp"
 #include "app/rotation_run.hpp"
 #include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
+#include "scene/response_spec.hpp"
 #include "scene/rotation_spec.hpp"
 
 namespace coremodal {
@@ -34,6 +36,11 @@ Command add_run_command(CLI::App& app) {
         options->plots = !*no_plots;
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         if (!model->empty()) options->model = *model;
+        // A forced response (docs/response.md) before a spinning scene's
+        // modes: [response] includes the rotation.
+        if (const ResponseCase c = parse_response_case(options->case_file); c.response)
+            return run_response_case(options->case_file, *model, !output->empty() ? *output : "results/" + c.scene.name,
+                                     options->force, !options->plots, options->quiet);
         // A spinning scene: its modes at its speed(s), docs/rotation.md.
         if (const RotatingCase c = parse_rotating_case(options->case_file); c.rotation)
             return run_rotating_case(options->case_file, *model, !output->empty() ? *output : "results/" + c.scene.name,

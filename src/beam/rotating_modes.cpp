@@ -162,6 +162,35 @@ double complex_mac(const Eigen::VectorXcd& x, const Eigen::VectorXcd& y) {
     return std::norm(x.dot(y)) / (xx * yy);
 }
 
+FamilySet lateral_family_set(const BeamNetwork& network) {
+    const std::vector<FamilySet> sets = rotating_sets(network);
+    return !sets.empty() && has_bending(sets.front()) ? sets.front() : 0;
+}
+
+DenseModes dense_modes_at_rest(const NetworkMatrices& problem, double lambda_scale) {
+    // M x = mu (K - sigma M) x with the negative shift of the solver at
+    // rest (positive definite even with rigid modes): mu = 1 / (lambda -
+    // sigma) is largest for the lowest modes, which the dense solve then
+    // gets to round-off relative to themselves, not to the highest mode.
+    const double sigma = -0.5 * lambda_scale;
+    const Eigen::MatrixXd K(problem.K), M(problem.M);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(M, K - sigma * M);
+    if (solver.info() != Eigen::Success)
+        throw SolveError("the rotating beam network's K - sigma M is not positive definite (a free DOF without "
+                         "mass or stiffness)");
+    const Eigen::Index n = K.rows();
+    DenseModes out;
+    out.lambda.resize(n);
+    out.Phi.resize(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {  // ascending lambda: descending mu
+        const Eigen::Index from = n - 1 - j;
+        out.lambda(j) = sigma + 1.0 / solver.eigenvalues()(from);
+        const Eigen::VectorXd x = solver.eigenvectors().col(from);
+        out.Phi.col(j) = x / std::sqrt(x.dot(M * x));
+    }
+    return out;
+}
+
 RotatingNetwork::RotatingNetwork(const BeamNetwork& network, double lambda_scale)
     : network_(&network), lambda_scale_(lambda_scale) {
     const FamilySet xz = family_bit(MotionFamily::bending_xz), yz = family_bit(MotionFamily::bending_yz);
@@ -183,25 +212,9 @@ RotatingNetwork::RotatingNetwork(const BeamNetwork& network, double lambda_scale
         p.G = std::move(gyro[s]);
         p.spins = p.G.nonZeros() > 0 && p.G.cwiseAbs().sum() > 0;
         if (p.m.K.rows() == 0) continue;
-        // M x = mu (K - sigma M) x with the negative shift of the solver at
-        // rest (positive definite even with rigid modes): mu = 1 / (lambda -
-        // sigma) is largest for the lowest modes, which the dense solve then
-        // gets to round-off relative to themselves, not to the highest mode.
-        const double sigma = -0.5 * lambda_scale;
-        const Eigen::MatrixXd K(p.m.K), M(p.m.M);
-        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(M, K - sigma * M);
-        if (solver.info() != Eigen::Success)
-            throw SolveError("the rotating beam network's K - sigma M is not positive definite (a free DOF without "
-                             "mass or stiffness)");
-        const Eigen::Index n = K.rows();
-        p.lambda.resize(n);
-        p.Phi.resize(n, n);
-        for (Eigen::Index j = 0; j < n; ++j) {  // ascending lambda: descending mu
-            const Eigen::Index from = n - 1 - j;
-            p.lambda(j) = sigma + 1.0 / solver.eigenvalues()(from);
-            const Eigen::VectorXd x = solver.eigenvectors().col(from);
-            p.Phi.col(j) = x / std::sqrt(x.dot(M * x));
-        }
+        DenseModes rest = dense_modes_at_rest(p.m, lambda_scale);
+        p.lambda = std::move(rest.lambda);
+        p.Phi = std::move(rest.Phi);
         if (p.spins) p.Ghat = p.Phi.transpose() * (p.G * p.Phi);
         p.norm_K = max_column_sum(p.m.K), p.norm_M = max_column_sum(p.m.M), p.norm_G = max_column_sum(p.G);
         n_free_dofs_ += static_cast<long>(p.m.K.rows()) * (p.plane ? 2 : 1);

@@ -53,6 +53,21 @@ std::vector<Eigen::SparseMatrix<double>> assemble_gyroscopic(const BeamNetwork& 
 ModeLabel label_beam_mode(const BeamNetwork& network, const Eigen::VectorXd& shape, const Eigen::VectorXd& mass_shape,
                           double eigenvalue, double lambda_scale);
 
+// The family set of the network's lateral motion: every independent set
+// that bends, merged (G couples the two bending planes); 0 without bending.
+FamilySet lateral_family_set(const BeamNetwork& network);
+
+// Every mode at rest of one assembled problem, K phi = lambda M phi, dense:
+// Phi M-orthonormal, lambda ascending (rad^2/s^2). lambda_scale (rad^2/s^2)
+// sets the negative shift that keeps the lowest modes accurate to round-off
+// relative to themselves. Throws SolveError when K - sigma M is not
+// positive definite.
+struct DenseModes {
+    Eigen::MatrixXd Phi;
+    Eigen::VectorXd lambda;
+};
+DenseModes dense_modes_at_rest(const NetworkMatrices& problem, double lambda_scale);
+
 // none: no orbit to speak of (standing still, axial, torsion, rigid).
 enum class Whirl { none, forward, backward };
 const char* whirl_name(Whirl w);  // "", "FW", "BW"

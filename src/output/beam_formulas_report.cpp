@@ -54,6 +54,10 @@ void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
         << ", l = " << significant(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
     out << "      f_krit = " << significant(r.koenig.f_krit_hz) << " Hz, v_krit = " << speed(r.koenig.v_krit_m_s) << "\n";
     out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << significant(r.safe) << ": " << speed(r.v_safe) << "\n";
+    if (const auto& a = r.amplification)
+        out << "  I-2..4 at " << speed(a->web_speed_m_s) << ": f_rot = " << significant(a->f_rot_hz) << " Hz, r = f_rot/f1 = "
+            << significant(a->ratio) << ", zeta = " << significant(a->zeta) << (a->zeta_assumed ? " (assumed)" : "")
+            << ": d = 1/sqrt((1 - r^2)^2 + (2 zeta r)^2) = " << significant(a->d) << "\n";
     if (r.f_free) {
         out << "\nFree-hanging measurement f_free = " << significant(*r.f_free) << " Hz at Lc = " << significant(r.Lc) << " m\n";
         out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << significant(*r.f2) << " Hz\n";
@@ -114,6 +118,10 @@ void print_beam_formulas_json(const BeamFormulas& r, std::ostream& out) {
                                {"v_krit_m_s", r.koenig.v_krit_m_s}}},
         {"safe_web_speed", toml::table{{"safe", r.safe}, {"Dp_m", sec.Dp}, {"f1_hz", r.f1}, {"v_safe_m_s", r.v_safe}}},
     };
+    if (const auto& a = r.amplification)
+        t.insert("single_mode_amplification",
+                 toml::table{{"web_speed_m_s", a->web_speed_m_s}, {"f_rot_hz", a->f_rot_hz}, {"r", a->ratio},
+                             {"zeta", a->zeta}, {"zeta_assumed", a->zeta_assumed}, {"d", a->d}});
     if (r.f_free) {
         toml::table m{{"f_free_hz", *r.f_free}, {"f2_hz", *r.f2}};
         if (r.f_clamped) m.insert("f_clamped_hz", *r.f_clamped), m.insert("k", *r.k_measured);

@@ -3,6 +3,7 @@
 #include "common/format.hpp"
 #include "modes/tracking.hpp"  // label_text
 #include "output/csv.hpp"
+#include "output/i5_speeds.hpp"
 #include "output/text_file.hpp"
 
 #include <toml++/toml.h>
@@ -51,17 +52,8 @@ toml::table critical_json(const WhirlCrossing& c) {
 }
 
 toml::table safe_speed_json(const CampbellResult& r) {
-    toml::table t;
-    const RollSpeeds& s = r.speeds_at_rest;
-    if (!s.given()) {
-        t.insert("not_given", s.not_given);
-        return t;
-    }
-    t.insert("first_bending_at_rest_hz", s.f1_hz);
-    t.insert("dp_m", s.dp_m);
-    toml::array safe;
-    for (const SafeSpeed& v : s.safe) safe.push_back(toml::table{{"factor", v.safe}, {"v_safe_m_s", v.v_safe_m_s}});
-    t.insert("i5_safe_web_speed", safe);
+    toml::table t = i5_speeds_json(r.speeds_at_rest);
+    if (!r.speeds_at_rest.given()) return t;
     if (const WhirlCrossing* c = r.first_order_one()) t.insert("first_order_1_critical", critical_json(*c));
     return t;
 }
@@ -120,13 +112,8 @@ std::string last_speed_table(const CampbellResult& r) {
 }
 
 std::string safe_speed_lines(const CampbellResult& r) {
-    const RollSpeeds& s = r.speeds_at_rest;
-    std::string out;
-    if (!s.given()) return "I-5 safe web speed: not given (" + s.not_given + ").\n";
-    for (const SafeSpeed& v : s.safe)
-        out += "- I-5 safe web speed (factor " + significant(v.safe, 2) + ", first bending at rest " +
-               significant(s.f1_hz, 5) + " Hz, Dp " + significant(s.dp_m * 1e3, 4) + " mm): " +
-               significant(v.v_safe_m_s, 4) + " m/s\n";
+    std::string out = i5_speed_lines(r.speeds_at_rest);
+    if (!r.speeds_at_rest.given()) return out;
     if (const WhirlCrossing* c = r.first_order_one())
         out += "- first order-1 critical speed: " + rpm(c->speed_hz) + " = " + significant(c->web_speed_m_s, 4) +
                " m/s web speed (" + whirl_word(c->whirl) + ", " + label_text(c->label) + ")\n";

@@ -29,6 +29,7 @@ std::string unit_suffix(const SweepParameter& p) {
         case Dimension::mass: return "_kg";
         case Dimension::stiffness: return "_N_m";
         case Dimension::rotational_stiffness: return "_N_m_rad";
+        case Dimension::unbalance: return "_kg_m";
         case Dimension::dimensionless: return "";
     }
     return "";

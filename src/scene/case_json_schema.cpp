@@ -270,6 +270,10 @@ constexpr TableTitle kTables[] = {
     {"calibration", "[calibration]: a sweep whose chuck factor is fitted, for `coremodal calibrate`"},
     {"parameter", "an item of parameters: key, and values or from/to/steps"},
     {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/rotation.md)"},
+    {"damping", "[damping]: relative damping of the modes for the forced response (docs/response.md)"},
+    {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},
+    {"excitation", "[excitation]: what excites the spinning roll (docs/response.md)"},
+    {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
 };
 
 }  // namespace

@@ -5,12 +5,14 @@
 //   case_reader_supports.cpp  [supports]: clamps, chucks, interfaces, bearings
 //   case_reader_mesh.cpp      [analysis] and [mesh]
 //   case_reader_rotation.cpp  [rotation]
+//   case_reader_response.cpp  [damping], [excitation], [response]
 // Private to scene/: everything else reads a case through case_file.hpp.
 #pragma once
 
 #include "scene/case_schema.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/response_spec.hpp"
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 #include "scene/units.hpp"
@@ -85,6 +87,8 @@ public:
     Scene read(const toml::table& root);
     // [rotation] of the same document (checked by read too).
     std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
+    // [damping], [excitation] and [response] of the same document (checked by read too).
+    std::optional<ResponseSetup> response(const toml::table& root, const Scene& scene) const;
 
 private:
     std::string path_;
@@ -233,6 +237,14 @@ private:
     std::vector<double> read_speed_list(const Section& rotation, std::string_view key, Dimension d) const;
 
     std::vector<int> read_excitation_orders(const Section& rotation) const;
+
+    // ---- [damping], [excitation], [response] ----------------------------
+
+    std::optional<ResponseSetup> read_response_setup(const Section& top, const Scene& scene) const;
+    DampingSpec read_damping(const Section& damping) const;
+    ExcitationSpec read_excitation(const Section& excitation, const Scene& scene) const;
+    ResponseRange read_response_range(const Section& response, const Scene& scene) const;
+    std::vector<ResponseRange::Probe> read_probes(const Section& response, const Scene& scene) const;
 };
 
 }  // namespace coremodal::case_reading

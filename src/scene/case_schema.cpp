@@ -1,6 +1,7 @@
 #include "scene/case_schema.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 
 namespace coremodal {
@@ -24,6 +25,24 @@ constexpr int kMaxSweepSteps = 10000;
 // is a unit slip (a plain number is in Hz, not rpm).
 constexpr double kMaxRotationHz = 1000.0;
 constexpr int kMaxRotationPoints = 1000;
+// [response]: a dense reduced solve per speed is cheap, but 10 000 points is
+// already a 1 mm/s step over a press's whole range.
+constexpr int kMaxResponsePoints = 10000;
+// Relative damping of cores and rest rolls: 0.005-0.02 (DOMAIN.md section 3,
+// I-1...4); 1 is critical damping, above which nothing oscillates.
+constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (DOMAIN.md section 3)"};
+// The same as a logarithmic decrement, delta = 2 pi zeta (I-1).
+constexpr PlausibleRange kPlausibleLogDecrement{6e-3, 1.3, 0.06, "2 pi times 0.001-0.2 (cores and rest rolls: 0.03-0.13)"};
+// Straightness deviations of cores (ISO 11093-5) are tenths of a millimetre
+// per metre; a bowed rest roll a few millimetres. Roundness deviations alike.
+// Zero is a perfect roll (the default), so the ranges start at 0: they catch
+// the slip that matters, a plain 0.5 read as 0.5 m.
+constexpr PlausibleRange kPlausibleBow{0.0, 20e-3, 0.5e-3, "core straightness deviations are ~0.1-5 mm (ISO 11093-5)"};
+constexpr PlausibleRange kPlausibleOvality{0.0, 10e-3, 0.3e-3, "core roundness deviations are ~0.1-2 mm (ISO 11093-5)"};
+constexpr PlausibleRange kPlausibleEccentricity{0.0, 20e-3, 0.5e-3, "an eccentric rest roll: ~0.1-5 mm"};
+// Unbalance: balancing grades put a 100 kg roll at ~1e-3-1e-2 kg m.
+constexpr PlausibleRange kPlausibleUnbalance{0.0, 1.0, 2e-3, "rolls and cores: ~0.1-100 g m (balancing grades, ISO 21940)"};
+constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (DOMAIN.md section 7)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
 // catch unit slips, which are factors of 1e3 to 1e9, so they are wide.
@@ -87,6 +106,9 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "study", ValueKind::table),
         plain_key("", "calibration", ValueKind::table),
         plain_key("", "rotation", ValueKind::table),
+        plain_key("", "damping", ValueKind::table),
+        plain_key("", "excitation", ValueKind::table),
+        plain_key("", "response", ValueKind::table),
 
         length_key("core", "inner_diameter", kMaxDiameter, kPlausibleDiameter),
         length_key("core", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
@@ -167,6 +189,25 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("rotation", "web_speeds", ValueKind::list),
         plain_key("rotation", "excitation_orders", ValueKind::list),
         plain_key("rotation", "centrifugal_stiffening", ValueKind::boolean),
+
+        // [damping], [excitation], [response]: the forced response (docs/response.md).
+        {"damping", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        {"damping", "log_decrement", ValueKind::quantity, Dimension::dimensionless, 0.0, 2 * M_PI, true,
+         kPlausibleLogDecrement},
+        plain_key("damping", "decay", ValueKind::table),
+        {"decay", "amplitude_ratio", ValueKind::quantity, Dimension::dimensionless, 1.0, 1e6, true},
+        {"decay", "cycles", ValueKind::quantity, Dimension::dimensionless, 0.0, 1e4, true},
+        {"excitation", "bow", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleBow},
+        plain_key("excitation", "bow_shape", ValueKind::text),
+        {"excitation", "unbalance", ValueKind::quantity, Dimension::unbalance, 0.0, 100.0, false, kPlausibleUnbalance},
+        {"excitation", "eccentricity", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleEccentricity},
+        {"excitation", "ovality", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleOvality},
+        plain_key("excitation", "gravity", ValueKind::boolean),
+        plain_key("response", "speeds", ValueKind::list),
+        plain_key("response", "web_speeds", ValueKind::list),
+        integer_key("response", "points", 2, kMaxResponsePoints),
+        length_key("response", "limit", 1.0, kPlausibleLimit),
+        plain_key("response", "probes", ValueKind::list),
 
         // [study]: a sweep over case-file keys, with the modes tracked by MAC.
         plain_key("study", "parameters", ValueKind::tables),

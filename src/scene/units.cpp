@@ -84,6 +84,14 @@ constexpr std::array kUnits = {
     UnitSpec{"kN/m", Dimension::stiffness, 1e3, false},
     UnitSpec{"MN/m", Dimension::stiffness, 1e6, false},
 
+    UnitSpec{"kg*m", Dimension::unbalance, 1.0, true},
+    UnitSpec{"kg*mm", Dimension::unbalance, 1.0, true, 1e3},
+    UnitSpec{"g*mm", Dimension::unbalance, 1.0, true, 1e6},
+    UnitSpec{"g*m", Dimension::unbalance, 1.0, false, 1e3},
+    UnitSpec{"kgm", Dimension::unbalance, 1.0, false},
+    UnitSpec{"kgmm", Dimension::unbalance, 1.0, false, 1e3},
+    UnitSpec{"gmm", Dimension::unbalance, 1.0, false, 1e6},
+
     UnitSpec{"N*m/rad", Dimension::rotational_stiffness, 1.0, true},
     UnitSpec{"kN*m/rad", Dimension::rotational_stiffness, 1e3, true},
     UnitSpec{"MN*m/rad", Dimension::rotational_stiffness, 1e6, true},
@@ -186,6 +194,8 @@ const char* dimension_name(Dimension d) {
             return "stiffness";
         case Dimension::rotational_stiffness:
             return "rotational stiffness";
+        case Dimension::unbalance:
+            return "unbalance (mass times eccentricity)";
     }
     return "quantity";
 }
@@ -214,6 +224,8 @@ const char* si_unit(Dimension d) {
             return "N/m";
         case Dimension::rotational_stiffness:
             return "N*m/rad";
+        case Dimension::unbalance:
+            return "kg*m";
     }
     return "";
 }

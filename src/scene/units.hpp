@@ -11,7 +11,8 @@ namespace coremodal {
 
 enum class Dimension { length, pressure, density, frequency, dimensionless,
                        stiffness_per_area, angle, speed, mass,
-                       stiffness, rotational_stiffness };
+                       stiffness, rotational_stiffness,
+                       unbalance };  // kg m: a mass times its distance from the axis
 
 const char* dimension_name(Dimension d);  // "length", "pressure (modulus)", ...
 const char* si_unit(Dimension d);         // "m", "Pa", "kg/m^3", ...

@@ -2,6 +2,7 @@
 // the real binary on the rotation tester's case; bad input and an occupied
 // output folder refused before any work, nothing written.
 #include "support/program_run.hpp"
+#include "support/tiny_case.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -17,20 +18,7 @@ bool written(const fs::path& p) { return fs::is_regular_file(p) && fs::file_size
 
 const std::string kTester = std::string(COREMODAL_SOURCE_DIR) + "/cases/12-rotation-tester-76x15.toml";
 
-const std::string kSmall = R"(name = "small"
-model = "beam"
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "2211 mm"
-material = { base = "paperboard_core", E_z = "6500 MPa" }
-[supports]
-type = "clamped"
-[supports.left]
-length = "70 mm"
-[analysis]
-modes = 6
-)";
+const std::string kSmall = kClampedTesterCore;
 
 }  // namespace
 

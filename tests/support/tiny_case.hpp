@@ -39,4 +39,22 @@ material = "paperboard_core"
 modes = )" + std::to_string(modes) + "\n" + tail;
 }
 
+// Ilomaki's rotation tester's core (case 12) at the beam level: a 76x15
+// wide-ply core, 2211 mm, clamped over 70 mm at each end; f1 ~ 69 Hz. The
+// spinning scenes' program tests add [rotation] or [response] to it.
+inline const std::string kClampedTesterCore = R"(name = "small"
+model = "beam"
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "2211 mm"
+material = { base = "paperboard_core", E_z = "6500 MPa" }
+[supports]
+type = "clamped"
+[supports.left]
+length = "70 mm"
+[analysis]
+modes = 6
+)";
+
 }  // namespace coremodal::testing

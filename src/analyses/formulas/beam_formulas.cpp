@@ -2,6 +2,8 @@
 // the span, the frequencies, König's speed, the safe speed, a measurement.
 #include "analyses/formulas/beam_formulas.hpp"
 
+#include "effects/damping.hpp"
+
 #include "beam/speeds.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
@@ -178,6 +180,28 @@ void add_safe_speed(const BeamFormulaInputs& in, BeamFormulas& r) {
                           significant(highest));
 }
 
+// The field's middle damping ratio (DOMAIN.md section 3: 0.005-0.02), when
+// --web-speed comes without --zeta (noted as assumed).
+constexpr double kAssumedZeta = 0.01;
+
+// I-2...4 at --web-speed: r = f_rot / f1, d(r).
+void add_amplification(const BeamFormulaInputs& in, BeamFormulas& r) {
+    if (in.zeta && !in.web_speed) throw InputError("--zeta needs --web-speed: the amplification is at a web speed");
+    if (!in.web_speed) return;
+    if (in.zeta && !(*in.zeta > 0 && *in.zeta < 1)) throw InputError("--zeta must lie between 0 and 1 (cores: 0.005-0.02)");
+    SingleModeAmplification a;
+    a.web_speed_m_s = *in.web_speed;
+    a.f_rot_hz = *in.web_speed / (M_PI * r.section.Dp);
+    a.ratio = a.f_rot_hz / r.f1;
+    a.zeta = in.zeta.value_or(kAssumedZeta);
+    a.zeta_assumed = !in.zeta;
+    a.d = amplification(a.ratio, a.zeta);
+    if (a.zeta_assumed)
+        r.notes.push_back("zeta = " + significant(a.zeta) + " assumed for the amplification (cores and rest rolls: "
+                          "0.005-0.02, DOMAIN.md section 3); give --zeta");
+    r.amplification = a;
+}
+
 // A free-hanging measurement: f2, k (with --f-clamped), Ec or Ep.
 void add_measurement(const BeamFormulaInputs& in, BeamFormulas& r) {
     r.f_free = in.f_free;
@@ -209,6 +233,7 @@ BeamFormulas beam_formulas(const BeamFormulaInputs& in) {
     add_frequencies(in, r);
     add_koenig(in, case_length, r);
     add_safe_speed(in, r);
+    add_amplification(in, r);
     add_measurement(in, r);
     return r;
 }

@@ -21,6 +21,15 @@ struct BeamFormulaInputs {
     std::string calibration;  // calibration.toml for k ("" = none)
     std::optional<double> di, do_, lc, dp, li, chuck_depth, ec, rho_c, ep, rho_p;
     std::optional<double> k, safe, koenig_factor, f_free, f_clamped;
+    std::optional<double> web_speed, zeta;  // the single-mode amplification at that web speed (I-2...4)
+};
+
+// I-2...4 at one web speed: the roll's first bending mode alone, driven at
+// f_rot = v / (pi Dp) by a load of constant amplitude (docs/response.md for
+// the whole network).
+struct SingleModeAmplification {
+    double web_speed_m_s = 0, f_rot_hz = 0, ratio = 0, zeta = 0, d = 0;
+    bool zeta_assumed = false;
 };
 
 struct BeamFormulas {
@@ -39,6 +48,7 @@ struct BeamFormulas {
     std::string koenig_l_source;
     CriticalSpeed koenig;
     double safe = 0, v_safe = 0;
+    std::optional<SingleModeAmplification> amplification;
     std::optional<double> f_free, f_clamped, f2, Q, Ec_measured, Ep_measured, k_measured;
     std::vector<std::string> notes;
 };

@@ -1,0 +1,73 @@
+// The steady forced response of a spinning beam network to loads turning at
+// omega = k Omega (docs/response.md), on its lateral problem (both bending
+// planes; G couples them):
+//
+//     (K - omega^2 M + i omega (Omega G + D)) x = f,   q = Re(x e^{i omega t})
+//
+// two ways, which check each other:
+//  - modal superposition in the modes at rest (K phi = lambda M phi,
+//    M-orthonormal, every one of them: beam/rotating_modes dense_modes_at_rest),
+//    with the gyroscopic coupling projected, x = Phi_n eta,
+//        (Lambda_n - omega^2 I + i omega (Omega Gh_n + Dh_n)) eta = Phi_n^T f,
+//    Gh = Phi^T G Phi (skew), Dh = diag(2 zeta omega_j) (effects/damping.hpp);
+//    with the n lowest modes (truncated) or all of them (exact). A truncated
+//    sum may add the static part of the modes left out, Phi_r Lambda_r^-1
+//    Phi_r^T f (the mode-acceleration correction), which is what the left-out
+//    modes do far below their frequencies;
+//  - the direct solve of the full system (Eigen dense LU), with modal damping
+//    as the matrix D = M Phi Dh Phi^T M.
+// With the complete basis both are the same linear system in other
+// coordinates: they agree to round-off (tests/unit/analyses/response).
+#pragma once
+
+#include "beam/beam_network.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+namespace coremodal {
+
+class LateralResponse {
+public:
+    // lambda_scale: the first elastic eigenvalue's scale (rad^2/s^2,
+    // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode.
+    // Throws SolveError when the network has no bending DOF.
+    LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta);
+
+    int n_modes() const { return static_cast<int>(lambda_.size()); }
+    // How many modes lie at or below omega_cut (rad/s): the truncated basis.
+    int modes_below(double omega_cut) const;
+    double mode_frequency_hz(int j) const;
+    double zeta() const { return zeta_; }
+    const NetworkMatrices& matrices() const { return m_; }  // K, M and the rows' network DOFs
+
+    // A network vector (6 DOFs per node) on the problem's rows, and back
+    // (zero where held or outside the lateral problem).
+    Eigen::VectorXcd to_rows(const Eigen::VectorXcd& network) const;
+    Eigen::VectorXcd to_network(const Eigen::VectorXcd& rows) const;
+    Eigen::VectorXd mode_shape(int j) const;       // mode j per network DOF
+    Eigen::VectorXd mode_mass_shape(int j) const;  // M times it, per network DOF
+
+    // x on the rows for the load f on the rows, at spin Omega and load
+    // frequency omega (rad/s), by superposition of the n lowest modes (n =
+    // n_modes(): exact), with the static part of the others when asked.
+    Eigen::VectorXcd superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
+                               bool static_correction = false) const;
+    // The modal coordinates eta of that sum (which mode answers).
+    Eigen::VectorXcd modal_coordinates(const Eigen::VectorXcd& f, double omega_spin, double omega, int n) const;
+    // The same by the direct dense solve of the full system.
+    Eigen::VectorXcd direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const;
+    // K^-1 f (a static load on the rows), from the complete basis.
+    Eigen::VectorXd static_response(const Eigen::VectorXd& f) const;
+
+private:
+    const BeamNetwork* network_;
+    double zeta_;
+    NetworkMatrices m_;
+    Eigen::SparseMatrix<double> G_;  // per unit Omega (rad/s)
+    Eigen::MatrixXd Phi_, Ghat_;
+    Eigen::VectorXd lambda_, modal_damping_;  // lambda_j; 2 zeta omega_j (0 for a rigid mode)
+    Eigen::MatrixXd D_;                        // M Phi diag(modal_damping) Phi^T M, for the direct solve
+};
+
+}  // namespace coremodal

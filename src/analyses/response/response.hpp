@@ -1,0 +1,108 @@
+// The forced response of a spinning roll ([damping], [excitation],
+// [response]; docs/response.md) at the beam level: the amplitude of the
+// orbit at the probes against web speed, the resonance peaks with the modes
+// that answer, and the safe web speed read off the amplitude limit beside
+// Ilomaki's I-5.
+//
+// 1. Solve the scene at rest (solve_beam_model): the network, the first
+//    bending frequency f1 for I-5, the labels.
+// 2. The lateral problem and all its modes at rest (LateralResponse); the
+//    loads per excitation order (response_loads).
+// 3. At every speed and order, x by modal superposition of the modes up to
+//    kTruncationFactor times the highest load frequency, with the static part
+//    of the others (lateral_response.hpp); the probes' orbits.
+// 4. Peaks refined between grid speeds (golden section), labelled with the
+//    mode that carries most of the probe's motion; the first speed where the
+//    amplitude reaches the limit, refined by bisection.
+// 5. Checks at a few speeds and at every peak: the truncated sum against the
+//    complete basis (the truncation's effect), and the complete basis
+//    against the direct solve of the full system.
+#pragma once
+
+#include "beam/beam_model.hpp"
+#include "beam/speeds.hpp"
+#include "modes/mode_set.hpp"
+#include "scene/response_spec.hpp"
+#include "scene/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// The modes kept: every mode up to this multiple of the highest load
+// frequency (order x top speed). Three puts the nearest left-out mode's
+// dynamic amplification within 1/(3^2 - 1) = 12.5 % of its static part,
+// which the static correction carries exactly; the reported truncation
+// effect is measured against the complete basis at every run.
+constexpr double kTruncationFactor = 3.0;
+// Speeds (besides the peaks) at which the truncated sum, the complete basis
+// and the direct solve are compared.
+constexpr int kCheckSpeeds = 8;
+
+struct ProbeAmplitude {
+    double total_m = 0;              // sum over the orders of the orbits' semi-major axes
+    std::vector<double> per_order_m;  // semi-major axis of each order's orbit
+};
+
+struct ResponsePoint {
+    double speed_hz = 0;  // f_rot
+    double web_speed_m_s = 0;
+    std::vector<ProbeAmplitude> probes;
+};
+
+struct ResponsePeak {
+    int order = 1;
+    double speed_hz = 0, web_speed_m_s = 0;
+    double amplitude_m = 0;  // at the first probe, total
+    double excitation_hz = 0;  // order x f_rot
+    ModeLabel mode;            // the mode at rest that carries most of the probe's motion
+    double mode_frequency_hz = 0;  // its frequency at rest
+};
+
+struct AmplitudeSafeSpeed {
+    bool reached = false;  // the amplitude reaches the limit within the range
+    bool below_range = false;  // already at the first speed
+    double speed_hz = 0, web_speed_m_s = 0;
+    double implied_factor = 0;  // f_rot / f1 there: I-5's "safe" that this amplitude limit implies
+};
+
+struct ResponseChecks {
+    int n_modes_all = 0, n_modes_used = 0;
+    double cutoff_hz = 0;
+    int speeds_checked = 0;
+    double truncation_max_relative = 0;  // |a_truncated - a_complete| / a_complete at the first probe
+    double direct_max_relative = 0;      // ||x_complete - x_direct|| / ||x_direct||
+};
+
+struct ResponseResult {
+    std::vector<ResponsePoint> points;
+    std::vector<ResponseRange::Probe> probes;
+    std::vector<int> orders;  // the orders with a load
+    std::vector<std::vector<std::string>> order_sources;  // per order, the effects that load it
+    std::vector<ResponsePeak> peaks;
+    AmplitudeSafeSpeed safe;
+    RollSpeeds speeds_at_rest;  // I-5 from the first bending frequency at rest
+    double limit_m = 0;
+    double zeta = 0;
+    std::string damping_source;
+    double sag_m = 0;  // static sag under gravity at the first probe (0 without gravity)
+    double ovality_split = 0;
+    double max_amplitude_m = 0;
+    double max_amplitude_web_speed_m_s = 0;
+    ResponseChecks checks;
+    double roll_outer_diameter = 0;
+    bool from_web_speed = false;
+    long n_dofs = 0;
+    double solve_seconds = 0;
+    std::vector<std::string> effects, notes, assumptions;
+};
+
+// Throws InputError when the scene is not at the beam level; SolveError from
+// the solvers.
+ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {});
+
+// The semi-major axis of the orbit Re((ux, uy) e^{i omega t}) (m).
+double orbit_semi_major(std::complex<double> ux, std::complex<double> uy);
+
+}  // namespace coremodal

@@ -1,0 +1,49 @@
+// Damping ([damping], docs/response.md), stated once for every model level.
+//
+//   effect         solid     harmonic   beam (analyses/response)
+//   modal_damping  not yet   not yet    zeta of every elastic mode at rest
+//
+// Modal damping gives each mode at rest (K phi = lambda M phi, M-orthonormal)
+// the modal damping force 2 zeta omega_j eta_j', omega_j = sqrt(lambda_j):
+// in the modal coordinates D_hat = diag(2 zeta omega_j). The same damping
+// as a matrix on the DOFs is D = M Phi D_hat Phi^T M (with the complete basis
+// Phi; Phi^T D Phi = D_hat by M-orthonormality): that is what the direct
+// frequency-response solve uses to check the superposition. It acts on the
+// absolute velocity in the stationary frame (bearings, air, the web); a
+// rotating (internal) damping, which drives whirl instability above the
+// first critical speed, is not modelled. A damping matrix from the case
+// (Rayleigh alpha M + beta K, loss factors per part) is not supported: the
+// field measures one relative damping per roll (a decay, I-1), which is
+// what the modal form takes.
+//
+// The single-mode check (I-2...4): a force of constant amplitude F at
+// frequency f on a mode of frequency fn gives F / k times
+//     d(r) = 1 / sqrt((1 - r^2)^2 + (2 zeta r)^2),   r = f / fn.
+#pragma once
+
+#include <cmath>
+
+namespace coremodal {
+
+struct ModalDamping {
+    static constexpr const char* kName = "modal_damping";
+    // The modal damping coefficient of a mode of angular frequency omega_n (rad/s): 2 zeta omega_n.
+    static double coefficient(double zeta, double omega_n) { return 2 * zeta * omega_n; }
+};
+
+// I-1: zeta = ln(X0 / XN) / (2 pi N) from a free decay over N cycles; the
+// logarithmic decrement delta = ln(X0 / X1) gives zeta = delta / (2 pi).
+// (The light-damping form the field uses; exact would be
+// delta / sqrt(4 pi^2 + delta^2), 0.05 % lower at zeta = 0.02.)
+inline double zeta_from_decay(double amplitude_ratio, double cycles) {
+    return std::log(amplitude_ratio) / (2 * M_PI * cycles);
+}
+inline double zeta_from_log_decrement(double delta) { return zeta_from_decay(std::exp(delta), 1.0); }
+
+// I-2...4: the dynamic amplification of a single mode, d(r) above.
+inline double amplification(double frequency_ratio, double zeta) {
+    const double r2 = frequency_ratio * frequency_ratio;
+    return 1.0 / std::sqrt((1 - r2) * (1 - r2) + 4 * zeta * zeta * r2);
+}
+
+}  // namespace coremodal

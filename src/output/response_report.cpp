@@ -1,0 +1,226 @@
+#include "output/response_report.hpp"
+
+#include "common/format.hpp"
+#include "modes/tracking.hpp"  // label_text
+#include "output/csv.hpp"
+#include "output/i5_speeds.hpp"
+#include "output/text_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+constexpr double kRpmPerHz = 60.0;
+constexpr double kMm = 1e3;
+
+// Ten significant digits: a reader gets back what was computed.
+std::string num(double v) { return significant(v, 10); }
+
+std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
+std::string mm(double m) { return significant(m * kMm, 4) + " mm"; }
+std::string m_s(double v) { return significant(v, 4) + " m/s"; }
+
+std::string response_rows(const ResponseResult& r) {
+    std::string out = "web_speed_m_s,speed_rpm,speed_hz,probe,position_m,amplitude_mm";
+    for (int k : r.orders) out += ",order_" + std::to_string(k) + "_mm";
+    out += "\n";
+    for (const ResponsePoint& p : r.points)
+        for (size_t i = 0; i < r.probes.size(); ++i) {
+            out += num(p.web_speed_m_s) + "," + num(p.speed_hz * kRpmPerHz) + "," + num(p.speed_hz) + "," +
+                   csv_field(r.probes[i].name) + "," + num(r.probes[i].z_m) + "," + num(p.probes[i].total_m * kMm);
+            for (double a : p.probes[i].per_order_m) out += "," + num(a * kMm);
+            out += "\n";
+        }
+    return out;
+}
+
+std::string peak_rows(const ResponseResult& r) {
+    std::string out = "order,web_speed_m_s,speed_rpm,speed_hz,excitation_hz,amplitude_mm,mode,mode_frequency_hz\n";
+    for (const ResponsePeak& p : r.peaks)
+        out += std::to_string(p.order) + "," + num(p.web_speed_m_s) + "," + num(p.speed_hz * kRpmPerHz) + "," +
+               num(p.speed_hz) + "," + num(p.excitation_hz) + "," + num(p.amplitude_m * kMm) + "," +
+               csv_field(label_text(p.mode)) + "," + num(p.mode_frequency_hz) + "\n";
+    return out;
+}
+
+toml::table peak_json(const ResponsePeak& p) {
+    return toml::table{{"order", p.order},
+                       {"web_speed_m_s", p.web_speed_m_s},
+                       {"speed_rpm", p.speed_hz * kRpmPerHz},
+                       {"excitation_hz", p.excitation_hz},
+                       {"amplitude_mm", p.amplitude_m * kMm},
+                       {"mode", label_text(p.mode)},
+                       {"mode_frequency_hz", p.mode_frequency_hz}};
+}
+
+toml::table safe_speed_json(const ResponseResult& r) {
+    toml::table t = i5_speeds_json(r.speeds_at_rest);
+    t.insert("limit_mm", r.limit_m * kMm);
+    t.insert("probe", r.probes.front().name);
+    toml::table amplitude{{"reached", r.safe.reached}};
+    if (r.safe.reached) {
+        amplitude.insert("below_range", r.safe.below_range);
+        amplitude.insert("web_speed_m_s", r.safe.web_speed_m_s);
+        amplitude.insert("speed_rpm", r.safe.speed_hz * kRpmPerHz);
+        amplitude.insert("implied_safe_factor", r.safe.implied_factor);
+    }
+    t.insert("from_amplitude_limit", amplitude);
+    return t;
+}
+
+toml::table inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
+    const ExcitationSpec& x = setup.excitation;
+    toml::array probes, orders;
+    for (const ResponseRange::Probe& p : r.probes) probes.push_back(toml::table{{"name", p.name}, {"z_m", p.z_m}});
+    for (size_t k = 0; k < r.orders.size(); ++k) {
+        toml::array sources;
+        for (const std::string& s : r.order_sources[k]) sources.push_back(s);
+        orders.push_back(toml::table{{"order", r.orders[k]}, {"sources", sources}});
+    }
+    return toml::table{
+        {"damping", toml::table{{"ratio", r.zeta}, {"source", r.damping_source}, {"model", "modal"}}},
+        {"excitation", toml::table{{"bow_mm", x.bow_m * kMm}, {"bow_shape", bow_shape_name(x.bow_shape)},
+                                   {"unbalance_kg_m", x.unbalance_kg_m}, {"eccentricity_mm", x.eccentricity_m * kMm},
+                                   {"ovality_mm", x.ovality_m * kMm}, {"gravity", x.gravity},
+                                   {"ovality_stiffness_split", r.ovality_split}, {"static_sag_mm", r.sag_m * kMm}}},
+        {"orders", orders},
+        {"probes", probes},
+        {"roll_outer_diameter_m", r.roll_outer_diameter},
+        {"from_web_speed", r.from_web_speed}};
+}
+
+std::string summary_json(const Scene& scene, const ResponseSetup& setup, const ResponseResult& r) {
+    toml::array peaks, effects, notes, assumptions;
+    for (const ResponsePeak& p : r.peaks) peaks.push_back(peak_json(p));
+    for (const std::string& e : r.effects) effects.push_back(e);
+    for (const std::string& n : r.notes) notes.push_back(n);
+    for (const std::string& a : r.assumptions) assumptions.push_back(a);
+    const ResponseChecks& c = r.checks;
+    toml::table t{
+        {"program", "coremodal response"},
+        {"version", COREMODAL_VERSION},
+        {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
+        {"model", toml::table{{"level", "beam"}, {"dofs", r.n_dofs},
+                              {"solver", "modal superposition in the modes at rest (gyroscopic coupling projected), "
+                                         "checked by a direct dense solve"}}},
+        {"effects", effects},
+        {"notes", notes},
+        {"assumptions", assumptions},
+        {"inputs", inputs_json(setup, r)},
+        {"max_amplitude_mm", r.max_amplitude_m * kMm},
+        {"max_amplitude_web_speed_m_s", r.max_amplitude_web_speed_m_s},
+        {"peaks", peaks},
+        {"safe_speed", safe_speed_json(r)},
+        {"verification", toml::table{{"modes_all", c.n_modes_all}, {"modes_used", c.n_modes_used},
+                                     {"cutoff_hz", c.cutoff_hz}, {"speeds_checked", c.speeds_checked},
+                                     {"truncation_max_relative", c.truncation_max_relative},
+                                     {"direct_max_relative", c.direct_max_relative}}},
+        {"time_s", r.solve_seconds}};
+    std::ostringstream out;
+    out << toml::json_formatter{t} << "\n";
+    return out.str();
+}
+
+std::string peak_table(const ResponseResult& r) {
+    if (r.peaks.empty()) return "No resonance peak within the range.\n";
+    std::string out = "| order | web speed | rotation | excitation | amplitude | mode (at rest) |\n|---|---|---|---|---|---|\n";
+    for (const ResponsePeak& p : r.peaks)
+        out += "| " + std::to_string(p.order) + " | " + m_s(p.web_speed_m_s) + " | " + rpm(p.speed_hz) + " | " +
+               significant(p.excitation_hz, 5) + " Hz | " + mm(p.amplitude_m) + " | " + label_text(p.mode) + ", " +
+               significant(p.mode_frequency_hz, 5) + " Hz |\n";
+    return out;
+}
+
+std::string safe_speed_lines(const ResponseResult& r) {
+    std::string out;
+    const AmplitudeSafeSpeed& s = r.safe;
+    const std::string limit = "+-" + mm(r.limit_m) + " at " + r.probes.front().name;
+    if (!s.reached)
+        out += "- amplitude limit " + limit + ": not reached up to " + m_s(r.points.back().web_speed_m_s) +
+               " (largest " + mm(r.max_amplitude_m) + " at " + m_s(r.max_amplitude_web_speed_m_s) + ")\n";
+    else if (s.below_range)
+        out += "- amplitude limit " + limit + ": already exceeded at the first speed, " + m_s(s.web_speed_m_s) + "\n";
+    else
+        out += "- safe web speed from the amplitude limit " + limit + ": " + m_s(s.web_speed_m_s) + " (" +
+               rpm(s.speed_hz) + "; implied I-5 factor " + formatted("%.3f", s.implied_factor) + ")\n";
+    return out + i5_speed_lines(r.speeds_at_rest);
+}
+
+std::string inputs_lines(const ResponseSetup& setup, const ResponseResult& r) {
+    std::ostringstream out;
+    out << "- damping: zeta = " << significant(r.zeta, 4) << " of every mode (" << r.damping_source << ")\n";
+    for (size_t k = 0; k < r.orders.size(); ++k) {
+        out << "- order " << r.orders[k] << ":";
+        for (const std::string& s : r.order_sources[k]) out << " " << s;
+        out << "\n";
+    }
+    const ExcitationSpec& x = setup.excitation;
+    if (x.bow_m > 0) out << "- bow " << mm(x.bow_m) << " at mid-core, shape " << bow_shape_name(x.bow_shape) << "\n";
+    if (x.unbalance_kg_m > 0) out << "- unbalance " << significant(x.unbalance_kg_m * kMm, 4) << " kg*mm at mid-core\n";
+    if (x.eccentricity_m > 0) out << "- rest roll eccentricity " << mm(x.eccentricity_m) << "\n";
+    if (x.ovality_m > 0)
+        out << "- ovality " << mm(x.ovality_m) << " (D_max - D_min): stiffness split eps = "
+            << significant(r.ovality_split, 3) << "\n";
+    if (x.gravity) out << "- static sag under gravity at " << r.probes.front().name << ": " << mm(r.sag_m) << "\n";
+    return out.str();
+}
+
+}  // namespace
+
+void write_response_tables(const std::filesystem::path& dir, const Scene& scene, const ResponseSetup& setup,
+                           const ResponseResult& result) {
+    write_text_file(dir / "response.csv", response_rows(result));
+    write_text_file(dir / "peaks.csv", peak_rows(result));
+    write_text_file(dir / "summary.json", summary_json(scene, setup, result));
+}
+
+std::string response_report_markdown(const Scene& scene, const ResponseSetup& setup, const ResponseResult& r,
+                                     const std::vector<std::string>& pngs, const std::string& plot_problem) {
+    std::ostringstream out;
+    out << "# Forced response: " << scene.name << "\n\n";
+    if (!scene.description.empty()) out << scene.description << "\n\n";
+    out << "Beam level, " << r.n_dofs << " lateral DOFs; " << r.points.size() << " speeds from "
+        << m_s(r.points.front().web_speed_m_s) << " to " << m_s(r.points.back().web_speed_m_s) << " web speed ("
+        << rpm(r.points.front().speed_hz) << " to " << rpm(r.points.back().speed_hz) << ", Dp = "
+        << significant(r.roll_outer_diameter * kMm, 4) << " mm). Effects:";
+    for (const std::string& e : r.effects) out << " " << e;
+    out << ".\n\n" << inputs_lines(setup, r) << "\n";
+    for (const std::string& n : r.notes) out << "- " << n << "\n";
+    out << "\n## Safe web speed\n\n" << safe_speed_lines(r) << "\n";
+    out << "## Resonance peaks\n\nLargest amplitude at " << r.probes.front().name << ": " << mm(r.max_amplitude_m)
+        << " at " << m_s(r.max_amplitude_web_speed_m_s) << ". Peaks (refined between the sweep's speeds):\n\n"
+        << peak_table(r) << "\n";
+    out << "## Amplitude against web speed\n\n";
+    for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
+    if (pngs.empty()) out << "No picture: " << plot_problem << ".\n\n";
+    out << "## Assumptions\n\n";
+    for (const std::string& a : r.assumptions) out << "- " << a << "\n";
+    const ResponseChecks& c = r.checks;
+    out << "\n## Verification\n\nAt " << c.speeds_checked << " speeds (" << kCheckSpeeds << " of the sweep and every "
+        << "peak): the truncated sum (" << c.n_modes_used << " of " << c.n_modes_all << " modes, up to "
+        << significant(c.cutoff_hz, 4) << " Hz, with the static part of the others) differs from the complete basis by "
+        << significant(c.truncation_max_relative, 2) << " (relative, amplitude at " << r.probes.front().name
+        << "); the complete basis differs from the direct solve of (K - w^2 M + i w (W G + D)) x = f by "
+        << significant(c.direct_max_relative, 2) << " (relative norm).\n\n"
+        << "Tables: response.csv (per speed and probe), peaks.csv, summary.json. Solve "
+        << minutes_or_seconds(r.solve_seconds) << ".\n";
+    return out.str();
+}
+
+std::string response_console_summary(const Scene& scene, const ResponseResult& r) {
+    std::ostringstream out;
+    out << "response: " << scene.name << ": " << r.points.size() << " speeds, " << r.peaks.size()
+        << " peaks, largest " << mm(r.max_amplitude_m) << " at " << m_s(r.max_amplitude_web_speed_m_s) << "\n";
+    for (const ResponsePeak& p : r.peaks)
+        out << "  peak order " << p.order << ": " << m_s(p.web_speed_m_s) << " (" << rpm(p.speed_hz) << ")  "
+            << mm(p.amplitude_m) << "  " << label_text(p.mode) << " " << significant(p.mode_frequency_hz, 5) << " Hz\n";
+    out << safe_speed_lines(r);
+    out << "  checks: truncation " << significant(r.checks.truncation_max_relative, 2) << ", direct "
+        << significant(r.checks.direct_max_relative, 2) << "\n";
+    return out.str();
+}
+
+}  // namespace coremodal

@@ -1,0 +1,77 @@
+// [damping], [excitation] and [response] of a case file (docs/response.md):
+// the forced response of a spinning roll to its own imperfections, and the
+// safe web speed read off the amplitude limit. Like [rotation], the tables
+// are read beside the Scene, not into it: the case reader checks them with
+// every other key (every command refuses a wrong one), and the commands
+// that simulate the response read them with parse_response_case. Only a
+// scene with [response] simulates damping and excitation; [damping] or
+// [excitation] without [response] is refused (they would simulate nothing).
+#pragma once
+
+#include "scene/rotation_spec.hpp"
+#include "scene/scene.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace coremodal {
+
+// Modal damping: one relative damping ratio zeta for every elastic mode.
+struct DampingSpec {
+    double ratio = 0;    // zeta, 0 < zeta < 1
+    std::string source;  // how the file gave it: "ratio = 0.01", "log_decrement = 0.06 (I-1: ...)"
+};
+
+// The shape of a bow (straightness deviation) along the core, scaled to the
+// bow at mid-core: a half sine over the core length, or the roll's first
+// bending mode at rest in its stand.
+enum class BowShape { half_sine, first_mode };
+const char* bow_shape_name(BowShape s);  // "half_sine", "first_mode"
+
+// What excites the spinning roll (effects/excitation.hpp states each load).
+struct ExcitationSpec {
+    double bow_m = 0;  // straightness deviation at mid-core (ISO 11093-5), m
+    BowShape bow_shape = BowShape::half_sine;
+    double unbalance_kg_m = 0;  // a point unbalance at mid-core, kg m
+    double eccentricity_m = 0;  // the rest paper's mass centre off the axis, uniform along the roll, m
+    double ovality_m = 0;       // roundness deviation of the core, D_max - D_min, m
+    bool gravity = true;        // gravity acts (vertical): with ovality, an order-2 load
+};
+
+// Where and how fast: the rotation speeds (from web speeds at Dp, or given
+// as rotation speeds), the amplitude limit and the probes.
+struct ResponseRange {
+    std::vector<double> speeds_hz;  // f_rot, ascending, > 0
+    bool from_web_speed = false;
+    double limit_m = 0;  // the amplitude limit (semi-major axis of the mid-span orbit)
+    struct Probe {
+        std::string name;  // "mid-span" or "z = 1.2 m"
+        double z_m = 0;    // from the core's left end
+    };
+    std::vector<Probe> probes;  // the first is the one the safe speed is read at
+};
+
+// The default amplitude limit: Ilomaki's +-5 mm at mid-span (DOMAIN.md §7:
+// the field's limit, which I-5's factor 0.7-0.8 is meant to keep).
+inline constexpr double kDefaultAmplitudeLimit = 5e-3;  // m
+inline constexpr std::string_view kMidSpan = "mid-span";
+
+struct ResponseSetup {
+    DampingSpec damping;
+    ExcitationSpec excitation;
+    ResponseRange response;
+};
+
+// The case at `path`, its [rotation] and its response setup (none without
+// [response]). Throws InputError as parse_case_file does.
+struct ResponseCase {
+    Scene scene;
+    std::optional<RotationSpec> rotation;
+    std::optional<ResponseSetup> response;
+};
+ResponseCase parse_response_case(const std::string& path);
+ResponseCase parse_response_case_text(std::string_view text, const std::string& path);
+
+}  // namespace coremodal
