@@ -97,13 +97,8 @@ Pep configure(const SpinningOperators& op, double tau, int nev, const SolveReque
     // converged on a harmonic of a steel tube, ||K|| / ||M|| ~ 1e9.
     COREMODAL_PETSC(PEPSetScale(pep, PEP_SCALE_SCALAR, PETSC_DEFAULT, nullptr, nullptr, PETSC_DEFAULT, PETSC_DEFAULT));
     ST st;
-    KSP ksp;
-    PC pc;
     COREMODAL_PETSC(PEPGetST(pep, &st));
-    COREMODAL_PETSC(STSetType(st, STSINVERT));
-    COREMODAL_PETSC(STGetKSP(st, &ksp));
-    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
-    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    const PC pc = direct_shift_and_invert(st);
     // P(tau) = K + tau C + tau^2 M is not symmetric (C is skew): an LU factor.
     // Its symmetric part K + tau^2 M is positive definite, so every leading
     // minor is nonzero and LU needs no pivoting. PETSc's own LU in a QMD

@@ -35,13 +35,8 @@ PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, cons
     COREMODAL_PETSC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     COREMODAL_PETSC(EPSSetTolerances(eps, request.tolerance, request.max_iterations));
     ST st;
-    KSP ksp;
-    PC pc;
     COREMODAL_PETSC(EPSGetST(eps, &st));
-    COREMODAL_PETSC(STSetType(st, STSINVERT));
-    COREMODAL_PETSC(STGetKSP(st, &ksp));
-    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
-    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    const PC pc = direct_shift_and_invert(st);
     COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
     // K - sigma M is positive definite (sigma < 0), so a plain Cholesky
     // factor serves. In one process CHOLMOD's METIS ordering gives a smaller

@@ -46,4 +46,14 @@ long negative_eigenvalue_count(Mat A, const char* what) {
     return n_negative;
 }
 
+PC direct_shift_and_invert(ST st) {
+    KSP ksp;
+    PC pc;
+    COREMODAL_PETSC(STSetType(st, STSINVERT));
+    COREMODAL_PETSC(STGetKSP(st, &ksp));
+    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    return pc;
+}
+
 }  // namespace coremodal

@@ -5,6 +5,8 @@
 
 #include "common/petsc_handle.hpp"
 
+#include <slepcst.h>
+
 namespace coremodal {
 
 double vector_norm(Vec x);
@@ -18,5 +20,9 @@ inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
 // law of inertia: the negative pivots of its MUMPS LDL^T factor). `what`
 // names A in the error raised when the factorisation fails.
 long negative_eigenvalue_count(Mat A, const char* what);
+
+// Shift-and-invert with a direct solve (KSP "preonly") on `st`; returns the
+// preconditioner whose factor type and package the caller sets.
+PC direct_shift_and_invert(ST st);
 
 }  // namespace coremodal
