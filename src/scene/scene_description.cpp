@@ -203,12 +203,16 @@ private:
             origin(path + ".interface"));
         if (f.kind == InterfaceKind::bonded) return;
         add(display + "expanded", f.expanded ? "true" : "false", origin(path + ".expanded"));
+        if (f.contact == ContactKind::one_sided)
+            add(display + "contact", "\"one-sided\"", origin(path + ".contact", "default when not expanded"));
         std::string normal = origin(path + ".normal_stiffness");
         if (!sources_.in_file_has(path + ".normal_stiffness") && !mirrored_)
             normal = f.expansion_pressure ? "from expansion_pressure = " +
                                                 format_quantity(*f.expansion_pressure, Dimension::pressure) + " (" +
                                                 origin(path + ".expansion_pressure") + ")"
-                                          : "from the residual contact pressure (not expanded)";
+                                          : f.contact == ContactKind::one_sided
+                                              ? "at zero contact pressure; rises with the static pressure (not expanded)"
+                                              : "from the residual contact pressure (not expanded)";
         add(display + "normal_stiffness", format_quantity(f.normal_stiffness, Dimension::stiffness_per_area), normal);
         add(display + "tangential_stiffness", format_quantity(f.tangential_stiffness, Dimension::stiffness_per_area),
             origin(path + ".tangential_stiffness", "default: Mindlin's ratio x normal_stiffness"));
