@@ -26,6 +26,12 @@ constexpr int kMaxContactIterations = 60;
 // pressure: no point may close further than this many u0 per step (the
 // pressure rises at most e^3 = 20 times), the step is scaled down otherwise.
 constexpr double kMaxClosingStep = 3.0;
+// The first iterate closes the bore's top (within this angle of +y) at zero
+// pressure. A wider start would overshoot: a spring linearised at d = 0
+// pulls its point across the whole clearance, so closing the upper half
+// would drop the core by 4c/pi and start the exponential law at d = 0.27 c
+// (7 u0 at the defaults), far from the state.
+constexpr double kFirstArc = 10 * M_PI / 180;
 // Converged when the set repeats and no point moves by more than this
 // fraction of u0 (20 um by default: 2e-13 m) in a full Newton step.
 constexpr double kConvergedStep = 1e-8;
@@ -157,7 +163,7 @@ Iterate first_iterate(const std::vector<ContactFace>& faces) {
     Iterate it;
     for (const ContactFace& f : faces)
         for (const ContactPoint& q : f.points) {
-            it.active.push_back(q.normal()[1] > 0);  // the bore's upper half rests on the body
+            it.active.push_back(q.normal()[1] > std::cos(kFirstArc));
             it.d.push_back(0);
             it.p.push_back(0);
         }

@@ -7,7 +7,7 @@
 // with the contact's springs and loads (assembly/one_sided_contact.hpp) from
 // a Newton linearisation of p(d) at every closed point, nothing at open
 // ones. Which points are closed is found by an active-set iteration: start
-// with the bore's upper half closed, solve with a direct Cholesky factor
+// with the bore's top closed, solve with a direct Cholesky factor
 // (PETSc KSP, the eigensolver's factor package), close every point whose
 // interpenetration came out positive and open every other, until the set
 // repeats and the Newton step is below 1e-8 of the layer's scale u0.
