@@ -157,3 +157,22 @@ TEST_CASE("A chuck not expanded holds the roll far more loosely than an expanded
     CHECK(f_one_sided < f_uniform);
     CHECK(f_one_sided < 0.8 * f_expanded);
 }
+
+TEST_CASE("An expanded chuck, and a uniform soft layer, are held exactly as before: no contact faces, no gravity",
+          "[verification][chucks][contact]") {
+    const Scene expanded = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::spring, 3.1e10);
+    Scene uniform_soft = with_chucks(paper_core(0.6, 16, 16), InterfaceKind::spring, 1e9);
+    for (ChuckSpec& c : uniform_soft.supports.chucks) c.interface.expanded = false;  // contact stays uniform
+    for (const Scene& s : {expanded, uniform_soft}) {
+        const SupportEffects e = support_effects(s);
+        CHECK_FALSE(e.gravity);
+        for (const ChuckEffects& c : e.chucks) {
+            CHECK_FALSE(c.one_sided);
+            REQUIRE(c.spring_layer);
+        }
+        const ChuckSupports supports = chuck_supports(s, generated_mesh(s));
+        CHECK(supports.contact_faces.empty());
+        // Over the bands only (2 x 2 pi R w), as before the one-sided contact.
+        CHECK(supports.coupled_area_m2 == Approx(2 * 2 * M_PI * kBore * 0.06).epsilon(1e-4));
+    }
+}
