@@ -195,6 +195,24 @@ double advance(Iterate& it, const std::vector<double>& d_new, const std::vector<
     return moved;
 }
 
+// The rigid-motion stiffnesses of the closed contact (ChuckContactState).
+void add_support_stiffness(const std::vector<ContactFace>& faces, const std::vector<ContactPointState>& s,
+                           const SupportEffects& effects, std::vector<ChuckContactState>& out) {
+    size_t k = 0;
+    for (const ContactFace& f : faces)
+        for (const ContactPoint& q : f.points) {
+            const ContactPointState& p = s[k++];
+            if (!p.closed()) continue;
+            ChuckContactState& c = out[f.chuck];
+            const Eigen::Matrix3d D = contact_of(effects, f).linearised(p.p).per_area(std::atan2(q.x[1], q.x[0]));
+            const double z_mid = (c.z_from_m + c.z_to_m) / 2;
+            const Eigen::Vector3d tilt(0, -(q.x[2] - z_mid), q.x[1]);  // e_x x (x - x_mid)
+            c.vertical_stiffness_n_per_m += q.area_weight * D(1, 1);
+            c.horizontal_stiffness_n_per_m += q.area_weight * D(0, 0);
+            c.tilt_stiffness_nm_per_rad += q.area_weight * tilt.dot(D * tilt);
+        }
+}
+
 std::vector<ChuckContactState> summarise(const std::vector<ContactFace>& faces, const std::vector<ContactPointState>& s,
                                          const SupportEffects& effects) {
     std::vector<ChuckContactState> out(effects.chucks.size());
@@ -223,6 +241,7 @@ std::vector<ChuckContactState> summarise(const std::vector<ContactFace>& faces, 
         }
     for (size_t c = 0; c < out.size(); ++c)
         if (out[c].closed_points > 0) out[c].arc_deg = (phi_hi[c] - phi_lo[c]) * 180 / M_PI;
+    add_support_stiffness(faces, s, effects, out);
     std::erase_if(out, [](const ChuckContactState& c) { return c.points == 0; });
     return out;
 }
@@ -286,7 +305,10 @@ std::vector<std::string> contact_state_lines(const GravityContact& contact, doub
                         " to " + significant(c.z_to_m * 1e3, 4) + " mm (" + std::to_string(c.closed_points) + " of " +
                         std::to_string(c.points) + " points), carries " + significant(c.vertical_force_n, 4) +
                         " N of the roll's " + significant(roll_weight_n, 4) + " N, peak pressure " +
-                        significant(c.max_pressure_pa / 1e3, 3) + " kPa");
+                        significant(c.max_pressure_pa / 1e3, 3) + " kPa; holds the core by " +
+                        significant(c.vertical_stiffness_n_per_m, 3) + " N/m vertically, " +
+                        significant(c.horizontal_stiffness_n_per_m, 3) + " N/m sideways, " +
+                        significant(c.tilt_stiffness_nm_per_rad, 3) + " N m/rad in tilt");
     return lines;
 }
 

@@ -32,6 +32,12 @@ struct ChuckContactState {
     double closed_area_m2 = 0;
     double vertical_force_n = 0;        // the contact's upward force on the roll
     double max_pressure_pa = 0;
+    // What the linearised contact holds the core by, against the chuck, for
+    // rigid motions of the core: a vertical and a horizontal translation,
+    // and a tilt in the vertical plane (about x, through the middle of the
+    // closed zone): sum of area_weight u^T D u over the closed points.
+    double vertical_stiffness_n_per_m = 0, horizontal_stiffness_n_per_m = 0;
+    double tilt_stiffness_nm_per_rad = 0;
 };
 
 struct GravityContact {
