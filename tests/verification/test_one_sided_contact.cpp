@@ -74,11 +74,7 @@ double rigid_drop(double load, const StackContact& law) {
 }
 
 double f1_of(const Scene& s) {
-    RunOptions options;
-    options.quiet = true;
-    options.write_results = false;
-    options.chuck_factor_by_fe = false;
-    const RunReport r = run_scene(s, options);
+    const RunReport r = solve_without_chuck_factor(s);
     CHECK(r.modes.verification.complete);
     CHECK(r.modes.verification.max_relative_residual < 1e-8);
     return nth_of_type(r, "bending").frequency_hz;

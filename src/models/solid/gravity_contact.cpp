@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "eigensolve/modal_solver.hpp"
+#include "modes/mode_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -98,22 +99,6 @@ void linearise(const std::vector<ContactFace>& faces, const Iterate& it, const S
     COREMODAL_PETSC(VecAssemblyBegin(rhs));
     COREMODAL_PETSC(VecAssemblyEnd(rhs));
     add_couplings_to(K_work, springs, dofs);
-}
-
-// u on every rank, as a node's displacement.
-std::vector<double> gather_to_all(Vec x) {
-    PetscScatter scatter;
-    PetscVector all;
-    COREMODAL_PETSC(VecScatterCreateToAll(x, scatter.out(), all.out()));
-    COREMODAL_PETSC(VecScatterBegin(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD));
-    COREMODAL_PETSC(VecScatterEnd(scatter, x, all, INSERT_VALUES, SCATTER_FORWARD));
-    PetscInt n = 0;
-    COREMODAL_PETSC(VecGetSize(all, &n));
-    const PetscScalar* v = nullptr;
-    COREMODAL_PETSC(VecGetArrayRead(all, &v));
-    std::vector<double> out(v, v + n);
-    COREMODAL_PETSC(VecRestoreArrayRead(all, &v));
-    return out;
 }
 
 PetscKsp cholesky_solver(Mat K) {
