@@ -8,6 +8,7 @@
 #include "assembly/petsc_system.hpp"
 #include "models/part_materials.hpp"
 #include "models/solid/gravity_contact.hpp"
+#include "scene/case_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -171,4 +172,52 @@ TEST_CASE("An expanded chuck, and a uniform soft layer, are held exactly as befo
         // Over the bands only (2 x 2 pi R w), as before the one-sided contact.
         CHECK(supports.coupled_area_m2 == Approx(2 * 2 * M_PI * kBore * 0.06).epsilon(1e-4));
     }
+}
+
+TEST_CASE("An expanded chuck's modes are those of coremodal before the one-sided contact, to 1e-10",
+          "[verification][chucks][contact]") {
+    // A 0.9 m news core on expanded chucks (6 bar) in elastic bearings with
+    // frame masses, solid level: every coupling the chucks make. The
+    // reference frequencies are main's binary (commit 2e97d2b) on this text,
+    // from its summary.json; this branch gave them bit for bit.
+    const std::string text = R"(name = "expanded-small"
+model = "solid"
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "0.9 m"
+material = "paperboard_core"
+[supports]
+type = "chucks"
+[supports.left]
+inserted_length = "110 mm"
+clearance = "0.5 mm"
+shaft_diameter = "60 mm"
+shaft_length = "150 mm"
+expansion_pressure = "6 bar"
+[[supports.left.expanding]]
+center = "70 mm"
+width = "60 mm"
+[supports.left.bearing]
+radial_stiffness = "200 kN/mm"
+tilting_stiffness = "1 MN*m/rad"
+frame_mass = "50 kg"
+frame_stiffness = "100 kN/mm"
+[mesh]
+level = "coarse"
+around = 16
+along = 20
+through_wall = 2
+[analysis]
+modes = 8
+)";
+    const std::vector<double> before = {176.03001377648505, 176.0300137771509,  203.58744687900906,
+                                        203.58744687955402, 207.17311393139707, 242.62893964720763,
+                                        242.62893964739067, 261.4151407619425};
+    const Scene s = parse_case_text(text, "expanded-small.toml");
+    CHECK(s.effects() ==
+          std::vector<std::string>{"core", "elastic_chucks", "contact_compliance", "bearing_springs", "frame_mass"});
+    const RunReport r = solve_without_chuck_factor(s);
+    REQUIRE(r.modes.modes.size() == before.size());
+    for (size_t i = 0; i < before.size(); ++i) CHECK(r.modes.modes[i].frequency_hz == Approx(before[i]).epsilon(1e-10));
 }
