@@ -69,6 +69,7 @@ inline double contact_tangential_ratio(const ContactLaw& law = contact_law()) {
 // Standard gravity, m/s^2 (3rd CGPM, 1901; the local value is 9.780-9.832
 // from equator to pole, a 0.5 % spread). The scene's gravity acts along -y.
 constexpr double kStandardGravity = 9.80665;
+inline const char* kGravityText = "9.80665 m/s^2 along -y";  // kStandardGravity, for the summary's words
 
 // The one-sided contact's law at one point, from its stiffness at zero
 // pressure k_n0 (Pa/m) and Pfeiffer's K1 (Pa).
@@ -87,7 +88,7 @@ struct StackContact {
 inline std::string one_sided_contact_assumption(const std::string& chuck, const ContactLaw& law = contact_law()) {
     return "chuck " + chuck +
            ": not expanded, one-sided contact: the bore rests on the chuck body across the radial clearance "
-           "under gravity (9.80665 m/s^2 along -y; the roll's, chucks' and frames' weight), over the whole "
+           "under gravity (" + std::string(kGravityText) + "; the roll's, chucks' and frames' weight), over the whole "
            "inserted length; compression only, p = K1 (exp(d/u0) - 1) with K1 = " +
            std::to_string(static_cast<int>(law.residual_pressure / 1e3)) +
            " kPa; static state frictionless (found by an active-set Newton iteration, 3D solid); the modes "
