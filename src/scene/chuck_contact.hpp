@@ -40,9 +40,13 @@ struct ContactLaw {
     // to 1.2e11 Pa/m at 6 bar. k is sensitive (case 08: 0.768, bonded 0.839).
     double stack_exponent = 50;
     double layer_thickness = 1e-3;     // h, m: one to two plies of the bore (see K2)
-    // Not a material constant: the roll's weight over the contact is 3-9 kPa
-    // for cases 07 and 09 and 0.4-0.8 MPa for a full 1 m news roll.
-    double residual_pressure = 20e3;   // p_residual, Pa: a not-expanded element
+    // Two roles. contact = "uniform" with expanded = false: the residual
+    // pressure of the old soft layer (not a material constant: the roll's
+    // weight over the contact is 3-9 kPa for cases 07 and 09, 0.4-0.8 MPa for
+    // a full 1 m news roll). contact = "one-sided": Pfeiffer's K1, the
+    // stack's pressure scale (k_n0 = K2 K1 / h), the pressure itself being
+    // computed; no source for K1 checked, suggested 5-50 kPa.
+    double residual_pressure = 20e3;   // Pa
     // Mindlin's ratio holds for randomly rough contacts (Campana, Persson &
     // Mueser 2011); k_t/k_n = 0.67 (nu = 0.5) to 1.0 (nu = 0), 0.82 here.
     double poisson = 0.3;
