@@ -285,7 +285,9 @@ std::vector<std::string> contact_state_lines(const GravityContact& contact, doub
     std::vector<std::string> lines;
     for (const ChuckContactState& c : contact.chucks)
         lines.push_back("chuck " + c.chuck + ": the static contact under gravity (" +
-                        std::to_string(contact.iterations) + " active-set iterations) is closed over " +
+                        std::to_string(contact.iterations) + " active-set iterations; frictionless, held about the "
+                        "axis by a tangential spring of " + significant(kStaticTangentialFraction, 1) +
+                        " k_n) is closed over " +
                         significant(c.arc_deg, 3) + " deg of arc at the top and z = " + significant(c.z_from_m * 1e3, 4) +
                         " to " + significant(c.z_to_m * 1e3, 4) + " mm (" + std::to_string(c.closed_points) + " of " +
                         std::to_string(c.points) + " points), carries " + significant(c.vertical_force_n, 4) +
