@@ -125,11 +125,33 @@ CouplingElement spring_layer_face(const Mesh& mesh, const ChuckEffects& chuck, c
     return e;
 }
 
-void hold_core_by_chuck(const Mesh& mesh, const ChuckEffects& chuck, ChuckSupports& out) {
+// A one-sided contact (a chuck not expanded): every bore face over the body
+// is a candidate; whether a point closes is the static solve's to find.
+void add_contact_faces(const Mesh& mesh, int chuck_index, const FaceSet& bore, const FacingNodes& facing,
+                       ChuckSupports& out) {
+    for (int f = 0; f < bore.n_faces(); ++f) {
+        ContactFace face;
+        face.chuck = chuck_index;
+        for (int a = 0; a < bore.nodes_per_face; ++a) {
+            face.core_nodes.push_back(bore.face(f)[a]);
+            face.chuck_nodes.push_back(facing(bore.face(f)[a]));
+        }
+        for (const FacePoint& p : face_quadrature(face_coords(mesh, bore, f), kSpringLayerGauss))
+            face.points.push_back({p.N, p.x, p.area_weight});
+        out.couplings.push_back(contact_coupling(face, [](size_t) { return Eigen::Matrix3d::Zero(); }));
+        out.contact_faces.push_back(std::move(face));
+    }
+}
+
+void hold_core_by_chuck(const Mesh& mesh, int chuck_index, const ChuckEffects& chuck, ChuckSupports& out) {
     const std::string& name = chuck.placement.chuck;
     const std::string core_group = "interface_" + name + "_core";
     const FaceSet& bore = faces_of(mesh, core_group);
     const FacingNodes facing(mesh, mesh.node_groups.at("interface_" + name + "_chuck"));
+    if (chuck.one_sided) {
+        add_contact_faces(mesh, chuck_index, bore, facing, out);
+        return;
+    }
     if (chuck.spring_layer) {
         for (int f = 0; f < bore.n_faces(); ++f)
             out.couplings.push_back(spring_layer_face(mesh, chuck, bore, f, facing, out.coupled_area_m2));
@@ -206,8 +228,10 @@ void add_frame_nodes(const Scene& scene, Mesh& mesh) {
 
 ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh) {
     ChuckSupports out;
-    for (const ChuckEffects& chuck : support_effects(scene).chucks) {
-        hold_core_by_chuck(mesh, chuck, out);
+    const std::vector<ChuckEffects> chucks = support_effects(scene).chucks;
+    for (size_t i = 0; i < chucks.size(); ++i) {
+        const ChuckEffects& chuck = chucks[i];
+        hold_core_by_chuck(mesh, static_cast<int>(i), chuck, out);
         hold_chuck_by_bearing(mesh, chuck, out);
     }
     return out;

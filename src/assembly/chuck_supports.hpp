@@ -9,6 +9,7 @@
 
 #include "assembly/cell_loop.hpp"
 #include "assembly/dof_map.hpp"
+#include "assembly/one_sided_contact.hpp"
 #include "mesh/mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -20,7 +21,11 @@ namespace coremodal {
 struct ChuckSupports {
     std::vector<int> eliminated;           // nodes of rigid bearing faces
     std::vector<NodeTie> ties;             // bonded core nodes -> facing chuck nodes
-    std::vector<CouplingElement> couplings;  // spring layers, bearing springs, frame masses
+    std::vector<CouplingElement> couplings;  // spring layers, bearing springs, frame masses, contact placeholders
+    // Bore faces of one-sided contacts (chucks not expanded). Each also has a
+    // coupling above with structural zeros, so that the assembled matrices
+    // have room for the contact springs the static state closes.
+    std::vector<ContactFace> contact_faces;
     std::vector<int> grounded;             // nodes on springs to the ground (elastic bearings, frames)
     double coupled_area_m2 = 0;            // bore area held by expanding elements (both chucks)
 };

@@ -168,6 +168,11 @@ void add_chuck(BeamNetwork& net, const Scene& scene, const ChuckSpec& spec, cons
                const std::vector<double>& core_stations, const CoreNodes& core, int n_elements, int refine,
                std::vector<std::string>& notes) {
     const double tol = kStationTolerance * scene.core.length;
+    if (chuck.one_sided)  // a beam has no circumference on which a contact could open
+        throw InputError(scene.source_file + ": model = \"beam\": the " + spec.name +
+                         " chuck is not expanded, with a one-sided contact under gravity, which only the 3D solid "
+                         "models; expected model = \"solid\" or \"auto\", or contact = \"uniform\" for a "
+                         "uniform soft layer");
     const ChuckPlacement& place = chuck.placement;
     const ZRange body = place.body_range();
     const BeamSection body_section = tube_beam_section(spec.body_diameter, 0, spec.material);

@@ -28,8 +28,14 @@ namespace {
 ChuckEffects chuck_effects(const Scene& scene, const ChuckSpec& chuck) {
     ChuckEffects out;
     out.placement = chuck_placement(scene, chuck);
-    out.bonded = chuck.interface.kind == InterfaceKind::bonded;
-    if (!out.bonded) out.spring_layer = SpringLayer{chuck.interface.normal_stiffness, chuck.interface.tangential_stiffness};
+    const ChuckInterface& f = chuck.interface;
+    out.bonded = f.kind == InterfaceKind::bonded;
+    if (!out.bonded && f.contact == ContactKind::one_sided)
+        out.one_sided = OneSidedContact{(scene.core.inner_diameter - chuck.body_diameter) / 2,
+                                        StackContact{f.normal_stiffness, contact_law().residual_pressure},
+                                        f.tangential_stiffness / f.normal_stiffness};
+    else if (!out.bonded)
+        out.spring_layer = SpringLayer{f.normal_stiffness, f.tangential_stiffness};
     const BearingSpec& b = chuck.bearing;
     if (b.rigid) return out;
     out.bearing_springs = BearingSprings{b.radial_stiffness, b.tilting_stiffness};
@@ -43,6 +49,8 @@ SupportEffects support_effects(const Scene& scene) {
     SupportEffects out;
     for (const ClampSpec& c : scene.supports.clamps) out.clamps.push_back({c.name, {c.z_start, c.z_end}});
     for (const ChuckSpec& chuck : scene.supports.chucks) out.chucks.push_back(chuck_effects(scene, chuck));
+    for (const ChuckEffects& c : out.chucks)
+        if (c.one_sided) out.gravity = GravityPreload{};
     return out;
 }
 
@@ -55,6 +63,8 @@ std::vector<std::string> effect_names(const Scene& scene, const SupportEffects& 
     const auto any = [&](auto pred) { return std::any_of(chucks.begin(), chucks.end(), pred); };
     out.push_back(ChuckEffects::kName);
     if (any([](const ChuckEffects& c) { return c.spring_layer.has_value(); })) out.push_back(SpringLayer::kName);
+    if (any([](const ChuckEffects& c) { return c.one_sided.has_value(); })) out.push_back(OneSidedContact::kName);
+    if (effects.gravity) out.push_back(GravityPreload::kName);
     if (any([](const ChuckEffects& c) { return c.bearing_springs.has_value(); })) out.push_back(BearingSprings::kName);
     if (any([](const ChuckEffects& c) { return c.frame.has_value(); })) out.push_back(FrameMass::kName);
     return out;

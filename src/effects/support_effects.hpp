@@ -10,6 +10,9 @@
 //   elastic_chucks      chuck body + shaft cells           chuck section cells                   a steel beam per chuck
 //     bonded tie        bore node takes chuck node's DOFs  bore components tied                  body shares core nodes
 //   contact_compliance  coupling per bore face             ring spring per interface edge        spring layer per length
+//   one_sided_contact   static active set under gravity,   refused (not axisymmetric)            refused
+//     + gravity_preload then a coupling per bore face on
+//                       the closed points
 //   rigid bearing       shaft end face eliminated          shaft end edges held                  shaft end node held
 //   bearing_springs     springs spread over the end face   ring springs over the end edges       radial + tilting springs
 //   frame_mass          frame node, 3 translations         one DOF in n = 0 and n = 1            frame node, 2 translations
@@ -19,6 +22,7 @@
 
 #include "effects/chuck_placement.hpp"
 #include "element/term.hpp"
+#include "scene/chuck_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <Eigen/Dense>
@@ -61,6 +65,39 @@ struct SpringLayer {
     double axial_stiffness(const ExpandingElement& e, double bore_radius) const;
 };
 
+// A chuck that was not expanded (contact = "one-sided", docs/chucks.md): the
+// bore rests on the chuck body across the radial clearance where the roll's
+// weight closes it, anywhere on the inserted length. Interpenetration of the
+// layer at a bore point with outward normal e_r,
+//     d = -clearance - e_r . (u_core - u_chuck),   closed while d > 0,
+// carries p(d) = K1 (exp(d/u0) - 1) (scene/chuck_contact.hpp). The modes are
+// linearised about the static state: where closed, the spring layer at the
+// tangent stiffness k_n(p) and Mindlin's k_t = ratio k_n(p) (stuck); where
+// open, nothing.
+struct OneSidedContact {
+    static constexpr const char* kName = "one_sided_contact";
+    static constexpr Term kTerm = Term::stiffness;
+    double clearance = 0;         // m, radial, bore minus body
+    StackContact law;             // k_n0 (Pa/m) and K1 (Pa)
+    double tangential_ratio = 0;  // k_t / k_n
+
+    // The spring layer of a closed point at contact pressure p (Pa).
+    SpringLayer linearised(double p) const {
+        const double k = law.stiffness(p);
+        return {k, tangential_ratio * k};
+    }
+};
+
+// The scene's weight, along -y, as the static load whose state the modes of
+// a one-sided contact are linearised about: the consistent body force
+// M g (every part, lumped frame masses too). Only with a one-sided contact:
+// an expanded or bonded chuck's modes do not depend on it (no geometric
+// stiffness from gravity is added: the static stresses are small).
+struct GravityPreload {
+    static constexpr const char* kName = "gravity_preload";
+    double g = kStandardGravity;  // m/s^2, along -y
+};
+
 // The area of the bore an expanding element presses on, m^2.
 double contact_area(const ExpandingElement& e, double bore_radius);
 
@@ -98,7 +135,8 @@ struct ChuckEffects {
     static constexpr const char* kName = "elastic_chucks";
     ChuckPlacement placement;
     bool bonded = false;
-    std::optional<SpringLayer> spring_layer;        // interface = "spring"
+    std::optional<SpringLayer> spring_layer;        // interface = "spring", contact = "uniform"
+    std::optional<OneSidedContact> one_sided;       // interface = "spring", contact = "one-sided"
     std::optional<BearingSprings> bearing_springs;  // absent: a rigid bearing
     std::optional<FrameMass> frame;                 // only with bearing springs
 };
@@ -106,14 +144,15 @@ struct ChuckEffects {
 struct SupportEffects {
     std::vector<RigidClamp> clamps;    // left then right
     std::vector<ChuckEffects> chucks;  // left then right, as Scene::supports.chucks
+    std::optional<GravityPreload> gravity;  // with any one-sided contact
 };
 
 SupportEffects support_effects(const Scene& scene);
 
 // The names of the effects a scene simulates, in the summary's vocabulary:
 // "core" always, "rest_paper" when there is one, then each support effect
-// applied (rigid_clamps, elastic_chucks, contact_compliance, bearing_springs,
-// frame_mass). A free-free scene adds nothing: free is the absence of supports.
+// applied (rigid_clamps, elastic_chucks, contact_compliance,
+// one_sided_contact, gravity_preload, bearing_springs, frame_mass). A free-free scene adds nothing: free is the absence of supports.
 std::vector<std::string> effect_names(const Scene& scene, const SupportEffects& effects);
 
 }  // namespace coremodal

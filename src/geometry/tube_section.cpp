@@ -108,7 +108,12 @@ void add_chucks(const Scene& scene, TubeSection& section) {
         body.n_shaft = shaft_elements(c.shaft_length, body.shaft_radius, scene.mesh.n_around);
         section.chucks.push_back(body);
         const ChuckPlacement place = chuck_placement(scene, c);
-        for (const auto& e : c.expanding) section.interfaces.push_back({c.name, place.element_range(e).pair()});
+        // A chuck not expanded (one-sided contact) may touch the bore anywhere
+        // on its body: the retracted elements sit at or below its surface.
+        if (c.interface.kind == InterfaceKind::spring && c.interface.contact == ContactKind::one_sided)
+            section.interfaces.push_back({c.name, place.body_range().pair()});
+        else
+            for (const auto& e : c.expanding) section.interfaces.push_back({c.name, place.element_range(e).pair()});
     }
 }
 

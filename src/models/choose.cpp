@@ -8,9 +8,18 @@
 
 namespace coremodal {
 
+std::optional<std::string> one_sided_contact_reason(const Scene& scene) {
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        if (chuck.interface.kind == InterfaceKind::spring && chuck.interface.contact == ContactKind::one_sided)
+            return "the " + chuck.name + " chuck is not expanded: its contact closes under gravity on one side "
+                   "of the bore only (contact = \"one-sided\"), which the 3D solid models";
+    return std::nullopt;
+}
+
 std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
     if (scene.mesh.file)
         return "a [mesh] file: the harmonic level meshes the scene's own r-z section";
+    if (const auto why = one_sided_contact_reason(scene)) return why;
     for (const ChuckSpec& chuck : scene.supports.chucks)
         for (const ExpandingElement& e : chuck.expanding)
             if (e.segments > 0)
@@ -20,6 +29,10 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
 }
 
 void require_axisymmetric(const Scene& scene) {
+    if (const auto why = one_sided_contact_reason(scene))
+        throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
+                         "; expected model = \"solid\" or \"auto\", or contact = \"uniform\" for the uniform "
+                         "soft layer of earlier versions");
     if (const auto why = why_not_axisymmetric(scene))
         throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
                          "; expected full bands and no [mesh] file, or model = \"solid\"");

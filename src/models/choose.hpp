@@ -10,8 +10,12 @@
 
 namespace coremodal {
 
+// Why only the 3D solid can solve the scene's contact: a chuck with a
+// one-sided contact (not expanded), or nothing.
+std::optional<std::string> one_sided_contact_reason(const Scene& scene);
+
 // Why the harmonic level cannot solve the scene (a user [mesh] file, a
-// segmented expanding element: both break the symmetry about the axis), or
+// segmented expanding element, a one-sided contact: each breaks the symmetry about the axis), or
 // nothing when it can.
 std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 

@@ -2,14 +2,18 @@
 
 namespace coremodal {
 
-std::vector<double> gather_to_root(Vec x) {
+namespace {
+
+// x gathered into one sequential vector, on rank 0 or on every rank.
+std::vector<double> gather(Vec x, bool to_all) {
     PetscScatter scatter;
     PetscVector x0;
-    COREMODAL_PETSC(VecScatterCreateToZero(x, scatter.out(), x0.out()));
+    COREMODAL_PETSC(to_all ? VecScatterCreateToAll(x, scatter.out(), x0.out())
+                           : VecScatterCreateToZero(x, scatter.out(), x0.out()));
     COREMODAL_PETSC(VecScatterBegin(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
     COREMODAL_PETSC(VecScatterEnd(scatter, x, x0, INSERT_VALUES, SCATTER_FORWARD));
     std::vector<double> values;
-    if (mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return values;
+    if (!to_all && mpi_rank(PetscObjectComm((PetscObject)x)) != 0) return values;
     PetscInt size;
     COREMODAL_PETSC(VecGetSize(x0, &size));
     const PetscScalar* v;
@@ -18,6 +22,12 @@ std::vector<double> gather_to_root(Vec x) {
     COREMODAL_PETSC(VecRestoreArrayRead(x0, &v));
     return values;
 }
+
+}  // namespace
+
+std::vector<double> gather_to_root(Vec x) { return gather(x, false); }
+
+std::vector<double> gather_to_all(Vec x) { return gather(x, true); }
 
 std::vector<double> gather_node_displacements(Vec x, const Mesh& mesh, const DofMap& dofs) {
     const std::vector<double> values = gather_to_root(x);

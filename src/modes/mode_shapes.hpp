@@ -13,6 +13,8 @@ namespace coremodal {
 
 // x gathered to rank 0 as plain values (empty on other ranks). Collective.
 std::vector<double> gather_to_root(Vec x);
+// x on every rank (the static contact's displacements). Collective.
+std::vector<double> gather_to_all(Vec x);
 
 // Gathers x to rank 0 and expands it to every mesh node (n_nodes x 3,
 // eliminated nodes zero). Other ranks get an empty vector. Collective.

@@ -34,7 +34,8 @@ std::string chuck_text(const ChuckSpec& c) {
     if (c.interface.kind == InterfaceKind::bonded)
         s += "bonded";
     else
-        s += std::string(c.interface.expanded ? "expanded" : "not expanded") + " spring contact";
+        s += std::string(c.interface.expanded ? "expanded" : "not expanded") +
+             (c.interface.contact == ContactKind::one_sided ? ", one-sided contact under gravity" : " spring contact");
     return s + ", " + bearing_text(c.bearing);
 }
 

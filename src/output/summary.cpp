@@ -85,6 +85,7 @@ toml::array chucks_array(const std::vector<ChuckSpec>& chucks) {
         toml::table interface{{"kind", c.interface.kind == InterfaceKind::bonded ? "bonded" : "spring"}};
         if (c.interface.kind == InterfaceKind::spring) {
             interface.insert("expanded", c.interface.expanded);
+            if (c.interface.contact == ContactKind::one_sided) interface.insert("contact", "one-sided");
             interface.insert("normal_stiffness_pa_per_m", c.interface.normal_stiffness);
             interface.insert("tangential_stiffness_pa_per_m", c.interface.tangential_stiffness);
             if (c.interface.expansion_pressure) interface.insert("expansion_pressure_pa", *c.interface.expansion_pressure);

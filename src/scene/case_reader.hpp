@@ -40,6 +40,7 @@ inline constexpr std::size_t kMaxShownChars = 60;
 inline const std::vector<std::string_view> kModelLevels = {"solid", "harmonic", "auto", "beam"};
 inline const std::vector<std::string_view> kSupportTypes = {"free", "clamped", "chucks"};
 inline const std::vector<std::string_view> kInterfaceKinds = {"spring", "bonded"};
+inline const std::vector<std::string_view> kContactKinds = {"uniform", "one-sided"};
 inline const std::vector<std::string_view> kBearingTypes = {"rigid", "elastic"};
 inline const std::vector<std::string_view> kElementTypes = {"hex20", "hex27"};
 
@@ -201,6 +202,7 @@ private:
     std::vector<ExpandingElement> read_expanding(const Section& chuck, const ChuckSpec& c) const;
 
     ChuckInterface read_interface(const Section& s, const std::string& chuck, Scene& scene) const;
+    ContactKind read_contact(const Section& s, bool expanded) const;
 
     BearingSpec read_bearing(const Section& chuck, const std::string& name, Scene& scene) const;
 

@@ -160,6 +160,19 @@ std::vector<ExpandingElement> CaseReader::read_expanding(const Section& chuck, c
     return out;
 }
 
+// contact = "one-sided" (the default when not expanded) or "uniform"; a
+// one-sided contact only for a chuck that was not expanded: an expanded
+// element presses on the bore all around.
+ContactKind CaseReader::read_contact(const Section& s, bool expanded) const {
+    const std::optional<std::string> given = choice(s, "contact", kContactKinds);
+    if (!given) return expanded ? ContactKind::uniform : ContactKind::one_sided;
+    if (*given == "one-sided" && expanded)
+        fail(*get(s, "contact"), s.display + " contact = \"one-sided\" with an expanded chuck: expanding elements "
+                                             "press on the bore all around; expected expanded = false, or "
+                                             "contact = \"uniform\"");
+    return *given == "one-sided" ? ContactKind::one_sided : ContactKind::uniform;
+}
+
 ChuckInterface CaseReader::read_interface(const Section& s, const std::string& chuck, Scene& scene) const {
     ChuckInterface f;
     const std::string kind = choice(s, "interface", kInterfaceKinds).value_or("spring");
@@ -169,10 +182,10 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     const toml::node* kt = get(s, "tangential_stiffness");
     const toml::node* p = get(s, "expansion_pressure");
     if (f.kind == InterfaceKind::bonded) {
-        for (const toml::node* n : {kn, kt, p, get(s, "expanded")})
+        for (const toml::node* n : {kn, kt, p, get(s, "expanded"), get(s, "contact")})
             if (n)
-                fail(*n, s.display + " interface = \"bonded\" takes no stiffness, pressure or expanded state; "
-                                     "expected interface = \"spring\" for a compliant contact");
+                fail(*n, s.display + " interface = \"bonded\" takes no stiffness, pressure, expanded state or "
+                                     "contact; expected interface = \"spring\" for a compliant contact");
         return f;
     }
     if (p && kn)
@@ -181,6 +194,8 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     if (p && !f.expanded)
         fail(*p, s.display + " expansion_pressure with expanded = false; expected no pressure for a chuck that "
                              "was not expanded");
+    f.contact = read_contact(s, f.expanded);
+    const bool one_sided = f.contact == ContactKind::one_sided;
     const ContactLaw& law = contact_law();
     if (kn) {
         f.normal_stiffness = *quantity(s, "normal_stiffness");
@@ -188,15 +203,18 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
         const double pressure = !f.expanded ? 0.0 : quantity(s, "expansion_pressure").value_or(law.default_pressure);
         if (f.expanded) f.expansion_pressure = pressure;
         f.normal_stiffness = contact_normal_stiffness(pressure, law);
-        scene.assumptions.push_back(
-            "chuck " + chuck + ": interface normal stiffness " +
-            format_quantity(f.normal_stiffness, Dimension::stiffness_per_area) + " from " +
-            (f.expanded ? "expansion pressure " + format_quantity(pressure, Dimension::pressure) +
-                              (p ? "" : " (assumed)")
-                        : std::string("a chuck not expanded (residual contact pressure ") +
-                              format_quantity(law.residual_pressure, Dimension::pressure) + ")") +
-            ": k_n = K2 (p + p_res) / h with K2 = " + format_quantity(law.stack_exponent, Dimension::dimensionless) +
-            ", h = " + format_quantity(law.layer_thickness, Dimension::length) + " (docs/chucks.md)");
+        const std::string k2_h = ": k_n = K2 (p + " + std::string(one_sided ? "K1" : "p_res") + ") / h with K2 = " +
+                                 format_quantity(law.stack_exponent, Dimension::dimensionless) +
+                                 ", h = " + format_quantity(law.layer_thickness, Dimension::length) + " (docs/chucks.md)";
+        const std::string from =
+            f.expanded ? "expansion pressure " + format_quantity(pressure, Dimension::pressure) + (p ? "" : " (assumed)")
+            : one_sided ? "zero contact pressure (Pfeiffer's K1 = " + format_quantity(law.residual_pressure, Dimension::pressure) +
+                              "), rising with the static contact pressure where the contact closes"
+                        : "a chuck not expanded (residual contact pressure " +
+                              format_quantity(law.residual_pressure, Dimension::pressure) + ")";
+        scene.assumptions.push_back("chuck " + chuck + ": interface normal stiffness " +
+                                    format_quantity(f.normal_stiffness, Dimension::stiffness_per_area) + " from " +
+                                    from + k2_h);
     }
     if (kt) {
         f.tangential_stiffness = *quantity(s, "tangential_stiffness");
@@ -206,6 +224,7 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
                                     format_quantity(f.tangential_stiffness, Dimension::stiffness_per_area) +
                                     " = Mindlin's ratio 2(1-nu)/(2-nu) with nu = 0.3 times the normal stiffness");
     }
+    if (one_sided) scene.assumptions.push_back(one_sided_contact_assumption(chuck));
     return f;
 }
 

@@ -151,6 +151,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("chuck", "material", ValueKind::material),
         plain_key("chuck", "interface", ValueKind::text),
         plain_key("chuck", "expanded", ValueKind::boolean),
+        plain_key("chuck", "contact", ValueKind::text),
         {"chuck", "normal_stiffness", ValueKind::quantity, Dimension::stiffness_per_area, 0.0, kInf, true},
         {"chuck", "tangential_stiffness", ValueKind::quantity, Dimension::stiffness_per_area, 0.0, kInf, true},
         {"chuck", "expansion_pressure", ValueKind::quantity, Dimension::pressure, 0.0, 1e9},

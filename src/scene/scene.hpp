@@ -46,10 +46,18 @@ struct ExpandingElement {
 // spring layer with normal and tangential stiffness per unit area.
 enum class InterfaceKind { bonded, spring };
 
+// How the spring layer touches the bore: uniform = all around the expanding
+// elements, in tension and compression alike (an expanded chuck); one_sided =
+// a not-expanded chuck: the bore rests on the chuck body across the radial
+// clearance under gravity, contact in compression only, closed over the arc
+// the static solve finds (docs/chucks.md, "A chuck that was not expanded").
+enum class ContactKind { uniform, one_sided };
+
 struct ChuckInterface {
     InterfaceKind kind = InterfaceKind::spring;
     bool expanded = true;               // false: the chuck was not expanded (soft contact)
-    double normal_stiffness = 0;        // Pa/m (pressure per unit relative displacement)
+    ContactKind contact = ContactKind::uniform;  // one_sided by default when not expanded
+    double normal_stiffness = 0;        // Pa/m (pressure per unit relative displacement; one_sided: at zero pressure)
     double tangential_stiffness = 0;    // Pa/m
     std::optional<double> expansion_pressure;  // Pa, when the stiffnesses were derived from it
 };

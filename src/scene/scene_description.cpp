@@ -1,5 +1,7 @@
 #include "scene/scene_description.hpp"
 
+#include "scene/chuck_contact.hpp"
+
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
 
@@ -203,12 +205,16 @@ private:
             origin(path + ".interface"));
         if (f.kind == InterfaceKind::bonded) return;
         add(display + "expanded", f.expanded ? "true" : "false", origin(path + ".expanded"));
+        if (f.contact == ContactKind::one_sided)
+            add(display + "contact", "\"one-sided\"", origin(path + ".contact", "default when not expanded"));
         std::string normal = origin(path + ".normal_stiffness");
         if (!sources_.in_file_has(path + ".normal_stiffness") && !mirrored_)
             normal = f.expansion_pressure ? "from expansion_pressure = " +
                                                 format_quantity(*f.expansion_pressure, Dimension::pressure) + " (" +
                                                 origin(path + ".expansion_pressure") + ")"
-                                          : "from the residual contact pressure (not expanded)";
+                                          : f.contact == ContactKind::one_sided
+                                              ? "at zero contact pressure; rises with the static pressure (not expanded)"
+                                              : "from the residual contact pressure (not expanded)";
         add(display + "normal_stiffness", format_quantity(f.normal_stiffness, Dimension::stiffness_per_area), normal);
         add(display + "tangential_stiffness", format_quantity(f.tangential_stiffness, Dimension::stiffness_per_area),
             origin(path + ".tangential_stiffness", "default: Mindlin's ratio x normal_stiffness"));
@@ -294,13 +300,23 @@ std::string effect_detail(const Scene& s, const std::string& effect) {
         std::string out = "steel bodies and shafts inside both core ends";
         for (const ChuckSpec& c : s.supports.chucks)
             out += "; " + c.name + ": " + std::to_string(c.expanding.size()) + " expanding element(s), " +
-                   (c.interface.kind == InterfaceKind::bonded ? "bonded" : "spring contact");
+                   (c.interface.kind == InterfaceKind::bonded                ? "bonded"
+                    : c.interface.contact == ContactKind::one_sided ? "not expanded, one-sided contact"
+                                                                   : "spring contact");
         return out;
     }
     if (effect == "contact_compliance")
         return "a spring layer between chuck and bore (k_n, k_t per unit area, contact law of docs/chucks.md) at the " +
                chuck_names(s, [](const ChuckSpec& c) { return c.interface.kind == InterfaceKind::spring; }) +
                " chuck(s)";
+    if (effect == "one_sided_contact")
+        return "the bore resting on the body across the clearance, compression only, closed where gravity closes it, "
+               "at the " +
+               chuck_names(s, [](const ChuckSpec& c) { return c.interface.contact == ContactKind::one_sided; }) +
+               " chuck(s) (not expanded; 3D solid)";
+    if (effect == "gravity_preload")
+        return "the static state under the weight of every part (" + std::string(kGravityText) +
+               "), the modes linearised about it";
     if (effect == "bearing_springs")
         return "radial and tilting bearing springs at the " +
                chuck_names(s, [](const ChuckSpec& c) { return !c.bearing.rigid; }) + " shaft end(s)";

@@ -73,11 +73,7 @@ namespace {
 
 // f1 of a scene, without the free-span solve for k (f2 does not change with the chuck).
 double f1_of(const Scene& s) {
-    RunOptions options;
-    options.quiet = true;
-    options.write_results = false;
-    options.chuck_factor_by_fe = false;
-    const RunReport r = run_scene(s, options);
+    const RunReport r = solve_without_chuck_factor(s);
     check_verified(r);
     return first_bending(r);
 }

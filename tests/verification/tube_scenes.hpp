@@ -43,6 +43,15 @@ inline RunReport solve_quietly(const Scene& s) {
     return run_scene(s, options);
 }
 
+// The same without the chuck factor's free-span solve (for f1 alone).
+inline RunReport solve_without_chuck_factor(const Scene& s) {
+    RunOptions options;
+    options.quiet = true;
+    options.write_results = false;
+    options.chuck_factor_by_fe = false;
+    return run_scene(s, options);
+}
+
 // The k-th (1-based) mode of a type, counting each degenerate pair once.
 inline const Mode& nth_of_type(const RunReport& r, const std::string& type, int k = 1) {
     int seen = 0;

@@ -13,6 +13,7 @@
 #include "mesh/connectivity.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "models/part_materials.hpp"
+#include "models/solid/gravity_contact.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
@@ -111,6 +112,21 @@ std::vector<Mode> solid_modes(const Mesh& mesh, const DofMap& dofs, const Operat
     return modes;
 }
 
+// A chuck not expanded: the static state under gravity (active set, Cholesky),
+// then its closed contact's springs added to K for the modes.
+void linearise_about_gravity(const Scene& scene, const DofMap& dofs, const ChuckSupports& chucks,
+                             OperatorSet& system, const Printer& say, LevelModes& out) {
+    say("      static state under gravity (-y): one-sided contact by an active-set iteration");
+    const Heartbeat beat("solving the static contact", say);
+    const SupportEffects effects = support_effects(scene);
+    const GravityContact contact = solve_gravity_contact(system, dofs, chucks, effects, say);
+    add_couplings_to(system.K(), linearised_contact(chucks.contact_faces, contact.state, effects), dofs);
+    for (const std::string& line : contact_state_lines(contact, scene.roll_mass() * effects.gravity->g)) {
+        say("      " + line);
+        out.assumptions.push_back(line);
+    }
+}
+
 }  // namespace
 
 Mesh make_solid_mesh(const Scene& scene) {
@@ -156,12 +172,13 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
 
     // 4. The one problem: the OperatorSet of the whole solid.
     say("[3/7] assembling stiffness and mass");
-    const OperatorSet system = [&] {
+    OperatorSet system = [&] {
         const Heartbeat beat("assembling", say);
         return assemble_petsc(mesh, part_materials(scene, mesh.part_names, out.info.mesh_source), dofs,
                               chucks.couplings);
     }();
     out.info.mass_kg = system.model_mass;
+    if (!chucks.contact_faces.empty()) linearise_about_gravity(scene, dofs, chucks, system, say, out);
     out.timing.assemble = stage.lap();
 
     // 5. Solve, verify, prove complete. The scale of the first elastic
