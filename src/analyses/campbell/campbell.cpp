@@ -162,7 +162,7 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
         throw InputError(scene.source_file + ": a Campbell sweep at the harmonic level runs in one process; run it "
                                              "without mpirun");
     out.level = "harmonic";
-    out.solver = "SLEPc PEP (TOAR, shift-and-invert with a MUMPS LU factor) per wave number n";
+    out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) per wave number n";
     out.completeness = "per wave number n, the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G "
                        "at the band edge counts the modes below it (every eigenvalue of Q crosses zero downwards)";
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
