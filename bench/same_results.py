@@ -4,9 +4,10 @@
     /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--cases GLOB ...]
 
 Runs each case file of cases/ and cases/hard/ (not the [study] and [winder] cases) with both
-programs (`run CASE --no-plots -q -o DIR`), reads modes.csv from both, and
-prints one row per case: the number of modes, the largest relative frequency
-difference over the modes that are not rigid, and OK when it is at most
+programs (`run CASE --no-plots -q -o DIR`), reads modes.csv from both (a
+spinning scene: campbell.csv; a forced response: response.csv and peaks.csv), and
+prints one row per case: the number of values, the largest relative
+difference over those that are not rigid modes, and OK when it is at most
 --tolerance (default 1e-10). Exits 1 if any case differs or fails in one
 program and not the other. A refactoring that must keep every result (issue
 12) records this table in its note.
@@ -33,9 +34,24 @@ def run(binary, case, out, mesh):
     return p.returncode, p.stderr.strip().splitlines()[-1:] , time.time() - start
 
 
+def rows(folder, name):
+    with open(os.path.join(folder, name), newline="") as f:
+        return list(csv.DictReader(f))
+
+
 def frequencies(folder):
-    with open(os.path.join(folder, "modes.csv"), newline="") as f:
-        return [(float(r["frequency_hz"]), r["type"]) for r in csv.DictReader(f)]
+    """The numbers a run wrote, each with its kind ("rigid" ones are not compared):
+    the modes (modes.csv); a spinning scene's modes at its speeds (campbell.csv);
+    a forced response's amplitudes and its peaks (response.csv, peaks.csv)."""
+    if os.path.exists(os.path.join(folder, "modes.csv")):
+        return [(float(r["frequency_hz"]), r["type"]) for r in rows(folder, "modes.csv")]
+    if os.path.exists(os.path.join(folder, "campbell.csv")):
+        return [(float(r["frequency_hz"]), "rigid" if float(r["frequency_hz"]) == 0 else "")
+                for r in rows(folder, "campbell.csv")]
+    values = [(float(r["amplitude_mm"]), "") for r in rows(folder, "response.csv")]
+    for r in rows(folder, "peaks.csv"):
+        values += [(float(r["web_speed_m_s"]), ""), (float(r["amplitude_mm"]), "")]
+    return values
 
 
 def compare(old, new):
@@ -60,7 +76,7 @@ def main():
     cases = a.cases or sorted(glob.glob(os.path.join(ROOT, "cases", "*.toml")) +
                               glob.glob(os.path.join(ROOT, "cases", "hard", "*.toml")))
     bad = 0
-    print(f"| case | modes | max relative difference | |\n|---|---|---|---|")
+    print(f"| case | values | max relative difference | |\n|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for i, case in enumerate(cases):
             name = os.path.relpath(case, ROOT)

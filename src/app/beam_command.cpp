@@ -28,34 +28,36 @@ struct BeamOptions {
 };
 
 struct QuantityOption {
-    const char* name;  // without the dashes
+    const char* name;                                 // without the dashes
+    std::optional<double> BeamFormulaInputs::*value;  // where it goes
     Dimension dimension;
     const char* help;
 };
 
 const std::vector<QuantityOption>& quantity_options() {
+    using In = BeamFormulaInputs;
     static const std::vector<QuantityOption> options = {
-        {"di", Dimension::length, "core inner diameter Di, e.g. 76mm (overrides the case)"},
-        {"do", Dimension::length, "core outer diameter Do, e.g. 106mm"},
-        {"lc", Dimension::length, "full core length Lc, e.g. 2211mm"},
-        {"dp", Dimension::length, "rest roll outer diameter Dp, e.g. 300mm (adds rest paper to a bare core)"},
-        {"li", Dimension::length, "core end to the middle of the furthest expanding element, e.g. 250mm"},
-        {"chuck-depth", Dimension::length, "chuck insertion depth for König's l (default: the clamp zones' "
+        {"di", &In::di, Dimension::length, "core inner diameter Di, e.g. 76mm (overrides the case)"},
+        {"do", &In::do_, Dimension::length, "core outer diameter Do, e.g. 106mm"},
+        {"lc", &In::lc, Dimension::length, "full core length Lc, e.g. 2211mm"},
+        {"dp", &In::dp, Dimension::length, "rest roll outer diameter Dp, e.g. 300mm (adds rest paper to a bare core)"},
+        {"li", &In::li, Dimension::length, "core end to the middle of the furthest expanding element, e.g. 250mm"},
+        {"chuck-depth", &In::chuck_depth, Dimension::length, "chuck insertion depth for König's l (default: the clamp zones' "
                                            "inner edges of the case, else Li)"},
-        {"ec", Dimension::pressure, "core flexural modulus Ec, e.g. 6.5GPa"},
-        {"rho-c", Dimension::density, "core density, e.g. 920kg/m^3"},
-        {"ep", Dimension::pressure, "rest paper modulus Ep, e.g. 5GPa"},
-        {"rho-p", Dimension::density, "rest paper density, e.g. 1350kg/m^3"},
-        {"k", Dimension::dimensionless, "chuck factor k for I-7 (default 1; about 0.85 for good expanding chucks)"},
-        {"safe", Dimension::dimensionless, "safety factor of the safe web speed I-5 (default 0.7; 0.7-0.8)"},
-        {"web-speed", Dimension::speed, "a web speed, e.g. 15m/s: the single-mode amplification d(r) there (I-2...4)"},
-        {"zeta", Dimension::dimensionless, "relative damping for --web-speed (default 0.01; cores 0.005-0.02)"},
-        {"koenig-factor", Dimension::dimensionless,
+        {"ec", &In::ec, Dimension::pressure, "core flexural modulus Ec, e.g. 6.5GPa"},
+        {"rho-c", &In::rho_c, Dimension::density, "core density, e.g. 920kg/m^3"},
+        {"ep", &In::ep, Dimension::pressure, "rest paper modulus Ep, e.g. 5GPa"},
+        {"rho-p", &In::rho_p, Dimension::density, "rest paper density, e.g. 1350kg/m^3"},
+        {"k", &In::k, Dimension::dimensionless, "chuck factor k for I-7 (default 1; about 0.85 for good expanding chucks)"},
+        {"safe", &In::safe, Dimension::dimensionless, "safety factor of the safe web speed I-5 (default 0.7; 0.7-0.8)"},
+        {"web-speed", &In::web_speed, Dimension::speed, "a web speed, e.g. 15m/s: the single-mode amplification d(r) there (I-2...4)"},
+        {"zeta", &In::zeta, Dimension::dimensionless, "relative damping for --web-speed (default 0.01; cores 0.005-0.02)"},
+        {"koenig-factor", &In::koenig_factor, Dimension::dimensionless,
          "experience factor of König's K-1/K-2 (default 0.66; 0.55 recommended for 150/176 cores)"},
-        {"f-free", Dimension::frequency,
+        {"f-free", &In::f_free, Dimension::frequency,
          "measured free-hanging first bending frequency at full length Lc: gives f2, and Ec (I-13/14) for a "
          "bare core or Ep (I-15) for a rest roll"},
-        {"f-clamped", Dimension::frequency, "measured first bending frequency in the stand: with --f-free gives "
+        {"f-clamped", &In::f_clamped, Dimension::frequency, "measured first bending frequency in the stand: with --f-free gives "
                                             "the chuck factor k = f1/f2 (I-6)"},
     };
     return options;
@@ -63,26 +65,18 @@ const std::vector<QuantityOption>& quantity_options() {
 
 // The values given, parsed with their units (InputError naming the option).
 BeamFormulaInputs parse_inputs(const BeamOptions& options) {
-    const auto get = [&](const std::string& name) -> std::optional<double> {
-        auto it = options.raw.find(name);
-        if (it == options.raw.end()) return std::nullopt;
-        Dimension d = Dimension::dimensionless;
-        for (const auto& q : quantity_options())
-            if (name == q.name) d = q.dimension;
-        try {
-            return parse_quantity(it->second, d);
-        } catch (const std::invalid_argument& e) {
-            throw InputError("--" + name + " " + it->second + ": " + e.what());
-        }
-    };
     BeamFormulaInputs in;
     in.case_file = options.case_file;
     in.calibration = options.calibration;
-    in.di = get("di"), in.do_ = get("do"), in.lc = get("lc"), in.dp = get("dp"), in.li = get("li");
-    in.chuck_depth = get("chuck-depth"), in.ec = get("ec"), in.rho_c = get("rho-c"), in.ep = get("ep");
-    in.rho_p = get("rho-p"), in.k = get("k"), in.safe = get("safe"), in.koenig_factor = get("koenig-factor");
-    in.f_free = get("f-free"), in.f_clamped = get("f-clamped");
-    in.web_speed = get("web-speed"), in.zeta = get("zeta");
+    for (const QuantityOption& q : quantity_options()) {
+        const auto given = options.raw.find(q.name);
+        if (given == options.raw.end()) continue;
+        try {
+            in.*q.value = parse_quantity(given->second, q.dimension);
+        } catch (const std::invalid_argument& e) {
+            throw InputError("--" + given->first + " " + given->second + ": " + e.what());
+        }
+    }
     return in;
 }
 

@@ -3,7 +3,6 @@
 // `coremodal beam --calibration` (docs/calibration.md).
 #include "analyses/calibrate/calibrate.hpp"
 #include "app/commands.hpp"
-#include "common/format.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/warnings.hpp"
 #include "output/calibration_report.hpp"
@@ -24,8 +23,7 @@ int run_calibrate_command(const CalibrateOptions& o) {
                                             o.mesh.empty() ? std::nullopt : std::optional<std::string>(o.mesh))
                                 .with_model(o.model);
     print_warnings(sweep.warnings());
-    const std::filesystem::path out_dir =
-        o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-calibration") : std::filesystem::path(o.output);
+    const std::filesystem::path out_dir = results_path(o.output, sweep.case_name(), "-calibration");
     prepare_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "calibrate", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
@@ -43,13 +41,7 @@ int run_calibrate_command(const CalibrateOptions& o) {
     folder.commit();
 
     const Calibration& c = outcome.calibration;
-    std::cout << "calibrate: 1/k^2 = " << significant(c.law.c[0]) << " + " << significant(c.law.c[1]) << " g1 + " << significant(c.law.c[2])
-              << " g2 + " << significant(c.law.c[3]) << " g3; " << c.n_fit << " points fitted (rms residual in k "
-              << significant(c.rms_residual_k) << "), " << c.n_held_out << " held out: largest f1 error "
-              << significant(100 * c.max_error_held_out) << " % (fitted " << significant(100 * c.max_error_fit) << " %), stated "
-              << significant(100 * c.stated_error) << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
-              << "calibrate: " << out_dir.string() << "/calibration.toml (apply with coremodal beam --calibration)"
-              << std::endl;
+    std::cout << calibration_console(c, out_dir.string()) << std::flush;
     if (!c.passed)
         std::cerr << "coremodal: the calibration does not reproduce the FE f1 within the stated error; see "
                   << out_dir.string() << "/report.md" << std::endl;

@@ -9,12 +9,11 @@
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/scene_description.hpp"
+#include "scene/toml_text.hpp"
 #include "output/winder_report.hpp"
 #include "winder/winder_scene.hpp"
 
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace coremodal {
 namespace {
@@ -33,13 +32,6 @@ std::string model_choice(const Scene& scene, const KeySources& sources) {
     return level_choice_text(scene, given);
 }
 
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // A two-drum winder file (docs/winder.md): its own reader, its beam model.
 int check_winder(const CheckOptions& options) {
     const WinderScene scene = read_winder_file(options.case_file);
@@ -56,7 +48,7 @@ int check_case(const CheckOptions& options) {
     // The same reading as run_case's step 1, so that the same errors come out.
     Scene scene = parse_case_file(options.case_file);
     print_warnings(scene.warnings);  // on stderr, as `run` says them
-    KeySources sources = key_sources(read_text(options.case_file));
+    KeySources sources = key_sources(read_input_file(options.case_file, "case file"));
     if (!options.mesh_level.empty()) {
         apply_mesh_level(scene, options.mesh_level);
         sources.on_command_line.insert("mesh.level");

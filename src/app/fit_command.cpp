@@ -8,7 +8,6 @@
 #include "output/results_folder.hpp"
 #include "output/text_file.hpp"
 
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -23,24 +22,14 @@ struct FitCommandOptions {
 int run_fit_command(const FitCommandOptions& o) {
     const bool root = mpi_rank() == 0;
     const FitInput input = read_fit_input(o.measurements);
-    const std::filesystem::path out_dir =
-        o.output.empty() ? std::filesystem::path("results") /
-                               (std::filesystem::path(o.measurements).stem().string() + "-fit")
-                         : std::filesystem::path(o.output);
+    const std::filesystem::path out_dir = results_path(o.output, std::filesystem::path(o.measurements).stem().string(), "-fit");
     prepare_output(out_dir, o.force);
     const FitOutcome outcome = run_fit(input, [&](const std::string& line) {
         if (root && !o.quiet) std::cout << "  fit: " << line << std::endl;
     });
     if (!root) return 0;
     ResultsFolder folder(out_dir, o.force);
-    std::vector<std::string> files;
-    for (const FittedCase& c : outcome.cases) {
-        std::string name = std::filesystem::path(c.case_file).stem().string() + "-fitted.toml";
-        if (std::find(files.begin(), files.end(), name) != files.end())
-            name = std::filesystem::path(c.case_file).stem().string() + "-" + c.model + "-fitted.toml";
-        write_text_file(folder.dir() / name, c.calibrated_text);
-        files.push_back(name);
-    }
+    const std::vector<std::string> files = write_fitted_cases(folder.dir(), outcome);
     write_text_file(folder.dir() / "fit.toml", fit_toml(input, outcome));
     write_text_file(folder.dir() / "report.md", fit_report_markdown(input, outcome, files));
     folder.commit();

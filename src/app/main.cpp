@@ -17,9 +17,9 @@
 // defaults, so an expert can override any solver setting.
 #include "common/argv.hpp"
 #include "app/commands.hpp"
-#include "app/response_run.hpp"
-#include "app/rotation_run.hpp"
+#include "app/folder_case.hpp"
 #include "common/error.hpp"
+#include "common/join.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
 #include "scene/case_schema.hpp"  // nearest: "did you mean"
@@ -36,37 +36,6 @@
 
 namespace {
 
-// A PETSc option is a single dash followed by a word with an underscore
-// ("-eps_view", "-log_view", "-st_pc_factor_mat_solver_type"); its value, if
-// any, is the next argument unless that looks like an option or a case file.
-bool is_petsc_option(const std::string& a) {
-    return a.size() > 2 && a[0] == '-' && a[1] != '-' && a.find('_') != std::string::npos;
-}
-bool is_option_value(const std::string& a) {
-    return !a.empty() && a[0] != '-' && a.find(".toml") == std::string::npos;
-}
-
-struct SplitArgs {
-    std::vector<std::string> ours;   // argv[0] and coremodal's own arguments
-    std::vector<std::string> petsc;  // argv[0] and PETSc's
-};
-
-SplitArgs split_arguments(int argc, char** argv) {
-    SplitArgs s;
-    s.ours.push_back(argv[0]);
-    s.petsc.push_back(argv[0]);
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (is_petsc_option(a)) {
-            s.petsc.push_back(a);
-            if (i + 1 < argc && is_option_value(argv[i + 1])) s.petsc.push_back(argv[++i]);
-        } else {
-            s.ours.push_back(a);
-        }
-    }
-    return s;
-}
-
 #define COREMODAL_STRINGIFY(x) #x
 #define COREMODAL_VERSION_OF(major, minor, patch) \
     COREMODAL_STRINGIFY(major) "." COREMODAL_STRINGIFY(minor) "." COREMODAL_STRINGIFY(patch)
@@ -77,17 +46,9 @@ constexpr const char* kVersionText =
     "coremodal " COREMODAL_VERSION " (built with PETSc " COREMODAL_VERSION_OF(
         PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR) ", SLEPc " COREMODAL_VERSION_OF(SLEPC_VERSION_MAJOR, SLEPC_VERSION_MINOR, SLEPC_VERSION_SUBMINOR) ", gmsh " GMSH_API_VERSION ")";
 
-std::string joined(const std::vector<std::string>& words) {
-    std::string out;
-    for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-    return out;
-}
-
-// " did you mean 'x'?" when one of `candidates` is near `word`, else "".
+// "; did you mean 'x'?" when one of `candidates` is near `word`, else "".
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
-    const std::vector<std::string_view> views(candidates.begin(), candidates.end());
-    const std::string_view near = coremodal::nearest(word, views);
-    return near.empty() ? "" : "; did you mean '" + std::string(near) + "'?";
+    return coremodal::did_you_mean(word, std::vector<std::string_view>(candidates.begin(), candidates.end()));
 }
 
 // What CLI11 says tersely about a mistyped command line, said with the
@@ -101,14 +62,14 @@ std::optional<std::string> explain_parse_error(const std::vector<coremodal::Comm
     for (const coremodal::Command& c : commands) names.push_back(c.cli->get_name());
     const auto word = std::find_if(args.begin() + 1, args.end(), [](const std::string& a) { return a[0] != '-'; });
     if (word == args.end())
-        return args.size() == 1 ? std::optional("no command given; expected one of " + joined(names)) : std::nullopt;
+        return args.size() == 1 ? std::optional("no command given; expected one of " + coremodal::join(names)) : std::nullopt;
     const auto command = std::find(names.begin(), names.end(), *word);
     if (command == names.end()) {
         const bool case_file = word->ends_with(".toml");
         return "unknown command '" + *word + "'" +
                (case_file ? "; did you mean 'coremodal run " + *word + "' or 'coremodal check " + *word + "'?"
                           : suggestion(*word, names)) +
-               "; expected one of " + joined(names);
+               "; expected one of " + coremodal::join(names);
     }
     std::vector<std::string> options;
     for (const CLI::Option* o : commands[command - names.begin()].cli->get_options()) {
@@ -122,7 +83,7 @@ std::optional<std::string> explain_parse_error(const std::vector<coremodal::Comm
             std::find(options.begin(), options.end(), name) != options.end())
             continue;
         return "coremodal " + *word + ": unknown option '" + name + "'" + suggestion(name, options) +
-               "; expected one of " + joined(options) + " ('coremodal " + *word + " --help' says what they do)";
+               "; expected one of " + coremodal::join(options) + " ('coremodal " + *word + " --help' says what they do)";
     }
     return std::nullopt;
 }
@@ -153,7 +114,7 @@ int main(int argc, char** argv) {
     // SIGINT and SIGTERM stop children and remove partial folders
     // (common/signals.hpp).
     coremodal::install_interrupt_handling();
-    SplitArgs args = split_arguments(argc, argv);
+    coremodal::SplitArguments args = coremodal::split_petsc_arguments(argc, argv);
 
     CLI::App app{"coremodal " COREMODAL_VERSION
                  ": natural modes of paper-roll cores, rest rolls and chucks (gmsh, PETSc, SLEPc)"};

@@ -25,16 +25,6 @@ std::optional<std::string> mesh_option(const std::string& mesh) {
     return mesh.empty() ? std::nullopt : std::optional<std::string>(mesh);
 }
 
-void print_crossings(const CaseSweep& sweep, const StudyResult& result) {
-    const std::optional<double> web = sweep.options().web_speed_m_s;
-    if (!web) return;
-    for (const SpeedCrossing& c : safe_speed_crossings(sweep, result, *web)) {
-        if (c.change_diameters_m.empty()) continue;
-        std::cout << "  at " << significant(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
-                  << ": change the roll below D = " << significant(c.change_diameters_m.back() * 1e3) << " mm\n";
-    }
-}
-
 int run_study_command(const StudyCommandOptions& o) {
     if (!o.worker_output.empty())
         return run_worker_point(
@@ -42,8 +32,7 @@ int run_study_command(const StudyCommandOptions& o) {
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh)).with_model(o.model);
     print_warnings(sweep.warnings());
-    const std::filesystem::path out_dir =
-        o.output.empty() ? std::filesystem::path("results") / (sweep.case_name() + "-study") : std::filesystem::path(o.output);
+    const std::filesystem::path out_dir = results_path(o.output, sweep.case_name(), "-study");
     prepare_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "study", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
@@ -59,7 +48,7 @@ int run_study_command(const StudyCommandOptions& o) {
     folder.commit();
 
     const int failed = result.n_failed();
-    if (!o.quiet) print_crossings(sweep, result);
+    if (!o.quiet) std::cout << study_crossings_console(sweep, result);
     std::cout << "study: " << sweep.n_points() - failed << " of " << sweep.n_points() << " points ok in "
               << significant(result.time_s) << " s; " << out_dir.string() << "/report.md" << std::endl;
     if (failed) std::cerr << "coremodal: " << failed << " point(s) failed; see report.md" << std::endl;

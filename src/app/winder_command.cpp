@@ -21,10 +21,6 @@
 namespace coremodal {
 namespace {
 
-// The picture the python package draws (python/coremodal/winder_plot.py).
-constexpr const char* kDiagramPng = "crossing_diagram.png";
-constexpr const char* kResponsePng = "response.png";
-
 struct WinderOptions {
     std::string case_file, output;
     bool quiet = false, no_plots = false, force = false;
@@ -32,8 +28,7 @@ struct WinderOptions {
 
 int run_winder_command(const WinderOptions& o) {
     const WinderScene scene = read_winder_file(o.case_file);
-    const std::filesystem::path out_dir =
-        o.output.empty() ? std::filesystem::path("results") / (scene.name + "-winder") : std::filesystem::path(o.output);
+    const std::filesystem::path out_dir = results_path(o.output, scene.name, "-winder");
     prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
     // A progress line on a terminal only: a log gets the summary alone.
     const bool show = !o.quiet && ::isatty(STDERR_FILENO);
@@ -46,14 +41,9 @@ int run_winder_command(const WinderOptions& o) {
     ResultsFolder folder(out_dir, o.force);
     const std::filesystem::path& dir = folder.dir();
     write_winder_tables(dir, scene, result);
-    std::vector<std::string> pngs;
-    std::string problem = o.no_plots ? "switched off (--no-plots)" : run_python_plot("winder-plot", dir);
-    if (problem.empty()) pngs = {kDiagramPng, kResponsePng};
-    else if (!o.no_plots)
-        std::cerr << "coremodal: warning: plots not drawn: " << problem
-                  << "; the tables and report.md are complete (draw them later with python3 -m coremodal "
-                     "winder-plot DIR)" << std::endl;
-    write_text_file(dir / "report.md", winder_report_markdown(scene, result, pngs, problem));
+    // The pictures python/coremodal/winder_plot.py draws.
+    const Pictures pictures = draw_pictures("winder-plot", dir, o.no_plots, {"crossing_diagram.png", "response.png"});
+    write_text_file(dir / "report.md", winder_report_markdown(scene, result, pictures.pngs, pictures.problem));
     folder.commit();
     std::cout << winder_console_summary(scene, result) << "  results: " << out_dir.string() << "/report.md" << std::endl;
     return 0;

@@ -14,13 +14,9 @@ std::string mm(double metres) { return significant(metres * 1e3, 5) + " mm"; }
 
 std::string speed(double v) { return significant(v) + " m/s (" + significant(v * 60) + " m/min)"; }
 
-}  // namespace
-
-void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
+void print_section(const BeamFormulas& r, std::ostream& out) {
     const Scene& s = r.scene;
     const RestRollSection& sec = r.section;
-    out << "coremodal beam: " << s.name;
-    if (!s.source_file.empty()) out << " (" << s.source_file << ")";
     out << "\n\nSection\n";
     out << "  core        Di " << mm(sec.Di) << ", Do " << mm(sec.Do) << ", Lc " << significant(r.Lc) << " m, Ec "
         << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c " << significant(sec.rho_c) << " kg/m^3\n";
@@ -36,6 +32,9 @@ void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
         << " kg/m, kappa G A = " << significant(r.beam.kappa_GA) << " N (Cowper; for Timoshenko)\n";
     out << "\nSpan\n";
     out << "  Li = " << mm(r.Li) << " (" << r.li_source << "), free span L = Lc - 2 Li = " << significant(r.L) << " m\n";
+}
+
+void print_frequencies(const BeamFormulas& r, std::ostream& out) {
     out << "\nFirst bending frequency\n";
     out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << significant(r.k) << ":  "
         << significant(r.f1) << " Hz\n";
@@ -43,11 +42,11 @@ void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
         out << "       k from the " << r.k_source << ": g1 = " << significant(r.groups->g1) << ", g2 = " << significant(r.groups->g2)
             << ", g3 = " << significant(r.groups->g3) << "\n";
     out << "                      Euler-Bernoulli   Timoshenko\n";
-    char line[160];
-    std::snprintf(line, sizeof line, "  clamped-clamped, L   %9.4g Hz   %9.4g Hz\n", r.eb_cc, r.timo_cc);
-    out << line;
-    std::snprintf(line, sizeof line, "  free-free, Lc        %9.4g Hz   %9.4g Hz\n", r.eb_ff, r.timo_ff);
-    out << line;
+    out << "  clamped-clamped, L   " << formatted("%9.4g", r.eb_cc) << " Hz   " << formatted("%9.4g", r.timo_cc) << " Hz\n";
+    out << "  free-free, Lc        " << formatted("%9.4g", r.eb_ff) << " Hz   " << formatted("%9.4g", r.timo_ff) << " Hz\n";
+}
+
+void print_speeds(const BeamFormulas& r, std::ostream& out) {
     out << "\nSpeeds\n";
     out << "  König " << r.koenig_formula << " (rest paper " << mm(r.paper_thickness)
         << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor " << significant(r.koenig_factor)
@@ -58,20 +57,33 @@ void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
         out << "  I-2..4 at " << speed(a->web_speed_m_s) << ": f_rot = " << significant(a->f_rot_hz) << " Hz, r = f_rot/f1 = "
             << significant(a->ratio) << ", zeta = " << significant(a->zeta) << (a->zeta_assumed ? " (assumed)" : "")
             << ": d = 1/sqrt((1 - r^2)^2 + (2 zeta r)^2) = " << significant(a->d) << "\n";
-    if (r.f_free) {
-        out << "\nFree-hanging measurement f_free = " << significant(*r.f_free) << " Hz at Lc = " << significant(r.Lc) << " m\n";
-        out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << significant(*r.f2) << " Hz\n";
-        if (r.k_measured)
-            out << "  I-6  k = f1/f2 = " << significant(*r.f_clamped) << "/" << significant(*r.f2) << " = " << significant(*r.k_measured) << "\n";
-        if (r.Ec_measured)
-            out << "  I-13/14  Q = 82.66 Ic/(Ac L^2) + 1 = " << significant(*r.Q, 5)
-                << ", Ec = 7.88e-8 f^2 M L^4 Q/Ic = " << format_quantity(*r.Ec_measured, Dimension::pressure)
-                << " (M = rho_c Ac = " << significant(sec.rho_c * r.Ac) << " kg/m)\n";
-        if (r.Ep_measured)
-            out << "  I-15  Ep (I-7 with k = 1 at Lc, solved for Ep) = "
-                << format_quantity(*r.Ep_measured, Dimension::pressure) << "\n";
-    }
-    const auto assumed = beam_formula_assumptions(s);
+}
+
+void print_measurement(const BeamFormulas& r, std::ostream& out) {
+    if (!r.f_free) return;
+    out << "\nFree-hanging measurement f_free = " << significant(*r.f_free) << " Hz at Lc = " << significant(r.Lc) << " m\n";
+    out << "  f2 = f_free Lc^2/(Lc - 2 Li)^2 = " << significant(*r.f2) << " Hz\n";
+    if (r.k_measured)
+        out << "  I-6  k = f1/f2 = " << significant(*r.f_clamped) << "/" << significant(*r.f2) << " = " << significant(*r.k_measured) << "\n";
+    if (r.Ec_measured)
+        out << "  I-13/14  Q = 82.66 Ic/(Ac L^2) + 1 = " << significant(*r.Q, 5)
+            << ", Ec = 7.88e-8 f^2 M L^4 Q/Ic = " << format_quantity(*r.Ec_measured, Dimension::pressure)
+            << " (M = rho_c Ac = " << significant(r.section.rho_c * r.Ac) << " kg/m)\n";
+    if (r.Ep_measured)
+        out << "  I-15  Ep (I-7 with k = 1 at Lc, solved for Ep) = "
+            << format_quantity(*r.Ep_measured, Dimension::pressure) << "\n";
+}
+
+}  // namespace
+
+void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
+    out << "coremodal beam: " << r.scene.name;
+    if (!r.scene.source_file.empty()) out << " (" << r.scene.source_file << ")";
+    print_section(r, out);
+    print_frequencies(r, out);
+    print_speeds(r, out);
+    print_measurement(r, out);
+    const auto assumed = beam_formula_assumptions(r.scene);
     if (!r.notes.empty() || !assumed.empty()) {
         out << "\nNotes\n";
         for (const auto& n : r.notes) out << "  - " << n << "\n";

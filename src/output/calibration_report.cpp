@@ -96,4 +96,16 @@ std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResul
     return out.str();
 }
 
+std::string calibration_console(const Calibration& c, const std::string& out_dir) {
+    std::ostringstream out;
+    out << "calibrate: 1/k^2 = " << significant(c.law.c[0]) << " + " << significant(c.law.c[1]) << " g1 + "
+        << significant(c.law.c[2]) << " g2 + " << significant(c.law.c[3]) << " g3; " << c.n_fit
+        << " points fitted (rms residual in k " << significant(c.rms_residual_k) << "), " << c.n_held_out
+        << " held out: largest f1 error " << significant(100 * c.max_error_held_out) << " % (fitted "
+        << significant(100 * c.max_error_fit) << " %), stated " << significant(100 * c.stated_error)
+        << " %: " << (c.passed ? "passed" : "FAILED") << "\n"
+        << "calibrate: " << out_dir << "/calibration.toml (apply with coremodal beam --calibration)\n";
+    return out.str();
+}
+
 }  // namespace coremodal

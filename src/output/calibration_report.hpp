@@ -13,5 +13,7 @@ std::string calibration_csv(const CaseSweep& sweep, const CalibrationOutcome& ou
 std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResult& result,
                                         const CalibrationOutcome& outcome, const std::vector<std::string>& pngs,
                                         const std::string& plot_problem);
+// The law, its fit and its check in two lines, and where calibration.toml is.
+std::string calibration_console(const Calibration& c, const std::string& out_dir);
 
 }  // namespace coremodal

@@ -1,7 +1,9 @@
 #include "output/fit_report.hpp"
 
 #include "common/format.hpp"
+#include "output/text_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -108,6 +110,18 @@ std::string fit_console(const FitOutcome& out) {
           << (p.at_bound ? " (at bound)" : "") << "\n";
     for (const std::string& w : out.warnings) s << "  warning: " << w << "\n";
     return s.str();
+}
+
+std::vector<std::string> write_fitted_cases(const std::filesystem::path& folder, const FitOutcome& outcome) {
+    std::vector<std::string> files;
+    for (const FittedCase& c : outcome.cases) {
+        const std::string stem = std::filesystem::path(c.case_file).stem().string();
+        std::string name = stem + "-fitted.toml";
+        if (std::find(files.begin(), files.end(), name) != files.end()) name = stem + "-" + c.model + "-fitted.toml";
+        write_text_file(folder / name, c.calibrated_text);
+        files.push_back(name);
+    }
+    return files;
 }
 
 }  // namespace coremodal

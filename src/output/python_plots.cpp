@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 
 extern char** environ;
 
@@ -94,6 +95,17 @@ std::string run_python_plot(const std::string& subcommand, const fs::path& folde
     const std::string how = WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
                                               : "signal " + std::to_string(WTERMSIG(status));
     return what + " failed (" + how + ")" + (why.empty() ? std::string() : ": " + why) + " (log: plot.log)";
+}
+
+Pictures draw_pictures(const std::string& subcommand, const fs::path& folder, bool no_plots,
+                       const std::vector<std::string>& pngs) {
+    Pictures out;
+    out.problem = no_plots ? "switched off (--no-plots)" : run_python_plot(subcommand, folder);
+    if (out.problem.empty()) out.pngs = pngs;
+    else if (!no_plots)
+        std::cerr << "coremodal: warning: plots not drawn: " << out.problem << "; the tables and report.md are "
+                  << "complete (draw them later with python3 -m coremodal " << subcommand << " DIR)" << std::endl;
+    return out;
 }
 
 }  // namespace coremodal

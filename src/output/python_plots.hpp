@@ -26,4 +26,15 @@ std::string python_interpreter();
 std::string run_python_plot(const std::string& subcommand, const std::filesystem::path& folder,
                             const std::vector<std::string>& args = {});
 
+// The pictures of a command that draws them all with one plot command
+// (campbell, response, winder): `pngs` when drawn, else none and why
+// ("switched off (--no-plots)" or the plot's failure, which is also said on
+// stderr as a warning: the tables and report.md are complete without them).
+struct Pictures {
+    std::vector<std::string> pngs;
+    std::string problem;
+};
+Pictures draw_pictures(const std::string& subcommand, const std::filesystem::path& folder, bool no_plots,
+                       const std::vector<std::string>& pngs);
+
 }  // namespace coremodal

@@ -201,6 +201,10 @@ std::optional<std::string> marker_host(const fs::path& folder) {
 
 fs::path previous_path(const fs::path& output) { return suffixed(clean(output), ".previous"); }
 
+std::filesystem::path results_path(const std::string& output, const std::string& name, const std::string& suffix) {
+    return output.empty() ? std::filesystem::path("results") / (name + suffix) : std::filesystem::path(output);
+}
+
 void prepare_output(const fs::path& given, bool force) {
     const fs::path output = clean(given);
     if (output.empty()) throw InputError("output folder is empty: give a folder name");

@@ -39,6 +39,10 @@ std::optional<std::string> marker_host(const std::filesystem::path& folder);
 // Where an output path's replaced results are kept without --force.
 std::filesystem::path previous_path(const std::filesystem::path& output);
 
+// A command's results folder: --output as given, else
+// "results/<name><suffix>" ("results/rest-roll-campbell").
+std::filesystem::path results_path(const std::string& output, const std::string& name, const std::string& suffix);
+
 // The checks of the rule above, made by every command before any work
 // (and again when the folder is written). Throws InputError naming the path,
 // why it is refused and what to do. Changes nothing on disk.

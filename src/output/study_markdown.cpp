@@ -146,4 +146,16 @@ std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& r, 
     return out.str();
 }
 
+std::string study_crossings_console(const CaseSweep& sweep, const StudyResult& result) {
+    const std::optional<double> web = sweep.options().web_speed_m_s;
+    if (!web) return "";
+    std::ostringstream out;
+    for (const SpeedCrossing& c : safe_speed_crossings(sweep, result, *web)) {
+        if (c.change_diameters_m.empty()) continue;
+        out << "  at " << significant(*web) << " m/s: " << (c.curve.empty() ? std::string("the roll") : c.curve)
+            << ": change the roll below D = " << significant(c.change_diameters_m.back() * 1e3) << " mm\n";
+    }
+    return out.str();
+}
+
 }  // namespace coremodal

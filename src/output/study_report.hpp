@@ -33,4 +33,9 @@ StudyFiles write_study_files(const std::filesystem::path& dir, const CaseSweep& 
 std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& result,
                                   const std::vector<std::string>& pngs, const std::string& plot_problem);
 
+// With [study] web_speed: per curve, the diameter below which the roll must
+// be changed at that speed ("  at 15 m/s: Do 106: change the roll below
+// D = 412 mm"); "" without it.
+std::string study_crossings_console(const CaseSweep& sweep, const StudyResult& result);
+
 }  // namespace coremodal

@@ -12,14 +12,6 @@
 
 namespace coremodal::case_reading {
 
-std::string join(const std::vector<std::string_view>& words, std::string_view separator) {
-    std::string out;
-    for (std::string_view w : words) {
-        if (!out.empty()) out += separator;
-        out += w;
-    }
-    return out;
-}
 
 std::string printable(std::string_view s) {
     std::string out;
@@ -111,12 +103,7 @@ Section CaseReader::open(const toml::table& table, std::string display, std::str
 [[noreturn]] void CaseReader::unknown_key(const Section& s, const toml::key& key) const {
     const std::vector<std::string_view> valid = keys_of(s.schema);
     const std::string where = s.display.empty() ? "at the top level" : "in " + s.display;
-    std::string msg = "unknown key '" + printable(key.str()) + "' " + where;
-    if (const std::string_view near = nearest(key.str(), valid); !near.empty())
-        msg += "; did you mean '" + std::string(near) + "'?";
-    else
-        msg += "; expected one of " + join(valid);
-    fail(key.source(), msg);
+    fail(key.source(), "unknown key '" + printable(key.str()) + "' " + where + did_you_mean_or_choices(key.str(), valid));
 }
 
 void CaseReader::check_kind(const Section& s, const KeySpec& spec, const toml::node& value) const {
@@ -204,10 +191,8 @@ std::optional<std::string> CaseReader::choice(const Section& s, std::string_view
     const std::optional<std::string> value = text(s, key);
     if (!value) return std::nullopt;
     if (std::find(allowed.begin(), allowed.end(), *value) != allowed.end()) return value;
-    std::string msg = echo(s, key, *get(s, key)) + ": unknown value";
-    if (const std::string_view near = nearest(*value, allowed); !near.empty())
-        msg += "; did you mean \"" + std::string(near) + "\"?";
-    fail(*get(s, key), msg + "; expected one of " + join(allowed));
+    fail(*get(s, key), echo(s, key, *get(s, key)) + ": unknown value" + did_you_mean(*value, allowed, '"') +
+                           "; expected one of " + join(allowed));
 }
 
 double CaseReader::to_si(const toml::node& node, Dimension d, const std::string& what) const {

@@ -9,6 +9,7 @@
 // Private to scene/: everything else reads a case through case_file.hpp.
 #pragma once
 
+#include "common/join.hpp"
 #include "scene/case_schema.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
@@ -70,8 +71,6 @@ struct ClampInput {
     const toml::node* where = nullptr;
 };
 
-// Words joined for messages: "a, b, c".
-std::string join(const std::vector<std::string_view>& words, std::string_view separator = ", ");
 // A value as the user wrote it, cut to kMaxShownChars (messages point, not reproduce).
 std::string show(const toml::node& node);
 // Names of the library materials and of the mesh levels, for messages and suggestions.

@@ -158,10 +158,8 @@ const LibraryMaterial& CaseReader::library_entry(const Section& s, std::string_v
                                                  const toml::node& node) const {
     const std::string name(*node.value<std::string_view>());
     if (const LibraryMaterial* entry = find_library_material(name)) return *entry;
-    std::string msg = echo(s, key, node) + ": unknown library material";
-    if (const std::string_view near = nearest(name, library_name_list()); !near.empty())
-        msg += "; did you mean \"" + std::string(near) + "\"?";
-    fail(node, msg + "; expected one of " + library_names() + ", or an inline table of values");
+    fail(node, echo(s, key, node) + ": unknown library material" + did_you_mean(name, library_name_list(), '"') +
+                   "; expected one of " + library_names() + ", or an inline table of values");
 }
 
 OrthotropicMaterial CaseReader::from_library(const LibraryMaterial& entry,

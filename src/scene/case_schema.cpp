@@ -1,5 +1,7 @@
 #include "scene/case_schema.hpp"
 
+#include "common/join.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cctype>
@@ -299,6 +301,16 @@ std::string_view nearest(std::string_view word, const std::vector<std::string_vi
         }
     }
     return best;
+}
+
+std::string did_you_mean(std::string_view word, const std::vector<std::string_view>& candidates, char quote) {
+    const std::string_view near = nearest(word, candidates);
+    return near.empty() ? "" : "; did you mean " + (quote + std::string(near) + quote) + "?";
+}
+
+std::string did_you_mean_or_choices(std::string_view word, const std::vector<std::string_view>& candidates) {
+    const std::string typo = did_you_mean(word, candidates);
+    return typo.empty() ? "; expected one of " + join(candidates) : typo;
 }
 
 }  // namespace coremodal

@@ -72,5 +72,10 @@ std::vector<std::string_view> keys_of(std::string_view table);
 std::size_t edit_distance(std::string_view a, std::string_view b);
 // The candidate nearest to `word`, or "" when none is near enough to be a typo.
 std::string_view nearest(std::string_view word, const std::vector<std::string_view>& candidates);
+// "; did you mean 'x'?" when x is nearest (quote '"' for a TOML string
+// value, '\'' for a key, command or option), else "".
+std::string did_you_mean(std::string_view word, const std::vector<std::string_view>& candidates, char quote = '\'');
+// did_you_mean, or "; expected one of a, b, c" when no candidate is near.
+std::string did_you_mean_or_choices(std::string_view word, const std::vector<std::string_view>& candidates);
 
 }  // namespace coremodal

@@ -4,6 +4,7 @@
 #include "scene/case_sweep_impl.hpp"
 
 #include "common/error.hpp"
+#include "common/join.hpp"
 #include "scene/case_schema.hpp"
 #include "scene/case_table.hpp"
 #include "scene/mesh_levels.hpp"
@@ -23,11 +24,6 @@ constexpr long kMaxSweepPoints = 100000;
 // A range value this close to a whole number is one (integer keys).
 constexpr double kWholeNumberTolerance = 1e-9;
 
-std::string join(const std::vector<std::string_view>& words) {
-    std::string out;
-    for (std::string_view w : words) out += (out.empty() ? "" : ", ") + std::string(w);
-    return out;
-}
 
 std::string support_type_of(const toml::table& root) {
     return std::string(root["supports"]["type"].value_or<std::string_view>("free"));
@@ -102,12 +98,8 @@ private:
         for (const auto& [key, value] : t) {
             if (find_key(schema, key.str())) continue;
             const std::vector<std::string_view> valid = keys_of(schema);
-            std::string msg = "unknown key '" + std::string(key.str()) + "' in " + display;
-            if (const std::string_view near = nearest(key.str(), valid); !near.empty())
-                msg += "; did you mean '" + std::string(near) + "'?";
-            else
-                msg += "; expected one of " + join(valid);
-            throw InputError(location(key.source()) + msg);
+            throw InputError(location(key.source()) + "unknown key '" + std::string(key.str()) + "' in " + display +
+                             did_you_mean_or_choices(key.str(), valid));
         }
     }
 
@@ -382,12 +374,8 @@ private:
     [[noreturn]] void unknown(const toml::node& where, const std::string& what, const std::string& schema,
                               const std::string& shown, const std::string& word) const {
         const std::vector<std::string_view> valid = keys_of(schema);
-        std::string msg = what + ": no key '" + word + "' " + (shown.empty() ? "at the top level" : "in " + shown);
-        if (const std::string_view near = nearest(word, valid); !near.empty())
-            msg += "; did you mean '" + std::string(near) + "'?";
-        else
-            msg += "; expected one of " + join(valid);
-        fail(where, msg);
+        fail(where, what + ": no key '" + word + "' " + (shown.empty() ? "at the top level" : "in " + shown) +
+                        did_you_mean_or_choices(word, valid));
     }
 
     void read_values(const toml::node& node, const KeySpec& spec, const std::string& what, SweepParameter& p,

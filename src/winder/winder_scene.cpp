@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/join.hpp"
 #include "scene/case_schema.hpp"  // nearest: the "did you mean" of every case file
 #include "scene/materials_library.hpp"
 #include "scene/toml_text.hpp"
@@ -116,11 +117,6 @@ std::vector<std::string_view> keys_in(std::string_view table) {
     return keys;
 }
 
-std::string join(const std::vector<std::string_view>& words) {
-    std::string out;
-    for (std::string_view w : words) out += (out.empty() ? "" : ", ") + std::string(w);
-    return out;
-}
 
 // The value roughly as written, for messages.
 std::string shown(const toml::node& node) {
@@ -183,9 +179,7 @@ private:
                 const auto valid = keys_in(table);
                 std::string msg = "unknown key '" + std::string(key.str()) + "' " +
                                   (table.empty() ? std::string("at the top level") : "in [" + std::string(table) + "]");
-                const std::string_view near = nearest(key.str(), valid);
-                msg += near.empty() ? "; expected one of " + join(valid) : "; did you mean '" + std::string(near) + "'?";
-                fail(key.source(), msg);
+                fail(key.source(), msg + did_you_mean_or_choices(key.str(), valid));
             }
             check_kind(*spec, value);
             if (spec->kind == Kind::table)

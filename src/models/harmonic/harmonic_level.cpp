@@ -13,6 +13,7 @@
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "models/choose.hpp"
+#include "models/harmonic/harmonic_search.hpp"
 #include "models/harmonic/harmonic_shapes.hpp"
 #include "models/part_materials.hpp"
 #include "models/solve_steps.hpp"
@@ -24,14 +25,6 @@
 
 namespace coremodal {
 namespace {
-
-// Harmonics above those with modes in the band are checked by their inertia
-// (none below the band edge) and their lowest eigenvalue. The lowest
-// eigenvalue of a tube's harmonic falls with n while the membrane dominates
-// and rises once ring bending (~n^4) does, so two empty harmonics in a row
-// whose lowest eigenvalue rises from the one to the next end the search
-// (docs/harmonic.md).
-constexpr int kEmptyHarmonicsToStop = 2;
 
 // One harmonic's verified modes, values gathered on rank 0.
 struct HarmonicModes {
@@ -160,16 +153,6 @@ Verification merged_verification(const std::vector<HarmonicModes>& harmonics) {
     return v;
 }
 
-// The lowest eigenvalue of a harmonic with none below the band edge (one
-// verified mode; its count proves it is the lowest).
-double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
-    request.n_modes = 1;
-    request.lambda_min.reset();
-    request.lambda_max.reset();
-    const SolvedModes one = solve_modes(system.operators, request, [](const std::string&) {});
-    return one.eigenvalues.at(0);
-}
-
 // Why the search passed kMaxHarmonic, and what to change.
 std::string beyond_last_harmonic(const Scene& scene, const SolveRequest& request) {
     const std::string wanted =
@@ -180,18 +163,15 @@ std::string beyond_last_harmonic(const Scene& scene, const SolveRequest& request
            (request.lambda_max ? "lower the band's upper edge" : "ask for fewer modes");
 }
 
-// Harmonics n = 0, 1, 2, ... until two in a row have no mode below the
-// band edge and the lowest eigenvalue rises (kEmptyHarmonicsToStop). Fills
-// the model's mass and the timings.
+// Harmonics n = 0, 1, 2, ... as walk_harmonics says (models/harmonic/
+// harmonic_search.hpp), each solved below the band edge. Fills the model's
+// mass and the timings.
 std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh& section,
                                            const std::vector<PartMaterial>& materials, SolveRequest request,
                                            const Printer& say, LevelModes& out) {
     const bool band = request.lambda_max.has_value();
     std::vector<HarmonicModes> harmonics;
-    int empty_in_a_row = 0;
-    double previous_lowest = 0;  // lowest eigenvalue of the previous empty harmonic
-    for (int n = 0;; ++n) {
-        if (n > kMaxHarmonic) throw SolveError(beyond_last_harmonic(scene, request));
+    const auto visit = [&](int n) -> HarmonicVisit {
         Stopwatch lap;
         HarmonicSystem system = assemble_harmonic(scene, section, materials, n);
         if (n == 0) out.info.mass_kg = system.operators.model_mass;
@@ -205,22 +185,18 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
                 HarmonicModes empty;
                 empty.n = n;
                 empty.dofs = system.dofs;
-                empty.lowest = lowest_eigenvalue(system, request);
+                empty.lowest = lowest_eigenvalue(system.operators, request);
                 out.timing.factor_and_solve += lap.lap();
                 say(line + "no mode below the band edge (lowest " +
                     significant(std::sqrt(std::max(empty.lowest, 0.0)) / (2 * M_PI)) + " Hz)");
-                const bool rising = empty_in_a_row > 0 && empty.lowest > previous_lowest;
-                previous_lowest = empty.lowest;
                 harmonics.push_back(std::move(empty));
-                if (++empty_in_a_row >= kEmptyHarmonicsToStop && rising) break;
-                continue;
+                return {false, harmonics.back().lowest};
             }
             if (!band) request.n_modes = static_cast<int>(below);
         } else if (!band) {
             // n = 0 once; pairs (n >= 1) count twice.
             request.n_modes = n == 0 ? scene.analysis.n_modes : (scene.analysis.n_modes + 1) / 2;
         }
-        empty_in_a_row = 0;
         HarmonicModes h = solve_harmonic(scene, system, section, request);
         out.timing.factor_and_solve += lap.lap();
         say(line + std::to_string(h.eigenvalues.size()) + " modes" +
@@ -228,7 +204,9 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
                                    : " from " + significant(std::sqrt(std::max(h.eigenvalues.front(), 0.0)) / (2 * M_PI)) + " Hz") +
             (h.verification.complete ? "" : " (INCOMPLETE)"));
         harmonics.push_back(std::move(h));
-    }
+        return {true, 0};
+    };
+    walk_harmonics(visit, [&] { return beyond_last_harmonic(scene, request); });
     return harmonics;
 }
 

@@ -4,6 +4,7 @@
 #include "common/error.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "geometry/tube_section.hpp"
+#include "models/harmonic/harmonic_search.hpp"
 #include "models/harmonic/harmonic_shapes.hpp"
 #include "models/part_materials.hpp"
 #include "models/solve_steps.hpp"
@@ -18,9 +19,6 @@ namespace {
 // Modes solved per wave number beyond those it has among the window at rest:
 // a backward wave coming down with speed, or a pair's second member.
 constexpr int kExtraModesPerHarmonic = 2;
-// As the harmonic level: two harmonics in a row with no mode in the window,
-// whose lowest eigenvalue rises, end the search (docs/harmonic.md).
-constexpr int kEmptyHarmonicsToStop = 2;
 
 const Progress kQuiet = [](const std::string&) {};
 
@@ -46,11 +44,6 @@ std::vector<double> rest_eigenvalues(const Scene& scene, HarmonicSystem& system,
     for (double lambda : m.eigenvalues)
         for (int k = 0; k < (system.n == 0 ? 1 : 2); ++k) out.push_back(lambda);
     return out;
-}
-
-double lowest_eigenvalue(HarmonicSystem& system, SolveRequest request) {
-    request.n_modes = 1;
-    return solve_modes(system.operators, request, kQuiet).eigenvalues.at(0);
 }
 
 // Forward (+1) to backward (-1): 2 Im(a . conj b) / (|a|^2 + |b|^2) of the
@@ -106,31 +99,23 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window)
     const SolveRequest request = solve_request(scene);
     lambda_scale_ = request.lambda_scale;
 
-    // The search at rest, as the harmonic level's: which n, how many modes each.
+    // The search at rest, as the harmonic level's (models/harmonic/harmonic_search.hpp).
     std::vector<std::vector<double>> rest;  // per n
     std::vector<double> rest_lowest;        // per n: its lowest eigenvalue at rest
     std::vector<double> merged;
-    int empty_in_a_row = 0;
-    double previous_lowest = 0;
-    for (int n = 0;; ++n) {
-        if (n > kMaxHarmonic) throw SolveError("every wave number up to n = 64 has modes among the lowest " +
-                                               std::to_string(window) + ": ask for fewer modes");
+    const auto visit = [&](int n) -> HarmonicVisit {
         HarmonicSystem system = assemble_harmonic(scene, section_, materials, n);
         const std::optional<double> edge = n >= 2 ? window_edge(merged, window) : std::nullopt;
-        std::vector<double> lambdas = rest_eigenvalues(scene, system, request, edge, window);
+        const std::vector<double> lambdas = rest_eigenvalues(scene, system, request, edge, window);
         rest.push_back(lambdas);
-        if (!lambdas.empty()) {
-            rest_lowest.push_back(lambdas.front());
-            merged.insert(merged.end(), lambdas.begin(), lambdas.end());
-            empty_in_a_row = 0;
-            continue;
-        }
-        const double lowest = lowest_eigenvalue(system, request);
-        rest_lowest.push_back(lowest);
-        const bool rising = empty_in_a_row > 0 && lowest > previous_lowest;
-        previous_lowest = lowest;
-        if (++empty_in_a_row >= kEmptyHarmonicsToStop && rising) break;
-    }
+        rest_lowest.push_back(lambdas.empty() ? lowest_eigenvalue(system.operators, request) : lambdas.front());
+        merged.insert(merged.end(), lambdas.begin(), lambdas.end());
+        return {!lambdas.empty(), rest_lowest.back()};
+    };
+    walk_harmonics(visit, [&] {
+        return "every wave number up to n = " + std::to_string(kMaxHarmonic) + " has modes among the lowest " +
+               std::to_string(window) + ": ask for fewer modes";
+    });
     const double edge = window_edge(merged, window).value_or(1e300);
     for (size_t n = 0; n < rest.size(); ++n) {
         auto h = std::make_unique<Harmonic>();

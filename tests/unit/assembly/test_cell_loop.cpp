@@ -111,7 +111,7 @@ Eigen::MatrixXd rigid_motions(const Mesh& mesh) {
 }  // namespace
 
 TEST_CASE("Cell loop, solid with chucks: an Eigen sink gets the same K and M as the run's PETSc matrices, with "
-          "the physics' invariants", "[assembly][cell_loop]") {
+          "the physics' invariants", "[long][assembly][cell_loop]") {
     // A short, coarse 76x15 paper core on two chucks in elastic bearings with
     // frame masses: cells, spring layers, bearing springs and lumped masses.
     const Scene s = testing::on_elastic_bearings(

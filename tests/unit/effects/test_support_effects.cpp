@@ -104,7 +104,7 @@ TEST_CASE("Where a chuck acts: one rule for ranges, arcs and covered points", "[
     CHECK(contact_area(right.expanding[0], 0.038) == Approx(angle * 0.038 * 0.06));
 }
 
-TEST_CASE("The same chuck gives the same spring layer to all three levels", "[effects][chuck][harmonic][beam]") {
+TEST_CASE("The same chuck gives the same spring layer to all three levels", "[long][effects][chuck][harmonic][beam]") {
     const Scene s = chuck_scene();
     const SupportEffects effects = support_effects(s);
     const SpringLayer& layer = *effects.chucks[0].spring_layer;
@@ -136,7 +136,7 @@ TEST_CASE("The same chuck gives the same spring layer to all three levels", "[ef
 }
 
 TEST_CASE("A rigid translation loads the bearings by exactly their stiffness at every level",
-          "[effects][chuck][harmonic][beam]") {
+          "[long][effects][chuck][harmonic][beam]") {
     const Scene s = on_elastic_bearings(chuck_scene(), 2e8, 3e6);
     const SupportEffects effects = support_effects(s);  // held: the springs below refer into it
     const BearingSprings& springs = *effects.chucks[0].bearing_springs;

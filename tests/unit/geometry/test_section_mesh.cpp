@@ -26,7 +26,7 @@ std::pair<long, long> key(double r, double z) { return {std::lround(r * 1e7), st
 
 }  // namespace
 
-TEST_CASE("Section mesh: the roll's nodes are those of the solid's r-z planes", "[geometry][harmonic]") {
+TEST_CASE("Section mesh: the roll's nodes are those of the solid's r-z planes", "[long][geometry][harmonic]") {
     const Scene s = chuck_scene();
     const SectionMesh section = make_section_mesh(make_tube_section(s), s.supports.clamps);
     const Mesh solid = testing::generated_mesh(s);

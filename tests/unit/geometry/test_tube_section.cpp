@@ -41,7 +41,7 @@ TEST_CASE("Clamps at the core ends leave no graded overhang; a free core is unif
     CHECK(free.segments[0].grading == AxialGrading::uniform);
 }
 
-TEST_CASE("The chucks' node count without meshing equals gmsh's", "[geometry][chucks]") {
+TEST_CASE("The chucks' node count without meshing equals gmsh's", "[long][geometry][chucks]") {
     // At 48 around the shaft's ring of the O-grid needs two elements across
     // (half the shaft radius wide, > 3 x the 3.9 mm around); fewer, one.
     for (int around : {8, 16, 48}) {

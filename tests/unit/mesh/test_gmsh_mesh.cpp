@@ -253,7 +253,7 @@ TEST_CASE("require_groups names the missing group and lists those present", "[me
 }
 
 TEST_CASE("The free-free tet10 user mesh bends like the generated hex20 mesh of the same tube",
-          "[mesh][gmsh][solve]") {
+          "[long][mesh][gmsh][solve]") {
     // Steel: the comparison is between meshes, the material only sets the scale.
     Scene generated = steel_tube(0.106, 0.076, kLength, 2, 16, 24, 8);  // 6 rigid + a bending pair
     Scene user = generated;

@@ -183,7 +183,7 @@ TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[ba
     CHECK(console.str().find("1 of 2 cases ok, 1 failed") != std::string::npos);
 }
 
-TEST_CASE("coremodal batch runs good cases past a broken one and reports it", "[batch]") {
+TEST_CASE("coremodal batch runs good cases past a broken one and reports it", "[long][batch]") {
     const fs::path dir = fs::temp_directory_path() / ("coremodal-batch-test-" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir / "cases");

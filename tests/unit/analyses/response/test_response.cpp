@@ -136,7 +136,7 @@ TEST_CASE("Superposition in the complete basis is the direct solve of the full n
 }
 
 TEST_CASE("The response of a roll: linear in bow and unbalance, checked, peaks labelled, safe speed",
-          "[response][analyses]") {
+          "[long][response][analyses]") {
     const Scene scene = clamped_roll();
     ExcitationSpec bow;
     bow.bow_m = 0.5e-3;
@@ -181,7 +181,7 @@ TEST_CASE("The response of a roll: linear in bow and unbalance, checked, peaks l
     CHECK(u1.peaks[0].amplitude_m / u1_damped.peaks[0].amplitude_m == Approx(2.0).epsilon(1e-3));
 }
 
-TEST_CASE("Ovality with gravity resonates at half the order-1 speed", "[response][analyses]") {
+TEST_CASE("Ovality with gravity resonates at half the order-1 speed", "[long][response][analyses]") {
     const Scene scene = clamped_roll();
     ExcitationSpec oval;
     oval.ovality_m = 0.3e-3;

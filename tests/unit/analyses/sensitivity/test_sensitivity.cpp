@@ -87,7 +87,7 @@ TEST_CASE("sensitivity: operators' derivative equals re-solved central differenc
 }
 
 TEST_CASE("sensitivity: harmonic level, case 08's contact and wall shear against re-solved frequencies",
-          "[sensitivity]") {
+          "[long][sensitivity]") {
     const CaseParameters c = CaseParameters::from_text(case_08_coarse(), "08.toml",
                                                        {"core.material.G_rz", "supports.left.normal_stiffness",
                                                         "core.material.density"});
@@ -123,7 +123,7 @@ TEST_CASE("sensitivity: bad keys are named", "[sensitivity]") {
     CHECK_THROWS_WITH(eigen_sensitivities(solid, solid.values()), Catch::Contains("the beam and the harmonic level"));
 }
 
-TEST_CASE("sensitivity: a length, f ∝ 1/L for torsion, by operators (beam) or re-solved (harmonic)", "[sensitivity]") {
+TEST_CASE("sensitivity: a length, f ∝ 1/L for torsion, by operators (beam) or re-solved (harmonic)", "[long][sensitivity]") {
     // Free–free torsion: f = m/(2L) sqrt(G/ρ), exactly 1/L at every level.
     const ModeKey torsion{"torsion", 0, 1, 1}, bending{"bending", 1, 2, 1};
     const CaseParameters beam = CaseParameters::from_text(free_tube("beam"), "iso.toml", {"core.length"});
