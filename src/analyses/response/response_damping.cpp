@@ -39,7 +39,7 @@ std::vector<int> rest_modes_of(const BeamModelResult& rest, const LateralRespons
 }
 
 std::string mode_words(const std::vector<int>& modes) {
-    std::string out = "mode " + std::to_string(modes.front());
+    std::string out = (modes.size() > 1 ? "modes " : "mode ") + std::to_string(modes.front());
     for (size_t i = 1; i < modes.size(); ++i) out += (i + 1 == modes.size() ? " and " : ", ") + std::to_string(modes[i]);
     return out;
 }
@@ -91,7 +91,7 @@ std::vector<std::string> plan_assumptions(const DampingSpec& spec, const Lateral
             if (m.from == "mode " + std::to_string(g.mode)) {
                 out.push_back("[damping] mode " + std::to_string(g.mode) + " (" + label_text(m.label) + ", " +
                               significant(m.frequency_hz, 5) + " Hz" +
-                              (m.rest_modes.size() > 1 ? "; with its degenerate partner, " + mode_words(m.rest_modes) : "") +
+                              (m.rest_modes.size() > 1 ? "; one degenerate pair, " + mode_words(m.rest_modes) : "") +
                               "): zeta = " + significant(g.ratio, 4));
                 break;
             }
