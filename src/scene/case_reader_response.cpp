@@ -4,6 +4,7 @@
 #include "scene/case_reader.hpp"
 
 #include "scene/case_file.hpp"
+#include "scene/case_table.hpp"
 
 #include "common/error.hpp"
 #include "scene/toml_text.hpp"
@@ -135,6 +136,14 @@ std::optional<ResponseSetup> CaseReader::response(const toml::table& root, const
 namespace coremodal {
 
 const char* bow_shape_name(BowShape s) { return s == BowShape::first_mode ? "first_mode" : "half_sine"; }
+
+ResponseCase parse_response_case_table(const toml::table& root, const std::string& path) {
+    ResponseCase out{parse_case_table(root, path), std::nullopt, std::nullopt};  // every check, the new tables included
+    const case_reading::CaseReader reader(path);
+    out.rotation = reader.rotation(root, out.scene);
+    out.response = reader.response(root, out.scene);
+    return out;
+}
 
 ResponseCase parse_response_case_text(std::string_view text, const std::string& path) {
     const RotatingCase rotating = parse_rotating_case_text(text, path);  // every check, the new tables included
