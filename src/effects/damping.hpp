@@ -47,7 +47,7 @@ struct RayleighDamping {
     double zeta(double omega) const { return alpha / (2 * omega) + beta * omega / 2; }
     // The alpha and beta that give the ratio zeta at both omega_1 and omega_2
     // (rad/s, distinct): zeta(omega) = zeta there, below zeta between them
-    // and above it outside (Clough & Penzien, Dynamics of Structures, 1993, eq. 12-43).
+    // and above it outside (Chopra, Dynamics of Structures, chapter 11: Rayleigh damping).
     static RayleighDamping at_two_frequencies(double zeta, double omega_1, double omega_2) {
         return {2 * zeta * omega_1 * omega_2 / (omega_1 + omega_2), 2 * zeta / (omega_1 + omega_2)};
     }

@@ -45,7 +45,7 @@ TEST_CASE("Rayleigh damping from zeta at two frequencies gives that zeta at both
     REQUIRE(d.rayleigh);
     const RayleighDamping r{d.rayleigh->alpha, d.rayleigh->beta};
     const double w1 = 2 * M_PI * 20, w2 = 2 * M_PI * 200;
-    // alpha = 2 zeta w1 w2 / (w1 + w2), beta = 2 zeta / (w1 + w2) (Clough & Penzien 12-43),
+    // alpha = 2 zeta w1 w2 / (w1 + w2), beta = 2 zeta / (w1 + w2) (Chopra, Dynamics of Structures, ch. 11),
     // computed here independently; 1e-14: a few operations' round-off.
     CHECK(r.alpha == Approx(2 * 0.01 * w1 * w2 / (w1 + w2)).epsilon(1e-14));
     CHECK(r.beta == Approx(2 * 0.01 / (w1 + w2)).epsilon(1e-14));

@@ -178,16 +178,19 @@ TEST_CASE("A mode's own ratio damps it and its degenerate partner, and no other 
         CHECK(r.mode_damping[1].zeta == 0.02);
         CHECK(r.mode_damping[2].zeta == 0.01);  // the second bending pair keeps the base
     }
-    // The second bending pair's ratio leaves the first peak within its
-    // quadrature share: 5e-4 (measured 1e-5), far below the factor 2 above.
-    int second = 0;
-    for (size_t k = static_cast<size_t>(first + 1); k < rest.modes.size() && !second; ++k)
-        if (rest.modes[k].label.type == "bending") second = static_cast<int>(k) + 1;
-    REQUIRE(second > 0);
+    // The next symmetric bending pair (m = 2; m = 1 has a node at mid-span,
+    // where the probe is) answers the bow too, off resonance: five times its
+    // damping moves the first peak only by its quadrature share, O(zeta^2):
+    // measured 2.7e-7, bound 1e-5, far below the factor 2 above.
+    int symmetric = 0;
+    for (size_t k = 0; k < rest.modes.size() && !symmetric; ++k)
+        if (rest.modes[k].label.type == "bending" && rest.modes[k].label.m == 2) symmetric = static_cast<int>(k) + 1;
+    REQUIRE(symmetric > 0);
     DampingSpec other = ratio(0.01);
-    other.modes.push_back({second, 0.05, "roll.toml:20:9: [damping.modes #1]"});
+    other.modes.push_back({symmetric, 0.05, "roll.toml:20:9: [damping.modes #1]"});
     const ResponseResult r = run_forced_response(scene, bowed(other, 5, 40, 60));
-    CHECK(r.peaks[0].amplitude_m == Approx(base.peaks[0].amplitude_m).epsilon(5e-4));
+    CHECK(r.peaks[0].amplitude_m != base.peaks[0].amplitude_m);  // it does answer
+    CHECK(r.peaks[0].amplitude_m == Approx(base.peaks[0].amplitude_m).epsilon(1e-5));
 }
 
 TEST_CASE("Mode numbers are checked against the modes at rest", "[response][analyses]") {
