@@ -277,6 +277,14 @@ std::vector<std::string> effect_names(const Scene& scene, const ResponseSetup& s
     return out;
 }
 
+// The largest amplitude at the first probe, on the grid or on a refined peak.
+void set_largest_amplitude(ResponseResult& out) {
+    for (const ResponsePoint& p : out.points)
+        if (p.probes[0].total_m > out.max_amplitude_m) out.max_amplitude_m = p.probes[0].total_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
+    for (const ResponsePeak& p : out.peaks)
+        if (p.amplitude_m > out.max_amplitude_m) out.max_amplitude_m = p.amplitude_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
+}
+
 }  // namespace
 
 double orbit_semi_major(cd ux, cd uy) {
@@ -337,10 +345,7 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
     // 4. Peaks and the speed at the limit.
     out.peaks = find_peaks({eval, lateral, loads, rest, n_used, out.roll_outer_diameter}, out.points);
     out.safe = safe_speed(eval, out.points, out.peaks, range.limit_m, f1, out.roll_outer_diameter);
-    for (const ResponsePoint& p : out.points)
-        if (p.probes[0].total_m > out.max_amplitude_m) out.max_amplitude_m = p.probes[0].total_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
-    for (const ResponsePeak& p : out.peaks)
-        if (p.amplitude_m > out.max_amplitude_m) out.max_amplitude_m = p.amplitude_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
+    set_largest_amplitude(out);
     // 5. The checks.
     check(eval, out.points, out.peaks, out.checks);
     out.assumptions.push_back("modes kept: " + std::to_string(n_used) + " of " + std::to_string(lateral.n_modes()) +

@@ -57,6 +57,10 @@ std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
 
 }  // namespace
 
+std::optional<ResponseSetup> response_of_point(const std::string& table, std::optional<ResponseSetup> response) {
+    return table == "study" ? std::move(response) : std::nullopt;
+}
+
 unsigned jobs_for(unsigned requested, const CaseSweep& sweep) {
     if (mpi_size() > 1) return 1;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -134,7 +138,7 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
         try {
             ResponseCase c = sweep.response_case(i);
             scenes[static_cast<size_t>(i)] = std::move(c.scene);
-            responses[static_cast<size_t>(i)] = std::move(c.response);
+            responses[static_cast<size_t>(i)] = response_of_point(sweep.table(), std::move(c.response));
         } catch (const InputError& e) {
             p.error = e.what();
             if (say) progress << "  refused: " << p.error << std::endl;

@@ -84,6 +84,10 @@ struct StudyRunOptions {
 // the point). This is what a worker child does.
 void run_point(Scene scene, StudyPoint& p, const std::optional<ResponseSetup>& response = std::nullopt);
 
+// The response a point of a sweep in `table` runs: a [study] point runs its
+// case's forced response; a [calibration] point only fits k, so none.
+std::optional<ResponseSetup> response_of_point(const std::string& table, std::optional<ResponseSetup> response);
+
 // The study's summary of a forced response.
 StudyResponse study_response(const ResponseResult& r);
 

@@ -238,7 +238,7 @@ int run_worker_point(const WorkerPoint& w) {
     p.index = w.point;
     try {
         ResponseCase c = sweep.response_case(w.point);
-        run_point(std::move(c.scene), p, c.response);
+        run_point(std::move(c.scene), p, response_of_point(w.table, std::move(c.response)));
     } catch (const InputError& e) {
         p.error = e.what();
     }
