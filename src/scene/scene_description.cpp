@@ -370,7 +370,7 @@ std::string damping_lines(const DampingSpec& d) {
     for (const DampingSpec::FamilyRatio& f : d.families)
         out += "  damping of every " + f.family + " mode: zeta = " + format_quantity(f.ratio, Dimension::dimensionless) + "\n";
     for (const DampingSpec::ModeRatio& m : d.modes)
-        out += "  damping of mode " + std::to_string(m.mode) + " at rest (and its degenerate partner): zeta = " +
+        out += "  damping of mode " + std::to_string(m.mode) + " at rest (shared by a degenerate partner): zeta = " +
                format_quantity(m.ratio, Dimension::dimensionless) + "\n";
     return out;
 }

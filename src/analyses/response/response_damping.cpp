@@ -127,10 +127,8 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
 }
 
 std::string damping_summary(const DampingSpec& spec) {
-    std::string out = spec.rayleigh ? "Rayleigh, alpha = " + significant(spec.rayleigh->alpha, 4) + " 1/s, beta = " +
-                                          significant(spec.rayleigh->beta, 4) + " s"
-                                    : "zeta = " + significant(spec.ratio, 4);
-    out += " (" + spec.source + ")";
+    // The source of a Rayleigh base names alpha and beta already.
+    std::string out = spec.rayleigh ? spec.source : "zeta = " + significant(spec.ratio, 4) + " (" + spec.source + ")";
     for (const DampingSpec::FamilyRatio& f : spec.families) out += "; " + f.family + " " + significant(f.ratio, 4);
     for (const DampingSpec::ModeRatio& m : spec.modes)
         out += "; mode " + std::to_string(m.mode) + " " + significant(m.ratio, 4);

@@ -143,6 +143,6 @@ TEST_CASE("`check` describes the damping the forced response will use", "[respon
     CHECK(text.find("damping of every mode not named below: [damping] rayleigh: zeta = 0.01 at 20 Hz and 200 Hz") !=
           std::string::npos);
     CHECK(text.find("damping of every bending mode: zeta = 0.02") != std::string::npos);
-    CHECK(text.find("damping of mode 1 at rest (and its degenerate partner): zeta = 0.005") != std::string::npos);
+    CHECK(text.find("damping of mode 1 at rest (shared by a degenerate partner): zeta = 0.005") != std::string::npos);
     CHECK(text.find("amplitude limit: 0.005 m at mid-span") != std::string::npos);
 }
