@@ -3,6 +3,7 @@
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "scene/case_file.hpp"
+#include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
 #include "winder/winder_model.hpp"
@@ -81,6 +82,9 @@ Outcome run_case_text(std::string_view text, const std::string& path) {
     const std::string described = describe_scene(scene, key_sources(text)) + describe_effects(scene) +
                                   describe_assumptions(scene);
     check(!described.empty(), "an empty scene description");
+    // Likewise the forced response's tables (read again: the scene reader checked them).
+    if (const std::optional<ResponseSetup> response = parse_response_case_text(text, path).response)
+        check(!describe_response(*response).empty(), "an empty response description");
     try {
         check_modes(solve_beam_model(scene));
     } catch (const InputError&) {

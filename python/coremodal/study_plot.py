@@ -14,6 +14,11 @@ draws into that folder (docs/studies.md):
   against the rest roll diameter D, one curve per roll width (or whatever
   else the study varies besides D), the web speed as a horizontal line and
   the diameter at which each roll must be changed marked on it;
+- ``response_safe_speed.png`` (a study over a case with ``[response]``): the
+  web speed at which the forced response first reaches the amplitude limit
+  (±5 mm at mid-span by default) against the rest roll diameter (or the
+  fastest numeric parameter), beside I-5 at 0.7 and 0.8 and König's v_krit
+  from the same f1, the web speed as a horizontal line;
 - ``calibration.png`` (a calibration folder): the fitted k against the FE k.
 """
 
@@ -319,6 +324,75 @@ def plot_safe_speed(study: Study, out: Path) -> Path | None:
     return path
 
 
+def _response_axis(study: Study) -> tuple[set[str], str, Any] | None:
+    """What the response picture draws against: the rest roll diameter in mm
+    when the study changes it, else the fastest numeric parameter; the names
+    left out of the curves' grouping, the axis label and x of a row."""
+    if study.diameter_parameters:
+        return set(study.diameter_parameters), "rest roll diameter D [mm]", lambda r: number(r["diameter_m"]) * 1e3
+    numeric = [p for p in study.parameters if p.numeric]
+    if not numeric:
+        return None
+    p = numeric[-1]
+    return {p.name}, axis_label(p), lambda r: p.shown(float(r[p.column]))
+
+
+def plot_response_safe_speed(study: Study, out: Path) -> Path | None:
+    """The amplitude-based safe speed (forced response) against the rest
+    roll diameter, beside I-5 at 0.7 and 0.8 and König, one colour per
+    combination of the other parameters. A point whose amplitude stays within
+    the limit over the response's speeds is an open triangle at the top of
+    that range: safe at least up to there."""
+    points = [r for r in study.points() if not math.isnan(number(r.get("amplitude_limit_m")))]
+    axis = _response_axis(study)
+    if not points or axis is None:
+        return None
+    leave_out, xlabel, x_of = axis
+    curves: dict[tuple, list[dict[str, str]]] = {}
+    for r in points:
+        curves.setdefault(_group_key(study, r, leave_out), []).append(r)
+    figure, axes = _new_figure()
+    ax = axes[0][0]
+    limit_mm = 1e3 * number(points[0]["amplitude_limit_m"])
+    palette = matplotlib.colormaps["tab10"]
+    for i, (key, rs) in enumerate(curves.items()):
+        rs.sort(key=x_of)
+        colour, group = palette(i % 10), _group_label(study, key, leave_out)
+        prefix = f"{group}: " if group else ""
+        x = np.array([x_of(r) for r in rs])
+        reached = np.array([r.get("amplitude_limit_reached") == "1" for r in rs])
+        v_limit = np.array([number(r["v_amplitude_limit_m_s"]) for r in rs])
+        ax.plot(x[reached], v_limit[reached], marker="o", color=colour, linewidth=2,
+                label=f"{prefix}±{limit_mm:g} mm reached (forced response)")
+        if (~reached).any():
+            top = np.array([number(r["response_max_web_speed_m_s"]) for r in rs])
+            ax.plot(x[~reached], top[~reached], linestyle="none", marker="^", markersize=9, markerfacecolor="none",
+                    color=colour, label=f"{prefix}±{limit_mm:g} mm not reached up to the last speed")
+        for column, style, name in (("v_i5_07_m_s", "--", "I-5 × 0.7"), ("v_i5_08_m_s", "-.", "I-5 × 0.8"),
+                                    ("v_koenig_m_s", ":", "König v_krit")):
+            v = np.array([number(r.get(column)) for r in rs])
+            if not np.isnan(v).all():
+                ax.plot(x, v, linestyle=style, marker=".", color=colour, label=f"{prefix}{name}")
+    web = study.web_speed_m_s
+    if web is not None:
+        ax.axhline(web, color="black", linestyle="--", linewidth=1)
+        ax.annotate(f"web speed {web:g} m/s", (0.01, web), xycoords=("axes fraction", "data"),
+                    textcoords="offset points", xytext=(0, -12), fontsize=8)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("web speed [m/s]")
+    secondary = ax.secondary_yaxis("right", functions=(lambda v: v * 60, lambda v: v / 60))
+    secondary.set_ylabel("[m/min]")
+    ax.grid(True, alpha=0.3)
+    if 4 * len(curves) <= MAX_LEGEND:
+        ax.legend(fontsize=7, loc="best")
+    ax.set_title(f"{study.meta.get('case', '')}: safe web speed from the forced response (±{limit_mm:g} mm) "
+                 "beside I-5 and König", fontsize=9)
+    figure.tight_layout()
+    path = out / "response_safe_speed.png"
+    figure.savefig(path)
+    return path
+
+
 def plot_calibration(study: Study, out: Path) -> Path | None:
     """The fitted k against the FE k of a calibration folder, with the stated error."""
     table = study.folder / "calibration.csv"
@@ -369,7 +443,7 @@ def draw_all(folder: Path) -> list[Path]:
     paths += [tracked] if tracked else []
     paths += plot_point_value(study, out, "f1_hz", "f1", "first bending frequency f1 [Hz]")
     paths += plot_point_value(study, out, "k", "k", "chuck factor k = f1 / f_I-7(k = 1)")
-    for extra in (plot_safe_speed(study, out), plot_calibration(study, out)):
+    for extra in (plot_safe_speed(study, out), plot_response_safe_speed(study, out), plot_calibration(study, out)):
         if extra:
             paths.append(extra)
     return paths

@@ -171,3 +171,54 @@ def test_the_written_unit_is_read_back_from_the_labels() -> None:
     assert written_unit(["2", "3"], [2.0, 3.0], "") == ("", 1.0)  # plain numbers
     assert written_unit(["10 mm", "0.03 m"], [0.01, 0.03], "m") == ("m", 1.0)  # mixed: SI
     assert written_unit(["steel", "aluminium"], [0.0, 1.0], "") == ("", 1.0)
+
+
+RESPONSE_COLUMNS = ("amplitude_limit_m,amplitude_limit_reached,v_amplitude_limit_m_s,amplitude_implied_factor,"
+                    "response_max_web_speed_m_s,max_amplitude_m,max_amplitude_web_speed_m_s,v_i5_07_m_s,v_i5_08_m_s,"
+                    "v_koenig_m_s")
+
+
+def write_response_study(folder: Path, *, response: bool = True) -> Path:
+    """A study over rest paper thickness of a case with [response], laid out
+    as coremodal study writes it: the thinnest roll never reaches the limit."""
+    thicknesses = [0.005, 0.01, 0.04]
+    header = HEADER.replace("point,rest_paper.thickness_m,core.length_m,", "point,rest_paper.thickness_m,")
+    header = header.replace(",error", "," + RESPONSE_COLUMNS + ",error")
+    rows = [header]
+    for i, t in enumerate(thicknesses):
+        d = 0.182 + 2 * t
+        f1 = 26.0 - 100 * t
+        common = f"{f1},0.7,0.25,3.82,{f1 / 0.7},{d},{0.7 * np.pi * d * f1},846,2.5"
+        if not response:
+            cells = "," * 9
+        elif i == 0:
+            cells = f"0.005,0,,,30,0.0048,17.0,{0.7 * np.pi * d * f1},{0.8 * np.pi * d * f1},15.9"
+        else:
+            cells = f"0.005,1,{np.pi * d * f1 * 0.99},0.99,30,0.006,17.5,{0.7 * np.pi * d * f1},{0.8 * np.pi * d * f1},17.9"
+        rows.append(f"{i + 1},{t},ok,{i or ''},1,bending n=1 m=0,bending,1,0,2,{f1},0.99,0,0,{common},{cells},")
+    (folder / "study.csv").write_text("\n".join(rows) + "\n")
+    meta = {
+        "kind": "study", "case": "synthetic response", "case_file": "x.toml", "n_points": 3, "n_failed": 0,
+        "parameters": [
+            {"name": "rest_paper.thickness", "column": "rest_paper.thickness_m", "keys": ["rest_paper.thickness"],
+             "numeric": True, "unit": "m", "labels": ["5 mm", "10 mm", "40 mm"], "values": thicknesses},
+        ],
+        "diameter_parameters": ["rest_paper.thickness"],
+        "options": {"mesh": "coarse", "modes": 12, "safe_factor": 0.7, "web_speed_m_s": WEB_SPEED},
+        "response": response,
+    }
+    (folder / "study.json").write_text(json.dumps(meta))
+    return folder
+
+
+def test_a_response_study_draws_the_amplitude_based_safe_speed(tmp_path: Path) -> None:
+    names = {p.name for p in draw_all(write_response_study(tmp_path))}
+    assert {"response_safe_speed.png", "safe_speed.png"} <= names
+    assert png_size(tmp_path / "response_safe_speed.png") == (1100, 750)
+    plain = tmp_path / "plain"
+    plain.mkdir()
+    assert "response_safe_speed.png" not in {p.name for p in draw_all(write_response_study(plain, response=False))}
+    # Without a diameter parameter the picture is drawn against the fastest numeric parameter.
+    study = load_study(tmp_path)
+    study.diameter_parameters = []
+    assert study_plot.plot_response_safe_speed(study, plain) == plain / "response_safe_speed.png"

@@ -8,6 +8,7 @@
 #include "common/warnings.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
 #include "output/winder_report.hpp"
@@ -67,6 +68,8 @@ int check_case(const CheckOptions& options) {
               << describe_scene(scene, sources) << "\n"
               << "assumptions (the run summary echoes them):\n"
               << describe_assumptions(scene);
+    if (const std::optional<ResponseSetup> response = parse_response_case(options.case_file).response)
+        std::cout << "\nforced response (docs/response.md):\n" << describe_response(*response);
     return 0;
 }
 

@@ -71,6 +71,41 @@ toml::table safe_speed_json(const ResponseResult& r) {
     return t;
 }
 
+// [damping] as given, and the ratio each kept mode took (and from what).
+toml::table damping_json(const ResponseResult& r) {
+    const DampingSpec& d = r.damping;
+    toml::table t{{"model", d.rayleigh ? "rayleigh" : "modal"}, {"source", d.source}, {"summary", r.damping_summary}};
+    if (d.rayleigh) t.insert("rayleigh", toml::table{{"alpha_per_s", d.rayleigh->alpha}, {"beta_s", d.rayleigh->beta}});
+    else t.insert("ratio", d.ratio);
+    toml::table families;
+    for (const DampingSpec::FamilyRatio& f : d.families) families.insert(f.family, f.ratio);
+    t.insert("families", families);
+    toml::array given, kept;
+    for (const DampingSpec::ModeRatio& m : d.modes) given.push_back(toml::table{{"mode", m.mode}, {"ratio", m.ratio}});
+    t.insert("modes", given);
+    for (const ModeDamping& m : r.mode_damping) {
+        toml::array rest;
+        for (int k : m.rest_modes) rest.push_back(k);
+        kept.push_back(toml::table{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
+                                   {"zeta", m.zeta}, {"from", m.from}});
+    }
+    t.insert("kept_modes", kept);
+    return t;
+}
+
+// The kept modes' damping as a table for people.
+std::string damping_table(const ResponseResult& r) {
+    std::string out = "| lateral mode | mode at rest | label | f at rest | zeta | from |\n|---|---|---|---|---|---|\n";
+    for (size_t j = 0; j < r.mode_damping.size(); ++j) {
+        const ModeDamping& m = r.mode_damping[j];
+        std::string rest;
+        for (int k : m.rest_modes) rest += (rest.empty() ? "" : ", ") + std::to_string(k);
+        out += "| " + std::to_string(j + 1) + " | " + (rest.empty() ? "-" : rest) + " | " + label_text(m.label) + " | " +
+               significant(m.frequency_hz, 5) + " Hz | " + significant(m.zeta, 4) + " | " + m.from + " |\n";
+    }
+    return out;
+}
+
 toml::table inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
     const ExcitationSpec& x = setup.excitation;
     toml::array probes, orders;
@@ -81,7 +116,7 @@ toml::table inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
         orders.push_back(toml::table{{"order", r.orders[k]}, {"sources", sources}});
     }
     return toml::table{
-        {"damping", toml::table{{"ratio", r.zeta}, {"source", r.damping_source}, {"model", "modal"}}},
+        {"damping", damping_json(r)},
         {"excitation", toml::table{{"bow_mm", x.bow_m * kMm}, {"bow_shape", bow_shape_name(x.bow_shape)},
                                    {"unbalance_kg_m", x.unbalance_kg_m}, {"eccentricity_mm", x.eccentricity_m * kMm},
                                    {"ovality_mm", x.ovality_m * kMm}, {"gravity", x.gravity},
@@ -151,7 +186,7 @@ std::string safe_speed_lines(const ResponseResult& r) {
 
 std::string inputs_lines(const ResponseSetup& setup, const ResponseResult& r) {
     std::ostringstream out;
-    out << "- damping: zeta = " << significant(r.zeta, 4) << " of every mode (" << r.damping_source << ")\n";
+    out << "- damping: " << r.damping_summary << "\n";
     for (size_t k = 0; k < r.orders.size(); ++k) {
         out << "- order " << r.orders[k] << ":";
         for (const std::string& s : r.order_sources[k]) out << " " << s;
@@ -196,6 +231,7 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
     out << "## Amplitude against web speed\n\n";
     for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
     if (pngs.empty()) out << "No picture: " << plot_problem << ".\n\n";
+    out << "## Damping of the kept modes\n\n" << damping_table(r) << "\n";
     out << "## Assumptions\n\n";
     for (const std::string& a : r.assumptions) out << "- " << a << "\n";
     const ResponseChecks& c = r.checks;

@@ -105,6 +105,62 @@ void report_safe_speed(std::ostream& out, const CaseSweep& sweep, const StudyRes
     out << "\n";
 }
 
+std::string speed_cell(const std::optional<double>& v) { return v ? significant(*v, 4) : "-"; }
+
+// At the press's web speed: the points whose amplitude reaches the limit
+// there or below (the first speed at the limit is at most the web speed).
+void report_response_at(std::ostream& out, const StudyResult& r, double web) {
+    std::vector<std::string> over;
+    for (const StudyPoint& p : r.points)
+        if (p.response && p.response->v_limit_m_s && *p.response->v_limit_m_s <= web)
+            over.push_back("point " + std::to_string(p.index + 1) + " (" + p.description + ", D = " +
+                           significant(p.diameter_m * 1e3, 4) + " mm): at " + significant(*p.response->v_limit_m_s, 4) +
+                           " m/s");
+    out << "At the web speed " << significant(web, 3) << " m/s: ";
+    if (over.empty()) {
+        out << "every point stays within the amplitude limit (the forced response reaches it only above the web "
+               "speed, or not at all).\n\n";
+        return;
+    }
+    out << "the amplitude reaches the limit at or below the web speed at\n\n";
+    for (const std::string& o : over) out << "- " << o << "\n";
+    out << "\n";
+}
+
+// The forced response of every point (a case with [response]): the speed at
+// the amplitude limit beside I-5 at 0.7 and 0.8 and König's v_krit.
+void report_response(std::ostream& out, const CaseSweep& sweep, const StudyResult& r) {
+    const auto has = [](const StudyPoint& p) { return p.response.has_value(); };
+    const auto first = std::find_if(r.points.begin(), r.points.end(), has);
+    if (first == r.points.end()) return;
+    out << "## Safe web speed from the forced response\n\nAt every point the forced response of the case's [damping], "
+           "[excitation] and [response] (docs/response.md): the web speed where the amplitude first reaches +-"
+        << significant(first->response->limit_m * 1e3, 3)
+        << " mm, the factor that speed implies in I-5 (f_rot / f1), beside I-5 at 0.7 and 0.8 and König's "
+           "v_krit (K-1/K-2, experience factor 0.66), all from the same f1 at rest (m/s).\n\n| # |";
+    for (const SweepParameter& p : sweep.parameters()) out << " " << p.name << " |";
+    out << " D [mm] | largest amplitude | limit reached at | implied factor | I-5 x 0.7 | I-5 x 0.8 | König |\n|---|";
+    for (size_t j = 0; j < sweep.parameters().size(); ++j) out << "---|";
+    out << "---|---|---|---|---|---|---|\n";
+    for (const StudyPoint& p : r.points) {
+        if (!p.response) continue;
+        const StudyResponse& s = *p.response;
+        out << "| " << p.index + 1 << " |";
+        for (size_t j = 0; j < sweep.parameters().size(); ++j)
+            out << " " << sweep.parameters()[j].labels[static_cast<size_t>(p.value_index[j])] << " |";
+        out << " " << significant(p.diameter_m * 1e3, 4) << " | " << significant(s.max_amplitude_m * 1e3, 3) << " mm at "
+            << significant(s.max_amplitude_web_speed_m_s, 4) << " m/s | "
+            << (s.below_range ? "below the range"
+                : s.v_limit_m_s ? "**" + significant(*s.v_limit_m_s, 4) + "**"
+                                : "not up to " + significant(s.max_web_speed_m_s, 3))
+            << " | " << (s.implied_factor ? formatted("%.3f", *s.implied_factor) : "-") << " | "
+            << speed_cell(s.v_i5_07_m_s) << " | " << speed_cell(s.v_i5_08_m_s) << " | " << speed_cell(s.v_koenig_m_s)
+            << " |\n";
+    }
+    out << "\n";
+    if (const std::optional<double> web = sweep.options().web_speed_m_s) report_response_at(out, r, *web);
+}
+
 void report_failures(std::ostream& out, const StudyResult& r) {
     if (r.n_failed() == 0) return;
     out << "## Failed points\n\n";
@@ -136,6 +192,7 @@ std::string study_report_markdown(const CaseSweep& sweep, const StudyResult& r, 
     out << "\n";
     report_points(out, sweep, r);
     report_safe_speed(out, sweep, r);
+    report_response(out, sweep, r);
     report_tracks(out, r);
     report_failures(out, r);
     out << "## Plots\n\n";

@@ -49,10 +49,23 @@ std::string parameter_cells(const CaseSweep& sweep, const StudyPoint& p) {
     return out;
 }
 
+// The forced response's columns (empty without [response]).
+constexpr const char* kResponseColumns =
+    "amplitude_limit_m,amplitude_limit_reached,v_amplitude_limit_m_s,amplitude_implied_factor,response_max_web_speed_m_s,"
+    "max_amplitude_m,max_amplitude_web_speed_m_s,v_i5_07_m_s,v_i5_08_m_s,v_koenig_m_s";
+
+std::string response_cells(const std::optional<StudyResponse>& r) {
+    if (!r) return ",,,,,,,,,";
+    return number(r->limit_m) + "," + (r->limit_reached ? "1" : "0") + "," + number(r->v_limit_m_s) + "," +
+           number(r->implied_factor) + "," + number(r->max_web_speed_m_s) + "," + number(r->max_amplitude_m) + "," +
+           number(r->max_amplitude_web_speed_m_s) + "," + number(r->v_i5_07_m_s) + "," + number(r->v_i5_08_m_s) + "," +
+           number(r->v_koenig_m_s);
+}
+
 std::string point_cells(const StudyPoint& p) {
     return number(p.f1_hz) + "," + number(p.k) + "," + number(p.li_m) + "," + number(p.span_m) + "," +
            number(p.f_i7_hz) + "," + number(p.diameter_m) + "," + number(p.v_safe_m_s) + "," +
-           (p.ok ? std::to_string(p.n_dofs) : std::string()) + "," + number(p.time_s);
+           (p.ok ? std::to_string(p.n_dofs) : std::string()) + "," + number(p.time_s) + "," + response_cells(p.response);
 }
 
 }  // namespace
@@ -64,7 +77,8 @@ std::string study_csv(const CaseSweep& sweep, const StudyResult& result) {
     out << "point";
     for (const SweepParameter& p : sweep.parameters()) out << "," << csv_field(parameter_column(p));
     out << ",status,predecessor,track,label,type,n,m,multiplicity,frequency_hz,mac_previous,ambiguous,new_track,"
-           "f1_hz,k,li_m,span_m,f_i7_hz,diameter_m,v_safe_m_s,n_dofs,time_s,error\n";
+           "f1_hz,k,li_m,span_m,f_i7_hz,diameter_m,v_safe_m_s,n_dofs,time_s,"
+        << kResponseColumns << ",error\n";
     for (const StudyPoint& p : result.points) {
         const std::string head = std::to_string(p.index + 1) + parameter_cells(sweep, p);
         if (!p.ok) {
@@ -106,6 +120,9 @@ std::string study_json(const CaseSweep& sweep, const StudyResult& result, const 
                         {"modes", o.modes},  // 0: the case's own [analysis]
                         {"safe_factor", o.safe_factor}};
     if (o.web_speed_m_s) options.insert("web_speed_m_s", *o.web_speed_m_s);
+    // Whether the points ran the forced response (the case has [response]).
+    const bool response = std::any_of(result.points.begin(), result.points.end(),
+                                      [](const StudyPoint& p) { return p.response.has_value(); });
     toml::table t{{"kind", kind},
                   {"case", sweep.case_name()},
                   {"case_file", sweep.case_file()},
@@ -114,7 +131,8 @@ std::string study_json(const CaseSweep& sweep, const StudyResult& result, const 
                   {"time_s", result.time_s},
                   {"parameters", parameters},
                   {"diameter_parameters", diameter},
-                  {"options", options}};
+                  {"options", options},
+                  {"response", response}};
     std::ostringstream out;
     out << toml::json_formatter{t} << "\n";
     return out.str();

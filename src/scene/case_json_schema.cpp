@@ -272,6 +272,8 @@ constexpr TableTitle kTables[] = {
     {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/rotation.md)"},
     {"damping", "[damping]: relative damping of the modes for the forced response (docs/response.md)"},
     {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},
+    {"rayleigh", "[damping] rayleigh: D = alpha M + beta K, from alpha and beta or from zeta at two frequencies"},
+    {"modes", "[damping] modes: the relative damping of single modes at rest, { mode = 1, ratio = 0.02 }"},
     {"excitation", "[excitation]: what excites the spinning roll (docs/response.md)"},
     {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
 };

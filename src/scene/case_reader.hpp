@@ -6,6 +6,7 @@
 //   case_reader_mesh.cpp      [analysis] and [mesh]
 //   case_reader_rotation.cpp  [rotation]
 //   case_reader_response.cpp  [damping], [excitation], [response]
+//   case_reader_damping.cpp   [damping]: the base ratio or Rayleigh, families, single modes
 // Private to scene/: everything else reads a case through case_file.hpp.
 #pragma once
 
@@ -243,6 +244,10 @@ private:
 
     std::optional<ResponseSetup> read_response_setup(const Section& top, const Scene& scene) const;
     DampingSpec read_damping(const Section& damping) const;
+    // The base: exactly one of ratio, log_decrement, decay, rayleigh.
+    void read_damping_base(const Section& damping, DampingSpec& spec) const;
+    RayleighSpec read_rayleigh(const Section& damping, std::string& source) const;
+    std::vector<DampingSpec::ModeRatio> read_damping_modes(const Section& damping) const;
     ExcitationSpec read_excitation(const Section& excitation, const Scene& scene) const;
     ResponseRange read_response_range(const Section& response, const Scene& scene) const;
     std::vector<ResponseRange::Probe> read_probes(const Section& response, const Scene& scene) const;

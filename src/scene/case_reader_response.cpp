@@ -4,9 +4,9 @@
 #include "scene/case_reader.hpp"
 
 #include "scene/case_file.hpp"
+#include "scene/case_table.hpp"
 
 #include "common/error.hpp"
-#include "effects/damping.hpp"
 #include "scene/toml_text.hpp"
 
 #include <algorithm>
@@ -16,8 +16,6 @@ namespace coremodal::case_reading {
 
 namespace {
 
-constexpr const char* kDampingExpected =
-    "exactly one of ratio = 0.01, log_decrement = 0.06 or decay = { amplitude_ratio = 3.2, cycles = 10 }";
 constexpr const char* kResponseSpeedsExpected =
     "exactly one of web_speeds = [\"5 m/s\", \"20 m/s\"] (with points = 400, or a list) or speeds = [\"100 rpm\", "
     "\"2000 rpm\"]";
@@ -42,7 +40,7 @@ std::optional<ResponseSetup> CaseReader::read_response_setup(const Section& top,
     }
     if (!damping)
         fail(response->table->source(), "[response] needs [damping]; expected e.g. [damping] ratio = 0.01 (cores and "
-                                        "rest rolls: 0.005-0.02), or log_decrement, or decay (docs/response.md)");
+                                        "rest rolls: 0.005-0.02), or log_decrement, decay or rayleigh (docs/response.md)");
     if (!excitation)
         fail(response->table->source(), "[response] needs [excitation]; expected e.g. [excitation] bow = \"0.5 mm\", "
                                         "unbalance = \"2 kg*mm\", ovality = \"0.3 mm\" (docs/response.md)");
@@ -54,38 +52,6 @@ std::optional<ResponseSetup> CaseReader::read_response_setup(const Section& top,
     setup.excitation = read_excitation(*excitation, scene);
     setup.response = read_response_range(*response, scene);
     return setup;
-}
-
-DampingSpec CaseReader::read_damping(const Section& damping) const {
-    std::vector<std::string_view> given;
-    for (std::string_view key : {"ratio", "log_decrement", "decay"})
-        if (get(damping, key)) given.push_back(key);
-    if (given.empty()) fail(damping.table->source(), "[damping] gives no damping; expected " + std::string(kDampingExpected));
-    if (given.size() > 1)
-        fail(*get(damping, given[1]), echo(damping, given[1], *get(damping, given[1])) + " and " +
-                                          echo(damping, given[0], *get(damping, given[0])) + " are both given; expected " +
-                                          kDampingExpected);
-    DampingSpec spec;
-    if (given[0] == "ratio") {
-        spec.ratio = *quantity(damping, "ratio");
-        spec.source = "[damping] ratio = " + format_quantity(spec.ratio, Dimension::dimensionless);
-    } else if (given[0] == "log_decrement") {
-        const double delta = *quantity(damping, "log_decrement");
-        spec.ratio = zeta_from_log_decrement(delta);  // I-1 with N = 1
-        spec.source = "[damping] log_decrement = " + format_quantity(delta, Dimension::dimensionless) +
-                      ": zeta = delta / (2 pi) (I-1)";
-    } else {
-        const Section decay = *section(damping, "decay", "decay");
-        const double ratio = required(decay, "amplitude_ratio", "X0/XN, the amplitude ratio over the cycles, e.g. 3.2");
-        const double cycles = required(decay, "cycles", "N, the cycles of the decay, e.g. 10");
-        spec.ratio = zeta_from_decay(ratio, cycles);  // I-1
-        spec.source = "[damping] decay: amplitude ratio " + format_quantity(ratio, Dimension::dimensionless) + " over " +
-                      format_quantity(cycles, Dimension::dimensionless) + " cycles: zeta = ln(X0/XN) / (2 pi N) (I-1)";
-        if (!(spec.ratio < 1))
-            fail(*get(damping, "decay"), "[damping] decay gives zeta = " + format_quantity(spec.ratio, Dimension::dimensionless) +
-                                             ", critical damping or more; expected a decay over more cycles (zeta < 1)");
-    }
-    return spec;
 }
 
 ExcitationSpec CaseReader::read_excitation(const Section& excitation, const Scene& scene) const {
@@ -170,6 +136,14 @@ std::optional<ResponseSetup> CaseReader::response(const toml::table& root, const
 namespace coremodal {
 
 const char* bow_shape_name(BowShape s) { return s == BowShape::first_mode ? "first_mode" : "half_sine"; }
+
+ResponseCase parse_response_case_table(const toml::table& root, const std::string& path) {
+    ResponseCase out{parse_case_table(root, path), std::nullopt, std::nullopt};  // every check, the new tables included
+    const case_reading::CaseReader reader(path);
+    out.rotation = reader.rotation(root, out.scene);
+    out.response = reader.response(root, out.scene);
+    return out;
+}
 
 ResponseCase parse_response_case_text(std::string_view text, const std::string& path) {
     const RotatingCase rotating = parse_rotating_case_text(text, path);  // every check, the new tables included

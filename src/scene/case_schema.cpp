@@ -200,6 +200,22 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("damping", "decay", ValueKind::table),
         {"decay", "amplitude_ratio", ValueKind::quantity, Dimension::dimensionless, 1.0, 1e6, true},
         {"decay", "cycles", ValueKind::quantity, Dimension::dimensionless, 0.0, 1e4, true},
+        // Rayleigh's alpha (1/s) and beta (s) as plain SI numbers: no unit
+        // names a rate apart from a frequency ("1/s" is 1 Hz here, a cycle
+        // per second, which alpha is not).
+        plain_key("damping", "rayleigh", ValueKind::table),
+        {"rayleigh", "alpha", ValueKind::quantity, Dimension::dimensionless, 0.0, kInf},
+        {"rayleigh", "beta", ValueKind::quantity, Dimension::dimensionless, 0.0, kInf},
+        {"rayleigh", "zeta", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        plain_key("rayleigh", "frequencies", ValueKind::list),
+        {"damping", "bending", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        {"damping", "torsion", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        {"damping", "axial", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        {"damping", "breathing", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        {"damping", "ovalling", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        plain_key("damping", "modes", ValueKind::tables),
+        integer_key("modes", "mode", 1, kMaxModes),
+        {"modes", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
         {"excitation", "bow", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleBow},
         plain_key("excitation", "bow_shape", ValueKind::text),
         {"excitation", "unbalance", ValueKind::quantity, Dimension::unbalance, 0.0, 100.0, false, kPlausibleUnbalance},

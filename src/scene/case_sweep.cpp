@@ -158,7 +158,9 @@ std::string CaseSweep::describe(int point) const {
     return out;
 }
 
-Scene CaseSweep::scene(int point) const {
+Scene CaseSweep::scene(int point) const { return response_case(point).scene; }
+
+ResponseCase CaseSweep::response_case(int point) const {
     const std::vector<int> index = value_indices(point);
     // Parsed afresh for every point: toml++ does not copy source positions,
     // and the case reader's messages need them.
@@ -167,9 +169,9 @@ Scene CaseSweep::scene(int point) const {
     for (size_t p = 0; p < index.size(); ++p)
         for (const KeyPath& path : impl_->paths[p]) Impl::set(doc, path, impl_->values[p][index[p]]);
     try {
-        Scene scene = parse_case_table(doc, impl_->path);
-        scene.name = impl_->name;
-        return scene;
+        ResponseCase c = parse_response_case_table(doc, impl_->path);
+        c.scene.name = impl_->name;
+        return c;
     } catch (const InputError& e) {
         throw InputError("point " + std::to_string(point + 1) + " (" + describe(point) + "): " + e.what());
     }

@@ -17,6 +17,7 @@
 // point's error, raised by scene(point); the study reports it and goes on.
 #pragma once
 
+#include "scene/response_spec.hpp"
 #include "scene/scene.hpp"
 #include "scene/units.hpp"
 
@@ -88,6 +89,11 @@ public:
     // The scene of one point. Throws InputError "point 4 (...): <the case
     // reader's message>" when the case reader refuses the combination.
     Scene scene(int point) const;
+    // The same point with its [rotation] and its forced response setup
+    // ([damping], [excitation], [response]; none without [response]): a
+    // study over a response case runs the response at every point
+    // (docs/studies.md). Throws as scene(point).
+    ResponseCase response_case(int point) const;
 
     struct Impl;  // the case's text, the key paths and values (case_sweep_impl.hpp)
 

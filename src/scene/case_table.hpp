@@ -4,6 +4,7 @@
 // files that hold a toml++ document pay for its header.
 #pragma once
 
+#include "scene/response_spec.hpp"
 #include "scene/scene.hpp"
 
 #include <toml++/toml.h>
@@ -15,5 +16,7 @@ namespace coremodal {
 // As parse_case_text. Values inserted by an edit carry no line number; their
 // messages name the file only.
 Scene parse_case_table(const toml::table& root, const std::string& path);
+// As parse_response_case_text (the scene, [rotation] and the response setup).
+ResponseCase parse_response_case_table(const toml::table& root, const std::string& path);
 
 }  // namespace coremodal

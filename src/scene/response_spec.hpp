@@ -18,10 +18,37 @@
 
 namespace coremodal {
 
-// Modal damping: one relative damping ratio zeta for every elastic mode.
+// Rayleigh damping D = alpha M + beta K (effects/damping.hpp: the modal
+// ratio it gives each mode).
+struct RayleighSpec {
+    double alpha = 0;  // 1/s, the mass-proportional part
+    double beta = 0;   // s, the stiffness-proportional part
+};
+
+// The mode families a [damping] ratio can name: the words the mode labels use
+// (modes/classify at the solid and harmonic levels; the beam level names
+// bending, axial and torsion).
+inline const std::vector<std::string_view> kDampingFamilies = {"bending", "torsion", "axial", "breathing", "ovalling"};
+
+// The damping of the modes at rest: a base for every mode that is not named
+// (one relative damping ratio zeta, or Rayleigh's alpha M + beta K), and
+// ratios per mode family and per mode on top of it (a mode's own ratio wins
+// over its family's, its family's over the base).
 struct DampingSpec {
-    double ratio = 0;    // zeta, 0 < zeta < 1
-    std::string source;  // how the file gave it: "ratio = 0.01", "log_decrement = 0.06 (I-1: ...)"
+    double ratio = 0;    // the base zeta, 0 < zeta < 1; 0 when `rayleigh` is the base
+    std::string source;  // how the file gave the base: "ratio = 0.01", "log_decrement = 0.06 (I-1: ...)"
+    std::optional<RayleighSpec> rayleigh;  // the base as a matrix, instead of `ratio`
+    struct FamilyRatio {
+        std::string family;  // one of kDampingFamilies
+        double ratio = 0;
+    };
+    std::vector<FamilyRatio> families;
+    struct ModeRatio {
+        int mode = 0;  // 1-based, as in modes.csv of the scene at rest
+        double ratio = 0;
+        std::string where;  // "FILE:LINE:COL: [damping.modes #1]": the run checks the number against the modes at rest
+    };
+    std::vector<ModeRatio> modes;
 };
 
 // The shape of a bow (straightness deviation) along the core, scaled to the

@@ -361,4 +361,36 @@ std::string describe_assumptions(const Scene& scene) {
     return out;
 }
 
+namespace {
+
+std::string damping_lines(const DampingSpec& d) {
+    std::string out = "  damping of every mode not named below: " + d.source + "\n";
+    if (d.rayleigh)
+        out += "    (Rayleigh: D = alpha M + beta K; mode j: zeta_j = alpha / (2 omega_j) + beta omega_j / 2)\n";
+    for (const DampingSpec::FamilyRatio& f : d.families)
+        out += "  damping of every " + f.family + " mode: zeta = " + format_quantity(f.ratio, Dimension::dimensionless) + "\n";
+    for (const DampingSpec::ModeRatio& m : d.modes)
+        out += "  damping of mode " + std::to_string(m.mode) + " at rest (shared by a degenerate partner): zeta = " +
+               format_quantity(m.ratio, Dimension::dimensionless) + "\n";
+    return out;
+}
+
+}  // namespace
+
+std::string describe_response(const ResponseSetup& setup) {
+    std::string out = damping_lines(setup.damping);
+    const ExcitationSpec& x = setup.excitation;
+    out += "  excitation: bow " + length(x.bow_m) + " (" + bow_shape_name(x.bow_shape) + "), unbalance " +
+           format_quantity(x.unbalance_kg_m, Dimension::unbalance) + ", eccentricity " + length(x.eccentricity_m) +
+           ", ovality " + length(x.ovality_m) + ", gravity " + (x.gravity ? "on" : "off") + "\n";
+    const ResponseRange& r = setup.response;
+    out += "  speeds: " + std::to_string(r.speeds_hz.size()) + " rotation speeds from " +
+           format_quantity(r.speeds_hz.front(), Dimension::frequency) + " to " +
+           format_quantity(r.speeds_hz.back(), Dimension::frequency) +
+           (r.from_web_speed ? " (from web speeds at the roll's outer diameter)" : "") + "\n";
+    out += "  amplitude limit: " + length(r.limit_m) + " at " + r.probes.front().name + "\n";
+    for (const ResponseRange::Probe& p : r.probes) out += "  probe: " + p.name + " (z = " + length(p.z_m) + ")\n";
+    return out;
+}
+
 }  // namespace coremodal

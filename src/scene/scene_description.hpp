@@ -5,6 +5,7 @@
 // it needs nothing but the Scene, so a run's own output can reuse it.
 #pragma once
 
+#include "scene/response_spec.hpp"
 #include "scene/scene.hpp"
 
 #include <set>
@@ -37,5 +38,10 @@ std::string describe_effects(const Scene& scene);
 
 // The scene's assumptions (library values, chuck defaults), one per line.
 std::string describe_assumptions(const Scene& scene);
+
+// [damping], [excitation] and [response] as the forced response will use
+// them (docs/response.md), one line each: the damping's base, families and
+// single modes, the excitation, the speeds, the limit and the probes.
+std::string describe_response(const ResponseSetup& setup);
 
 }  // namespace coremodal

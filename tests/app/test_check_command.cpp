@@ -155,3 +155,21 @@ TEST_CASE("coremodal check lists a chuck scene's effects and explains model = au
         CHECK(has_line(r.out, {"[supports.left.bearing] type = \"rigid\"", "default: no [bearing]"}));
     }
 }
+
+TEST_CASE("coremodal check describes the forced response's damping, excitation and speeds", "[app][cli][check][response]") {
+    TempDir dir;
+    const Run r =
+        run_coremodal(dir, "check '" + std::string(COREMODAL_SOURCE_DIR) + "/cases/13-rest-roll-response-150x15.8-4320.toml'");
+    INFO("stderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(has_line(r.out, {"forced response (docs/response.md):"}));
+    CHECK(has_line(r.out, {"damping of every mode not named below: [damping] ratio = 0.01"}));
+    CHECK(has_line(r.out, {"excitation: bow 0.0005 m (half_sine)", "gravity on"}));
+    CHECK(has_line(r.out, {"speeds: 301 rotation speeds from", "(from web speeds at the roll's outer diameter)"}));
+    CHECK(has_line(r.out, {"amplitude limit: 0.005 m at mid-span"}));
+    // A case without [response] has no such lines.
+    dir.write("bare.toml", kBareCore);
+    const Run plain = run_coremodal(dir, "check '" + (dir.path / "bare.toml").string() + "'");
+    CHECK(plain.exit_code == 0);
+    CHECK_FALSE(has_line(plain.out, {"forced response"}));
+}

@@ -5,10 +5,13 @@
 // with the axial mesh graded towards the clamp edges).
 #include "analyses/response/response.hpp"
 #include "analyses/run/run.hpp"
+#include "analyses/study/study.hpp"
+#include "scene/case_sweep.hpp"
 #include "scene/response_spec.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <sstream>
 #include <string>
 
 using namespace coremodal;
@@ -118,4 +121,29 @@ TEST_CASE("Case 13: the bowed rotogravure rest roll reaches +-5 mm only at its o
     CHECK(r.speeds_at_rest.safe[0].v_safe_m_s == Approx(11.69).epsilon(0.005));
     CHECK(r.checks.direct_max_relative < 1e-8);
     CHECK(r.checks.truncation_max_relative < 1e-2);
+}
+
+TEST_CASE("Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/response.md",
+          "[cases][response][study]") {
+    const CaseSweep sweep = CaseSweep::read(std::string(COREMODAL_SOURCE_DIR) + "/cases/14-study-response-safe-speed.toml",
+                                            "study");
+    std::ostringstream progress;
+    const StudyResult result = run_sweep(sweep, {true}, progress);
+    REQUIRE(result.n_failed() == 0);
+    REQUIRE(result.points.size() == 5);
+    // docs/response.md's table, "by hand" and from the study alike: 5 mm of
+    // paper stays below +-5 mm (peak 4.78 mm); 10, 20, 40, 80 mm reach it at
+    // 16.70, 16.72, 17.61, 20.54 m/s; I-5 x 0.7 is 11.89 ... 14.69 m/s.
+    const StudyResponse& thin = *result.points[0].response;
+    CHECK_FALSE(thin.limit_reached);
+    CHECK(thin.max_amplitude_m == Approx(4.78e-3).epsilon(0.01));
+    CHECK(*thin.v_i5_07_m_s == Approx(11.89).epsilon(0.005));
+    const double limit_at[] = {16.70, 16.72, 17.61, 20.54};
+    for (size_t i = 1; i < 5; ++i) {
+        REQUIRE(result.points[i].response);
+        REQUIRE(result.points[i].response->v_limit_m_s);
+        CHECK(*result.points[i].response->v_limit_m_s == Approx(limit_at[i - 1]).epsilon(0.005));
+    }
+    CHECK(*result.points[4].response->v_i5_07_m_s == Approx(14.69).epsilon(0.005));
+    CHECK(*result.points[4].response->v_koenig_m_s == Approx(35.18).epsilon(0.005));
 }

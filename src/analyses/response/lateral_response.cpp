@@ -12,7 +12,7 @@ namespace coremodal {
 using cd = std::complex<double>;
 
 LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta)
-    : network_(&network), zeta_(zeta) {
+    : network_(&network), lambda_scale_(lambda_scale) {
     const FamilySet lateral = lateral_family_set(network);
     if (!lateral) throw SolveError("the beam network has no bending DOF: no lateral response to compute");
     m_ = std::move(assemble_problems(network, {lateral}).front());
@@ -21,13 +21,29 @@ LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale
     Phi_ = std::move(modes.Phi);
     lambda_ = std::move(modes.lambda);
     Ghat_ = Phi_.transpose() * (G_ * Phi_);
+    set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(lambda_.size()), zeta));
+}
+
+void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
+    COREMODAL_ASSERT(static_cast<Eigen::Index>(zeta.size()) == lambda_.size());
     // A rigid mode (lambda ~ 0) has no frequency to damp at.
-    const double rigid = kRigidEigenvalueFraction * lambda_scale;
+    const double rigid = kRigidEigenvalueFraction * lambda_scale_;
     modal_damping_.resize(lambda_.size());
-    for (Eigen::Index j = 0; j < lambda_.size(); ++j)
-        modal_damping_(j) = lambda_(j) < rigid ? 0.0 : ModalDamping::coefficient(zeta, std::sqrt(lambda_(j)));
+    Eigen::VectorXd own(lambda_.size());  // c_j less Rayleigh's part: what the matrix form adds in the modes
+    for (Eigen::Index j = 0; j < lambda_.size(); ++j) {
+        const double by_rayleigh = rayleigh.coefficient(lambda_(j));
+        const std::optional<double>& z = zeta[static_cast<size_t>(j)];
+        modal_damping_(j) = !z ? by_rayleigh : lambda_(j) < rigid ? 0.0 : ModalDamping::coefficient(*z, std::sqrt(lambda_(j)));
+        own(j) = modal_damping_(j) - by_rayleigh;
+    }
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
-    D_ = MPhi * modal_damping_.asDiagonal() * MPhi.transpose();
+    D_ = MPhi * own.asDiagonal() * MPhi.transpose();
+    if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
+    if (rayleigh.beta != 0) D_ += rayleigh.beta * Eigen::MatrixXd(m_.K);
+}
+
+double LateralResponse::modal_damping_ratio(int j) const {
+    return lambda_(j) < kRigidEigenvalueFraction * lambda_scale_ ? 0.0 : modal_damping_(j) / (2 * std::sqrt(lambda_(j)));
 }
 
 int LateralResponse::modes_below(double omega_cut) const {

@@ -9,36 +9,51 @@
 //    M-orthonormal, every one of them: beam/rotating_modes dense_modes_at_rest),
 //    with the gyroscopic coupling projected, x = Phi_n eta,
 //        (Lambda_n - omega^2 I + i omega (Omega Gh_n + Dh_n)) eta = Phi_n^T f,
-//    Gh = Phi^T G Phi (skew), Dh = diag(2 zeta omega_j) (effects/damping.hpp);
+//    Gh = Phi^T G Phi (skew), Dh = diag(c_j) (effects/damping.hpp): c_j =
+//    2 zeta_j omega_j for a mode with a ratio, alpha + beta lambda_j for
+//    Rayleigh's (diagonal in the modes at rest either way);
 //    with the n lowest modes (truncated) or all of them (exact). A truncated
 //    sum may add the static part of the modes left out, Phi_r Lambda_r^-1
 //    Phi_r^T f (the mode-acceleration correction), which is what the left-out
 //    modes do far below their frequencies;
-//  - the direct solve of the full system (Eigen dense LU), with modal damping
-//    as the matrix D = M Phi Dh Phi^T M.
+//  - the direct solve of the full system (Eigen dense LU), with the damping
+//    as a matrix: D = alpha M + beta K + M Phi diag(c_j - alpha - beta
+//    lambda_j) Phi^T M (pure alpha M + beta K when Rayleigh damps every mode,
+//    M Phi Dh Phi^T M when ratios do).
 // With the complete basis both are the same linear system in other
 // coordinates: they agree to round-off (tests/unit/analyses/response).
 #pragma once
 
 #include "beam/beam_network.hpp"
+#include "effects/damping.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+
+#include <optional>
+#include <vector>
 
 namespace coremodal {
 
 class LateralResponse {
 public:
     // lambda_scale: the first elastic eigenvalue's scale (rad^2/s^2,
-    // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode.
-    // Throws SolveError when the network has no bending DOF.
-    LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta);
+    // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode
+    // (set_damping replaces it). Throws SolveError when the network has no bending DOF.
+    LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta = 0);
+
+    // The damping: Rayleigh's alpha M + beta K for every mode whose zeta[j]
+    // is empty, 2 zeta[j] omega_j for the others (0 for a rigid mode, which
+    // has no frequency to damp at). zeta has n_modes() entries.
+    void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
 
     int n_modes() const { return static_cast<int>(lambda_.size()); }
     // How many modes lie at or below omega_cut (rad/s): the truncated basis.
     int modes_below(double omega_cut) const;
     double mode_frequency_hz(int j) const;
-    double zeta() const { return zeta_; }
+    double eigenvalue(int j) const { return lambda_(j); }
+    // Mode j's relative damping c_j / (2 omega_j) (0 for a rigid mode).
+    double modal_damping_ratio(int j) const;
     const NetworkMatrices& matrices() const { return m_; }  // K, M and the rows' network DOFs
 
     // A network vector (6 DOFs per node) on the problem's rows, and back
@@ -62,12 +77,12 @@ public:
 
 private:
     const BeamNetwork* network_;
-    double zeta_;
+    double lambda_scale_;
     NetworkMatrices m_;
     Eigen::SparseMatrix<double> G_;  // per unit Omega (rad/s)
     Eigen::MatrixXd Phi_, Ghat_;
-    Eigen::VectorXd lambda_, modal_damping_;  // lambda_j; 2 zeta omega_j (0 for a rigid mode)
-    Eigen::MatrixXd D_;                        // M Phi diag(modal_damping) Phi^T M, for the direct solve
+    Eigen::VectorXd lambda_, modal_damping_;  // lambda_j; c_j = Phi_j^T D Phi_j
+    Eigen::MatrixXd D_;                        // the damping matrix, for the direct solve
 };
 
 }  // namespace coremodal

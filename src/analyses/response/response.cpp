@@ -233,8 +233,8 @@ std::vector<std::string> response_notes(const ExcitationSpec& x) {
     std::vector<std::string> notes{
         "forced response at the beam level: modal superposition in the modes at rest with the gyroscopic coupling of "
         "the spinning beams projected, checked against the direct solve of the full network",
-        "modal damping in the stationary frame (bearings, air, web); no rotating (internal) damping, no damping matrix "
-        "from the case",
+        "damping in the stationary frame (bearings, air, web), per mode at rest (ratios, Rayleigh's alpha M + beta K); "
+        "no rotating (internal) damping, no loss factors per part",
         "amplitude: the orbit's semi-major axis of the axis' total displacement (the bow's runout included: what a laser "
         "sees, less the surface's own out-of-roundness), summed over the orders (the largest excursion when their "
         "phases align)"};
@@ -266,12 +266,23 @@ std::vector<std::string> setup_assumptions(const ResponseSetup& setup) {
     return out;
 }
 
-std::vector<std::string> effect_names(const Scene& scene, const ExcitationSpec& x) {
+std::vector<std::string> effect_names(const Scene& scene, const ResponseSetup& setup) {
+    const ExcitationSpec& x = setup.excitation;
     std::vector<std::string> out = scene.effects();
     out.push_back(Gyroscopic::kName);
-    out.push_back(ModalDamping::kName);
+    if (!setup.damping.rayleigh || !setup.damping.families.empty() || !setup.damping.modes.empty())
+        out.push_back(ModalDamping::kName);
+    if (setup.damping.rayleigh) out.push_back(RayleighDamping::kName);
     for (const std::string& e : excitation_effect_names(x)) out.push_back(e);
     return out;
+}
+
+// The largest amplitude at the first probe, on the grid or on a refined peak.
+void set_largest_amplitude(ResponseResult& out) {
+    for (const ResponsePoint& p : out.points)
+        if (p.probes[0].total_m > out.max_amplitude_m) out.max_amplitude_m = p.probes[0].total_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
+    for (const ResponsePeak& p : out.peaks)
+        if (p.amplitude_m > out.max_amplitude_m) out.max_amplitude_m = p.amplitude_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
 }
 
 }  // namespace
@@ -295,22 +306,25 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
     ResponseResult out;
     const ResponseRange& range = setup.response;
     out.probes = range.probes, out.limit_m = range.limit_m, out.from_web_speed = range.from_web_speed;
-    out.zeta = setup.damping.ratio, out.damping_source = setup.damping.source;
+    out.damping = setup.damping, out.damping_summary = damping_summary(setup.damping);
     out.roll_outer_diameter = roll_outer_diameter(scene);
-    out.effects = effect_names(scene, setup.excitation);
+    out.effects = effect_names(scene, setup);
     out.notes = response_notes(setup.excitation);
     // 1. At rest.
     const BeamModelResult rest = solve_beam_model(scene, options);
     const double f1 = first_bending_hz(rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    // 2. The lateral problem, its modes and the loads.
-    const LateralResponse lateral(rest.network, rest.lambda_scale, setup.damping.ratio);
+    // 2. The lateral problem, its modes, their damping and the loads.
+    LateralResponse lateral(rest.network, rest.lambda_scale);
+    const LateralDampingPlan damping = plan_damping(setup.damping, rest, lateral);
+    lateral.set_damping(damping.rayleigh, damping.zeta);
     out.n_dofs = lateral.matrices().K.rows();
     const Eigen::VectorXd first_shape =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
     const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
     COREMODAL_ASSERT(!loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
     out.assumptions = setup_assumptions(setup);
+    for (const std::string& a : damping.assumptions) out.assumptions.push_back(a);
     for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
     for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
     std::vector<CorePoint> probes;
@@ -325,15 +339,13 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
     out.checks.cutoff_hz = kTruncationFactor * top_hz;
     const int n_used = std::max(std::min(2, lateral.n_modes()), lateral.modes_below(2 * M_PI * out.checks.cutoff_hz));
     out.checks.n_modes_used = n_used;
+    out.mode_damping.assign(damping.modes.begin(), damping.modes.begin() + n_used);
     const Evaluator eval(lateral, loads, probes, n_used);
     out.points = sweep(eval, range.speeds_hz, out.roll_outer_diameter);
     // 4. Peaks and the speed at the limit.
     out.peaks = find_peaks({eval, lateral, loads, rest, n_used, out.roll_outer_diameter}, out.points);
     out.safe = safe_speed(eval, out.points, out.peaks, range.limit_m, f1, out.roll_outer_diameter);
-    for (const ResponsePoint& p : out.points)
-        if (p.probes[0].total_m > out.max_amplitude_m) out.max_amplitude_m = p.probes[0].total_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
-    for (const ResponsePeak& p : out.peaks)
-        if (p.amplitude_m > out.max_amplitude_m) out.max_amplitude_m = p.amplitude_m, out.max_amplitude_web_speed_m_s = p.web_speed_m_s;
+    set_largest_amplitude(out);
     // 5. The checks.
     check(eval, out.points, out.peaks, out.checks);
     out.assumptions.push_back("modes kept: " + std::to_string(n_used) + " of " + std::to_string(lateral.n_modes()) +

@@ -19,6 +19,7 @@
 //    against the direct solve of the full system.
 #pragma once
 
+#include "analyses/response/response_damping.hpp"
 #include "beam/beam_model.hpp"
 #include "beam/speeds.hpp"
 #include "modes/mode_set.hpp"
@@ -84,8 +85,9 @@ struct ResponseResult {
     AmplitudeSafeSpeed safe;
     RollSpeeds speeds_at_rest;  // I-5 from the first bending frequency at rest
     double limit_m = 0;
-    double zeta = 0;
-    std::string damping_source;
+    DampingSpec damping;                    // as the case gave it
+    std::string damping_summary;            // one line for people (response_damping.hpp)
+    std::vector<ModeDamping> mode_damping;  // the kept modes' damping, lowest first
     double sag_m = 0;  // static sag under gravity at the first probe (0 without gravity)
     double ovality_split = 0;
     double max_amplitude_m = 0;

@@ -45,6 +45,10 @@ std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
         line += p.f1_hz ? "f1 " + significant(*p.f1_hz) + " Hz" : "no bending mode";
         if (p.k) line += ", k " + significant(*p.k, 3);
         if (p.v_safe_m_s) line += ", v_safe " + significant(*p.v_safe_m_s, 3) + " m/s";
+        if (p.response)
+            line += p.response->v_limit_m_s ? ", +-" + significant(p.response->limit_m * 1e3, 3) + " mm at " +
+                                                  significant(*p.response->v_limit_m_s, 3) + " m/s"
+                                            : ", +-" + significant(p.response->limit_m * 1e3, 3) + " mm not reached";
     }
     line += "  (" + significant(p.time_s, 3) + " s";
     if (left_s > 0) line += ", ~" + minutes_or_seconds(left_s) + " left";
@@ -53,15 +57,36 @@ std::string progress_line(const StudyPoint& p, int n_points, double left_s) {
 
 }  // namespace
 
+std::optional<ResponseSetup> response_of_point(const std::string& table, std::optional<ResponseSetup> response) {
+    return table == "study" ? std::move(response) : std::nullopt;
+}
+
 unsigned jobs_for(unsigned requested, const CaseSweep& sweep) {
     if (mpi_size() > 1) return 1;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     return std::max(1u, std::min<unsigned>(requested ? requested : cores, static_cast<unsigned>(sweep.n_points())));
 }
 
-void run_point(Scene scene, StudyPoint& p) {
+StudyResponse study_response(const ResponseResult& r) {
+    StudyResponse out;
+    out.limit_m = r.limit_m;
+    out.max_web_speed_m_s = r.points.back().web_speed_m_s;
+    out.limit_reached = r.safe.reached, out.below_range = r.safe.below_range;
+    if (r.safe.reached) out.v_limit_m_s = r.safe.web_speed_m_s, out.implied_factor = r.safe.implied_factor;
+    out.max_amplitude_m = r.max_amplitude_m, out.max_amplitude_web_speed_m_s = r.max_amplitude_web_speed_m_s;
+    for (const SafeSpeed& s : r.speeds_at_rest.safe) {
+        if (s.safe == kSafeFactors[0]) out.v_i5_07_m_s = s.v_safe_m_s;
+        if (s.safe == kSafeFactors[1]) out.v_i5_08_m_s = s.v_safe_m_s;
+    }
+    if (r.speeds_at_rest.koenig) out.v_koenig_m_s = r.speeds_at_rest.koenig->speed.v_krit_m_s;
+    return out;
+}
+
+void run_point(Scene scene, StudyPoint& p, const std::optional<ResponseSetup>& response) {
     Stopwatch watch;
     try {
+        // The forced response first, on its own copy of the scene: run_scene takes it.
+        if (response) p.response = study_response(run_forced_response(scene, *response));
         RunOptions run;
         run.quiet = true;
         run.write_results = false;
@@ -76,6 +101,7 @@ void run_point(Scene scene, StudyPoint& p) {
         p.ok = true;
     } catch (const std::exception& e) {  // InputError, SolveError, PETSc: the point fails, the study goes on
         p.error = e.what();
+        p.response.reset();
     }
     p.time_s = watch.seconds();
 }
@@ -103,13 +129,16 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
     // Every point's scene first (milliseconds each): refused combinations are
     // reported before hours of solving, not after.
     std::vector<std::optional<Scene>> scenes(static_cast<size_t>(n));
+    std::vector<std::optional<ResponseSetup>> responses(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
         StudyPoint& p = result.points[static_cast<size_t>(i)];
         p.index = i;
         p.value_index = sweep.value_indices(i);
         p.description = sweep.describe(i);
         try {
-            scenes[static_cast<size_t>(i)] = sweep.scene(i);
+            ResponseCase c = sweep.response_case(i);
+            scenes[static_cast<size_t>(i)] = std::move(c.scene);
+            responses[static_cast<size_t>(i)] = response_of_point(sweep.table(), std::move(c.response));
         } catch (const InputError& e) {
             p.error = e.what();
             if (say) progress << "  refused: " << p.error << std::endl;
@@ -141,7 +170,7 @@ StudyResult run_sweep(const CaseSweep& sweep, const StudyRunOptions& options, st
         run_points_in_children(sweep, todo, jobs, options.program, result.points, finished);
     } else {
         for (int i : todo) {
-            run_point(*scenes[static_cast<size_t>(i)], result.points[static_cast<size_t>(i)]);
+            run_point(*scenes[static_cast<size_t>(i)], result.points[static_cast<size_t>(i)], responses[static_cast<size_t>(i)]);
             finished(i);
         }
     }

@@ -8,6 +8,7 @@
 // (rigid clamps, elastic chucks, a beam model) is what the point runs.
 #pragma once
 
+#include "analyses/response/response.hpp"
 #include "beam/chuck_calibration.hpp"
 #include "modes/tracking.hpp"
 #include "scene/case_sweep.hpp"
@@ -19,6 +20,21 @@
 #include <vector>
 
 namespace coremodal {
+
+// A point of a study over a case with [response] (docs/studies.md,
+// docs/response.md): what its forced response says about the safe speed,
+// beside I-5 and König from the same f1 at rest.
+struct StudyResponse {
+    double limit_m = 0;             // the amplitude limit at the first probe
+    double max_web_speed_m_s = 0;   // the response's last speed: "not reached up to"
+    bool limit_reached = false;     // within the response's speeds
+    bool below_range = false;       // already at the first speed
+    std::optional<double> v_limit_m_s;     // web speed where the amplitude first reaches the limit
+    std::optional<double> implied_factor;  // f_rot / f1 there
+    double max_amplitude_m = 0, max_amplitude_web_speed_m_s = 0;
+    std::optional<double> v_i5_07_m_s, v_i5_08_m_s;  // I-5 at kSafeFactors 0.7 and 0.8
+    std::optional<double> v_koenig_m_s;              // König's v_krit (K-1/K-2, experience factor 0.66)
+};
 
 struct StudyPoint {
     int index = 0;  // 0-based; printed 1-based
@@ -37,6 +53,7 @@ struct StudyPoint {
     double diameter_m = 0;           // rest roll outer diameter (the core's without rest paper)
     std::optional<double> v_safe_m_s;  // safe_factor * pi * D * f1 (supported scenes)
     std::optional<CalibrationGroups> chuck_groups;  // g1, g2, g3 of the calibration law (supported scenes)
+    std::optional<StudyResponse> response;          // a case with [response] (analyses/response)
 
     // Tracking: the groups of `modes` and their tracks.
     std::optional<int> predecessor;  // the point tracked from (nearest earlier successful one)
@@ -62,9 +79,17 @@ struct StudyRunOptions {
 };
 
 // One point in this process: run_scene on its scene, and the run's part of
-// `p` filled (ok or error, modes, f1, model level, DOFs, time). This is
-// what a worker child does.
-void run_point(Scene scene, StudyPoint& p);
+// `p` filled (ok or error, modes, f1, model level, DOFs, time); with a
+// response setup, the forced response too (p.response; its failure fails
+// the point). This is what a worker child does.
+void run_point(Scene scene, StudyPoint& p, const std::optional<ResponseSetup>& response = std::nullopt);
+
+// The response a point of a sweep in `table` runs: a [study] point runs its
+// case's forced response; a [calibration] point only fits k, so none.
+std::optional<ResponseSetup> response_of_point(const std::string& table, std::optional<ResponseSetup> response);
+
+// The study's summary of a forced response.
+StudyResponse study_response(const ResponseResult& r);
 
 // The values a point's scene gives with its f1: D, v_safe, Li, L, k and the
 // calibration groups (beam/chuck_calibration.hpp).

@@ -56,6 +56,45 @@ ModeSummary mode_from_json(const nlohmann::json& j) {
     return m;
 }
 
+void put(nlohmann::json& j, const char* key, const std::optional<double>& v) {
+    if (v) j[key] = *v;
+}
+std::optional<double> take(const nlohmann::json& j, const char* key) {
+    return j.contains(key) ? std::optional<double>(j.at(key).get<double>()) : std::nullopt;
+}
+
+// A point's forced response (StudyResponse); absent values stay absent.
+nlohmann::json response_json(const StudyResponse& r) {
+    nlohmann::json j = {{"limit_m", r.limit_m},
+                        {"max_web_speed_m_s", r.max_web_speed_m_s},
+                        {"limit_reached", r.limit_reached},
+                        {"below_range", r.below_range},
+                        {"max_amplitude_m", r.max_amplitude_m},
+                        {"max_amplitude_web_speed_m_s", r.max_amplitude_web_speed_m_s}};
+    put(j, "v_limit_m_s", r.v_limit_m_s);
+    put(j, "implied_factor", r.implied_factor);
+    put(j, "v_i5_07_m_s", r.v_i5_07_m_s);
+    put(j, "v_i5_08_m_s", r.v_i5_08_m_s);
+    put(j, "v_koenig_m_s", r.v_koenig_m_s);
+    return j;
+}
+
+StudyResponse response_from_json(const nlohmann::json& j) {
+    StudyResponse r;
+    r.limit_m = j.at("limit_m").get<double>();
+    r.max_web_speed_m_s = j.at("max_web_speed_m_s").get<double>();
+    r.limit_reached = j.at("limit_reached").get<bool>();
+    r.below_range = j.at("below_range").get<bool>();
+    r.max_amplitude_m = j.at("max_amplitude_m").get<double>();
+    r.max_amplitude_web_speed_m_s = j.at("max_amplitude_web_speed_m_s").get<double>();
+    r.v_limit_m_s = take(j, "v_limit_m_s");
+    r.implied_factor = take(j, "implied_factor");
+    r.v_i5_07_m_s = take(j, "v_i5_07_m_s");
+    r.v_i5_08_m_s = take(j, "v_i5_08_m_s");
+    r.v_koenig_m_s = take(j, "v_koenig_m_s");
+    return r;
+}
+
 }  // namespace
 
 std::string point_record(const StudyPoint& p) {
@@ -65,6 +104,7 @@ std::string point_record(const StudyPoint& p) {
                         {"time_s", p.time_s},      {"model_level", p.model_level}, {"n_dofs", p.n_dofs},
                         {"error", p.error},        {"modes", modes}};
     if (p.f1_hz) j["f1_hz"] = *p.f1_hz;
+    if (p.response) j["response"] = response_json(*p.response);
     // Doubles are written with the shortest text that reads back to the same bits.
     return j.dump(1) + "\n";
 }
@@ -88,6 +128,7 @@ void read_point_record(const std::string& text, StudyPoint& p) {
         p.n_dofs = j.at("n_dofs").get<long>();
         p.error = j.at("error").get<std::string>();
         if (j.contains("f1_hz")) p.f1_hz = j.at("f1_hz").get<double>();
+        if (j.contains("response")) p.response = response_from_json(j.at("response"));
         for (const nlohmann::json& m : j.at("modes")) p.modes.push_back(mode_from_json(m));
     } catch (const std::exception& e) {  // a missing key or a value of the wrong kind
         throw std::runtime_error(std::string("study point record: ") + e.what());
@@ -196,7 +237,8 @@ int run_worker_point(const WorkerPoint& w) {
     StudyPoint p;
     p.index = w.point;
     try {
-        run_point(sweep.scene(w.point), p);
+        ResponseCase c = sweep.response_case(w.point);
+        run_point(std::move(c.scene), p, response_of_point(w.table, std::move(c.response)));
     } catch (const InputError& e) {
         p.error = e.what();
     }

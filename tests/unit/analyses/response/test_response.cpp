@@ -75,7 +75,8 @@ Scene clamped_roll() {
 
 ResponseSetup setup_of(double zeta, ExcitationSpec x, double v0, double v1, int points) {
     ResponseSetup s;
-    s.damping = {zeta, "test"};
+    s.damping.ratio = zeta;
+    s.damping.source = "test";
     s.excitation = x;
     for (int i = 0; i < points; ++i) s.response.speeds_hz.push_back((v0 + (v1 - v0) * i / (points - 1)) / (M_PI * 0.196));
     s.response.from_web_speed = true;

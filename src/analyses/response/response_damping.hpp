@@ -1,0 +1,47 @@
+// [damping] on the lateral problem's modes at rest (docs/response.md): which
+// ratio each mode takes — its own (a mode number of the scene at rest, as in
+// modes.csv), its family's (its label's type), or the base (one ratio, or
+// Rayleigh's alpha/(2 omega) + beta omega/2) — and the damping it gives
+// LateralResponse (set_damping).
+//
+// The lateral problem's modes are the scene's bending modes (and any mixed
+// ones), solved again on the lateral DOFs alone: a lateral mode is the scene
+// mode (or degenerate pair) of the same eigenvalue (kClusterTolerance) whose
+// shapes span it. A degenerate pair whirls as one, so a ratio given for
+// either member damps both; two different ratios for one pair are refused.
+#pragma once
+
+#include "analyses/response/lateral_response.hpp"
+#include "beam/beam_model.hpp"
+#include "scene/response_spec.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// One lateral mode at rest and its damping.
+struct ModeDamping {
+    std::vector<int> rest_modes;  // its number(s) among the scene's modes at rest (1-based; a pair: two; none above them)
+    ModeLabel label;
+    double frequency_hz = 0;
+    double zeta = 0;
+    std::string from;  // "mode 1", "bending", "ratio", "rayleigh"
+};
+
+struct LateralDampingPlan {
+    RayleighDamping rayleigh;                 // alpha = beta = 0 without a Rayleigh base
+    std::vector<std::optional<double>> zeta;  // per lateral mode: its ratio, or empty for Rayleigh's
+    std::vector<ModeDamping> modes;           // per lateral mode
+    std::vector<std::string> assumptions;     // what the run echoes: the base, each family and mode given
+};
+
+// Throws InputError (FILE:LINE:COL from the spec) for a mode number beyond
+// the modes at rest, or two ratios for one degenerate pair.
+LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& rest, const LateralResponse& lateral);
+
+// One line for people: "ratio 0.01 (...)", "Rayleigh ..."; with the families and modes given.
+std::string damping_summary(const DampingSpec& spec);
+
+}  // namespace coremodal
