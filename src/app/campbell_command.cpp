@@ -41,12 +41,10 @@ int run_rotating_case(const std::string& case_file, const std::string& model, co
     if (!rotating.rotation)
         throw InputError(case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
                                      "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");
-    // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which refuses.
+    // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which spins
+    // bodies of revolution only (and refuses the others here, before any work).
     scene.model = chosen_level(scene);
-    if (scene.model != "beam" && scene.model != "harmonic")
-        throw InputError(case_file + ": [rotation] is simulated at the beam and harmonic levels so far (model = \"" +
-                         scene.model + "\"); expected model = \"beam\" or \"harmonic\" (or --model): the solid level "
-                         "has no gyroscopic term yet (docs/rotation.md)");
+    require_spinning_level(scene);
     const std::filesystem::path out_dir =
         output.empty() ? std::filesystem::path("results") / (scene.name + "-campbell") : std::filesystem::path(output);
     prepare_output(out_dir, force);  // refused before any work, never over the user's files
@@ -69,7 +67,7 @@ Command add_campbell_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "campbell", "A spinning scene ([rotation]): natural frequencies against rotation speed with forward and "
                     "backward whirl, the excitation lines and the critical speeds; campbell.csv, campbell.png, "
-                    "report.md (beam and harmonic levels)");
+                    "report.md (beam, harmonic and solid levels)");
     cmd->add_option("case", o->case_file, "case file (TOML) with a [rotation] table, e.g. cases/12-rotation-tester-76x15.toml")
         ->required();
     add_results_options(cmd, o->output, o->force, "-campbell");
