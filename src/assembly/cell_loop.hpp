@@ -1,7 +1,8 @@
 // The cell loop, independent of the matrix format: each cell's named terms
-// (stiffness, mass; the gyroscopic term of a spinning scene) are handed to an insertion callback with the cell's global
-// dofs (-1 for eliminated ones). A unit test fills dense Eigen matrices with
-// it (tests/unit/assembly/test_cell_loop.cpp); a run fills PETSc matrices
+// (stiffness, mass; the gyroscopic term of a spinning scene) are handed to an
+// insertion callback with the cell's global dofs (-1 for eliminated ones). A
+// unit test fills dense Eigen matrices with it
+// (tests/unit/assembly/test_cell_loop.cpp); a run fills PETSc matrices
 // (DOLFINx's pattern).
 #pragma once
 

@@ -145,9 +145,10 @@ std::vector<Candidate> run_pep(const SpinningOperators& op, double tau, int nev,
         // projected problem ("Error in LAPACK subroutine trexc: info=1") when
         // a cluster there is defective: a free body's rigid modes at rest are
         // double zeros of the quadratic problem with Jordan blocks, six of
-        // them in a free solid (a free ring at the solid level met it on 96
-        // and 256 cells around, not on 64 or 128). Another target changes the
-        // projected problem, and the lowest modes stay the nearest (header).
+        // them in a free solid (a free ring at the solid level met it on
+        // 2 x 96 x 2 and 1 x 128 x 1 cells, not on 2 x 64 x 2 or 2 x 128 x 2).
+        // Another target changes the projected problem, and the lowest modes
+        // stay the nearest (header).
         for (double factor : kRetryTargetFactors) {
             if (solved != PETSC_ERR_LIB) break;
             pep = configure(op, tau * factor, nev, request, serial ? Factor::petsc_qmd : Factor::mumps);

@@ -13,9 +13,9 @@
 // only: a scene that is not one (segmented expanding elements, a one-sided
 // contact, a user mesh) is refused, since its spinning parts would carry
 // their asymmetry round with them (time-periodic coefficients in the
-// stationary frame). Such a scene is a body of revolution at the harmonic
-// level too; the solid level's spinning modes check that level's on the
-// same scene and give the 3D shapes.
+// stationary frame). Every scene the solid level spins, the harmonic level
+// spins too: the solid's spinning modes check that level's on the same
+// scene and give the 3D shapes.
 #pragma once
 
 #include "assembly/dof_map.hpp"
