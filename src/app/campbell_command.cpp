@@ -3,7 +3,7 @@
 // followed by MAC and labelled forward/backward whirl, with the critical
 // speeds where the excitation lines f = k f_rot cross them (docs/rotation.md).
 // `coremodal run` on a case with [rotation] comes here too (one speed: the
-// modes at that speed). Beam level (Eigen only) and harmonic level (SLEPc).
+// modes at that speed). Beam level (Eigen only), harmonic and solid levels (SLEPc).
 #include "analyses/campbell/campbell.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
@@ -22,12 +22,10 @@ int run_rotating_case(const FolderCaseOptions& o) {
     if (!rotating.rotation)
         throw InputError(o.case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
                                        "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");
-    // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which refuses.
+    // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which spins
+    // bodies of revolution only (and refuses the others here, before any work).
     scene.model = chosen_level(scene);
-    if (scene.model != "beam" && scene.model != "harmonic")
-        throw InputError(o.case_file + ": [rotation] is simulated at the beam and harmonic levels so far (model = \"" +
-                         scene.model + "\"); expected model = \"beam\" or \"harmonic\" (or --model): the solid level "
-                         "has no gyroscopic term yet (docs/rotation.md)");
+    require_spinning_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;
     const CampbellResult result = run_campbell(scene, rotation);
@@ -46,12 +44,12 @@ Command add_campbell_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "campbell", "A spinning scene ([rotation]): natural frequencies against rotation speed with forward and "
                     "backward whirl, the excitation lines and the critical speeds; campbell.csv, campbell.png, "
-                    "report.md (beam and harmonic levels)");
+                    "report.md (beam, harmonic and solid levels)");
     add_folder_case_options(cmd, *o, "case file (TOML) with a [rotation] table, e.g. cases/12-rotation-tester-76x15.toml",
                             "-campbell", "campbell.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [rotation] table: docs/rotation.md.");
-    // PETSc and SLEPc: the harmonic level solves with them (the beam level does not need them).
+    // PETSc and SLEPc: the harmonic and solid levels solve with them (the beam level does not need them).
     return {cmd, [o] { return run_rotating_case(*o); }, true};
 }
 

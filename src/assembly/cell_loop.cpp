@@ -5,7 +5,10 @@
 namespace coremodal {
 
 double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                      const std::function<bool(int)>& take, const TermInsert& insert) {
+                      const std::function<bool(int)>& take, const TermInsert& insert,
+                      const std::vector<Term>& extra_terms) {
+    for (Term t : extra_terms) COREMODAL_ASSERT(t == Term::gyroscopic);  // the one cell term beyond K and M
+    const bool spinning = !extra_terms.empty();
     const int npc = mesh.nodes_per_cell();
     CellCoords coords(npc, 3);
     Eigen::MatrixXd K, M;
@@ -30,6 +33,7 @@ double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materia
         mass += M.sum() / 3;  // each of the three component blocks sums to rho * V
         insert(Term::stiffness, cell_dofs, K);
         insert(Term::mass, cell_dofs, M);
+        if (spinning) insert(Term::gyroscopic, cell_dofs, element_gyroscopic(mesh.cell_type, coords, material.density));
     }
     return mass;
 }

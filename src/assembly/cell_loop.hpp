@@ -1,7 +1,8 @@
 // The cell loop, independent of the matrix format: each cell's named terms
-// (stiffness, mass) are handed to an insertion callback with the cell's global
-// dofs (-1 for eliminated ones). A unit test fills dense Eigen matrices with
-// it (tests/unit/assembly/test_cell_loop.cpp); a run fills PETSc matrices
+// (stiffness, mass; the gyroscopic term of a spinning scene) are handed to an
+// insertion callback with the cell's global dofs (-1 for eliminated ones). A
+// unit test fills dense Eigen matrices with it
+// (tests/unit/assembly/test_cell_loop.cpp); a run fills PETSc matrices
 // (DOLFINx's pattern).
 #pragma once
 
@@ -49,10 +50,14 @@ Eigen::MatrixXd spring_between(const Eigen::MatrixXd& k);
 using TermInsert = std::function<void(Term term, const std::vector<int>& dofs, const Eigen::MatrixXd& matrix)>;
 
 // Loops over the cells for which `take(cell)` is true and inserts their
-// stiffness and mass. Returns the mass of those cells (sum of rho * V), for
-// the "mass equals rho V" check.
+// stiffness and mass, and each term of `extra_terms` (only Term::gyroscopic:
+// element_gyroscopic, for a spinning scene; every cell spins, for the cells
+// are the roll and the chuck bodies and shafts, while the bearings, frames
+// and spring layers are couplings, which do not). Returns the mass of those
+// cells (sum of rho * V), for the "mass equals rho V" check.
 double assemble_cells(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                      const std::function<bool(int)>& take, const TermInsert& insert);
+                      const std::function<bool(int)>& take, const TermInsert& insert,
+                      const std::vector<Term>& extra_terms = {});
 
 // Inserts every term of the couplings for which `take(nodes)` is true, and
 // zeros for each term of `pad_to` an element does not have, so that every

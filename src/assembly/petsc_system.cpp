@@ -78,7 +78,8 @@ PetscMatrix create_matrix(MPI_Comm comm, int n_local_dofs, const std::vector<Pet
 }  // namespace
 
 OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                           const std::vector<CouplingElement>& couplings, MPI_Comm comm) {
+                           const std::vector<CouplingElement>& couplings, MPI_Comm comm,
+                           const std::vector<Term>& extra_terms) {
     const int rank = mpi_rank(comm), size = mpi_size(comm);
     const auto [first, last] = owned_free_nodes(dofs.n_free_nodes, rank, size);
     std::vector<PetscInt> d_nnz, o_nnz;
@@ -86,6 +87,7 @@ OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
 
     OperatorSet system;
     std::vector<Term> terms = {Term::stiffness, Term::mass};
+    terms.insert(terms.end(), extra_terms.begin(), extra_terms.end());
     for (const CouplingElement& e : couplings)
         for (const TermMatrix& t : e.terms)
             if (std::find(terms.begin(), terms.end(), t.term) == terms.end()) terms.push_back(t.term);
@@ -113,7 +115,8 @@ OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
         COREMODAL_PETSC(MatSetValues(system[term], n, idx.data(), n, idx.data(), row_major_if_skew.data(), ADD_VALUES));
     };
     double local_mass = assemble_cells(
-        mesh, materials, dofs, [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); }, insert);
+        mesh, materials, dofs, [&](int c) { return owned_here(mesh.cell(c), mesh.nodes_per_cell()); }, insert,
+        extra_terms);
     local_mass += assemble_couplings(
         couplings, dofs, [&](const std::vector<int>& nodes) { return owned_here(nodes.data(), static_cast<int>(nodes.size())); },
         insert, terms);

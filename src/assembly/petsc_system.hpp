@@ -10,8 +10,10 @@
 namespace coremodal {
 
 // One matrix per term the cells and couplings contribute (stiffness and mass
-// always), all with the same preallocated pattern.
+// always; the cells' `extra_terms`, assemble_cells: the gyroscopic term of a
+// spinning scene), all with the same preallocated pattern.
 OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& materials, const DofMap& dofs,
-                           const std::vector<CouplingElement>& couplings = {}, MPI_Comm comm = PETSC_COMM_WORLD);
+                           const std::vector<CouplingElement>& couplings = {}, MPI_Comm comm = PETSC_COMM_WORLD,
+                           const std::vector<Term>& extra_terms = {});
 
 }  // namespace coremodal

@@ -5,9 +5,16 @@
 //
 //     M q'' + Omega G q' + (K + K_sigma(Omega^2)) q = 0
 //
-//   effect                  solid           harmonic        beam (beam/rotating_modes)
-//   gyroscopic              not yet         not yet         rho_J per length on (rx, ry) of every beam
-//   centrifugal_stiffening  not yet         not yet         none: no term in beam theory (see below)
+//   effect                  solid                 harmonic              beam (beam/rotating_modes)
+//   gyroscopic              every cell            every section cell    rho_J per length on (rx, ry) of every beam
+//                           (element_gyroscopic;  (harmonic_quad8_spin_
+//                           bodies of revolution) coupling)
+//   centrifugal_stiffening  not yet               not yet               none: no term in beam theory (see below)
+//
+// The solid and harmonic levels' term is one: the material passes through
+// each point of the stationary frame at Omega d/dtheta, and the kinetic
+// energy's cross term Omega int rho u'.du/dtheta dV gives G (on a rigid tilt
+// of a section it is the beam's rho_J, tested on both elements).
 //
 // The beam's gyroscopic term: a section of polar inertia rho_J per length
 // spinning at Omega and tilted by (rx, ry) has the angular momentum

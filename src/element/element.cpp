@@ -1,4 +1,5 @@
-// Element stiffness and consistent mass for quadratic solid cells.
+// Element stiffness and consistent mass for quadratic solid cells (and, for a
+// spinning scene, the gyroscopic matrix: element.hpp, element_gyroscopic).
 //
 // Weak form (linear elasticity, small strain), per cell Ve:
 //   K_e = int_Ve B^T C(x) B dV,   M_e = int_Ve rho N^T N dV,
@@ -244,6 +245,28 @@ void integrate_cell(CellType type, const CellCoords& coords, const Matrix6& C_cy
     expand_mass<N>(m, M);
 }
 
+// G_e = (c - c^T) (x) I3 with c_ab = int rho N_a dN_b/dtheta dV (header).
+template <int N>
+Eigen::MatrixXd integrate_gyroscopic(CellType type, const CellCoords& coords, double density) {
+    check_coords<N>(type, coords);
+    const ReferenceTables<N>& ref = reference_tables<N>(type);
+    const Eigen::Matrix<double, N, 3> X = coords;
+    Eigen::Matrix<double, N, N> c = Eigen::Matrix<double, N, N>::Zero();
+    for (std::size_t q = 0; q < ref.weights.size(); ++q) {
+        double det = 0;
+        const Eigen::Matrix3d J = checked_jacobian<N>(type, ref, X, static_cast<int>(q), det);
+        const Eigen::Matrix<double, N, 3> G = ref.gradients[q].lazyProduct(J.inverse().eval());
+        const Eigen::Vector3d x = X.transpose().lazyProduct(ref.values[q]);
+        const Eigen::Matrix<double, N, 1> d_theta = x.x() * G.col(1) - x.y() * G.col(0);
+        c.noalias() += (density * ref.weights[q] * det) * ref.values[q] * d_theta.transpose();
+    }
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(3 * N, 3 * N);
+    for (int b = 0; b < N; ++b)
+        for (int a = 0; a < N; ++a)
+            for (int k = 0; k < 3; ++k) out(3 * a + k, 3 * b + k) = c(a, b) - c(b, a);
+    return out;
+}
+
 template <int N>
 double integrate_volume(CellType type, const CellCoords& coords) {
     check_coords<N>(type, coords);
@@ -267,6 +290,15 @@ void element_matrices(CellType type, const CellCoords& coords, const Matrix6& C_
         case CellType::hex27: return integrate_cell<27>(type, coords, C_cylindrical, density, K, M);
         case CellType::tet10: return integrate_cell<10>(type, coords, C_cylindrical, density, K, M);
     }
+}
+
+Eigen::MatrixXd element_gyroscopic(CellType type, const CellCoords& coords, double density) {
+    switch (type) {
+        case CellType::hex20: return integrate_gyroscopic<20>(type, coords, density);
+        case CellType::hex27: return integrate_gyroscopic<27>(type, coords, density);
+        case CellType::tet10: return integrate_gyroscopic<10>(type, coords, density);
+    }
+    return {};  // unreachable
 }
 
 double element_volume(CellType type, const CellCoords& coords) {

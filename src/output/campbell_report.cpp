@@ -136,7 +136,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     std::ostringstream out;
     out << "# Campbell diagram: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << (r.level == "beam" ? "Beam" : "Harmonic") << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
+    out << (r.level == "beam" ? "Beam" : r.level == "harmonic" ? "Harmonic" : "Solid") << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
         << " to " << rpm(r.points.back().speed_hz) << "; excitation orders";
     for (int k : r.excitation_orders) out << " " << k;
     out << "; Dp = " << significant(r.roll_outer_diameter * 1e3, 4) << " mm. Effects:";

@@ -64,10 +64,13 @@ TEST_CASE("coremodal campbell refuses what it cannot do before any work, and wri
     const Run still = run_coremodal(dir, "campbell still.toml --output out");
     CHECK(still.exit_code == 1);
     CHECK(still.err.find("still.toml: no [rotation] table") != std::string::npos);
-    dir.write("solid.toml", kSmall + "[rotation]\nspeed = \"10 Hz\"\n");
-    const Run solid = run_coremodal(dir, "campbell solid.toml --model solid --output out");
-    CHECK(solid.exit_code == 1);
-    CHECK(solid.err.find("the solid level has no gyroscopic term yet") != std::string::npos);
+    // Segmented expanding elements (case 10): "auto" is the solid, which spins bodies of revolution only.
+    dir.write("segments.toml", slurp(std::string(COREMODAL_SOURCE_DIR) + "/cases/10-segmented-chuck-76x15-2200.toml") +
+                                   "\n[rotation]\nspeed = \"10 Hz\"\n");
+    const Run segments = run_coremodal(dir, "campbell segments.toml --output out");
+    CHECK(segments.exit_code == 1);
+    CHECK(segments.err.find("[rotation] at the solid level: the left chuck's expanding element") != std::string::npos);
+    CHECK(segments.err.find("right for a body of revolution only") != std::string::npos);
     dir.write("bad.toml", kSmall + "[rotation]\nspeeds = [\"10 Hz\", \"5 Hz\"]\n");
     const Run bad = run_coremodal(dir, "campbell bad.toml --output out");
     CHECK(bad.exit_code == 1);

@@ -3,7 +3,9 @@
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/rotation.hpp"
+#include "models/choose.hpp"
 #include "models/harmonic/rotating_harmonics.hpp"
+#include "models/solid/rotating_solid.hpp"
 #include "modes/tracking.hpp"  // assign_maximum
 
 #include <algorithm>
@@ -102,6 +104,20 @@ std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std:
     return notes;
 }
 
+std::vector<std::string> solid_notes(const RotationSpec& rotation) {
+    std::vector<std::string> notes{
+        "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies and "
+        "shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's term on "
+        "the hexahedra); spring layers, bearings and frames do not spin; a body of revolution only"};
+    notes.push_back(
+        std::string("terms of order Omega^2 not included: ") +
+        (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal prestress, "
+                                           "which is not built yet, and " : "") +
+        "the convective Omega^2 term is left out with it (a gyroscopic model to first order in Omega, as the beam and "
+        "harmonic levels')");
+    return notes;
+}
+
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
     for (const RotatingMode& m : rest)
         if (m.label.type == "bending") return m.frequency_hz;
@@ -175,7 +191,33 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     sweep(at_rest, reported, [&](double speed) { return harmonics.modes_at(speed); }, rotation, out);
 }
 
+void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
+    if (mpi_size() > 1)
+        throw InputError(scene.source_file + ": a Campbell sweep at the solid level runs in one process; run it "
+                                             "without mpirun");
+    out.level = "solid";
+    out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
+    out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
+                       "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
+    out.notes = solid_notes(rotation);
+    const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
+    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
+    out.n_dofs = solid.n_dofs();
+    const std::vector<RotatingMode> at_rest = solid.modes_at(0.0);
+    const double f1 = first_bending_hz(at_rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    sweep(at_rest, reported, [&](double speed) { return solid.modes_at(speed); }, rotation, out);
+}
+
 }  // namespace
+
+void require_spinning_level(const Scene& scene) {
+    const std::string level = chosen_level(scene);
+    if (level != "beam" && level != "harmonic" && level != "solid")
+        throw InputError(scene.source_file + ": [rotation] at model = \"" + level +
+                         "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");
+    if (level == "solid") require_spinnable_by_solid(scene);
+}
 
 const WhirlCrossing* CampbellResult::first_order_one() const {
     for (const WhirlCrossing& c : critical)
@@ -206,10 +248,7 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
 
 CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options) {
     COREMODAL_ASSERT(!rotation.speeds_hz.empty());
-    if (scene.model != "beam" && scene.model != "harmonic")
-        throw InputError(scene.source_file + ": [rotation] is simulated at the beam and harmonic levels so far (model = \"" +
-                         scene.model + "\"); expected model = \"beam\" or \"harmonic\" (or --model); the solid level "
-                                       "has no gyroscopic term yet");
+    require_spinning_level(scene);
     Stopwatch clock;
     CampbellResult out;
     out.excitation_orders = rotation.excitation_orders;
@@ -218,8 +257,10 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     out.effects = rotating_effect_names(scene, rotation);
     if (scene.model == "beam")
         run_beam_campbell(scene, rotation, options, out);
-    else
+    else if (scene.model == "harmonic")
         run_harmonic_campbell(scene, rotation, out);
+    else
+        run_solid_campbell(scene, rotation, out);
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -1,13 +1,14 @@
 // A Campbell diagram of a spinning scene ([rotation], docs/rotation.md) at
-// the beam level (beam/rotating_modes) or the harmonic level
-// (models/harmonic/rotating_harmonics): the modes at every speed of the sweep,
+// the beam level (beam/rotating_modes), the harmonic level
+// (models/harmonic/rotating_harmonics) or the solid level
+// (models/solid/rotating_solid): the modes at every speed of the sweep,
 // followed from speed to speed by MAC, labelled forward/backward whirl, and
 // the critical speeds where an excitation line f = k f_rot crosses a natural
 // frequency.
 //
 // The sweep starts at rest: speed 0 is today's solve (at the beam level
-// solve_beam_model, the very modes `run` reports; at the harmonic level the
-// quadratic solver at speed 0, the harmonic level's modes), and a sweep or single speed above 0 is reached
+// solve_beam_model, the very modes `run` reports; at the harmonic and solid
+// levels the quadratic solver at speed 0, the level's modes), and a sweep or single speed above 0 is reached
 // by continuation from it (kContinuationSteps speeds in between when the
 // scene's first speed is above 0), so that every mode keeps the label it has
 // at rest and a crossing of two curves does not swap them.
@@ -64,7 +65,7 @@ struct CampbellResult {
     std::vector<int> excitation_orders;
     double roll_outer_diameter = 0;          // m, Dp
     bool from_web_speed = false;
-    std::string level = "beam";              // the model level: "beam" or "harmonic"
+    std::string level = "beam";              // the model level: "beam", "harmonic" or "solid"
     std::string solver;                      // how each speed was solved, in words
     std::string completeness;                // why no mode is missed, in words
     BeamModelResult rest;                    // the beam level's solve at rest (today's modes)
@@ -78,8 +79,13 @@ struct CampbellResult {
     const WhirlCrossing* first_order_one() const;
 };
 
-// Throws InputError when the scene is at neither the beam nor the harmonic
-// level; SolveError from the solver.
+// Throws InputError when the scene's level (with "auto" resolved) cannot
+// spin it: not beam, harmonic or solid, or a solid scene that is not a body
+// of revolution (models/solid/rotating_solid.hpp). Before any work.
+void require_spinning_level(const Scene& scene);
+
+// Throws InputError as require_spinning_level (the scene's model resolved
+// already); SolveError from the solver.
 CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {});
 
 // Crossings of f = order f_rot with every track of `points` (tests, and run_campbell).

@@ -65,9 +65,8 @@ Holding holding(const std::vector<int>& eliminated, const ChuckSupports& chucks)
     return h;
 }
 
-// Step 3: the DOF map (clamped nodes and shaft ends in rigid bearings
-// eliminated; bonded core nodes take their chuck node's DOFs) and the model
-// summary; a warning for each part nothing holds.
+}  // namespace
+
 DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chucks, LevelModes& out) {
     const std::string source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
     std::vector<int> eliminated = clamped_nodes(scene, mesh);
@@ -88,6 +87,8 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
         warn_about_model(source, warning, out.warnings);
     return dofs;
 }
+
+namespace {
 
 // Step 6: every eigenvector in the request's band expanded to the mesh's
 // nodes, named, with its effective masses and signature.

@@ -5,6 +5,8 @@
 // the mesh itself.
 #pragma once
 
+#include "assembly/chuck_supports.hpp"
+#include "assembly/dof_map.hpp"
 #include "mesh/mesh.hpp"
 #include "models/model_level.hpp"
 
@@ -26,5 +28,10 @@ private:
 // the frame nodes of elastic bearings) or read from the user's file, its
 // physical groups checked against the scene.
 Mesh make_solid_mesh(const Scene& scene);
+
+// Step 3: the DOF map (clamped nodes and shaft ends in rigid bearings
+// eliminated; bonded core nodes take their chuck node's DOFs) and the model
+// summary in `out.info`; a warning in `out.warnings` for each part nothing holds.
+DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chucks, LevelModes& out);
 
 }  // namespace coremodal

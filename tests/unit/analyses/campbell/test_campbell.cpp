@@ -87,8 +87,12 @@ TEST_CASE("The rotation tester's Campbell sweep: rest exactly, whirl split, crit
     CHECK(r.speeds_at_rest.safe.front().v_safe_m_s == Approx(0.7 * M_PI * 0.106 * rest.modes[0].frequency_hz));
 }
 
-TEST_CASE("A Campbell sweep runs at the beam and harmonic levels, not yet at the solid", "[rotation][campbell]") {
+TEST_CASE("A Campbell sweep at the solid level refuses a scene that is not a body of revolution, before any work",
+          "[rotation][campbell]") {
     RotatingCase c = tester(3);
     c.scene.model = "solid";
-    CHECK_THROWS_WITH(run_campbell(c.scene, *c.rotation), Catch::Contains("solid level has no gyroscopic term"));
+    c.scene.mesh.file = "no-such-mesh.msh";  // never read: the check comes first
+    CHECK_THROWS_WITH(run_campbell(c.scene, *c.rotation),
+                      Catch::Contains("[rotation] at the solid level: a [mesh] file") &&
+                          Catch::Contains("right for a body of revolution only"));
 }
