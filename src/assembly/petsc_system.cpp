@@ -81,7 +81,10 @@ OperatorSet assemble_petsc(const Mesh& mesh, const std::vector<PartMaterial>& ma
                            const std::vector<CouplingElement>& couplings, MPI_Comm comm,
                            const std::vector<Term>& extra_terms) {
     const int rank = mpi_rank(comm), size = mpi_size(comm);
-    const auto [first, last] = owned_free_nodes(dofs.n_free_nodes, rank, size);
+    // Named variables, not a structured binding: the lambda below captures
+    // them, which clang 14 (the sanitizer build) does not allow for bindings.
+    const auto owned = owned_free_nodes(dofs.n_free_nodes, rank, size);
+    const int first = owned.first, last = owned.second;
     std::vector<PetscInt> d_nnz, o_nnz;
     count_block_nonzeros(mesh, couplings, dofs, first, last, d_nnz, o_nnz);
 

@@ -55,7 +55,7 @@ std::string role_of(const DistinctMode& d, const std::vector<DistinctMode>& last
     std::string role;
     for (const auto& [name, type] : roles) {
         const auto first_of_type =
-            std::find_if(last.begin(), last.end(), [&](const DistinctMode& x) { return x.key.type == type; });
+            std::find_if(last.begin(), last.end(), [&, type = type](const DistinctMode& x) { return x.key.type == type; });
         if (first_of_type != last.end() && first_of_type->key == d.key) role = name;
     }
     return role;

@@ -207,7 +207,7 @@ void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
             const TrackedMode* own = find_role(m, role);
             const TrackedMode* ref = find_role(*solid, role);
             const auto e = std::find_if(errors.begin(), errors.end(),
-                                        [&](const ModelError& x) { return x.model == m.model && x.role == role; });
+                                        [&, role = role](const ModelError& x) { return x.model == m.model && x.role == role; });
             s << "- " << role_title(role) << ": ";
             if (e != errors.end()) {
                 s << m.model << " level converges to " << formatted("%.4f", e->f0_hz) << " Hz (" << e->id
@@ -217,7 +217,7 @@ void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
                 continue;
             }
             const auto unseen = std::find_if(m.unseen_roles.begin(), m.unseen_roles.end(),
-                                             [&](const auto& u) { return u.first == role; });
+                                             [&, role = role](const auto& u) { return u.first == role; });
             if (unseen != m.unseen_roles.end()) {
                 s << "not in this model (" << unseen->second << ")";
                 if (ref && ref->richardson) s << "; the solid converges to " << formatted("%.4f", ref->richardson->f0) << " Hz";

@@ -151,7 +151,7 @@ TEST_CASE("Cell loop, solid with chucks: an Eigen sink gets the same K and M as 
 }
 
 TEST_CASE("Cell loop, solid spinning: the gyroscopic term enters when asked, skew, and the PETSc matrix holds "
-          "exactly it", "[assembly][cell_loop][rotation]") {
+          "exactly it", "[long][assembly][cell_loop][rotation]") {
     // The scene above: every cell spins, the couplings (spring layers,
     // bearings, frames) add nothing to G.
     const Scene s = testing::on_elastic_bearings(

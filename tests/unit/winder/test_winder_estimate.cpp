@@ -37,7 +37,7 @@ TEST_CASE("The two-mode roots are those of the 2x2 problem", "[winder][estimate]
     CHECK(two_mode_roots(4.0, 0.0, 9.0).drum == 4.0);
 }
 
-TEST_CASE("The estimate matches the model with a soft rider, from stiff nips to soft ones", "[winder][estimate]") {
+TEST_CASE("The estimate matches the model with a soft rider, from stiff nips to soft ones", "[long][winder][estimate]") {
     for (double d : {0.4, 1.2, 1.8}) {
         double previous_error = 1;
         for (double scale : {1.0, 0.1, 0.01}) {
@@ -61,7 +61,7 @@ TEST_CASE("The estimate matches the model with a soft rider, from stiff nips to 
     }
 }
 
-TEST_CASE("The drum frequency rises through the drum-alone one as the rolls grow", "[winder][estimate]") {
+TEST_CASE("The drum frequency rises through the drum-alone one as the rolls grow", "[long][winder][estimate]") {
     // The issue's observation, on the model. Small rolls bounce on the nips
     // above the drum frequency and load the drum with their mass: the drum mode
     // lies below the drum alone. Large rolls bounce far below it and stand still
@@ -87,7 +87,7 @@ TEST_CASE("The drum frequency rises through the drum-alone one as the rolls grow
     for (const auto& f : h.family) CHECK(f.model_hz == Approx(f.heavy_roll_hz).epsilon(1e-3));
 }
 
-TEST_CASE("Across its nip line a drum keeps its own frequency at every roll diameter", "[winder][estimate]") {
+TEST_CASE("Across its nip line a drum keeps its own frequency at every roll diameter", "[long][winder][estimate]") {
     // Isotropic bearings: a drum moving across its nip line does not strain the
     // nip, so two modes (one per drum) stay exactly at the drum-alone frequency.
     const WinderScene s = soft_rider(1.0);

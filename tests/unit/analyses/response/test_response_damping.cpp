@@ -135,7 +135,7 @@ TEST_CASE("A Rayleigh run: each kept mode's zeta from the closed form, checked a
     CHECK(std::find(r.effects.begin(), r.effects.end(), "modal_damping") == r.effects.end());
 }
 
-TEST_CASE("A family's ratio moves only that family's peak, as 1 / zeta", "[response][analyses]") {
+TEST_CASE("A family's ratio moves only that family's peak, as 1 / zeta", "[long][response][analyses]") {
     const Scene scene = clamped_roll();
     const ResponseResult base = run_forced_response(scene, bowed(ratio(0.01), 5, 40, 60));
     // Every lateral mode at the beam level is a bending mode: bending = 0.02
@@ -158,7 +158,7 @@ TEST_CASE("A family's ratio moves only that family's peak, as 1 / zeta", "[respo
                     "nothing here") != same.assumptions.end());
 }
 
-TEST_CASE("A mode's own ratio damps it and its degenerate partner, and no other peak", "[response][analyses]") {
+TEST_CASE("A mode's own ratio damps it and its degenerate partner, and no other peak", "[long][response][analyses]") {
     const Scene scene = clamped_roll();
     const BeamModelResult rest = solve_beam_model(scene);
     const int first = first_bending(rest);

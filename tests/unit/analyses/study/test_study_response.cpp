@@ -38,7 +38,7 @@ const std::string kStudy =
 
 }  // namespace
 
-TEST_CASE("A study over a response case runs each point's forced response", "[study][response]") {
+TEST_CASE("A study over a response case runs each point's forced response", "[long][study][response]") {
     const CaseSweep sweep = CaseSweep::from_text(roll("10 mm", kStudy), "roll.toml", "study");
     std::ostringstream progress;
     StudyResult result = run_sweep(sweep, {true}, progress);
