@@ -16,6 +16,7 @@ import argparse
 import csv
 import glob
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -81,7 +82,7 @@ def main():
         for i, case in enumerate(cases):
             name = os.path.relpath(case, ROOT)
             text = open(case).read()
-            if "[study]" in text or "[winder]" in text:  # not `coremodal run` cases
+            if re.search(r"^\[(study|winder)\]", text, re.M):  # not `coremodal run` cases (a table, not a comment)
                 continue
             outs = [os.path.join(tmp, f"{i}-old"), os.path.join(tmp, f"{i}-new")]
             results = [run(b, case, o, a.mesh) for b, o in zip((a.old, a.new), outs)]
