@@ -37,11 +37,13 @@ seeds=(cases)
 compgen -G "tests/fuzz_regressions/*" >/dev/null && seeds+=(tests/fuzz_regressions)
 limit=()
 [ "$seconds" -gt 0 ] && limit=(-max_total_time="$seconds")
-# -timeout: an input that takes 10 s is a hang (a valid case takes
-# milliseconds at the beam level); -max_len: case files are a few kB.
+# -timeout: an input that takes 30 s is a hang (a valid case takes
+# milliseconds at the beam level, a winder file up to 1 s; at 10 s a fuzzer
+# starved by other work once called a 1 s input a hang, docs/validation.md);
+# -max_len: case files are a few kB.
 set +e
 build-fuzz/case_fuzzer build-fuzz/corpus "${seeds[@]}" -dict=build-fuzz/case.dict \
-  -artifact_prefix=build-fuzz/crashes/ -timeout=10 -max_len=8192 -print_final_stats=1 \
+  -artifact_prefix=build-fuzz/crashes/ -timeout=30 -max_len=8192 -print_final_stats=1 \
   "${limit[@]}" "$@" 2>&1 | tee build-fuzz/last-run.log |
   grep --line-buffered -E "^(#[0-9]+ *(INITED|DONE|pulse)|Done |stat::|==[0-9]+==|SUMMARY|artifact_prefix|Test unit written|.*deadly signal)"
 status=${PIPESTATUS[0]}

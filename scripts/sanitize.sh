@@ -55,8 +55,8 @@ cmake --build build-asan -j "$(nproc)" 2>&1 | tail -n 5
 # cases, the hard cases or the app tests (the same code on larger meshes, or
 # the program as a child process), nor the converge ladders (their repeat
 # counts depend on speed, which -O0 under ASan does not have). CI leaves out
-# the tests tagged [long] too: each took 40 s to 3 min at -O0 under the
-# sanitizers (gcc, on a loaded machine) (solid meshes with chucks, harmonic sensitivities, dense
+# the tests tagged [long] too: each took 30 s to 4 min at -O0 under the
+# sanitizers on a loaded machine (solid meshes with chucks, harmonic sensitivities, dense
 # response sweeps) and runs the same code as the quicker tests beside it;
 # `all` runs them. Its time and status: docs/validation.md, "Reliability".
 everything="~[app]~[hard]~[cases]~[e2e]~[beam_vs_solid]~[converge]"

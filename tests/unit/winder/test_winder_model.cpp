@@ -61,7 +61,7 @@ TEST_CASE("The nip angle and the drum line load follow the roll's geometry and e
     CHECK(winder_state(s, 1.8).geometry.nip_angle < st.geometry.nip_angle);
 }
 
-TEST_CASE("A drum alone on stiff bearings is the simply supported Timoshenko tube", "[winder][model]") {
+TEST_CASE("A drum alone on stiff bearings is the simply supported Timoshenko tube", "[long][winder][model]") {
     // Bearing compliance shifts lambda by about 2 EI pi^2 / (k L^3) = 4e-7 at 1e14 N/m.
     const WinderScene s = drums_alone(1e14);
     const WinderModel m = build_winder_model(s, 1.2);
@@ -81,7 +81,7 @@ TEST_CASE("A drum alone on stiff bearings is the simply supported Timoshenko tub
     CHECK(at_exact == 4);
 }
 
-TEST_CASE("A drum alone on soft bearings is the free-free Timoshenko tube", "[winder][model]") {
+TEST_CASE("A drum alone on soft bearings is the free-free Timoshenko tube", "[long][winder][model]") {
     // 0.01 N/m bearings: the drum floats (rigid modes near 1e-4 Hz); its first
     // bending mode moves by k / (modal stiffness) ~ 1e-12. The default mesh (30
     // elements) is 1.5e-6 high, falling as h^4 (54 elements: 1.3e-7).
@@ -109,7 +109,7 @@ TEST_CASE("The model's mass is the drums', the rider's and the rolls'", "[winder
     CHECK(std::abs(e.dot(m.K_nips * e)) < 1e-9 * m.state.drum_nip.stiffness_per_length);
 }
 
-TEST_CASE("The modes are verified: residuals, M-orthonormality, none missed", "[winder][model]") {
+TEST_CASE("The modes are verified: residuals, M-orthonormality, none missed", "[long][winder][model]") {
     const WinderScene s = default_scene();
     const WinderModes modes = solve_winder_modes(build_winder_model(s, 0.8), s.damping, s.sweep.max_frequency);
     CHECK(modes.verification.complete);
@@ -118,7 +118,7 @@ TEST_CASE("The modes are verified: residuals, M-orthonormality, none missed", "[
     CHECK(modes.n_reported > 10);
 }
 
-TEST_CASE("Rigid rolls constrain beam rolls: no frequency falls, drum modes barely move", "[winder][model]") {
+TEST_CASE("Rigid rolls constrain beam rolls: no frequency falls, drum modes barely move", "[long][winder][model]") {
     WinderScene s = default_scene();
     const double d = 1.0;
     const WinderModes rigid = solve_winder_modes(build_winder_model(s, d), s.damping, 100.0);
@@ -131,7 +131,7 @@ TEST_CASE("Rigid rolls constrain beam rolls: no frequency falls, drum modes bare
     CHECK(first_drum_hz(beam, 1.0) == Approx(first_drum_hz(rigid, 1.0)).epsilon(0.01));
 }
 
-TEST_CASE("The reduced dense solve agrees with the network solver on beam rolls", "[winder][model]") {
+TEST_CASE("The reduced dense solve agrees with the network solver on beam rolls", "[long][winder][model]") {
     WinderScene s = default_scene();
     s.rolls.model = RollModel::beam;  // no rigid constraint: the network is the whole model
     const WinderModel m = build_winder_model(s, 1.2);

@@ -70,7 +70,7 @@ TEST_CASE("A track that touches a harmonic at a sweep point counts once", "[wind
     CHECK(c[0].roll_diameter == Approx(at).epsilon(1e-12));
 }
 
-TEST_CASE("The response at a resonance scales as 1/zeta", "[winder][sweep]") {
+TEST_CASE("The response at a resonance scales as 1/zeta", "[long][winder][sweep]") {
     WinderScene s;
     s.source_file = "test.toml";
     const WinderModel m = build_winder_model(s, 1.2);
