@@ -95,7 +95,7 @@ TEST_CASE("The response at a resonance scales as 1/zeta", "[long][winder][sweep]
     }
 }
 
-TEST_CASE("A short sweep of the default winder tracks its modes and finds crossings", "[winder][sweep]") {
+TEST_CASE("A short sweep of the default winder tracks its modes and finds crossings", "[long][winder][sweep]") {
     WinderScene s;
     s.source_file = "test.toml";
     s.sweep.points = 8;
