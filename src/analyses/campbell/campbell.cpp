@@ -173,10 +173,25 @@ void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const B
     sweep(at_rest, reported, [&](double speed) { return network.modes_at(speed, window); }, rotation, out);
 }
 
-void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
+// The levels that solve with SLEPc run a sweep in one process.
+void require_one_process(const Scene& scene, const std::string& level) {
     if (mpi_size() > 1)
-        throw InputError(scene.source_file + ": a Campbell sweep at the harmonic level runs in one process; run it "
+        throw InputError(scene.source_file + ": a Campbell sweep at the " + level + " level runs in one process; run it "
                                              "without mpirun");
+}
+
+// The modes at rest from the spinning model itself, the roll's speeds from
+// its first bending mode, then the sweep.
+void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
+                     const std::function<std::vector<RotatingMode>(double)>& modes_at, CampbellResult& out) {
+    const std::vector<RotatingMode> at_rest = modes_at(0.0);
+    const double f1 = first_bending_hz(at_rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    sweep(at_rest, reported, modes_at, rotation, out);
+}
+
+void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
+    require_one_process(scene, "harmonic");
     out.level = "harmonic";
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) per wave number n";
     out.completeness = "per wave number n, the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G "
@@ -185,16 +200,11 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes);
     out.notes = harmonic_notes(rotation, harmonics.wave_numbers());
     out.n_dofs = harmonics.n_dofs();
-    const std::vector<RotatingMode> at_rest = harmonics.modes_at(0.0);
-    const double f1 = first_bending_hz(at_rest);
-    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    sweep(at_rest, reported, [&](double speed) { return harmonics.modes_at(speed); }, rotation, out);
+    sweep_from_rest(scene, rotation, reported, [&](double speed) { return harmonics.modes_at(speed); }, out);
 }
 
 void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
-    if (mpi_size() > 1)
-        throw InputError(scene.source_file + ": a Campbell sweep at the solid level runs in one process; run it "
-                                             "without mpirun");
+    require_one_process(scene, "solid");
     out.level = "solid";
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
     out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
@@ -203,10 +213,7 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
     const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
     out.n_dofs = solid.n_dofs();
-    const std::vector<RotatingMode> at_rest = solid.modes_at(0.0);
-    const double f1 = first_bending_hz(at_rest);
-    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    sweep(at_rest, reported, [&](double speed) { return solid.modes_at(speed); }, rotation, out);
+    sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
 }
 
 }  // namespace
