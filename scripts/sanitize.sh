@@ -21,10 +21,15 @@ export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 # (mca_*.so) stay loaded at exit, so that their allocations are named by
 # library (an unloaded plugin's leak shows as "<unknown module>").
 export OMPI_MCA_memory=^patcher OMPI_MCA_mca_base_component_disable_dlclose=1
-# fast_unwind_on_malloc=0: full allocation stacks through libraries built
-# without frame pointers (vasprintf inside Open MPI), so that the suppressions
-# can match them.
-export ASAN_OPTIONS="abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0:fast_unwind_on_malloc=0"
+# Two passes. Memory errors and undefined behaviour over the whole selection,
+# with leak checking off: it needs every allocation's full stack
+# (fast_unwind_on_malloc=0, to see past libraries without frame pointers into
+# Open MPI, which the suppressions name), and that unwinding made the solver
+# tests 5 to 25 times slower (perf: libgcc's unwinder and the kernel; a chuck
+# test 60 s against 2.3 s). Then leaks, with full stacks, over the tests of
+# coremodal's own containers and writers (the `leaks` spec below).
+memory_options="abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
+export ASAN_OPTIONS="$memory_options:detect_leaks=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
@@ -35,17 +40,19 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export CCACHE_NOHASHDIR=1
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-# -O0 -g1 (line tables only, enough for the reports' stacks): compiling with
-# the sanitizers costs 1.1-1.5x a Release build at -O0 -g1 but 3.7-5.8x at
-# -O1 -g (measured on run_case.cpp and element.cpp), and a fresh CI machine
-# compiles everything. clang, not gcc: it compiles a test file in 0.55 of
-# gcc's time with the same flags (test_harmonic_level.cpp, measured side by
-# side), and its sanitizers are the reference ones (the fuzzer's too).
+# -O1 -g1 (line tables only, enough for the reports' stacks): -O1 compiles
+# in 1.4-1.5x -O0's time (element.cpp, measured twice side by side) and runs
+# the solver tests 2 to 10 times faster (Eigen's fixed-size kernels are not
+# inlined at -O0: a chuck test 38 s against 77 s, the dense beam and response
+# tests more), which pays for it on a fresh CI machine that compiles
+# everything. clang, not gcc: it compiles a test file in 0.55 of gcc's time
+# with the same flags (test_harmonic_level.cpp, measured side by side), and
+# its sanitizers are the reference ones (the fuzzer's too).
 # A tree configured with another compiler is configured afresh.
 if [ -f build-asan/CMakeCache.txt ] && ! grep -q "CMAKE_CXX_COMPILER:.*clang++" build-asan/CMakeCache.txt; then
   rm -rf build-asan
 fi
-cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O0 -g1" \
+cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
   -DCOREMODAL_SANITIZE=ON "${launcher[@]}" \
   > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
 cmake --build build-asan -j "$(nproc)" 2>&1 | tail -n 5
@@ -60,15 +67,55 @@ cmake --build build-asan -j "$(nproc)" 2>&1 | tail -n 5
 # response sweeps) and runs the same code as the quicker tests beside it;
 # `all` runs them. Its time and status: docs/validation.md, "Reliability".
 everything="~[app]~[hard]~[cases]~[e2e]~[beam_vs_solid]~[converge]"
+# The leak pass: the tests of coremodal's own containers, readers and writers.
+leak_tags=(scene output element material mesh modes mac numerics geometry tracking results_folder study)
+leaks=""
+for t in "${leak_tags[@]}"; do leaks+="${leaks:+,}[$t]$everything~[long]"; done
 case "${1:-ci}" in
   ci) spec="$everything~[long]" cap=1200 ;;
   all) spec="$everything" cap=3600 ;;
-  *) spec="$1" cap=3600 ;;
+  *) spec="$1" cap=3600 leaks="" ;;
 esac
+# The selection runs as one process per core (Catch2 2 has no sharding):
+# its test names, escaped for a Catch2 test spec (\ , [ * " and a leading ~
+# are special there), dealt out in turn to the shards so that the slow
+# verification tests at the end of the list are shared too. Tests already
+# run side by side under ctest -j, so they do not share files.
+shards=$(nproc)
+build-asan/tests/coremodal_tests --list-test-names-only "$spec" | grep -v '^$' |
+  sed -e 's/\\/\\\\/g' -e 's/[],[*"]/\\&/g' -e 's/^~/\\~/' > build-asan/selection.txt
+for ((i = 0; i < shards; ++i)); do
+  awk -v n="$shards" -v i="$i" 'NR % n == i' build-asan/selection.txt > "build-asan/shard-$i.txt"
+done
+echo "sanitize: $(wc -l < build-asan/selection.txt) test cases in $shards processes"
 # Capped: a selection grown too slow fails here instead of overrunning CI's budget.
-time timeout "$cap" build-asan/tests/coremodal_tests "$spec" --durations yes > build-asan/tests.log 2>&1 || {
-  tail -n 80 build-asan/tests.log
-  echo "sanitize: tests failed or a sanitizer reported (build-asan/tests.log)" >&2
-  exit 1
-}
-tail -n 3 build-asan/tests.log
+started=$SECONDS
+pids=()
+for ((i = 0; i < shards; ++i)); do
+  timeout "$cap" build-asan/tests/coremodal_tests -f "build-asan/shard-$i.txt" --durations yes \
+    > "build-asan/tests-$i.log" 2>&1 &
+  pids+=($!)
+done
+failed=()
+for ((i = 0; i < shards; ++i)); do
+  wait "${pids[$i]}" || failed+=("$i")
+done
+echo "sanitize: tests ran in $((SECONDS - started)) s"
+for i in "${failed[@]}"; do
+  tail -n 80 "build-asan/tests-$i.log"
+  echo "sanitize: shard $i failed, was stopped by the ${cap} s cap, or a sanitizer reported (build-asan/tests-$i.log)" >&2
+done
+[ "${#failed[@]}" -eq 0 ] || exit 1
+for ((i = 0; i < shards; ++i)); do tail -n 3 "build-asan/tests-$i.log"; done
+
+# Leaks, with every allocation's full stack (see ASAN_OPTIONS above).
+if [ -n "$leaks" ]; then
+  started=$SECONDS
+  ASAN_OPTIONS="$memory_options:detect_leaks=1:fast_unwind_on_malloc=0" \
+    timeout "$cap" build-asan/tests/coremodal_tests "$leaks" > build-asan/leaks.log 2>&1 || {
+    tail -n 80 build-asan/leaks.log
+    echo "sanitize: the leak pass failed, was stopped by the ${cap} s cap, or LeakSanitizer reported (build-asan/leaks.log)" >&2
+    exit 1
+  }
+  echo "sanitize: leak pass in $((SECONDS - started)) s: $(tail -n 2 build-asan/leaks.log | head -n 1)"
+fi

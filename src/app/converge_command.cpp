@@ -23,11 +23,7 @@ struct ConvergeLine {
 void add_ladder_options(CLI::App* cmd, ConvergeLine& line) {
     ConvergeOptions& o = line.options;
     cmd->add_option("case", o.case_file, "case file (TOML) with a generated mesh")->required();
-    cmd->add_option("-o,--output", line.output,
-                    "results folder (default results/<case name>-converge): converge.md, converge.csv, "
-                    "converge.json, error_vs_time.png; replaces only an earlier coremodal result, which is kept as "
-                    "<folder>.previous (docs/results.md)");
-    cmd->add_flag("--force", o.force, "remove the earlier result at --output instead of keeping it as .previous");
+    add_results_options(cmd, line.output, o.force, "-converge");  // converge.md, .csv, .json, error_vs_time.png
     cmd->add_option("--levels", o.levels, "levels of the ladder, k = first ... first + levels - 1 (at least 3)")
         ->capture_default_str()
         ->check(CLI::Range(3, 12));
@@ -68,18 +64,13 @@ void add_run_options(CLI::App* cmd, ConvergeLine& line) {
     cmd->add_flag("--no-plots", line.no_plots, "do not run python3 for error_vs_time.png");
 }
 
+// The ladders in one paragraph; docs/accuracy-vs-cost.md says the rest.
 constexpr const char* kConvergeFooter =
     "Model levels: solid, harmonic and beam. Solid level k refines the unit mesh k times in every direction "
-    "(h = 1/k; --levels, --first, --unit, --max-dofs, --repeats apply to it); the harmonic ladder (r-z "
-    "section only; exact in theta) meshes the same section as the solid's level k and goes two levels "
-    "finer (--levels + 2), not bound by --max-dofs; the beam ladder is its own: "
-    "5 levels of 4, 8, 16, 32, 64 three-node Timoshenko elements along the core (every gap between "
-    "support edges refined alike), each level run 200 times or for 1 s (median time). The three finest levels of "
-    "each give the Richardson extrapolation and its observed order, the level before them checks that "
-    "order; converge.md sets the beam's and the harmonic's extrapolated frequencies against the solid's "
-    "(for the beam the model error; for the harmonic, exact in theta on the same section, what is left "
-    "of the solid's circumferential discretization error). "
-    "PETSc/SLEPc options pass through as for `run`. See docs/accuracy-vs-cost.md.";
+    "(--levels, --first, --unit, --max-dofs, --repeats apply to it); the harmonic ladder (r-z section only; exact in "
+    "theta) meshes the same section two levels finer; the beam ladder is 4 to 64 Timoshenko elements. The three "
+    "finest levels of each give the Richardson extrapolation. PETSc/SLEPc options pass through as for `run`. See "
+    "docs/accuracy-vs-cost.md.";
 
 }  // namespace
 

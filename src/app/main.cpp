@@ -1,20 +1,9 @@
 // coremodal: natural modes of paper-roll cores, rest rolls and their chucks.
-//
-//   coremodal run CASE.toml [--output DIR] [--mesh LEVEL] [PETSc/SLEPc options]
-//   coremodal check CASE.toml [--model LEVEL] [--mesh LEVEL]  (validate; print the resolved scene, no solve)
-//   coremodal beam ...      (beam formulas, no mesh)
-//   coremodal batch ...     (many cases, in parallel processes)
-//   coremodal converge CASE.toml [--output DIR]   (accuracy against cost: refinement ladder)
-//   coremodal study CASE.toml [--output DIR]      (a [study] table: a sweep, modes tracked by MAC)
-//   coremodal calibrate CASE.toml [--output DIR]  (a [calibration] table: k fitted for `beam --calibration`)
-//   coremodal sensitivity CASE.toml [-p KEY ...]  (d ln f / d ln p of the modes and of k)
-//   coremodal fit MEASUREMENTS.toml [--output DIR] (case-file keys fitted to measured frequencies)
-//   coremodal schema [--output FILE]             (the case file's JSON Schema, for editors)
-//   coremodal --version
-//
-// PETSc and SLEPc options (single dash, e.g. -st_pc_factor_mat_solver_type
-// mumps, -eps_view) may follow anywhere; they are applied after coremodal's
-// defaults, so an expert can override any solver setting.
+// One subcommand per verb (app/<verb>_command.cpp; `coremodal --help` lists
+// them). PETSc and SLEPc options (single dash, e.g.
+// -st_pc_factor_mat_solver_type mumps, -eps_view) may follow anywhere; they
+// are applied after coremodal's defaults, so an expert can override any
+// solver setting.
 #include "common/argv.hpp"
 #include "app/commands.hpp"
 #include "app/folder_case.hpp"

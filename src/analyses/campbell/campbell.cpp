@@ -87,6 +87,14 @@ std::vector<std::string> beam_notes(const RotationSpec& rotation) {
     return notes;
 }
 
+// The note of the harmonic and solid levels on what they leave out.
+std::string omega_squared_note(const RotationSpec& rotation, const std::string& why) {
+    return std::string("terms of order Omega^2 not included: ") +
+           (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal "
+                                              "prestress, which is not built yet, and " : "") +
+           "the convective Omega^2 term is left out with it (" + why + ")";
+}
+
 std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std::vector<int>& wave_numbers) {
     std::string ns;
     for (int n : wave_numbers) ns += (ns.empty() ? "" : ", ") + std::to_string(n);
@@ -95,12 +103,8 @@ std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std:
         "chuck bodies and shafts: the material carried through the stationary frame at Omega d/dtheta, which couples "
         "the two families of each wave number n >= 1 into forward and backward travelling waves); bearings and "
         "frames do not spin; wave numbers n = " + ns + ", chosen at rest"};
-    notes.push_back(
-        std::string("terms of order Omega^2 not included: ") +
-        (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal prestress, "
-                                           "which is not built yet, and " : "") +
-        "the convective Omega^2 term is left out with it (the two balance in part; a gyroscopic model to first order "
-        "in Omega, as the beam level's)");
+    notes.push_back(omega_squared_note(rotation, "the two balance in part; a gyroscopic model to first order in Omega, "
+                                                 "as the beam level's"));
     return notes;
 }
 
@@ -109,12 +113,8 @@ std::vector<std::string> solid_notes(const RotationSpec& rotation) {
         "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies and "
         "shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's term on "
         "the hexahedra); spring layers, bearings and frames do not spin; a body of revolution only"};
-    notes.push_back(
-        std::string("terms of order Omega^2 not included: ") +
-        (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal prestress, "
-                                           "which is not built yet, and " : "") +
-        "the convective Omega^2 term is left out with it (a gyroscopic model to first order in Omega, as the beam and "
-        "harmonic levels')");
+    notes.push_back(omega_squared_note(rotation, "a gyroscopic model to first order in Omega, as the beam and harmonic "
+                                                 "levels'"));
     return notes;
 }
 
