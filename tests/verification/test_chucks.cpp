@@ -52,7 +52,7 @@ void check_verified(const RunReport& r) {
 }  // namespace
 
 TEST_CASE("A very stiff bonded chuck in rigid bearings clamps the core over its expanding element",
-          "[verification][chucks]") {
+          "[verification][chucks][long]") {
     Scene stiff = with_chucks(paper_core(kLength), InterfaceKind::bonded);
     for (auto& c : stiff.supports.chucks) c.material = OrthotropicMaterial::isotropic("steel x 1000", 210e12, 0.3, 7850);
     const RunReport chucked = solve_quietly(stiff);
@@ -98,7 +98,7 @@ TEST_CASE("k = f1/f2 of an expanded chuck is below 1; f2 by FE matches the Timos
 }
 
 TEST_CASE("f1 rises monotonically with interface stiffness; a chuck not expanded holds far more loosely",
-          "[verification][chucks]") {
+          "[verification][chucks][long]") {
     std::vector<double> f;
     // 1e9 Pa/m is a chuck not expanded (the residual contact pressure only:
     // 50 x 20 kPa / 1 mm); 3.1e10 an element expanded at 6 bar.
@@ -107,7 +107,7 @@ TEST_CASE("f1 rises monotonically with interface stiffness; a chuck not expanded
     CHECK(f[0] < 0.85 * f[2]);
 }
 
-TEST_CASE("f1 rises monotonically with bearing stiffness, up to the rigid bearing", "[verification][chucks]") {
+TEST_CASE("f1 rises monotonically with bearing stiffness, up to the rigid bearing", "[verification][chucks][long]") {
     std::vector<double> f;
     for (double k_radial : {1e6, 1e7, 1e8}) {
         Scene s = spring_chucks();

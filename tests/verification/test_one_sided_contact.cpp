@@ -84,7 +84,7 @@ double f1_of(const Scene& s) {
 }  // namespace
 
 TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body closed form",
-          "[verification][chucks][contact]") {
+          "[verification][chucks][contact][long]") {
     // Core and chucks 1000 x stiffer: only the contact layer deforms. k_n0 =
     // 1e8 Pa/m (u0 = 200 um) gives an arc wide enough for 32 elements around
     // (2.8 deg between points) and pressures of p ~ 0.2 K1: the law's
@@ -143,7 +143,7 @@ TEST_CASE("A paper core on chucks not expanded: equilibrium, a contact that open
 }
 
 TEST_CASE("A chuck not expanded holds the roll far more loosely than an expanded one, and than a uniform soft layer",
-          "[verification][chucks][contact]") {
+          "[verification][chucks][contact][long]") {
     const Scene expanded = with_chucks(paper_core(0.9, 16, 24), InterfaceKind::spring, 3.1e10);
     Scene uniform_soft = with_chucks(paper_core(0.9, 16, 24), InterfaceKind::spring, 1e9);
     for (ChuckSpec& c : uniform_soft.supports.chucks) c.interface.expanded = false;

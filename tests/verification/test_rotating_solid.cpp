@@ -92,7 +92,7 @@ TEST_CASE("A free ring whose rest solve makes LAPACK refuse TOAR's reordering is
     CHECK(solid.max_relative_residual() < 1e-8);
 }
 
-TEST_CASE("A spinning clamped tube whirls at the solid level as at the harmonic level", "[rotation][solid]") {
+TEST_CASE("A spinning clamped tube whirls at the solid level as at the harmonic level", "[rotation][solid][long]") {
     // The harmonic level's clamped steel tube (106 x 76 mm, 1.2 m, clamped
     // over 40 mm), 16 cells around, spinning at its first bending frequency:
     // forward whirl rises, backward falls, and the split matches the
