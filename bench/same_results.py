@@ -4,7 +4,8 @@
     /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--cases GLOB ...]
 
 Runs each case file of cases/ and cases/hard/ (not the [study] and [winder] cases) with both
-programs (`run CASE --no-plots -q -o DIR`), reads modes.csv from both (a
+programs (`run CASE --no-plots -q -o DIR`), reads the modes' frequencies from both
+(summary.json at full precision, else modes.csv; a
 spinning scene: campbell.csv; a forced response: response.csv and peaks.csv), and
 prints one row per case: the number of values, the largest relative
 difference over those that are not rigid modes, and OK when it is at most
@@ -15,6 +16,7 @@ program and not the other. A refactoring that must keep every result (issue
 import argparse
 import csv
 import glob
+import json
 import os
 import re
 import subprocess
@@ -45,6 +47,10 @@ def frequencies(folder):
     the modes (modes.csv); a spinning scene's modes at its speeds (campbell.csv);
     a forced response's amplitudes and its peaks (response.csv, peaks.csv)."""
     if os.path.exists(os.path.join(folder, "modes.csv")):
+        # summary.json's at full precision: modes.csv prints 10 digits, where a last-digit flip is 1e-10
+        modes = json.load(open(os.path.join(folder, "summary.json"))).get("modes") or []
+        if modes and all("frequency_hz" in m for m in modes):
+            return [(float(m["frequency_hz"]), m.get("type", "")) for m in modes]
         return [(float(r["frequency_hz"]), r["type"]) for r in rows(folder, "modes.csv")]
     if os.path.exists(os.path.join(folder, "campbell.csv")):
         return [(float(r["frequency_hz"]), "rigid" if float(r["frequency_hz"]) == 0 else "")

@@ -122,5 +122,5 @@ if [ -n "$leaks" ]; then
     echo "sanitize: the leak pass failed, was stopped by the ${cap} s cap, or LeakSanitizer reported (build-asan/leaks.log)" >&2
     exit 1
   }
-  echo "sanitize: leak pass in $((SECONDS - started)) s: $(tail -n 2 build-asan/leaks.log | head -n 1)"
+  echo "sanitize: leak pass in $((SECONDS - started)) s: $(grep -E '^(All tests passed|test cases)' build-asan/leaks.log | tail -n 1)"
 fi
