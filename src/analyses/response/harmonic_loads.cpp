@@ -1,0 +1,163 @@
+#include "analyses/response/harmonic_loads.hpp"
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "effects/excitation.hpp"
+#include "element/harmonic_element.hpp"
+#include "geometry/tube_section.hpp"
+#include "models/part_materials.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+
+namespace coremodal {
+namespace {
+
+using cd = std::complex<double>;
+constexpr int kPlaneWaveNumber = 1;  // sideways motion lives in n = 1 alone
+
+// Element matrices of one term handed over by the harmonic assembly,
+// collected as a sparse matrix (eliminated DOFs, -1, dropped).
+class SparseSink {
+public:
+    explicit SparseSink(int n_dofs) : n_(n_dofs) {}
+    TermInsert insert() {
+        return [this](Term t, const std::vector<int>& dofs, const Eigen::MatrixXd& A) {
+            for (size_t i = 0; i < dofs.size(); ++i)
+                for (size_t j = 0; j < dofs.size(); ++j)
+                    if (dofs[i] >= 0 && dofs[j] >= 0 && A(i, j) != 0) triplets_[t].emplace_back(dofs[i], dofs[j], A(i, j));
+        };
+    }
+    Eigen::SparseMatrix<double> matrix(Term t) const {
+        Eigen::SparseMatrix<double> out(n_, n_);
+        const auto it = triplets_.find(t);
+        if (it != triplets_.end()) out.setFromTriplets(it->second.begin(), it->second.end());
+        return out;
+    }
+
+private:
+    int n_;
+    std::map<Term, std::vector<Eigen::Triplet<double>>> triplets_;
+};
+
+bool in_part(const HarmonicPlane& plane, int cell, const std::string& part) {
+    return plane.section.part_names[plane.section.cell_part[cell]] == part;
+}
+
+bool in_roll(const HarmonicPlane& plane, int cell) {
+    return in_part(plane, cell, "core") || in_part(plane, cell, "rest_paper");
+}
+
+Eigen::SparseMatrix<double> cells_matrix(const HarmonicPlane& plane, const std::function<bool(int)>& take, Term term) {
+    SparseSink sink(plane.dofs.n_dofs);
+    assemble_harmonic_cells(plane.section, plane.materials, plane.dofs, kPlaneWaveNumber, take, sink.insert());
+    return sink.matrix(term);
+}
+
+// The bowed axis as a field of the roll's nodes: U = V = w(z) sideways,
+// W = -r w'(z) (plane sections turned with the axis: no shear in the bow).
+Eigen::VectorXd half_sine_field(const HarmonicPlane& plane, double bow_m, double length) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(plane.dofs.n_dofs);
+    for (int c = 0; c < plane.section.n_cells(); ++c) {
+        if (!in_roll(plane, c)) continue;
+        for (int node : plane.section.cells[c]) {
+            const double r = plane.section.nodes[node][0], z = plane.section.nodes[node][1];
+            const double values[3] = {half_sine_bow(bow_m, z, length), half_sine_bow(bow_m, z, length),
+                                      -r * half_sine_bow_slope(bow_m, z, length)};
+            for (int k = 0; k < 3; ++k)
+                if (const int d = plane.dofs.of_component[3 * node + k]; d >= 0) u(d) = values[k];
+        }
+    }
+    return u;
+}
+
+Eigen::VectorXd bowed_axis(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
+                           const Eigen::VectorXd& first_mode) {
+    if (x.bow_shape == BowShape::half_sine) return half_sine_field(plane, x.bow_m, scene.core.length);
+    COREMODAL_ASSERT(first_mode.size() == plane.dofs.n_dofs);
+    return x.bow_m / section_probe(plane, 0.5 * scene.core.length).dot(first_mode) * first_mode;
+}
+
+Eigen::VectorXd sideways_translation(const HarmonicPlane& plane) {
+    const std::vector<double> r = harmonic_rigid_field(plane.section, plane.dofs, kPlaneWaveNumber, RigidMotion::x);
+    return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+}  // namespace
+
+HarmonicPlane assemble_harmonic_plane(const Scene& scene) {
+    HarmonicPlane plane;
+    plane.section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
+    plane.materials = part_materials(scene, plane.section.part_names, "generated section");
+    plane.dofs = harmonic_dofs(scene, plane.section, kPlaneWaveNumber);
+    SparseSink whole(plane.dofs.n_dofs), spin(plane.dofs.n_dofs);
+    assemble_harmonic_terms(scene, plane.section, plane.materials, plane.dofs, kPlaneWaveNumber, whole.insert());
+    assemble_harmonic_spin_terms(plane.section, plane.materials, plane.dofs, kPlaneWaveNumber, spin.insert());
+    plane.K = whole.matrix(Term::stiffness);
+    plane.M = whole.matrix(Term::mass);
+    plane.G = 2.0 * spin.matrix(Term::gyroscopic);  // G = 2 Gamma (spinning_harmonic.hpp)
+    plane.K_roll = cells_matrix(plane, [&](int c) { return in_roll(plane, c); }, Term::stiffness);
+    plane.K_core = cells_matrix(plane, [&](int c) { return in_part(plane, c, "core"); }, Term::stiffness);
+    plane.M_rest_paper = cells_matrix(plane, [&](int c) { return in_part(plane, c, "rest_paper"); }, Term::mass);
+    return plane;
+}
+
+Eigen::VectorXd section_probe(const HarmonicPlane& plane, double z) {
+    // One core cell per radial position whose z range holds z (a cell
+    // boundary at z belongs to the first found), 3 Gauss points across it.
+    const double xi[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, weight[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    const SectionMesh& s = plane.section;
+    std::map<double, int> by_radius;
+    for (int c = 0; c < s.n_cells(); ++c) {
+        const double z0 = s.nodes[s.cells[c][0]][1], z1 = s.nodes[s.cells[c][3]][1];
+        if (in_part(plane, c, "core") && z >= std::min(z0, z1) && z <= std::max(z0, z1))
+            by_radius.emplace(s.nodes[s.cells[c][0]][0], c);
+    }
+    if (by_radius.empty()) throw InputError("[response] probe at z = " + significant(z, 4) + " m is not on the core");
+    Eigen::VectorXd w = Eigen::VectorXd::Zero(plane.dofs.n_dofs);
+    double area = 0;  // the integral of r dr over the wall
+    for (const auto& [r0, c] : by_radius) {
+        const double r1 = s.nodes[s.cells[c][1]][0], z0 = s.nodes[s.cells[c][0]][1], z1 = s.nodes[s.cells[c][3]][1];
+        const double eta = 2 * (z - z0) / (z1 - z0) - 1;  // section cells are rectangles: xi along r, eta along z
+        for (int g = 0; g < 3; ++g) {
+            const double r = r0 + 0.5 * (xi[g] + 1) * (r1 - r0), dA = weight[g] * 0.5 * (r1 - r0) * r;
+            const Eigen::Matrix<double, 8, 1> N = quad8_values(xi[g], eta);
+            for (int a = 0; a < 8; ++a)
+                for (int k = 0; k < 2; ++k)  // U and V: u_x averages (U + V) / 2 over the ring
+                    if (const int d = plane.dofs.of_component[3 * s.cells[c][a] + k]; d >= 0) w(d) += 0.5 * dA * N(a);
+            area += dA;
+        }
+    }
+    return w / area;
+}
+
+HarmonicLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
+                                   const PlaneResponse& response, const Eigen::VectorXd& first_mode) {
+    HarmonicLoads out;
+    const Eigen::VectorXcd zero = Eigen::VectorXcd::Zero(plane.dofs.n_dofs);
+    const Eigen::VectorXd r_x = sideways_translation(plane);
+    if (x.unbalance_kg_m > 0)  // U Omega^2 at the core's cross-section at mid-core
+        add_order_load(out.orders, 1, zero, (x.unbalance_kg_m * section_probe(plane, 0.5 * scene.core.length)).cast<cd>(),
+                       Unbalance::kName);
+    if (x.eccentricity_m > 0)  // the rest paper's mass, e Omega^2 sideways
+        add_order_load(out.orders, 1, zero, (x.eccentricity_m * (plane.M_rest_paper * r_x)).cast<cd>(), Eccentricity::kName);
+    if (x.bow_m > 0)
+        add_order_load(out.orders, 1, (plane.K_roll * bowed_axis(scene, x, plane, first_mode)).cast<cd>(), zero, Bow::kName);
+    if (x.gravity) out.sag = response.static_response(kGravity * (plane.M * r_x));
+    if (x.ovality_m > 0 && x.gravity) {
+        out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);
+        add_order_load(out.orders, 2, (out.ovality_split * (plane.K_core * out.sag)).cast<cd>(), zero,
+                       OvalityGravity::kName);
+        out.assumptions.push_back(
+            "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "
+            "the rest paper round; eps = " + significant(out.ovality_split, 3) +
+            " splits the stiffness of the core's cells; the order-2 load is eps K_core u_sag in wave number n = 1, to "
+            "first order in eps (the ovalling it also drives in n = 2 and 3 is not computed)");
+    }
+    std::sort(out.orders.begin(), out.orders.end(), [](const OrderLoad& a, const OrderLoad& b) { return a.order < b.order; });
+    return out;
+}
+
+}  // namespace coremodal
