@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <map>
 
 namespace coremodal {
@@ -56,28 +57,45 @@ Eigen::SparseMatrix<double> cells_matrix(const HarmonicPlane& plane, const std::
     return sink.matrix(term);
 }
 
-// The bowed axis as a field of the roll's nodes: U = V = w(z) sideways,
-// W = -r w'(z) (plane sections turned with the axis: no shear in the bow).
-Eigen::VectorXd half_sine_field(const HarmonicPlane& plane, double bow_m, double length) {
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(plane.dofs.n_dofs);
-    for (int c = 0; c < plane.section.n_cells(); ++c) {
+// K_roll u_bow, element by element over the core's and rest paper's cells,
+// with the bowed axis given at every node, held ones included: a bowed
+// core is stress-free in its bowed shape everywhere, and where a clamp
+// holds its bore straight the clamp's force is part of the load (as the
+// beam level's core_stiffness_load takes the held nodes' bow too). The bow
+// is U = V = w(z) sideways, W = -r w'(z) (plane sections turned with the
+// axis: no shear in the bow itself).
+Eigen::VectorXd bow_load(const HarmonicPlane& plane, const std::function<double(double)>& w,
+                         const std::function<double(double)>& slope) {
+    const SectionMesh& s = plane.section;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(plane.dofs.n_dofs);
+    for (int c = 0; c < s.n_cells(); ++c) {
         if (!in_roll(plane, c)) continue;
-        for (int node : plane.section.cells[c]) {
-            const double r = plane.section.nodes[node][0], z = plane.section.nodes[node][1];
-            const double values[3] = {half_sine_bow(bow_m, z, length), half_sine_bow(bow_m, z, length),
-                                      -r * half_sine_bow_slope(bow_m, z, length)};
-            for (int k = 0; k < 3; ++k)
-                if (const int d = plane.dofs.of_component[3 * node + k]; d >= 0) u(d) = values[k];
+        Quad8Coords x;
+        Eigen::Matrix<double, 24, 1> u;
+        for (int a = 0; a < 8; ++a) {
+            const double r = s.nodes[s.cells[c][a]][0], z = s.nodes[s.cells[c][a]][1];
+            x.row(a) << r, z;
+            u.segment<3>(3 * a) << w(z), w(z), -r * slope(z);
         }
+        const PartMaterial& mat = plane.materials.at(s.cell_part[c]);
+        const Eigen::Matrix<double, 24, 1> fe =
+            harmonic_quad8_matrices(x, mat.C_cylindrical, mat.density, kPlaneWaveNumber).K * u;
+        for (int a = 0; a < 8; ++a)
+            for (int k = 0; k < 3; ++k)
+                if (const int d = plane.dofs.of_component[3 * s.cells[c][a] + k]; d >= 0) f(d) += fe(3 * a + k);
     }
-    return u;
+    return f;
 }
 
-Eigen::VectorXd bowed_axis(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
-                           const Eigen::VectorXd& first_mode) {
-    if (x.bow_shape == BowShape::half_sine) return half_sine_field(plane, x.bow_m, scene.core.length);
+Eigen::VectorXd bow_load(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
+                         const Eigen::VectorXd& first_mode) {
+    const double L = scene.core.length;
+    if (x.bow_shape == BowShape::half_sine)
+        return bow_load(plane, [&](double z) { return half_sine_bow(x.bow_m, z, L); },
+                        [&](double z) { return half_sine_bow_slope(x.bow_m, z, L); });
+    // The first bending mode, zero where held: K_roll times it on the free DOFs.
     COREMODAL_ASSERT(first_mode.size() == plane.dofs.n_dofs);
-    return x.bow_m / section_probe(plane, 0.5 * scene.core.length).dot(first_mode) * first_mode;
+    return x.bow_m / section_probe(plane, 0.5 * L).dot(first_mode) * (plane.K_roll * first_mode);
 }
 
 Eigen::VectorXd sideways_translation(const HarmonicPlane& plane) {
@@ -144,7 +162,7 @@ HarmonicLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& x, 
     if (x.eccentricity_m > 0)  // the rest paper's mass, e Omega^2 sideways
         add_order_load(out.orders, 1, zero, (x.eccentricity_m * (plane.M_rest_paper * r_x)).cast<cd>(), Eccentricity::kName);
     if (x.bow_m > 0)
-        add_order_load(out.orders, 1, (plane.K_roll * bowed_axis(scene, x, plane, first_mode)).cast<cd>(), zero, Bow::kName);
+        add_order_load(out.orders, 1, bow_load(scene, x, plane, first_mode).cast<cd>(), zero, Bow::kName);
     if (x.gravity) out.sag = response.static_response(kGravity * (plane.M * r_x));
     if (x.ovality_m > 0 && x.gravity) {
         out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);

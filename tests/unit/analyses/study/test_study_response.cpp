@@ -109,6 +109,6 @@ TEST_CASE("A point's forced response survives the worker record; a study without
     const ResponseCase c = solid.response_case(0);
     run_point(c.scene, s, c.response);
     CHECK_FALSE(s.ok);
-    CHECK(s.error.find("[response] is simulated at the beam level only") != std::string::npos);
+    CHECK(s.error.find("[response] is simulated at the beam and harmonic levels only") != std::string::npos);
     CHECK_FALSE(s.response);
 }
