@@ -1,5 +1,5 @@
 // The forced response at the harmonic level (analyses/response:
-// harmonic_response, plane_response, harmonic_loads) against independent
+// harmonic_response, modal_response, harmonic_loads) against independent
 // truths: in the complete basis of wave number n = 1 the superposition is
 // the direct solve of the full problem; with the cutoff's modes and the
 // static part of the others it converges to it as modes are added; the
@@ -7,7 +7,7 @@
 // and the beam level gives the same answer within the two levels'
 // difference in the first bending frequency.
 #include "analyses/response/harmonic_loads.hpp"
-#include "analyses/response/plane_response.hpp"
+#include "analyses/response/modal_response.hpp"
 #include "analyses/response/response.hpp"
 #include "eigensolve/tolerances.hpp"
 #include "models/solve_steps.hpp"
@@ -81,9 +81,9 @@ TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 is the d
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
     REQUIRE(plane.dofs.n_dofs < 1500);  // a dense basis in well under a second
     const double scale = solve_request(scene).lambda_scale;
-    PlaneResponse response(plane.K, plane.M, plane.G, complete_basis(plane), scale);
+    ModalResponse response(plane.K, plane.M, plane.G, kOnePlane, complete_basis(plane), scale);
     const double f1 = response.mode_frequency_hz(0);
-    const HarmonicLoads loads = build_harmonic_loads(scene, bow_unbalance_ovality(), plane, response, {});
+    const LevelLoads loads = build_harmonic_loads(scene, bow_unbalance_ovality(), plane, response, {});
     REQUIRE(loads.orders.size() == 2);
     const auto check_all = [&](const char* what) {
         INFO(what);
@@ -108,12 +108,12 @@ TEST_CASE("Harmonic level: the kept modes and the static part of the others conv
           "[response][harmonic]") {
     const Scene scene = clamped_roll("harmonic");
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
-    PlaneResponse response(plane.K, plane.M, plane.G, complete_basis(plane), solve_request(scene).lambda_scale);
+    ModalResponse response(plane.K, plane.M, plane.G, kOnePlane, complete_basis(plane), solve_request(scene).lambda_scale);
     response.set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(response.n_modes()), 0.01));
     const double f1 = response.mode_frequency_hz(0);
     ExcitationSpec x;
     x.bow_m = 0.5e-3;
-    const HarmonicLoads loads = build_harmonic_loads(scene, x, plane, response, {});
+    const LevelLoads loads = build_harmonic_loads(scene, x, plane, response, {});
     const double spin = 2 * M_PI * 0.8 * f1;
     const Eigen::VectorXcd p = loads.orders.front().at(spin), exact = response.direct(p, spin, spin);
     // Measured (bow at 0.8 f1, 552 modes in all): kept up to 3, 6, 12, 24 x

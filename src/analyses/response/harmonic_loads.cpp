@@ -151,9 +151,9 @@ Eigen::VectorXd section_probe(const HarmonicPlane& plane, double z) {
     return w / area;
 }
 
-HarmonicLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
-                                   const PlaneResponse& response, const Eigen::VectorXd& first_mode) {
-    HarmonicLoads out;
+LevelLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& x, const HarmonicPlane& plane,
+                                   const ModalResponse& response, const Eigen::VectorXd& first_mode) {
+    LevelLoads out;
     const Eigen::VectorXcd zero = Eigen::VectorXcd::Zero(plane.dofs.n_dofs);
     const Eigen::VectorXd r_x = sideways_translation(plane);
     if (x.unbalance_kg_m > 0)  // U Omega^2 at the core's cross-section at mid-core

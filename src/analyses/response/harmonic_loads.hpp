@@ -1,6 +1,6 @@
 // The harmonic level's sideways problem for the forced response
 // (docs/response.md, "At the harmonic level"): wave number n = 1 of the r-z
-// section as sparse matrices (K, M, G = 2 Gamma: plane_response.hpp), the
+// section as sparse matrices (K, M, G = 2 Gamma: modal_response.hpp), the
 // probes as linear functionals of its DOFs, and the loads of [excitation]
 // on it, each the θ-integral of the beam level's load (effects/excitation.hpp):
 //
@@ -15,8 +15,8 @@
 // the cos family's part p of one turning forward, (p, -i p).
 #pragma once
 
-#include "analyses/response/plane_response.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "analyses/response/modal_response.hpp"
+#include "analyses/response/modal_response_model.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "geometry/section_mesh.hpp"
 #include "material/material.hpp"
@@ -49,15 +49,8 @@ HarmonicPlane assemble_harmonic_plane(const Scene& scene);
 // the work F w . a, so F w is its load.
 Eigen::VectorXd section_probe(const HarmonicPlane& plane, double z);
 
-struct HarmonicLoads {
-    std::vector<OrderLoad> orders;  // per DOF of the plane; ascending order
-    Eigen::VectorXd sag;            // the static sag per DOF, m; empty without gravity
-    double ovality_split = 0;
-    std::vector<std::string> assumptions;
-};
-
 // first_mode: the first bending mode at rest per DOF (bow_shape = "first_mode" only).
-HarmonicLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& excitation, const HarmonicPlane& plane,
-                                   const PlaneResponse& response, const Eigen::VectorXd& first_mode);
+LevelLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& excitation, const HarmonicPlane& plane,
+                                   const ModalResponse& response, const Eigen::VectorXd& first_mode);
 
 }  // namespace coremodal

@@ -8,7 +8,7 @@
 // and load frequency: i omega Omega Gh_n for the beam network's two planes
 // (G skew), omega Omega Gh_n for the complex plane u = u_x + i u_y of an
 // axisymmetric model under a load turning forward (G symmetric; the
-// harmonic level's n = 1, plane_response.hpp). Gh is kept dense: the
+// harmonic level's n = 1, modal_response.hpp). Gh is kept dense: the
 // whirl's coupling of the modes is not diagonalised away.
 #pragma once
 

@@ -9,7 +9,7 @@
 // 2. The lateral problem and its modes at rest: the beam network's two
 //    bending planes, every mode (beam_response.cpp, lateral_response.hpp);
 //    the harmonic level's wave number n = 1, the modes up to the cutoff
-//    (harmonic_response.cpp, plane_response.hpp); the loads per excitation
+//    (harmonic_response.cpp, modal_response.hpp); the loads per excitation
 //    order on it.
 // 3. At every speed and order, x by modal superposition of the modes up to
 //    kTruncationFactor times the highest load frequency, with the static part

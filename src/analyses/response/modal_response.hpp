@@ -1,24 +1,25 @@
-// The steady forced response of a spinning body of revolution to loads
-// turning forward at omega = k Omega (docs/response.md), on its sideways
-// problem in one plane: the harmonic level's wave number n = 1, where the
-// cos family is the x-z plane and the sin family the y-z plane
-// (docs/harmonic.md). With q = (a, b) the two families, the spinning
-// problem is (spinning_harmonic.hpp) K2 = diag(K, K), M2 = diag(M, M),
-// G2 = 2 [[0, Gamma], [-Gamma, 0]]; a load turning forward is (p, -i p),
-// and its response is (a, -i a) with
+// The steady forced response of a spinning model given as sparse matrices
+// (the harmonic level's wave number n = 1, the solid) to loads turning at
+// omega = k Omega (docs/response.md):
 //
-//     (K - omega^2 M + omega Omega G + i omega D) a = p,     G = 2 Gamma (symmetric)
+//     (K - omega^2 M + g omega Omega G + i omega D) x = f
 //
-// (the second row is the first times -i): the two planes as one complex
-// plane u = u_x + i u_y, exactly, for every scene that is a body of
-// revolution (docs/rotation.md: the beam level's plane path is the same).
+// with g the gyroscopic unit: i for a model with both planes, where G is
+// skew (the solid, as the beam network: effects/rotation.hpp), or 1 for the
+// harmonic level's n = 1 as one complex plane. There the two families are
+// coupled by G2 = 2 [[0, Gamma], [-Gamma, 0]] (spinning_harmonic.hpp); a
+// load turning forward is (p, -i p) on (cos, sin), and its response is
+// (a, -i a) with (K - omega^2 M + omega Omega 2 Gamma + i omega D) a = p (the
+// second row is the first times -i): the two planes as one complex plane
+// u = u_x + i u_y, exactly, for a body of revolution (docs/rotation.md: the
+// beam level's plane path is the same).
 // Two ways, which check each other:
-//  - modal superposition in the n lowest modes at rest of the plane
-//    (K phi = lambda M phi, M-orthonormal: a basis the caller solved for),
-//    with the gyroscopic coupling projected (modal_equations.hpp) and the
-//    static part of every other mode, K^-1 p - Phi_n Lambda_n^-1 Phi_n^T p
-//    (the mode-acceleration correction; K^-1 from a sparse factor, so that
-//    no complete basis of a 2D mesh is needed);
+//  - modal superposition in the n lowest modes at rest (K phi = lambda M
+//    phi, M-orthonormal: a basis the caller solved for), with the gyroscopic
+//    coupling projected (modal_equations.hpp) and the static part of every
+//    other mode, K^-1 f - Phi_n Lambda_n^-1 Phi_n^T f (the mode-acceleration
+//    correction; K^-1 from a sparse factor, so that no complete basis of a
+//    mesh is needed);
 //  - the direct solve of the full problem (sparse LU), with the damping as
 //    a matrix: D = alpha M + beta K + M Phi diag(c_j - alpha - beta lambda_j)
 //    Phi^T M over the basis' modes (Woodbury's identity on the sparse
@@ -33,6 +34,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <complex>
 #include <optional>
 #include <vector>
 
@@ -44,14 +46,18 @@ struct ModalBasis {
     Eigen::VectorXd lambda;
 };
 
-class PlaneResponse {
+// The gyroscopic unit g above.
+inline const std::complex<double> kOnePlane{1, 0};   // symmetric G of one complex plane
+inline const std::complex<double> kTwoPlanes{0, 1};  // skew G of both planes
+
+class ModalResponse {
 public:
-    // K, M and G (per unit Omega, rad/s) of the plane; the basis of its
-    // lowest modes at rest; lambda_scale: the first elastic eigenvalue's
-    // scale (rad^2/s^2), for the rigid line. Throws SolveError when K is
-    // singular (a scene free to move sideways has no steady response).
-    PlaneResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M, Eigen::SparseMatrix<double> G,
-                  ModalBasis basis, double lambda_scale);
+    // K, M and G (per unit Omega, rad/s) of the model and its gyroscopic
+    // unit; the basis of its lowest modes at rest; lambda_scale: the first
+    // elastic eigenvalue's scale (rad^2/s^2), for the rigid line. Throws
+    // SolveError when K is singular (a scene free to move has no steady response).
+    ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M, Eigen::SparseMatrix<double> G,
+                  std::complex<double> gyroscopic_unit, ModalBasis basis, double lambda_scale);
 
     // Rayleigh's alpha M + beta K for every basis mode whose zeta[j] is
     // empty (and every mode above the basis), 2 zeta[j] omega_j for the
@@ -68,7 +74,7 @@ public:
     const Eigen::SparseMatrix<double>& stiffness() const { return K_; }
     const Eigen::SparseMatrix<double>& mass() const { return M_; }
 
-    // a for the load p, at spin Omega and load frequency omega (rad/s), by
+    // x for the load p, at spin Omega and load frequency omega (rad/s), by
     // superposition of the n lowest basis modes, with the static part of
     // every other mode when asked.
     Eigen::VectorXcd superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
@@ -81,6 +87,7 @@ public:
 
 private:
     Eigen::SparseMatrix<double> K_, M_, G_;
+    std::complex<double> gyroscopic_unit_;
     ModalBasis basis_;
     double lambda_scale_;
     Eigen::MatrixXd Ghat_, MPhi_;  // Phi^T G Phi; M Phi

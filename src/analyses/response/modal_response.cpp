@@ -1,4 +1,4 @@
-#include "analyses/response/plane_response.hpp"
+#include "analyses/response/modal_response.hpp"
 
 #include "analyses/response/modal_equations.hpp"
 #include "common/error.hpp"
@@ -14,45 +14,47 @@ namespace coremodal {
 using cd = std::complex<double>;
 using ComplexSparse = Eigen::SparseMatrix<cd>;
 
-PlaneResponse::PlaneResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
-                             Eigen::SparseMatrix<double> G, ModalBasis basis, double lambda_scale)
-    : K_(std::move(K)), M_(std::move(M)), G_(std::move(G)), basis_(std::move(basis)), lambda_scale_(lambda_scale) {
+ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
+                             Eigen::SparseMatrix<double> G, std::complex<double> gyroscopic_unit, ModalBasis basis,
+                             double lambda_scale)
+    : K_(std::move(K)), M_(std::move(M)), G_(std::move(G)), gyroscopic_unit_(gyroscopic_unit),
+      basis_(std::move(basis)), lambda_scale_(lambda_scale) {
     COREMODAL_ASSERT(basis_.Phi.rows() == K_.rows() && basis_.Phi.cols() == basis_.lambda.size());
     K_factor_.compute(K_);
     if (K_factor_.info() != Eigen::Success || (K_factor_.vectorD().array() <= 0).any())
-        throw SolveError("the sideways stiffness of the roll in its stand is singular (a free body, or a free DOF "
-                         "without stiffness): a spinning roll free to move sideways has no steady forced response");
+        throw SolveError("the stiffness of the roll in its stand is singular (a free body, or a free DOF without "
+                         "stiffness): a spinning roll free to move has no steady forced response");
     Ghat_ = basis_.Phi.transpose() * (G_ * basis_.Phi);
     MPhi_ = M_ * basis_.Phi;
     set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(n_modes())));
 }
 
-void PlaneResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
+void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     rayleigh_ = rayleigh;
     damping_ = modal_damping_coefficients(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
     own_damping_.resize(n_modes());
     for (int j = 0; j < n_modes(); ++j) own_damping_(j) = damping_(j) - rayleigh.coefficient(basis_.lambda(j));
 }
 
-int PlaneResponse::modes_below(double omega_cut) const {
+int ModalResponse::modes_below(double omega_cut) const {
     int n = 0;
     while (n < n_modes() && basis_.lambda(n) <= omega_cut * omega_cut) ++n;
     return n;
 }
 
-double PlaneResponse::mode_frequency_hz(int j) const {
+double ModalResponse::mode_frequency_hz(int j) const {
     return std::sqrt(std::max(basis_.lambda(j), 0.0)) / (2 * M_PI);
 }
 
-Eigen::VectorXcd PlaneResponse::modal_coordinates(const Eigen::VectorXcd& p, double omega_spin, double omega,
+Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, double omega_spin, double omega,
                                                   int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = basis_.Phi.leftCols(n).transpose().cast<cd>() * p;
-    return solve_modal_equations((omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>(), basis_.lambda,
+    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>(), basis_.lambda,
                                  damping_, omega, load);
 }
 
-Eigen::VectorXcd PlaneResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
+Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                           bool static_correction) const {
     const auto Phi_n = basis_.Phi.leftCols(n);
     Eigen::VectorXcd a = Phi_n.cast<cd>() * modal_coordinates(p, omega_spin, omega, n);
@@ -66,19 +68,19 @@ Eigen::VectorXcd PlaneResponse::superpose(const Eigen::VectorXcd& p, double omeg
     return a;
 }
 
-Eigen::VectorXd PlaneResponse::static_response(const Eigen::VectorXd& p) const { return K_factor_.solve(p); }
+Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const { return K_factor_.solve(p); }
 
-Eigen::VectorXcd PlaneResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
-    // A0 = K - omega^2 M + omega Omega G + i omega (alpha M + beta K), sparse;
+Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
+    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
     // the modes' own damping is the low-rank term i omega U diag(d) U^T,
     // U = M Phi, d = own_damping_: (A0 + U C U^T)^-1 p = y - Z (I + C U^T Z)^-1 C U^T y,
     // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
-    const ComplexSparse A0 = (K_ - omega * omega * M_ + omega * omega_spin * G_).cast<cd>() +
+    const ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
                              cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
     Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu;
     lu.compute(A0);
     if (lu.info() != Eigen::Success)
-        throw SolveError("the direct frequency-response solve of the n = 1 problem failed: its matrix is singular at " +
+        throw SolveError("the direct frequency-response solve failed: its matrix is singular at " +
                          std::to_string(omega / (2 * M_PI)) + " Hz (an undamped resonance)");
     const Eigen::VectorXcd y = lu.solve(p);
     if (n_modes() == 0) return y;

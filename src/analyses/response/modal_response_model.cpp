@@ -1,0 +1,103 @@
+#include "analyses/response/modal_response_model.hpp"
+
+#include "analyses/response/response_levels.hpp"
+#include "common/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+namespace {
+
+using cd = std::complex<double>;
+
+// A ModalResponse with its loads and probes, for the sweep. It has only the
+// kept modes (no complete basis of a mesh): "complete" is every basis mode
+// with the static part of the rest, and the checks go against the direct solve.
+class ModalResponseModel : public ResponseModel {
+public:
+    ModalResponseModel(const ModalLevelParts& parts, int n_used) : parts_(parts), n_used_(n_used) {
+        for (const OrderLoad& l : parts_.loads.orders) orders_.push_back(l.order);
+    }
+
+    const std::vector<int>& orders() const override { return orders_; }
+    size_t n_probes() const override { return parts_.probes.size(); }
+    bool has_complete_basis() const override { return false; }
+
+    std::vector<Eigen::VectorXcd> solve(double speed_hz, ResponseMethod method) const override {
+        const ModalResponse& r = parts_.response;
+        const double spin = 2 * M_PI * speed_hz;
+        std::vector<Eigen::VectorXcd> out;
+        for (const OrderLoad& load : parts_.loads.orders) {
+            const Eigen::VectorXcd f = load.at(spin);
+            const double omega = load.order * spin;
+            if (method == ResponseMethod::direct) out.push_back(r.direct(f, spin, omega));
+            else out.push_back(r.superpose(f, spin, omega, method == ResponseMethod::complete ? r.n_modes() : n_used_, true));
+        }
+        return out;
+    }
+
+    ProbeAmplitude at_probe(const std::vector<Eigen::VectorXcd>& x, size_t probe) const override {
+        ProbeAmplitude a;
+        const ProbeWeights& w = parts_.probes[probe];
+        for (const Eigen::VectorXcd& xk : x) {
+            a.per_order_m.push_back(orbit_semi_major(w.x.conjugate().dot(xk), w.y.conjugate().dot(xk)));
+            a.total_m += a.per_order_m.back();
+        }
+        return a;
+    }
+
+    AnsweringMode answering_mode(size_t order_index, double speed_hz) const override {
+        const ModalResponse& r = parts_.response;
+        const OrderLoad& load = parts_.loads.orders[order_index];
+        const double spin = 2 * M_PI * speed_hz;
+        const Eigen::VectorXcd eta = r.modal_coordinates(load.at(spin), spin, load.order * spin, n_used_);
+        const ProbeWeights& w = parts_.probes.front();
+        int best = 0;
+        double best_share = -1;
+        for (int j = 0; j < n_used_; ++j) {
+            const Eigen::VectorXcd phi = r.modes().col(j).cast<cd>();
+            const double share = std::abs(eta(j)) * std::hypot(std::abs(w.x.conjugate().dot(phi)), std::abs(w.y.conjugate().dot(phi)));
+            if (share > best_share) best_share = share, best = j;
+        }
+        return {parts_.labels[static_cast<size_t>(best)], r.mode_frequency_hz(best)};
+    }
+
+private:
+    const ModalLevelParts& parts_;
+    int n_used_;
+    std::vector<int> orders_;
+};
+
+}  // namespace
+
+void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& range, double f1_hz, ResponseResult& out) {
+    COREMODAL_ASSERT(!parts.loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
+    const ModalResponse& response = parts.response;
+    out.n_dofs = response.n_dofs();
+    for (const std::string& a : parts.damping.assumptions) out.assumptions.push_back(a);
+    for (const std::string& a : parts.loads.assumptions) out.assumptions.push_back(a);
+    for (const OrderLoad& l : parts.loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
+    if (parts.loads.sag.size() > 0)
+        out.sag_m = std::abs(parts.probes.front().x.conjugate().dot(parts.loads.sag.cast<cd>()));
+    out.ovality_split = parts.loads.ovality_split;
+    out.checks.n_modes_all = response.n_modes();
+    const int n_used =
+        std::max(std::min(parts.min_kept, response.n_modes()), response.modes_below(2 * M_PI * out.checks.cutoff_hz));
+    out.checks.n_modes_used = n_used;
+    out.mode_damping.assign(parts.damping.modes.begin(), parts.damping.modes.begin() + n_used);
+    const ModalResponseModel model(parts, n_used);
+    sweep_response(model, range, f1_hz, out.roll_outer_diameter, out);
+    out.assumptions.push_back(kept_modes_assumption(out.checks, parts.modes_words) + " (K^-1 f less the kept modes' part)");
+}
+
+double first_bending_hz(const LevelModes& rest) {
+    for (const Mode& m : rest.modes)
+        if (m.label.type == "bending") return m.frequency_hz;
+    return 0;
+}
+
+int highest_order(const ExcitationSpec& x) { return x.ovality_m > 0 && x.gravity ? 2 : 1; }
+
+}  // namespace coremodal
