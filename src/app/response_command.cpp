@@ -3,12 +3,12 @@
 // damping and excitation ([damping], [excitation], [response]), the
 // resonance peaks and the safe web speed from the amplitude limit beside
 // I-5 (docs/response.md). `coremodal run` on a case with [response] comes
-// here too. At the beam level (Eigen only) or the harmonic level (the r-z
-// section: PETSc and SLEPc for its modes at rest).
+// here too. At the beam level (Eigen only), the harmonic level (the r-z
+// section) or the solid level (bodies of revolution; PETSc and SLEPc for
+// their modes at rest).
 #include "analyses/response/response.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
-#include "models/choose.hpp"
 #include "output/response_report.hpp"
 #include "scene/response_spec.hpp"
 
@@ -23,11 +23,7 @@ int run_response_case(const FolderCaseOptions& o) {
     if (!c.response)
         throw InputError(o.case_file + ": no [response] table; expected [damping], [excitation] and [response] with "
                                        "web_speeds = [\"5 m/s\", \"20 m/s\"] and points (docs/response.md)");
-    if (const std::string level = chosen_level(scene); level != "beam" && level != "harmonic")
-        throw InputError(o.case_file + ": [response] is simulated at the beam and harmonic levels only so far (model = \"" +
-                         scene.model + "\" is the " + level + " level); expected model = \"beam\" or \"harmonic\", "
-                         "or --model beam (docs/response.md)");
-    if (chosen_level(scene) == "harmonic") require_axisymmetric(scene);
+    require_response_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-response");
     const ResponseSetup& setup = *c.response;
     const ResponseResult result = run_forced_response(scene, setup);
@@ -46,7 +42,7 @@ Command add_response_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "response", "A spinning roll's forced response ([damping], [excitation], [response]): mid-span amplitude "
                     "against web speed, resonance peaks, the safe web speed from the amplitude limit beside I-5; "
-                    "response.csv, response.png, report.md (beam or harmonic level)");
+                    "response.csv, response.png, report.md (beam, harmonic or solid level)");
     add_folder_case_options(cmd, *o, "case file (TOML) with a [response] table, e.g. cases/13-rest-roll-response.toml",
                             "-response", "response.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "

@@ -216,7 +216,8 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
     std::ostringstream out;
     out << "# Forced response: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << (r.level == "harmonic" ? "Harmonic level (wave number n = 1), " : "Beam level, ") << r.n_dofs
+    out << (r.level == "harmonic" ? "Harmonic level (wave number n = 1), " : r.level == "solid" ? "Solid level, " : "Beam level, ")
+        << r.n_dofs
         << " lateral DOFs; " << r.points.size() << " speeds from "
         << m_s(r.points.front().web_speed_m_s) << " to " << m_s(r.points.back().web_speed_m_s) << " web speed ("
         << rpm(r.points.front().speed_hz) << " to " << rpm(r.points.back().speed_hz) << ", Dp = "
@@ -241,9 +242,9 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
         << (c.complete_basis ? "complete basis" : "direct solve") << " by " << significant(c.truncation_max_relative, 2)
         << " (relative, amplitude at " << r.probes.front().name << "); the "
         << (c.complete_basis ? "complete basis" : "truncated sum") << " differs from the direct solve of "
-        << (c.complete_basis ? "(K - w^2 M + i w (W G + D)) x = f" : "(K - w^2 M + w W G + i w D) a = p (wave number n = 1)")
+        << (r.level == "harmonic" ? "(K - w^2 M + w W G + i w D) a = p (wave number n = 1)" : "(K - w^2 M + i w (W G + D)) x = f")
         << " by " << significant(c.direct_max_relative, 2) << " (relative norm)"
-        << (c.complete_basis ? "" : ": both are the truncation's effect (no complete basis of the section)") << ".\n\n"
+        << (c.complete_basis ? "" : ": both are the truncation's effect (no complete basis of a mesh)") << ".\n\n"
         << "Tables: response.csv (per speed and probe), peaks.csv, summary.json. Solve "
         << minutes_or_seconds(r.solve_seconds) << ".\n";
     return out.str();

@@ -1,5 +1,7 @@
 #include "analyses/response/harmonic_loads.hpp"
 
+#include "analyses/response/sparse_sink.hpp"
+
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "effects/excitation.hpp"
@@ -18,30 +20,6 @@ namespace {
 
 using cd = std::complex<double>;
 constexpr int kPlaneWaveNumber = 1;  // sideways motion lives in n = 1 alone
-
-// Element matrices of one term handed over by the harmonic assembly,
-// collected as a sparse matrix (eliminated DOFs, -1, dropped).
-class SparseSink {
-public:
-    explicit SparseSink(int n_dofs) : n_(n_dofs) {}
-    TermInsert insert() {
-        return [this](Term t, const std::vector<int>& dofs, const Eigen::MatrixXd& A) {
-            for (size_t i = 0; i < dofs.size(); ++i)
-                for (size_t j = 0; j < dofs.size(); ++j)
-                    if (dofs[i] >= 0 && dofs[j] >= 0 && A(i, j) != 0) triplets_[t].emplace_back(dofs[i], dofs[j], A(i, j));
-        };
-    }
-    Eigen::SparseMatrix<double> matrix(Term t) const {
-        Eigen::SparseMatrix<double> out(n_, n_);
-        const auto it = triplets_.find(t);
-        if (it != triplets_.end()) out.setFromTriplets(it->second.begin(), it->second.end());
-        return out;
-    }
-
-private:
-    int n_;
-    std::map<Term, std::vector<Eigen::Triplet<double>>> triplets_;
-};
 
 bool in_part(const HarmonicPlane& plane, int cell, const std::string& part) {
     return plane.section.part_names[plane.section.cell_part[cell]] == part;

@@ -1,10 +1,12 @@
 #include "analyses/response/modal_response.hpp"
 
 #include "analyses/response/modal_equations.hpp"
+#include "common/blas_threads.hpp"
 #include "common/error.hpp"
 #include "eigensolve/tolerances.hpp"
 
-#include <Eigen/SparseLU>
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
 
 #include <cmath>
 #include <complex>
@@ -14,14 +16,20 @@ namespace coremodal {
 using cd = std::complex<double>;
 using ComplexSparse = Eigen::SparseMatrix<cd>;
 
+struct ModalResponse::StiffnessFactor {
+    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+};
+
 ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
                              Eigen::SparseMatrix<double> G, std::complex<double> gyroscopic_unit, ModalBasis basis,
                              double lambda_scale)
     : K_(std::move(K)), M_(std::move(M)), G_(std::move(G)), gyroscopic_unit_(gyroscopic_unit),
       basis_(std::move(basis)), lambda_scale_(lambda_scale) {
     COREMODAL_ASSERT(basis_.Phi.rows() == K_.rows() && basis_.Phi.cols() == basis_.lambda.size());
-    K_factor_.compute(K_);
-    if (K_factor_.info() != Eigen::Success || (K_factor_.vectorD().array() <= 0).any())
+    auto factor = std::make_shared<StiffnessFactor>();
+    factor->llt.compute(K_);
+    K_factor_ = factor;
+    if (factor->llt.info() != Eigen::Success)  // not positive definite
         throw SolveError("the stiffness of the roll in its stand is singular (a free body, or a free DOF without "
                          "stiffness): a spinning roll free to move has no steady forced response");
     Ghat_ = basis_.Phi.transpose() * (G_ * basis_.Phi);
@@ -56,19 +64,28 @@ Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, dou
 
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                           bool static_correction) const {
-    const auto Phi_n = basis_.Phi.leftCols(n);
-    Eigen::VectorXcd a = Phi_n.cast<cd>() * modal_coordinates(p, omega_spin, omega, n);
-    if (static_correction) {
-        // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
-        const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
-        const Eigen::VectorXcd kept_static = (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
-        const Eigen::VectorXd re = static_response(p.real()), im = static_response(p.imag());
-        a += re.cast<cd>() + cd(0, 1) * im.cast<cd>() - Phi_n.cast<cd>() * kept_static;
-    }
-    return a;
+    if (static_correction) return superpose(p, omega_spin, omega, n, complex_static_response(p));
+    return basis_.Phi.leftCols(n).cast<cd>() * modal_coordinates(p, omega_spin, omega, n);
 }
 
-Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const { return K_factor_.solve(p); }
+Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
+                                          const Eigen::VectorXcd& static_p) const {
+    // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
+    const auto Phi_n = basis_.Phi.leftCols(n);
+    const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
+    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) -
+                                 (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    return Phi_n.cast<cd>() * eta + static_p;
+}
+
+Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const {
+    const SingleThreadBlas one_thread;  // triangular solves: level-2 BLAS (common/blas_threads.hpp: why)
+    return K_factor_->llt.solve(p);
+}
+
+Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& p) const {
+    return static_response(Eigen::VectorXd(p.real())).cast<cd>() + cd(0, 1) * static_response(Eigen::VectorXd(p.imag())).cast<cd>();
+}
 
 Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
     // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
@@ -77,8 +94,11 @@ Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_s
     // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
     const ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
                              cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
-    Eigen::SparseLU<ComplexSparse, Eigen::COLAMDOrdering<int>> lu;
-    lu.compute(A0);
+    Eigen::UmfPackLU<ComplexSparse> lu;
+    {
+        const SingleThreadBlas one_thread;
+        lu.compute(A0);
+    }
     if (lu.info() != Eigen::Success)
         throw SolveError("the direct frequency-response solve failed: its matrix is singular at " +
                          std::to_string(omega / (2 * M_PI)) + " Hz (an undamped resonance)");

@@ -18,9 +18,9 @@
 //    phi, M-orthonormal: a basis the caller solved for), with the gyroscopic
 //    coupling projected (modal_equations.hpp) and the static part of every
 //    other mode, K^-1 f - Phi_n Lambda_n^-1 Phi_n^T f (the mode-acceleration
-//    correction; K^-1 from a sparse factor, so that no complete basis of a
-//    mesh is needed);
-//  - the direct solve of the full problem (sparse LU), with the damping as
+//    correction; K^-1 from a sparse Cholesky factor (CHOLMOD), so that no
+//    complete basis of a mesh is needed);
+//  - the direct solve of the full problem (sparse LU, UMFPACK), with the damping as
 //    a matrix: D = alpha M + beta K + M Phi diag(c_j - alpha - beta lambda_j)
 //    Phi^T M over the basis' modes (Woodbury's identity on the sparse
 //    factor); a mode above the basis takes Rayleigh's damping, or none.
@@ -32,9 +32,9 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <complex>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -79,11 +79,16 @@ public:
     // every other mode when asked.
     Eigen::VectorXcd superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                bool static_correction = false) const;
+    // The same with the static part of the others, K^-1 p given (a caller
+    // that sweeps a load c + Omega^2 s factors K^-1 c and K^-1 s once).
+    Eigen::VectorXcd superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
+                               const Eigen::VectorXcd& static_p) const;
     Eigen::VectorXcd modal_coordinates(const Eigen::VectorXcd& p, double omega_spin, double omega, int n) const;
     // The same by the direct sparse solve of the full problem.
     Eigen::VectorXcd direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const;
     // K^-1 p (a static load).
     Eigen::VectorXd static_response(const Eigen::VectorXd& p) const;
+    Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;  // K^-1 p, p complex
 
 private:
     Eigen::SparseMatrix<double> K_, M_, G_;
@@ -93,7 +98,8 @@ private:
     Eigen::MatrixXd Ghat_, MPhi_;  // Phi^T G Phi; M Phi
     Eigen::VectorXd damping_, own_damping_;  // c_j; c_j less Rayleigh's part (the matrix form's low-rank term)
     RayleighDamping rayleigh_;
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> K_factor_;
+    struct StiffnessFactor;  // CHOLMOD's, kept out of this header (modal_response.cpp)
+    std::shared_ptr<const StiffnessFactor> K_factor_;
 };
 
 }  // namespace coremodal

@@ -18,7 +18,12 @@ using cd = std::complex<double>;
 class ModalResponseModel : public ResponseModel {
 public:
     ModalResponseModel(const ModalLevelParts& parts, int n_used) : parts_(parts), n_used_(n_used) {
-        for (const OrderLoad& l : parts_.loads.orders) orders_.push_back(l.order);
+        for (const OrderLoad& l : parts_.loads.orders) {
+            orders_.push_back(l.order);
+            // K^-1 f(Omega) = K^-1 c + Omega^2 K^-1 s: two static solves per order for the whole sweep.
+            static_parts_.push_back({parts_.response.complex_static_response(l.constant),
+                                     parts_.response.complex_static_response(l.per_spin_squared)});
+        }
     }
 
     const std::vector<int>& orders() const override { return orders_; }
@@ -29,11 +34,16 @@ public:
         const ModalResponse& r = parts_.response;
         const double spin = 2 * M_PI * speed_hz;
         std::vector<Eigen::VectorXcd> out;
-        for (const OrderLoad& load : parts_.loads.orders) {
+        for (size_t k = 0; k < parts_.loads.orders.size(); ++k) {
+            const OrderLoad& load = parts_.loads.orders[k];
             const Eigen::VectorXcd f = load.at(spin);
             const double omega = load.order * spin;
-            if (method == ResponseMethod::direct) out.push_back(r.direct(f, spin, omega));
-            else out.push_back(r.superpose(f, spin, omega, method == ResponseMethod::complete ? r.n_modes() : n_used_, true));
+            if (method == ResponseMethod::direct) {
+                out.push_back(r.direct(f, spin, omega));
+                continue;
+            }
+            const Eigen::VectorXcd static_f = static_parts_[k].first + spin * spin * static_parts_[k].second;
+            out.push_back(r.superpose(f, spin, omega, method == ResponseMethod::complete ? r.n_modes() : n_used_, static_f));
         }
         return out;
     }
@@ -68,6 +78,7 @@ private:
     const ModalLevelParts& parts_;
     int n_used_;
     std::vector<int> orders_;
+    std::vector<std::pair<Eigen::VectorXcd, Eigen::VectorXcd>> static_parts_;  // per order: K^-1 c, K^-1 s
 };
 
 }  // namespace

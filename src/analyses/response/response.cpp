@@ -25,6 +25,10 @@ std::string level_note(const std::string& level) {
                "(the cos and sin families are the two bending planes) with the gyroscopic coupling of the spinning "
                "bodies of revolution projected, and the static part of the modes above the cutoff; checked against "
                "the direct sparse solve of the full n = 1 problem";
+    if (level == "solid")
+        return "forced response at the solid level: modal superposition in the solid's modes at rest with the "
+               "gyroscopic coupling of the spinning cells projected, and the static part of the modes above the "
+               "cutoff; checked against the direct sparse solve of the whole solid";
     return "forced response at the beam level: modal superposition in the modes at rest with the gyroscopic coupling of "
            "the spinning beams projected, checked against the direct solve of the full network";
 }
@@ -107,13 +111,21 @@ std::string kept_modes_assumption(const ResponseChecks& checks, const std::strin
            " x the highest load frequency), with the static part of the others";
 }
 
+void require_response_level(const Scene& scene) {
+    const std::string level = chosen_level(scene);
+    if (level == "harmonic") require_axisymmetric(scene);
+    if (const auto why = why_not_axisymmetric(scene); why && level == "solid")
+        throw InputError(scene.source_file + ": [response] at the solid level: " + *why +
+                         "; the gyroscopic term is the stationary frame's, right for a body of revolution only "
+                         "(docs/rotation.md); expected full bands, no [mesh] file and expanded chucks");
+}
+
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options) {
+    require_response_level(scene);
     const std::string level = chosen_level(scene);
     if (level == "beam") return run_beam_response(scene, setup, options);
     if (level == "harmonic") return run_harmonic_response(scene, setup);
-    throw InputError(scene.source_file + ": [response] is simulated at the beam and harmonic levels only so far (model = \"" +
-                     level + "\"); expected model = \"beam\" or \"harmonic\" (or --model); the solid level has no "
-                     "forced response yet (docs/response.md)");
+    return run_solid_response(scene, setup);
 }
 
 }  // namespace coremodal

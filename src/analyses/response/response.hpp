@@ -84,7 +84,7 @@ struct ResponseChecks {
 };
 
 struct ResponseResult {
-    std::string level = "beam";  // the model level that computed it: "beam" or "harmonic"
+    std::string level = "beam";  // the model level that computed it: "beam", "harmonic" or "solid"
     std::string solver;          // how, in a line (summary.json's model.solver)
     std::vector<ResponsePoint> points;
     std::vector<ResponseRange::Probe> probes;
@@ -109,10 +109,14 @@ struct ResponseResult {
     std::vector<std::string> effects, notes, assumptions;
 };
 
-// At the scene's level ("auto" resolved as models/choose does): the beam or
-// the harmonic level. Throws InputError for the solid level (not yet) or a
-// scene the level cannot take; SolveError from the solvers.
+// At the scene's level ("auto" resolved as models/choose does): beam,
+// harmonic or solid. Throws InputError for a scene the level cannot take;
+// SolveError from the solvers.
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {});
+
+// InputError, before any work, when the scene's level cannot take it: the
+// harmonic and solid levels need a body of revolution.
+void require_response_level(const Scene& scene);
 
 // The semi-major axis of the orbit Re((ux, uy) e^{i omega t}) (m).
 double orbit_semi_major(std::complex<double> ux, std::complex<double> uy);

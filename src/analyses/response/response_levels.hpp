@@ -19,5 +19,6 @@ std::string kept_modes_assumption(const ResponseChecks& checks, const std::strin
 
 ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options);
 ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup);
+ResponseResult run_solid_response(const Scene& scene, const ResponseSetup& setup);
 
 }  // namespace coremodal
