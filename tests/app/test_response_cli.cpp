@@ -79,10 +79,12 @@ TEST_CASE("coremodal response refuses what it cannot do before any work, and wri
     const Run bad = run_coremodal(dir, "response bad.toml --output out");
     CHECK(bad.exit_code == 1);
     CHECK(bad.err.find("bad.toml:20:25: [response] web_speeds") != std::string::npos);
-    dir.write("solid.toml", kSmall + "[response]\nweb_speeds = [\"5 m/s\", \"20 m/s\"]\n");
+    // The solid and harmonic levels spin bodies of revolution only: a user mesh is refused before it is read.
+    dir.write("user.msh", "");
+    dir.write("solid.toml", kSmall + "[response]\nweb_speeds = [\"5 m/s\", \"20 m/s\"]\n[mesh]\nfile = \"user.msh\"\n");
     const Run solid = run_coremodal(dir, "response solid.toml --model solid --output out");
     CHECK(solid.exit_code == 1);
-    CHECK(solid.err.find("beam and harmonic levels only") != std::string::npos);
+    CHECK(solid.err.find("solid.toml: [response] at the solid level: a [mesh] file") != std::string::npos);
     CHECK(!fs::exists(dir.path / "out"));
     // An existing folder that is not a coremodal result is never touched.
     fs::create_directories(dir.path / "mine");
