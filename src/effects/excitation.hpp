@@ -1,13 +1,14 @@
 // Excitation of a spinning roll ([excitation], docs/response.md), stated once
 // for every model level; analyses/response puts the loads on the beam network
-// (response_loads) and on the harmonic level's wave number n = 1 (harmonic_loads).
+// (response_loads), on the harmonic level's wave number n = 1 (harmonic_loads)
+// and on the solid's nodes (solid_loads).
 //
-//   effect           order  solid    harmonic (n = 1)                         beam
-//   unbalance        1      not yet  U Omega^2 on the core's section at mid-core  U Omega^2 at mid-core
-//   eccentricity     1      not yet  e Omega^2 M_rp r_x (the rest paper's cells)  rho_p A_p e Omega^2 per length
-//   bow              1      not yet  K_roll u_bow, the roll's cells, element-wise  K_core u_bow
-//   ovality_gravity  2      not yet  eps K_core u_sag (the core's cells)           eps K_EIc u_sag
-//   gravity          0      -        the static sag (reported; not a vibration)   the same
+//   effect           order  harmonic (n = 1) and solid (nodal forces)      beam
+//   unbalance        1      U Omega^2 on the core's section at mid-core    U Omega^2 at mid-core
+//   eccentricity     1      e Omega^2 M_rp r_x (the rest paper's cells)    rho_p A_p e Omega^2 per length
+//   bow              1      K_roll u_bow, the roll's cells, element-wise   K_core u_bow
+//   ovality_gravity  2      eps K_core u_sag (the core's cells)            eps K_EIc u_sag
+//   gravity          0      the static sag (reported; not a vibration)      the same
 //
 // Frame and sign: stationary frame, the roll spins at Omega about +z; a load
 // turning with it is Re(p e^{i k Omega t}) in x and Re(-i p e^{i k Omega t})
@@ -91,7 +92,7 @@ double half_sine_bow_slope(double bow_m, double z, double length);
 
 // The excitation's names in the summary's `effects` list, in the order of
 // the table above: only what the scene gives (an ovality without gravity
-// excites nothing at the beam and harmonic levels and is not listed).
+// excites nothing at any level and is not listed).
 std::vector<std::string> excitation_effect_names(const ExcitationSpec& excitation);
 
 }  // namespace coremodal

@@ -144,15 +144,11 @@ LevelLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& x, con
     if (x.gravity) out.sag = response.static_response(kGravity * (plane.M * r_x));
     if (x.ovality_m > 0 && x.gravity) {
         out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);
-        add_order_load(out.orders, 2, (out.ovality_split * (plane.K_core * out.sag)).cast<cd>(), zero,
-                       OvalityGravity::kName);
-        out.assumptions.push_back(
-            "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "
-            "the rest paper round; eps = " + significant(out.ovality_split, 3) +
-            " splits the stiffness of the core's cells; the order-2 load is eps K_core u_sag in wave number n = 1, to "
-            "first order in eps (the ovalling it also drives in n = 2 and 3 is not computed)");
+        add_ovality_load(out, (plane.K_core * out.sag).cast<cd>(),
+                         "in wave number n = 1, to first order in eps (the ovalling it also drives in n = 2 and 3 is "
+                         "not computed)");
     }
-    std::sort(out.orders.begin(), out.orders.end(), [](const OrderLoad& a, const OrderLoad& b) { return a.order < b.order; });
+    sort_orders(out);
     return out;
 }
 

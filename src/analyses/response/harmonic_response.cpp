@@ -31,26 +31,6 @@ using cd = std::complex<double>;
 // bending modes, whose pairs are one plane each).
 constexpr int kMinModesKept = 2;
 
-// The modes at rest of n = 1 up to cutoff_hz (at least kMinModesKept),
-// M-orthonormal: the harmonic level's SLEPc solve of that problem alone.
-ModalBasis plane_basis(const Scene& scene, const HarmonicPlane& plane, double cutoff_hz) {
-    HarmonicSystem system = assemble_harmonic(scene, plane.section, plane.materials, 1);
-    SolveRequest request = solve_request(scene);
-    request.lambda_min.reset(), request.lambda_max.reset();  // the lowest modes, whatever band the case asks for
-    const double lambda_cut = std::pow(2 * M_PI * cutoff_hz, 2);
-    request.n_modes = std::max<int>(kMinModesKept, static_cast<int>(count_eigenvalues_below(system.operators, lambda_cut)));
-    const SolvedModes solved = solve_for_case(scene, system.operators, request, [](const std::string&) {},
-                                              "the problem of wave number n = 1 (the forced response): ");
-    ModalBasis basis;
-    basis.Phi.resize(plane.dofs.n_dofs, static_cast<Eigen::Index>(solved.vectors.size()));
-    basis.lambda = Eigen::Map<const Eigen::VectorXd>(solved.eigenvalues.data(), basis.Phi.cols());
-    for (size_t j = 0; j < solved.vectors.size(); ++j) {
-        const std::vector<double> values = gather_to_root(solved.vectors[j]);
-        basis.Phi.col(static_cast<Eigen::Index>(j)) = Eigen::Map<const Eigen::VectorXd>(values.data(), basis.Phi.rows());
-    }
-    return basis;
-}
-
 // Each basis mode named on the revolved section with the solid's classifier,
 // as the harmonic level names its modes.
 std::vector<ModeLabel> basis_labels(const Scene& scene, const HarmonicPlane& plane, const ModalBasis& basis,
@@ -68,23 +48,6 @@ std::vector<ModeLabel> basis_labels(const Scene& scene, const HarmonicPlane& pla
     return out;
 }
 
-// [damping] on the basis: each n = 1 mode is the pair at rest of its
-// eigenvalue (the harmonic level reports both members, numbered as in modes.csv).
-LateralDampingPlan plan_plane_damping(const DampingSpec& spec, const LevelModes& rest, const ModalBasis& basis,
-                                      const std::vector<ModeLabel>& labels, double lambda_scale) {
-    std::vector<NumberedRestMode> numbered;
-    for (const Mode& m : rest.modes) numbered.push_back({m.label, m.frequency_hz, m.label.n == 1});
-    std::vector<BasisMode> modes;
-    for (Eigen::Index j = 0; j < basis.lambda.size(); ++j) {
-        const double lambda = basis.lambda(j), tolerance = kClusterTolerance * std::max(std::abs(lambda), lambda_scale);
-        BasisMode b{lambda, labels[static_cast<size_t>(j)], {}};
-        for (const Mode& m : rest.modes)
-            if (m.label.n == 1 && std::abs(m.eigenvalue - lambda) <= tolerance) b.rest_modes.push_back(m.index);
-        modes.push_back(std::move(b));
-    }
-    return plan_modal_damping(spec, numbered, modes, "wave number n = 1 only");
-}
-
 // The lowest basis mode labelled bending (the bow's shape "first_mode").
 Eigen::VectorXd first_bending_mode(const ModalBasis& basis, const std::vector<ModeLabel>& labels) {
     for (size_t j = 0; j < labels.size(); ++j)
@@ -98,26 +61,27 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
     Stopwatch clock;
     Scene scene = scene_given;
     scene.model = "harmonic";  // "auto" resolved
-    if (mpi_size() > 1)
-        throw InputError(scene.source_file + ": the forced response at the harmonic level runs in one process; run it "
-                                             "without mpirun");
-    ResponseResult out = response_result_for(scene, setup, "harmonic");
-    out.solver = "modal superposition in the modes at rest of wave number n = 1 (gyroscopic coupling projected) with "
-                 "the static part of the others, checked by a direct sparse solve";
-    const ResponseRange& range = setup.response;
     // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers them).
-    HarmonicLevel level;
-    const LevelModes rest = level.solve(scene, Printer{false});
-    const double f1 = first_bending_hz(rest);
-    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    LevelModes rest;
+    ResponseResult out = start_mesh_level_response(
+        scene, setup,
+        "modal superposition in the modes at rest of wave number n = 1 (gyroscopic coupling projected) with the "
+        "static part of the others, checked by a direct sparse solve",
+        rest);
     // 2. Wave number n = 1: its matrices, its modes up to the cutoff, their damping and the loads.
+    const ResponseRange& range = setup.response;
     const double lambda_scale = solve_request(scene).lambda_scale;
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
     out.checks.cutoff_hz = kTruncationFactor * highest_order(setup.excitation) * range.speeds_hz.back();
-    const ModalBasis basis = plane_basis(scene, plane, out.checks.cutoff_hz);
+    const ModalBasis basis =
+        modal_basis_below(scene, assemble_harmonic(scene, plane.section, plane.materials, 1).operators,
+                          out.checks.cutoff_hz, kMinModesKept, "the problem of wave number n = 1 (the forced response): ");
     const std::vector<ModeLabel> labels = basis_labels(scene, plane, basis, lambda_scale);
     ModalResponse response(plane.K, plane.M, plane.G, kOnePlane, basis, lambda_scale);
-    const LateralDampingPlan damping = plan_plane_damping(setup.damping, rest, basis, labels, lambda_scale);
+    // Each n = 1 mode is the pair at rest of its eigenvalue (both members numbered in modes.csv).
+    const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, basis, labels, lambda_scale,
+                                                          [](const ModeLabel& l) { return l.n == 1; },
+                                                          "wave number n = 1 only");
     response.set_damping(damping.rayleigh, damping.zeta);
     const Eigen::VectorXd first_mode =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(basis, labels) : Eigen::VectorXd();
@@ -129,7 +93,7 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
     }
     // 3-5. The sweep, the peaks, the speed at the limit, the checks.
     finish_modal_response({response, damping, loads, probes, labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
-                          range, f1, out);
+                          range, out.speeds_at_rest.f1_hz, out);
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -2,6 +2,12 @@
 
 #include "analyses/response/response_levels.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
+#include "effects/excitation.hpp"
+#include "eigensolve/tolerances.hpp"
+#include "models/choose.hpp"
+#include "models/solve_steps.hpp"
+#include "modes/mode_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +107,67 @@ void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& ra
     const ModalResponseModel model(parts, n_used);
     sweep_response(model, range, f1_hz, out.roll_outer_diameter, out);
     out.assumptions.push_back(kept_modes_assumption(out.checks, parts.modes_words) + " (K^-1 f less the kept modes' part)");
+}
+
+void add_ovality_load(LevelLoads& out, const Eigen::VectorXcd& per_unit_split, const std::string& reach) {
+    add_order_load(out.orders, 2, out.ovality_split * per_unit_split, Eigen::VectorXcd::Zero(per_unit_split.size()),
+                   OvalityGravity::kName);
+    out.assumptions.push_back(
+        "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "
+        "the rest paper round; eps = " + significant(out.ovality_split, 3) +
+        " splits the stiffness of the core's cells; the order-2 load is eps K_core u_sag " + reach);
+}
+
+void sort_orders(LevelLoads& out) {
+    std::sort(out.orders.begin(), out.orders.end(), [](const OrderLoad& a, const OrderLoad& b) { return a.order < b.order; });
+}
+
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const std::string& solver,
+                                         LevelModes& rest) {
+    if (mpi_size() > 1)
+        throw InputError(scene.source_file + ": the forced response at the " + scene.model +
+                         " level runs in one process; run it without mpirun");
+    ResponseResult out = response_result_for(scene, setup, scene.model);
+    out.solver = solver;
+    rest = make_model_level(scene)->solve(scene, Printer{false});
+    const double f1 = first_bending_hz(rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    return out;
+}
+
+ModalBasis modal_basis_below(const Scene& scene, const OperatorSet& operators, double cutoff_hz, int min_modes,
+                             const std::string& problem) {
+    SolveRequest request = solve_request(scene);
+    request.lambda_min.reset(), request.lambda_max.reset();  // the lowest modes, whatever band the case asks for
+    const double lambda_cut = std::pow(2 * M_PI * cutoff_hz, 2);
+    request.n_modes = std::max<int>(min_modes, static_cast<int>(count_eigenvalues_below(operators, lambda_cut)));
+    const SolvedModes solved = solve_for_case(scene, operators, request, [](const std::string&) {}, problem);
+    ModalBasis basis;
+    const std::vector<double> first = gather_to_root(solved.vectors.front());
+    basis.Phi.resize(static_cast<Eigen::Index>(first.size()), static_cast<Eigen::Index>(solved.vectors.size()));
+    basis.lambda = Eigen::Map<const Eigen::VectorXd>(solved.eigenvalues.data(), basis.Phi.cols());
+    for (size_t j = 0; j < solved.vectors.size(); ++j) {
+        const std::vector<double> values = gather_to_root(solved.vectors[j]);
+        basis.Phi.col(static_cast<Eigen::Index>(j)) = Eigen::Map<const Eigen::VectorXd>(values.data(), basis.Phi.rows());
+    }
+    return basis;
+}
+
+LateralDampingPlan plan_basis_damping(const DampingSpec& spec, const LevelModes& rest, const ModalBasis& basis,
+                                      const std::vector<ModeLabel>& labels, double lambda_scale,
+                                      const std::function<bool(const ModeLabel&)>& in_response,
+                                      const std::string& lateral_words) {
+    std::vector<NumberedRestMode> numbered;
+    for (const Mode& m : rest.modes) numbered.push_back({m.label, m.frequency_hz, in_response(m.label)});
+    std::vector<BasisMode> modes;
+    for (Eigen::Index j = 0; j < basis.lambda.size(); ++j) {
+        const double lambda = basis.lambda(j), tolerance = kClusterTolerance * std::max(std::abs(lambda), lambda_scale);
+        BasisMode b{lambda, labels[static_cast<size_t>(j)], {}};
+        for (const Mode& m : rest.modes)
+            if (in_response(m.label) && std::abs(m.eigenvalue - lambda) <= tolerance) b.rest_modes.push_back(m.index);
+        modes.push_back(std::move(b));
+    }
+    return plan_modal_damping(spec, numbered, modes, lateral_words);
 }
 
 double first_bending_hz(const LevelModes& rest) {

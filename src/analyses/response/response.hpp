@@ -1,5 +1,5 @@
 // The forced response of a spinning roll ([damping], [excitation],
-// [response]; docs/response.md) at the beam or the harmonic level: the
+// [response]; docs/response.md) at the beam, harmonic or solid level: the
 // amplitude of the orbit at the probes against web speed, the resonance
 // peaks with the modes that answer, and the safe web speed read off the
 // amplitude limit beside Ilomaki's I-5.
@@ -8,9 +8,9 @@
 //    for I-5, the modes as modes.csv numbers them (for [damping]).
 // 2. The lateral problem and its modes at rest: the beam network's two
 //    bending planes, every mode (beam_response.cpp, lateral_response.hpp);
-//    the harmonic level's wave number n = 1, the modes up to the cutoff
-//    (harmonic_response.cpp, modal_response.hpp); the loads per excitation
-//    order on it.
+//    the harmonic level's wave number n = 1 or the whole solid, the modes
+//    up to the cutoff (harmonic_response.cpp, solid_response.cpp,
+//    modal_response.hpp); the loads per excitation order on it.
 // 3. At every speed and order, x by modal superposition of the modes up to
 //    kTruncationFactor times the highest load frequency, with the static part
 //    of the others; the probes' orbits.
@@ -20,7 +20,7 @@
 // 5. Checks at a few speeds and at every peak: the truncated sum against the
 //    complete basis (the truncation's effect), and the complete basis
 //    against the direct solve of the full system (beam); the truncated sum
-//    against the direct solve (harmonic: no complete basis of a 2D mesh).
+//    against the direct solve (harmonic, solid: no complete basis of a mesh).
 #pragma once
 
 #include "analyses/response/response_damping.hpp"

@@ -164,15 +164,10 @@ LevelLoads build_solid_loads(const Scene& scene, const ExcitationSpec& x, const 
     if (x.ovality_m > 0 && x.gravity) {
         out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);
         const Eigen::VectorXd sag_y = response.static_response(kGravity * (m.M * r_y));
-        add_order_load(out.orders, 2, out.ovality_split * turning(m.K_core * out.sag, m.K_core * sag_y), zero,
-                       OvalityGravity::kName);
-        out.assumptions.push_back(
-            "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "
-            "the rest paper round; eps = " + significant(out.ovality_split, 3) +
-            " splits the stiffness of the core's cells; the order-2 load is eps K_core u_sag turning at twice the "
-            "speed, to first order in eps (the wall's own ovalling is not loaded)");
+        add_ovality_load(out, turning(m.K_core * out.sag, m.K_core * sag_y),
+                         "turning at twice the speed, to first order in eps (the wall's own ovalling is not loaded)");
     }
-    std::sort(out.orders.begin(), out.orders.end(), [](const OrderLoad& a, const OrderLoad& b) { return a.order < b.order; });
+    sort_orders(out);
     return out;
 }
 
