@@ -13,7 +13,7 @@
 # Extra package names as arguments are installed the same way (scripts/fuzz.sh: clang).
 set -euo pipefail
 packages=(build-essential cmake pkg-config
-          petsc-dev slepc-dev libopenblas0-pthread
+          petsc-dev slepc-dev libsuitesparse-dev libopenblas0-pthread
           libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
           catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
           python3 python3-h5py python3-numpy python3-matplotlib python3-pytest

@@ -3,7 +3,9 @@
 // damping and excitation ([damping], [excitation], [response]), the
 // resonance peaks and the safe web speed from the amplitude limit beside
 // I-5 (docs/response.md). `coremodal run` on a case with [response] comes
-// here too. Beam level, Eigen only: no mesh, no PETSc.
+// here too. At the beam level (Eigen only), the harmonic level (the r-z
+// section) or the solid level (bodies of revolution; PETSc and SLEPc for
+// their modes at rest).
 #include "analyses/response/response.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
@@ -21,9 +23,7 @@ int run_response_case(const FolderCaseOptions& o) {
     if (!c.response)
         throw InputError(o.case_file + ": no [response] table; expected [damping], [excitation] and [response] with "
                                        "web_speeds = [\"5 m/s\", \"20 m/s\"] and points (docs/response.md)");
-    if (scene.model != "beam")
-        throw InputError(o.case_file + ": [response] is simulated at the beam level only so far (model = \"" +
-                         scene.model + "\"); expected model = \"beam\" or --model beam (docs/response.md)");
+    require_response_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-response");
     const ResponseSetup& setup = *c.response;
     const ResponseResult result = run_forced_response(scene, setup);
@@ -42,12 +42,12 @@ Command add_response_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "response", "A spinning roll's forced response ([damping], [excitation], [response]): mid-span amplitude "
                     "against web speed, resonance peaks, the safe web speed from the amplitude limit beside I-5; "
-                    "response.csv, response.png, report.md (beam level)");
+                    "response.csv, response.png, report.md (beam, harmonic or solid level)");
     add_folder_case_options(cmd, *o, "case file (TOML) with a [response] table, e.g. cases/13-rest-roll-response.toml",
                             "-response", "response.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The tables: docs/response.md.");
-    return {cmd, [o] { return run_response_case(*o); }, false};
+    return {cmd, [o] { return run_response_case(*o); }, true};
 }
 
 }  // namespace coremodal

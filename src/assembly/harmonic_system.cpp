@@ -116,6 +116,12 @@ std::vector<int> component_dofs(const HarmonicDofs& dofs, const int* nodes, int 
     return out;
 }
 
+Quad8Coords cell_coords(const SectionMesh& mesh, int c) {
+    Quad8Coords x;
+    for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
+    return x;
+}
+
 Eigen::Matrix<double, 3, 2> edge_coords(const SectionMesh& mesh, const SectionEdge& e) {
     Eigen::Matrix<double, 3, 2> x;
     for (int p = 0; p < 3; ++p) x.row(p) << mesh.nodes[e[p]][0], mesh.nodes[e[p]][1];
@@ -197,19 +203,32 @@ PetscMatrix coo_matrix(MPI_Comm comm, int n_dofs, const CooEntries& t, const std
 
 }  // namespace
 
-double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
-                               const HarmonicDofs& dofs, int n, const TermInsert& insert) {
+double assemble_harmonic_cells(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const HarmonicDofs& dofs, int n, const std::function<bool(int)>& take,
+                               const TermInsert& insert) {
     double mass = 0;
     for (int c = 0; c < mesh.n_cells(); ++c) {
-        Quad8Coords x;
-        for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
+        if (!take(c)) continue;
         const PartMaterial& mat = materials.at(mesh.cell_part[c]);
-        const HarmonicMatrices e = harmonic_quad8_matrices(x, mat.C_cylindrical, mat.density, n);
+        const HarmonicMatrices e = harmonic_quad8_matrices(cell_coords(mesh, c), mat.C_cylindrical, mat.density, n);
         const std::vector<int> cell_dofs = component_dofs(dofs, mesh.cells[c].data(), 8);
         insert(Term::stiffness, cell_dofs, e.K);
         insert(Term::mass, cell_dofs, e.M);
         mass += e.mass;
     }
+    return mass;
+}
+
+void assemble_harmonic_spin_terms(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                  const HarmonicDofs& dofs, int n, const TermInsert& insert) {
+    for (int c = 0; c < mesh.n_cells(); ++c)
+        insert(Term::gyroscopic, component_dofs(dofs, mesh.cells[c].data(), 8),
+               harmonic_quad8_spin_coupling(cell_coords(mesh, c), materials.at(mesh.cell_part[c]).density, n));
+}
+
+double assemble_harmonic_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const HarmonicDofs& dofs, int n, const TermInsert& insert) {
+    double mass = assemble_harmonic_cells(mesh, materials, dofs, n, [](int) { return true; }, insert);
     const SupportEffects effects = support_effects(scene);
     for (size_t k = 0; k < effects.chucks.size(); ++k) {
         const ChuckEffects& chuck = effects.chucks[k];
@@ -245,12 +264,9 @@ PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::
                                             const HarmonicDofs& dofs, int n, MPI_Comm comm) {
     CooEntries entries;
     if (mpi_rank(comm) == 0)
-        for (int c = 0; c < mesh.n_cells(); ++c) {
-            Quad8Coords x;
-            for (int a = 0; a < 8; ++a) x.row(a) << mesh.nodes[mesh.cells[c][a]][0], mesh.nodes[mesh.cells[c][a]][1];
-            const Quad8Matrix gamma = harmonic_quad8_spin_coupling(x, materials.at(mesh.cell_part[c]).density, n);
-            entries.add(Term::gyroscopic, component_dofs(dofs, mesh.cells[c].data(), 8), gamma);
-        }
+        assemble_harmonic_spin_terms(mesh, materials, dofs, n, [&](Term t, const std::vector<int>& d, const Eigen::MatrixXd& A) {
+            entries.add(t, d, A);
+        });
     // Symmetric for n >= 1 (it couples the two families), skew for n = 0.
     return coo_matrix(comm, dofs.n_dofs, entries, entries.values_of(Term::gyroscopic), n > 0);
 }

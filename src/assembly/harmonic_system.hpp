@@ -35,6 +35,17 @@ struct HarmonicSystem {
 // interfaces tied, the axis conditions, one frame DOF per frame mass in n <= 1.
 HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n);
 
+// The section cells' stiffness and mass alone (no supports) for the cells
+// `take(cell)` selects, handed to `insert`. Returns their mass (kg).
+double assemble_harmonic_cells(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const HarmonicDofs& dofs, int n, const std::function<bool(int)>& take,
+                               const TermInsert& insert);
+
+// Gamma_n of every section cell (assemble_harmonic_spin_coupling's terms)
+// handed to `insert` as Term::gyroscopic.
+void assemble_harmonic_spin_terms(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                  const HarmonicDofs& dofs, int n, const TermInsert& insert);
+
 // Every term of wave number n (section cells, spring layers, bearing springs,
 // frame masses) handed to `insert`, the same loop for a run (PETSc COO) and a
 // unit test (dense Eigen). Returns the mass (kg) of what it inserted.

@@ -1,10 +1,11 @@
 // Damping ([damping], docs/response.md), stated once for every model level.
 //
-//   effect            solid     harmonic   beam (analyses/response)
-//   modal_damping     not yet   not yet    zeta per elastic mode at rest: the base ratio, a
-//                                          family's (bending, ...) or the mode's own
-//   rayleigh_damping  not yet   not yet    alpha M + beta K: the matrix in the direct solve,
-//                                          zeta_j = alpha/(2 omega_j) + beta omega_j/2 in the modes
+//   effect            every level (analyses/response)
+//   modal_damping     zeta per elastic mode at rest: the base ratio, a family's (bending, ...)
+//                     or the mode's own (the beam's lateral modes, the harmonic level's n = 1,
+//                     the solid's modes below the cutoff)
+//   rayleigh_damping  alpha M + beta K: the matrix in the direct solve,
+//                     zeta_j = alpha/(2 omega_j) + beta omega_j/2 in the modes
 //
 // Modal damping gives each mode at rest (K phi = lambda M phi, M-orthonormal)
 // the modal damping force 2 zeta omega_j eta_j', omega_j = sqrt(lambda_j):

@@ -1,12 +1,14 @@
 // Excitation of a spinning roll ([excitation], docs/response.md), stated once
-// for every model level; analyses/response puts the loads on the beam network.
+// for every model level; analyses/response puts the loads on the beam network
+// (response_loads), on the harmonic level's wave number n = 1 (harmonic_loads)
+// and on the solid's nodes (solid_loads).
 //
-//   effect           order  solid    harmonic  beam (analyses/response/response_loads)
-//   unbalance        1      not yet  not yet   U Omega^2 at mid-core, turning with the roll
-//   eccentricity     1      not yet  not yet   rho_p A_p e Omega^2 per length along the roll
-//   bow              1      not yet  not yet   K_core u_bow, turning with the roll
-//   ovality_gravity  2      not yet  not yet   eps K_EIc u_sag, turning at 2 Omega
-//   gravity          0      -        -         the static sag (reported; not a vibration)
+//   effect           order  harmonic (n = 1) and solid (nodal forces)      beam
+//   unbalance        1      U Omega^2 on the core's section at mid-core    U Omega^2 at mid-core
+//   eccentricity     1      e Omega^2 M_rp r_x (the rest paper's cells)    rho_p A_p e Omega^2 per length
+//   bow              1      K_roll u_bow, the roll's cells, element-wise   K_core u_bow
+//   ovality_gravity  2      eps K_core u_sag (the core's cells)            eps K_EIc u_sag
+//   gravity          0      the static sag (reported; not a vibration)      the same
 //
 // Frame and sign: stationary frame, the roll spins at Omega about +z; a load
 // turning with it is Re(p e^{i k Omega t}) in x and Re(-i p e^{i k Omega t})
@@ -90,7 +92,7 @@ double half_sine_bow_slope(double bow_m, double z, double length);
 
 // The excitation's names in the summary's `effects` list, in the order of
 // the table above: only what the scene gives (an ovality without gravity
-// excites nothing at the beam level and is not listed).
+// excites nothing at any level and is not listed).
 std::vector<std::string> excitation_effect_names(const ExcitationSpec& excitation);
 
 }  // namespace coremodal

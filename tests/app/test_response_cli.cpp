@@ -54,6 +54,21 @@ TEST_CASE("coremodal response writes the amplitude table, the peaks, the picture
     CHECK(slurp(dir.path / "again" / "response.csv") == csv);
 }
 
+TEST_CASE("coremodal response --model harmonic runs the same scene on its r-z section, into the same files",
+          "[app][response][harmonic]") {
+    TempDir dir("response_harmonic");
+    dir.write("small.toml", kSmall + "[response]\nweb_speeds = [\"5 m/s\", \"30 m/s\"]\npoints = 40\n");
+    const Run r = run_coremodal(dir, "response small.toml --model harmonic --output out --no-plots");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    for (const char* f : {"response.csv", "peaks.csv", "summary.json", "report.md"}) CHECK(written(dir.path / "out" / f));
+    const std::string summary = slurp(dir.path / "out" / "summary.json");
+    CHECK(summary.find("\"level\" : \"harmonic\"") != std::string::npos);
+    CHECK(summary.find("\"reference\" : \"direct solve\"") != std::string::npos);
+    CHECK(slurp(dir.path / "out" / "report.md").find("Harmonic level (wave number n = 1)") != std::string::npos);
+    CHECK(slurp(dir.path / "out" / "response.csv").rfind("web_speed_m_s,speed_rpm,speed_hz,probe,position_m,amplitude_mm,order_1_mm,order_2_mm\n", 0) == 0);
+}
+
 TEST_CASE("coremodal response refuses what it cannot do before any work, and writes nothing", "[app][response]") {
     TempDir dir("response_refused");
     dir.write("still.toml", kSmall.substr(0, kSmall.find("[damping]")));
@@ -64,10 +79,12 @@ TEST_CASE("coremodal response refuses what it cannot do before any work, and wri
     const Run bad = run_coremodal(dir, "response bad.toml --output out");
     CHECK(bad.exit_code == 1);
     CHECK(bad.err.find("bad.toml:20:25: [response] web_speeds") != std::string::npos);
-    dir.write("solid.toml", kSmall + "[response]\nweb_speeds = [\"5 m/s\", \"20 m/s\"]\n");
+    // The solid and harmonic levels spin bodies of revolution only: a user mesh is refused before it is read.
+    dir.write("user.msh", "");
+    dir.write("solid.toml", kSmall + "[response]\nweb_speeds = [\"5 m/s\", \"20 m/s\"]\n[mesh]\nfile = \"user.msh\"\n");
     const Run solid = run_coremodal(dir, "response solid.toml --model solid --output out");
     CHECK(solid.exit_code == 1);
-    CHECK(solid.err.find("beam level only") != std::string::npos);
+    CHECK(solid.err.find("solid.toml: [response] at the solid level: a [mesh] file") != std::string::npos);
     CHECK(!fs::exists(dir.path / "out"));
     // An existing folder that is not a coremodal result is never touched.
     fs::create_directories(dir.path / "mine");

@@ -123,6 +123,29 @@ TEST_CASE("Case 13: the bowed rotogravure rest roll reaches +-5 mm only at its o
     CHECK(r.checks.truncation_max_relative < 1e-2);
 }
 
+TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of its own first bending frequency",
+          "[cases][response][harmonic]") {
+    ResponseCase c = parse_response_case(std::string(COREMODAL_SOURCE_DIR) +
+                                         "/cases/13-rest-roll-response-150x15.8-4320.toml");
+    REQUIRE(c.response);
+    c.scene.model = "harmonic";
+    const ResponseResult r = run_forced_response(c.scene, *c.response);
+    // docs/response.md, "The beam and harmonic levels on one scene": f1
+    // 25.789 Hz (beam 26.308), the peak 5.444 mm at 16.41 m/s (beam 5.155 mm
+    // at 16.74 m/s: 0.980 of the speed, as f1), the limit at 16.34 m/s.
+    REQUIRE(r.level == "harmonic");
+    REQUIRE(r.peaks.size() == 1);
+    CHECK(r.peaks[0].order == 1);
+    CHECK(r.peaks[0].mode.type == "bending");
+    CHECK(r.speeds_at_rest.f1_hz == Approx(25.789).epsilon(1e-4));
+    CHECK(r.peaks[0].web_speed_m_s / 16.74 == Approx(r.speeds_at_rest.f1_hz / 26.308).epsilon(2e-3));
+    CHECK(r.peaks[0].amplitude_m == Approx(5.444e-3).epsilon(0.01));
+    REQUIRE(r.safe.reached);
+    CHECK(r.safe.web_speed_m_s == Approx(16.34).epsilon(0.005));
+    CHECK(r.checks.truncation_max_relative < 1e-2);  // against the direct solve: the truncation's effect
+    CHECK(r.checks.direct_max_relative < 1e-2);
+}
+
 TEST_CASE("Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/response.md",
           "[cases][response][study]") {
     const CaseSweep sweep = CaseSweep::read(std::string(COREMODAL_SOURCE_DIR) + "/cases/14-study-response-safe-speed.toml",

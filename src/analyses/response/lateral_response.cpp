@@ -1,5 +1,7 @@
 #include "analyses/response/lateral_response.hpp"
 
+#include "analyses/response/modal_equations.hpp"
+
 #include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "effects/damping.hpp"
@@ -25,17 +27,9 @@ LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale
 }
 
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
-    COREMODAL_ASSERT(static_cast<Eigen::Index>(zeta.size()) == lambda_.size());
-    // A rigid mode (lambda ~ 0) has no frequency to damp at.
-    const double rigid = kRigidEigenvalueFraction * lambda_scale_;
-    modal_damping_.resize(lambda_.size());
+    modal_damping_ = modal_damping_coefficients(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
     Eigen::VectorXd own(lambda_.size());  // c_j less Rayleigh's part: what the matrix form adds in the modes
-    for (Eigen::Index j = 0; j < lambda_.size(); ++j) {
-        const double by_rayleigh = rayleigh.coefficient(lambda_(j));
-        const std::optional<double>& z = zeta[static_cast<size_t>(j)];
-        modal_damping_(j) = !z ? by_rayleigh : lambda_(j) < rigid ? 0.0 : ModalDamping::coefficient(*z, std::sqrt(lambda_(j)));
-        own(j) = modal_damping_(j) - by_rayleigh;
-    }
+    for (Eigen::Index j = 0; j < lambda_.size(); ++j) own(j) = modal_damping_(j) - rayleigh.coefficient(lambda_(j));
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
     D_ = MPhi * own.asDiagonal() * MPhi.transpose();
     if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
@@ -76,10 +70,9 @@ Eigen::VectorXd LateralResponse::mode_mass_shape(int j) const {
 Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, double omega_spin, double omega,
                                                     int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
-    Eigen::MatrixXcd A = cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>();
-    for (int j = 0; j < n; ++j) A(j, j) += lambda_(j) - omega * omega + cd(0, omega * modal_damping_(j));
     const Eigen::VectorXcd load = Phi_.leftCols(n).transpose().cast<cd>() * f;
-    return A.partialPivLu().solve(load);
+    return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>(), lambda_,
+                                 modal_damping_, omega, load);
 }
 
 Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,

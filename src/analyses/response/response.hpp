@@ -1,22 +1,26 @@
 // The forced response of a spinning roll ([damping], [excitation],
-// [response]; docs/response.md) at the beam level: the amplitude of the
-// orbit at the probes against web speed, the resonance peaks with the modes
-// that answer, and the safe web speed read off the amplitude limit beside
-// Ilomaki's I-5.
+// [response]; docs/response.md) at the beam, harmonic or solid level: the
+// amplitude of the orbit at the probes against web speed, the resonance
+// peaks with the modes that answer, and the safe web speed read off the
+// amplitude limit beside Ilomaki's I-5.
 //
-// 1. Solve the scene at rest (solve_beam_model): the network, the first
-//    bending frequency f1 for I-5, the labels.
-// 2. The lateral problem and all its modes at rest (LateralResponse); the
-//    loads per excitation order (response_loads).
+// 1. Solve the scene at rest at its level: the first bending frequency f1
+//    for I-5, the modes as modes.csv numbers them (for [damping]).
+// 2. The lateral problem and its modes at rest: the beam network's two
+//    bending planes, every mode (beam_response.cpp, lateral_response.hpp);
+//    the harmonic level's wave number n = 1 or the whole solid, the modes
+//    up to the cutoff (harmonic_response.cpp, solid_response.cpp,
+//    modal_response.hpp); the loads per excitation order on it.
 // 3. At every speed and order, x by modal superposition of the modes up to
 //    kTruncationFactor times the highest load frequency, with the static part
-//    of the others (lateral_response.hpp); the probes' orbits.
+//    of the others; the probes' orbits.
 // 4. Peaks refined between grid speeds (golden section), labelled with the
 //    mode that carries most of the probe's motion; the first speed where the
-//    amplitude reaches the limit, refined by bisection.
+//    amplitude reaches the limit, refined by bisection (response_sweep.hpp).
 // 5. Checks at a few speeds and at every peak: the truncated sum against the
 //    complete basis (the truncation's effect), and the complete basis
-//    against the direct solve of the full system.
+//    against the direct solve of the full system (beam); the truncated sum
+//    against the direct solve (harmonic, solid: no complete basis of a mesh).
 #pragma once
 
 #include "analyses/response/response_damping.hpp"
@@ -74,9 +78,14 @@ struct ResponseChecks {
     int speeds_checked = 0;
     double truncation_max_relative = 0;  // |a_truncated - a_complete| / a_complete at the first probe
     double direct_max_relative = 0;      // ||x_complete - x_direct|| / ||x_direct||
+    // false where the level has only the kept modes (harmonic): both
+    // differences are then the truncated sum's against the direct solve.
+    bool complete_basis = true;
 };
 
 struct ResponseResult {
+    std::string level = "beam";  // the model level that computed it: "beam", "harmonic" or "solid"
+    std::string solver;          // how, in a line (summary.json's model.solver)
     std::vector<ResponsePoint> points;
     std::vector<ResponseRange::Probe> probes;
     std::vector<int> orders;  // the orders with a load
@@ -100,9 +109,14 @@ struct ResponseResult {
     std::vector<std::string> effects, notes, assumptions;
 };
 
-// Throws InputError when the scene is not at the beam level; SolveError from
-// the solvers.
+// At the scene's level ("auto" resolved as models/choose does): beam,
+// harmonic or solid. Throws InputError for a scene the level cannot take;
+// SolveError from the solvers.
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {});
+
+// InputError, before any work, when the scene's level cannot take it: the
+// harmonic and solid levels need a body of revolution.
+void require_response_level(const Scene& scene);
 
 // The semi-major axis of the orbit Re((ux, uy) e^{i omega t}) (m).
 double orbit_semi_major(std::complex<double> ux, std::complex<double> uy);

@@ -62,29 +62,32 @@ std::optional<double> own_ratio(const DampingSpec& spec, const std::vector<int>&
     return out;
 }
 
-void check_mode_numbers(const DampingSpec& spec, const BeamModelResult& rest, std::vector<std::string>& notes) {
-    const int n = static_cast<int>(rest.modes.size());
+void check_mode_numbers(const DampingSpec& spec, const std::vector<NumberedRestMode>& rest,
+                        const std::string& lateral_words, std::vector<std::string>& notes) {
+    const int n = static_cast<int>(rest.size());
     for (const DampingSpec::ModeRatio& given : spec.modes) {
         if (given.mode > n)
             throw InputError(given.where + " mode = " + std::to_string(given.mode) + " is not among the " +
                              std::to_string(n) + " modes at rest the run computes; expected a mode from 1 to " +
                              std::to_string(n) + " (as in modes.csv), or more [analysis] modes");
-        const BeamMode& m = rest.modes[static_cast<size_t>(given.mode - 1)];
-        if (!is_lateral(m.label))
+        const NumberedRestMode& m = rest[static_cast<size_t>(given.mode - 1)];
+        if (!m.lateral)
             notes.push_back("[damping] mode " + std::to_string(given.mode) + " (" + label_text(m.label) + ", " +
-                            significant(m.frequency_hz, 5) + " Hz) is not in the lateral response (bending only): "
-                            "its ratio " + significant(given.ratio, 4) + " damps nothing here");
+                            significant(m.frequency_hz, 5) + " Hz) is not in the lateral response (" + lateral_words +
+                            "): its ratio " + significant(given.ratio, 4) + " damps nothing here");
     }
 }
 
-std::vector<std::string> plan_assumptions(const DampingSpec& spec, const LateralDampingPlan& plan) {
+std::vector<std::string> plan_assumptions(const DampingSpec& spec, const LateralDampingPlan& plan,
+                                          const std::string& lateral_words) {
     std::vector<std::string> out{"damping of every mode not named otherwise: " + spec.source +
                                  (spec.rayleigh ? "; mode j: zeta_j = alpha / (2 omega_j) + beta omega_j / 2" : "")};
     for (const DampingSpec::FamilyRatio& f : spec.families) {
         const auto n = std::count_if(plan.modes.begin(), plan.modes.end(), [&](const ModeDamping& m) { return m.from == f.family; });
         out.push_back("[damping] " + f.family + " = " + significant(f.ratio, 4) + ": " +
                       (n > 0 ? std::to_string(n) + " " + f.family + " modes of the lateral problem"
-                             : "no " + f.family + " mode in the lateral response (bending only): it damps nothing here"));
+                             : "no " + f.family + " mode in the lateral response (" + lateral_words +
+                                   "): it damps nothing here"));
     }
     for (const DampingSpec::ModeRatio& g : spec.modes)
         for (const ModeDamping& m : plan.modes)
@@ -100,17 +103,18 @@ std::vector<std::string> plan_assumptions(const DampingSpec& spec, const Lateral
 
 }  // namespace
 
-LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& rest, const LateralResponse& lateral) {
+LateralDampingPlan plan_modal_damping(const DampingSpec& spec, const std::vector<NumberedRestMode>& rest,
+                                      const std::vector<BasisMode>& basis, const std::string& lateral_words) {
     LateralDampingPlan plan;
     if (spec.rayleigh) plan.rayleigh = {spec.rayleigh->alpha, spec.rayleigh->beta};
     std::vector<std::string> notes;
-    check_mode_numbers(spec, rest, notes);
-    for (int j = 0; j < lateral.n_modes(); ++j) {
+    check_mode_numbers(spec, rest, lateral_words, notes);
+    for (const BasisMode& b : basis) {
         ModeDamping m;
-        const double lambda = lateral.eigenvalue(j);
-        m.frequency_hz = lateral.mode_frequency_hz(j);
-        m.label = label_beam_mode(rest.network, lateral.mode_shape(j), lateral.mode_mass_shape(j), lambda, rest.lambda_scale);
-        m.rest_modes = rest_modes_of(rest, lateral, j);
+        const double lambda = b.eigenvalue;
+        m.frequency_hz = std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI);
+        m.label = b.label;
+        m.rest_modes = b.rest_modes;
         std::optional<double> zeta = own_ratio(spec, m.rest_modes, m, m.from);
         if (!zeta)
             for (const DampingSpec::FamilyRatio& f : spec.families)
@@ -121,9 +125,23 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
         plan.zeta.push_back(zeta);
         plan.modes.push_back(std::move(m));
     }
-    plan.assumptions = plan_assumptions(spec, plan);
+    plan.assumptions = plan_assumptions(spec, plan, lateral_words);
     for (const std::string& n : notes) plan.assumptions.push_back(n);
     return plan;
+}
+
+LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& rest, const LateralResponse& lateral) {
+    std::vector<NumberedRestMode> numbered;
+    for (const BeamMode& m : rest.modes) numbered.push_back({m.label, m.frequency_hz, is_lateral(m.label)});
+    std::vector<BasisMode> basis;
+    for (int j = 0; j < lateral.n_modes(); ++j) {
+        const double lambda = lateral.eigenvalue(j);
+        basis.push_back({lambda,
+                         label_beam_mode(rest.network, lateral.mode_shape(j), lateral.mode_mass_shape(j), lambda,
+                                         rest.lambda_scale),
+                         rest_modes_of(rest, lateral, j)});
+    }
+    return plan_modal_damping(spec, numbered, basis, "bending only");
 }
 
 std::string damping_summary(const DampingSpec& spec) {

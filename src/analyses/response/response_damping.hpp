@@ -37,8 +37,30 @@ struct LateralDampingPlan {
     std::vector<std::string> assumptions;     // what the run echoes: the base, each family and mode given
 };
 
-// Throws InputError (FILE:LINE:COL from the spec) for a mode number beyond
-// the modes at rest, or two ratios for one degenerate pair.
+// A mode of the scene at rest, numbered as in modes.csv (from 1).
+struct NumberedRestMode {
+    ModeLabel label;
+    double frequency_hz = 0;
+    bool lateral = false;  // one of the modes the lateral response is made of
+};
+
+// A mode at rest of the response's basis, lowest first, with the scene's
+// modes at rest it is (its number(s); none above the modes the run computes).
+struct BasisMode {
+    double eigenvalue = 0;  // rad^2/s^2
+    ModeLabel label;
+    std::vector<int> rest_modes;
+};
+
+// The plan at any level: `lateral_words` says which modes make the lateral
+// response ("bending only", "wave number n = 1 only") in the notes on a
+// family or mode that damps nothing. Throws InputError (FILE:LINE:COL from
+// the spec) for a mode number beyond `rest`, or two ratios for one
+// degenerate pair.
+LateralDampingPlan plan_modal_damping(const DampingSpec& spec, const std::vector<NumberedRestMode>& rest,
+                                      const std::vector<BasisMode>& basis, const std::string& lateral_words);
+
+// The beam level's: each lateral mode matched to the scene's modes at rest.
 LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& rest, const LateralResponse& lateral);
 
 // One line for people: "ratio 0.01 (...)", "Rayleigh ..."; with the families and modes given.

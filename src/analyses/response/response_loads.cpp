@@ -94,8 +94,10 @@ Eigen::VectorXd gravity_sag(const LateralResponse& lateral) {
     return lateral.to_network(lateral.static_response(weight).cast<cd>()).real();
 }
 
-void add(std::vector<OrderLoad>& orders, int order, const Eigen::VectorXcd& constant, const Eigen::VectorXcd& per_spin2,
-         const std::string& source) {
+}  // namespace
+
+void add_order_load(std::vector<OrderLoad>& orders, int order, const Eigen::VectorXcd& constant,
+                    const Eigen::VectorXcd& per_spin2, const std::string& source) {
     auto it = std::find_if(orders.begin(), orders.end(), [&](const OrderLoad& o) { return o.order == order; });
     if (it == orders.end()) {
         orders.push_back({order, Eigen::VectorXcd::Zero(constant.size()), Eigen::VectorXcd::Zero(constant.size()), {}});
@@ -105,8 +107,6 @@ void add(std::vector<OrderLoad>& orders, int order, const Eigen::VectorXcd& cons
     it->per_spin_squared += per_spin2;
     it->sources.push_back(source);
 }
-
-}  // namespace
 
 CorePoint core_point(const BeamNetwork& net, double z) {
     const BeamNetwork::Beam& core = net.beams.front();
@@ -131,7 +131,7 @@ ResponseLoads build_response_loads(const Scene& scene, const ExcitationSpec& x, 
         Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
         const CorePoint mid = core_point(net, 0.5 * L);
         for (int a = 0; a < 3; ++a) p(dof(mid.nodes[a], beam_dof::ux)) += mid.shape[a] * x.unbalance_kg_m;
-        add(out.orders, 1, zero, turning(p), Unbalance::kName);
+        add_order_load(out.orders, 1, zero, turning(p), Unbalance::kName);
     }
     if (x.eccentricity_m > 0) {  // rho_p A_p e Omega^2 per length: int N_a dz = (1, 4, 1) h / 6
         const double Do = scene.core.outer_diameter, Dp = scene.rest_paper->outer_diameter;
@@ -143,17 +143,17 @@ ResponseLoads build_response_loads(const Scene& scene, const ExcitationSpec& x, 
             const double w[3] = {h / 6, 4 * h / 6, h / 6};
             for (int a = 0; a < 3; ++a) p(dof(core.nodes[2 * e + a], beam_dof::ux)) += w[a] * per_length;
         }
-        add(out.orders, 1, zero, turning(p), Eccentricity::kName);
+        add_order_load(out.orders, 1, zero, turning(p), Eccentricity::kName);
     }
     if (x.bow_m > 0)
-        add(out.orders, 1, turning(core_stiffness_load(net, bow_shape(scene, x, net, first_bending))), zero,
+        add_order_load(out.orders, 1, turning(core_stiffness_load(net, bow_shape(scene, x, net, first_bending))), zero,
             Bow::kName);
     if (x.gravity) out.sag = gravity_sag(lateral);
     if (x.ovality_m > 0 && x.gravity) {
         out.ovality_split = ovality_stiffness_split(x.ovality_m, scene.core.outer_diameter, scene.core.inner_diameter);
         // The core's E_c I_c alone: the part the ovality splits.
         const double EIc = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material).EI;
-        add(out.orders, 2, turning(out.ovality_split * core_stiffness_load(net, out.sag, EIc)), zero,
+        add_order_load(out.orders, 2, turning(out.ovality_split * core_stiffness_load(net, out.sag, EIc)), zero,
             OvalityGravity::kName);
         out.assumptions.push_back(
             "ovality: the core's wall is oval through its thickness (r = R + delta cos 2 theta, delta = ovality / 4), "

@@ -24,6 +24,11 @@ struct OrderLoad {
     Eigen::VectorXcd at(double omega_spin) const { return constant + omega_spin * omega_spin * per_spin_squared; }
 };
 
+// Adds f(Omega) = constant + Omega^2 per_spin2 to the order's load (a new
+// entry for a new order), with the effect's name among its sources.
+void add_order_load(std::vector<OrderLoad>& orders, int order, const Eigen::VectorXcd& constant,
+                    const Eigen::VectorXcd& per_spin2, const std::string& source);
+
 // A point on the core (beam 0 of a roll's network): the three nodes of the
 // element holding z and their shape functions there.
 struct CorePoint {

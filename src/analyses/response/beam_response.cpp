@@ -1,0 +1,156 @@
+// The forced response at the beam level (docs/response.md): the lateral
+// problem of the Timoshenko network (both bending planes) with every mode
+// at rest, so that the truncated sum is checked against the complete basis
+// and the complete basis against the direct dense solve.
+#include "analyses/response/lateral_response.hpp"
+#include "analyses/response/response_levels.hpp"
+#include "analyses/response/response_loads.hpp"
+#include "analyses/response/response_sweep.hpp"
+#include "beam/rotating_modes.hpp"
+#include "common/error.hpp"
+#include "common/stopwatch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+namespace {
+
+using cd = std::complex<double>;
+
+// The response of the network at one speed by one method, and its orbits.
+class BeamResponseModel : public ResponseModel {
+public:
+    BeamResponseModel(const BeamModelResult& rest, const LateralResponse& lateral, const ResponseLoads& loads,
+                      std::vector<CorePoint> probes, int n_used)
+        : rest_(rest), lateral_(lateral), loads_(loads), probes_(std::move(probes)), n_used_(n_used) {
+        for (const OrderLoad& l : loads_.orders) orders_.push_back(l.order);
+    }
+
+    const std::vector<int>& orders() const override { return orders_; }
+    size_t n_probes() const override { return probes_.size(); }
+
+    std::vector<Eigen::VectorXcd> solve(double speed_hz, ResponseMethod method) const override {
+        const double spin = 2 * M_PI * speed_hz;
+        std::vector<Eigen::VectorXcd> out;
+        for (const OrderLoad& load : loads_.orders) {
+            const Eigen::VectorXcd f = lateral_.to_rows(load.at(spin));
+            const double omega = load.order * spin;
+            if (method == ResponseMethod::direct) out.push_back(lateral_.direct(f, spin, omega));
+            else if (method == ResponseMethod::complete) out.push_back(lateral_.superpose(f, spin, omega, lateral_.n_modes()));
+            else out.push_back(lateral_.superpose(f, spin, omega, n_used_, true));
+        }
+        return out;
+    }
+
+    ProbeAmplitude at_probe(const std::vector<Eigen::VectorXcd>& x, size_t probe) const override {
+        ProbeAmplitude a;
+        for (const Eigen::VectorXcd& rows : x) {
+            const Eigen::VectorXcd net = lateral_.to_network(rows);
+            cd ux = 0, uy = 0;
+            for (int k = 0; k < 3; ++k) {
+                ux += probes_[probe].shape[k] * net(beam_dof::per_node * probes_[probe].nodes[k] + beam_dof::ux);
+                uy += probes_[probe].shape[k] * net(beam_dof::per_node * probes_[probe].nodes[k] + beam_dof::uy);
+            }
+            a.per_order_m.push_back(orbit_semi_major(ux, uy));
+            a.total_m += a.per_order_m.back();
+        }
+        return a;
+    }
+
+    AnsweringMode answering_mode(size_t order_index, double speed_hz) const override {
+        const int j = answering_index(loads_.orders[order_index], speed_hz);
+        const double frequency_hz = lateral_.mode_frequency_hz(j);
+        const double lambda = std::pow(2 * M_PI * frequency_hz, 2);
+        return {label_beam_mode(rest_.network, lateral_.mode_shape(j), lateral_.mode_mass_shape(j), lambda,
+                                rest_.lambda_scale),
+                frequency_hz};
+    }
+
+private:
+    // The kept mode with the largest share of the first probe's motion.
+    int answering_index(const OrderLoad& load, double speed_hz) const {
+        const double spin = 2 * M_PI * speed_hz;
+        const Eigen::VectorXcd eta =
+            lateral_.modal_coordinates(lateral_.to_rows(load.at(spin)), spin, load.order * spin, n_used_);
+        const CorePoint& probe = probes_.front();
+        int best = 0;
+        double best_share = -1;
+        for (int j = 0; j < n_used_; ++j) {
+            const Eigen::VectorXd phi = lateral_.mode_shape(j);
+            double at_probe = 0;
+            for (int k = 0; k < 3; ++k)
+                at_probe += probe.shape[k] * std::hypot(phi(beam_dof::per_node * probe.nodes[k] + beam_dof::ux),
+                                                        phi(beam_dof::per_node * probe.nodes[k] + beam_dof::uy));
+            const double share = std::abs(eta(j)) * std::abs(at_probe);
+            if (share > best_share) best_share = share, best = j;
+        }
+        return best;
+    }
+
+    const BeamModelResult& rest_;
+    const LateralResponse& lateral_;
+    const ResponseLoads& loads_;
+    std::vector<CorePoint> probes_;
+    int n_used_;
+    std::vector<int> orders_;
+};
+
+double first_bending_hz(const BeamModelResult& rest) {
+    for (const BeamMode& m : rest.modes)
+        if (m.label.type == "bending") return m.frequency_hz;
+    return 0;
+}
+
+Eigen::VectorXd first_bending_shape(const BeamModelResult& rest) {
+    for (const BeamMode& m : rest.modes)
+        if (m.label.type == "bending") return m.shape;
+    throw SolveError("the roll has no bending mode among the modes at rest; expected [analysis] modes to include one");
+}
+
+}  // namespace
+
+ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options) {
+    Stopwatch clock;
+    ResponseResult out = response_result_for(scene, setup, "beam");
+    out.solver = "modal superposition in the modes at rest (gyroscopic coupling projected), checked by a direct dense solve";
+    const ResponseRange& range = setup.response;
+    // 1. At rest.
+    const BeamModelResult rest = solve_beam_model(scene, options);
+    const double f1 = first_bending_hz(rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    // 2. The lateral problem, its modes, their damping and the loads.
+    LateralResponse lateral(rest.network, rest.lambda_scale);
+    const LateralDampingPlan damping = plan_damping(setup.damping, rest, lateral);
+    lateral.set_damping(damping.rayleigh, damping.zeta);
+    out.n_dofs = lateral.matrices().K.rows();
+    const Eigen::VectorXd first_shape =
+        setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
+    const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
+    COREMODAL_ASSERT(!loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
+    for (const std::string& a : damping.assumptions) out.assumptions.push_back(a);
+    for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
+    for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
+    std::vector<CorePoint> probes;
+    for (const ResponseRange::Probe& p : range.probes) probes.push_back(core_point(rest.network, p.z_m));
+    if (loads.sag.size() > 0)
+        for (int k = 0; k < 3; ++k) out.sag_m += probes[0].shape[k] * loads.sag(beam_dof::per_node * probes[0].nodes[k]);
+    out.sag_m = std::abs(out.sag_m);
+    out.ovality_split = loads.ovality_split;
+    // 3-5. The sweep with the modes up to kTruncationFactor times the highest
+    // load frequency, the peaks, the speed at the limit, the checks.
+    const double top_hz = out.orders.back() * range.speeds_hz.back();
+    out.checks.n_modes_all = lateral.n_modes();
+    out.checks.cutoff_hz = kTruncationFactor * top_hz;
+    const int n_used = std::max(std::min(2, lateral.n_modes()), lateral.modes_below(2 * M_PI * out.checks.cutoff_hz));
+    out.checks.n_modes_used = n_used;
+    out.mode_damping.assign(damping.modes.begin(), damping.modes.begin() + n_used);
+    const BeamResponseModel model(rest, lateral, loads, probes, n_used);
+    sweep_response(model, range, f1, out.roll_outer_diameter, out);
+    out.assumptions.push_back(kept_modes_assumption(out.checks, "lateral modes at rest"));
+    out.solve_seconds = clock.lap();
+    return out;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,116 @@
+#include "analyses/response/modal_response.hpp"
+
+#include "analyses/response/modal_equations.hpp"
+#include "common/blas_threads.hpp"
+#include "common/error.hpp"
+#include "eigensolve/tolerances.hpp"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+
+using cd = std::complex<double>;
+using ComplexSparse = Eigen::SparseMatrix<cd>;
+
+struct ModalResponse::StiffnessFactor {
+    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
+};
+
+ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
+                             Eigen::SparseMatrix<double> G, std::complex<double> gyroscopic_unit, ModalBasis basis,
+                             double lambda_scale)
+    : K_(std::move(K)), M_(std::move(M)), G_(std::move(G)), gyroscopic_unit_(gyroscopic_unit),
+      basis_(std::move(basis)), lambda_scale_(lambda_scale) {
+    COREMODAL_ASSERT(basis_.Phi.rows() == K_.rows() && basis_.Phi.cols() == basis_.lambda.size());
+    auto factor = std::make_shared<StiffnessFactor>();
+    factor->llt.compute(K_);
+    K_factor_ = factor;
+    if (factor->llt.info() != Eigen::Success)  // not positive definite
+        throw SolveError("the stiffness of the roll in its stand is singular (a free body, or a free DOF without "
+                         "stiffness): a spinning roll free to move has no steady forced response");
+    Ghat_ = basis_.Phi.transpose() * (G_ * basis_.Phi);
+    MPhi_ = M_ * basis_.Phi;
+    set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(n_modes())));
+}
+
+void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
+    rayleigh_ = rayleigh;
+    damping_ = modal_damping_coefficients(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
+    own_damping_.resize(n_modes());
+    for (int j = 0; j < n_modes(); ++j) own_damping_(j) = damping_(j) - rayleigh.coefficient(basis_.lambda(j));
+}
+
+int ModalResponse::modes_below(double omega_cut) const {
+    int n = 0;
+    while (n < n_modes() && basis_.lambda(n) <= omega_cut * omega_cut) ++n;
+    return n;
+}
+
+double ModalResponse::mode_frequency_hz(int j) const {
+    return std::sqrt(std::max(basis_.lambda(j), 0.0)) / (2 * M_PI);
+}
+
+Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, double omega_spin, double omega,
+                                                  int n) const {
+    COREMODAL_ASSERT(n >= 1 && n <= n_modes());
+    const Eigen::VectorXcd load = basis_.Phi.leftCols(n).transpose().cast<cd>() * p;
+    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>(), basis_.lambda,
+                                 damping_, omega, load);
+}
+
+Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
+                                          bool static_correction) const {
+    if (static_correction) return superpose(p, omega_spin, omega, n, complex_static_response(p));
+    return basis_.Phi.leftCols(n).cast<cd>() * modal_coordinates(p, omega_spin, omega, n);
+}
+
+Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
+                                          const Eigen::VectorXcd& static_p) const {
+    // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
+    const auto Phi_n = basis_.Phi.leftCols(n);
+    const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
+    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) -
+                                 (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    return Phi_n.cast<cd>() * eta + static_p;
+}
+
+Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const {
+    const SingleThreadBlas one_thread;  // triangular solves: level-2 BLAS (common/blas_threads.hpp: why)
+    return K_factor_->llt.solve(p);
+}
+
+Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& p) const {
+    return static_response(Eigen::VectorXd(p.real())).cast<cd>() + cd(0, 1) * static_response(Eigen::VectorXd(p.imag())).cast<cd>();
+}
+
+Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
+    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
+    // the modes' own damping is the low-rank term i omega U diag(d) U^T,
+    // U = M Phi, d = own_damping_: (A0 + U C U^T)^-1 p = y - Z (I + C U^T Z)^-1 C U^T y,
+    // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
+    const ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
+                             cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
+    Eigen::UmfPackLU<ComplexSparse> lu;
+    {
+        const SingleThreadBlas one_thread;
+        lu.compute(A0);
+    }
+    if (lu.info() != Eigen::Success)
+        throw SolveError("the direct frequency-response solve failed: its matrix is singular at " +
+                         std::to_string(omega / (2 * M_PI)) + " Hz (an undamped resonance)");
+    const Eigen::VectorXcd y = lu.solve(p);
+    if (n_modes() == 0) return y;
+    const Eigen::MatrixXcd U = MPhi_.cast<cd>();
+    const Eigen::MatrixXcd Z = lu.solve(U);
+    const Eigen::VectorXcd c = cd(0, omega) * own_damping_.cast<cd>();
+    Eigen::MatrixXcd S = c.asDiagonal() * (U.transpose() * Z);
+    S.diagonal().array() += 1.0;
+    const Eigen::VectorXcd correction = S.partialPivLu().solve(c.asDiagonal() * (U.transpose() * y));
+    return y - Z * correction;
+}
+
+}  // namespace coremodal
