@@ -207,7 +207,7 @@ TEST_CASE("Harmonic and beam levels give the same response within their differen
 }
 
 TEST_CASE("Both families with the skew G (the solid's form) give the one-plane answer (a, -i a)",
-          "[response][harmonic][solid]") {
+          "[response][harmonic][solid][long]") {
     // The n = 1 problem written as the solid writes a spinning body: both
     // planes (the cos and sin families) as unknowns, G2 = 2 [[0, Gamma],
     // [-Gamma, 0]] skew with the gyroscopic unit i, a load (p, -i p). Its
@@ -258,7 +258,7 @@ TEST_CASE("Both families with the skew G (the solid's form) give the one-plane a
     }
 }
 
-TEST_CASE("Solid and harmonic levels give the same response on one section", "[response][harmonic][solid]") {
+TEST_CASE("Solid and harmonic levels give the same response on one section", "[response][harmonic][solid][long]") {
     // The 2 m clamped roll on the coarse mesh at both levels: the solid's
     // 3D cells are the section turned (16 around), its G the same spin term
     // in Cartesian components, its loads the same fields as nodal forces.
