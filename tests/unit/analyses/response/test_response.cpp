@@ -12,6 +12,8 @@
 #include "scene/case_file.hpp"
 #include "scene/response_spec.hpp"
 
+#include "support/response_setup.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -74,15 +76,7 @@ Scene clamped_roll() {
 }
 
 ResponseSetup setup_of(double zeta, ExcitationSpec x, double v0, double v1, int points) {
-    ResponseSetup s;
-    s.damping.ratio = zeta;
-    s.damping.source = "test";
-    s.excitation = x;
-    for (int i = 0; i < points; ++i) s.response.speeds_hz.push_back((v0 + (v1 - v0) * i / (points - 1)) / (M_PI * 0.196));
-    s.response.from_web_speed = true;
-    s.response.limit_m = kDefaultAmplitudeLimit;
-    s.response.probes = {{"mid-span", 2.0}};
-    return s;
+    return testing::response_setup(zeta, x, v0, v1, points, 2.0);
 }
 
 }  // namespace
