@@ -23,10 +23,12 @@ bool OperatorSet::quadratic() const {
     return false;
 }
 
-EffectiveStiffness::EffectiveStiffness(const OperatorSet& ops) : matrix_(ops.K()) {
-    if (!ops.has(Term::geometric_stiffness)) return;
+EffectiveStiffness::EffectiveStiffness(const OperatorSet& ops, double spin) : matrix_(ops.K()) {
+    const bool prestress = ops.has(Term::geometric_stiffness), centrifugal = ops.has(Term::centrifugal) && spin != 0;
+    if (!prestress && !centrifugal) return;
     COREMODAL_PETSC(MatDuplicate(ops.K(), MAT_COPY_VALUES, sum_.out()));
-    COREMODAL_PETSC(MatAXPY(sum_, 1.0, ops[Term::geometric_stiffness], DIFFERENT_NONZERO_PATTERN));
+    if (prestress) COREMODAL_PETSC(MatAXPY(sum_, 1.0, ops[Term::geometric_stiffness], DIFFERENT_NONZERO_PATTERN));
+    if (centrifugal) COREMODAL_PETSC(MatAXPY(sum_, spin * spin, ops[Term::centrifugal], DIFFERENT_NONZERO_PATTERN));
     COREMODAL_PETSC(MatSetOption(sum_, MAT_SYMMETRIC, PETSC_TRUE));
     matrix_ = sum_.get();
 }

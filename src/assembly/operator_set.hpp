@@ -29,12 +29,13 @@ struct OperatorSet {
     bool quadratic() const;
 };
 
-// The stiffness every eigenproblem of the set sees: K, plus the geometric
-// stiffness of a prestress when the set has one (a copy then; K itself
-// otherwise).
+// The stiffness every eigenproblem of the set sees at spin speed `spin`
+// (rad/s): K, plus the geometric stiffness of a prestress and spin^2 times
+// the centrifugal term when the set has them (a copy then; K itself
+// otherwise). At rest (spin = 0) the centrifugal term drops out.
 class EffectiveStiffness {
 public:
-    explicit EffectiveStiffness(const OperatorSet& ops);
+    explicit EffectiveStiffness(const OperatorSet& ops, double spin = 0);
     Mat get() const { return matrix_; }
 
 private:

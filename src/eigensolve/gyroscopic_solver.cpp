@@ -34,7 +34,7 @@ constexpr double kMaxAcceptedResidual = 1e-6;
 
 using Pep = PetscHandle<PEP, PEPDestroy>;
 
-// K (with any geometric stiffness), C = Omega G (zero without a gyroscopic
+// K (with any geometric stiffness and Omega^2 K_Omega), C = Omega G (zero without a gyroscopic
 // term), M, and the 1-norms the residuals are scaled by.
 struct SpinningOperators {
     EffectiveStiffness stiffness;
@@ -42,7 +42,7 @@ struct SpinningOperators {
     Mat K, M;
     double norm_K = 0, norm_C = 0, norm_M = 0;
 
-    SpinningOperators(const OperatorSet& ops, double spin) : stiffness(ops), K(stiffness.get()), M(ops.M()) {
+    SpinningOperators(const OperatorSet& ops, double spin) : stiffness(ops, spin), K(stiffness.get()), M(ops.M()) {
         if (ops.has(Term::gyroscopic)) {
             COREMODAL_PETSC(MatDuplicate(ops[Term::gyroscopic], MAT_COPY_VALUES, C.out()));
             COREMODAL_PETSC(MatScale(C, spin));

@@ -4,8 +4,10 @@
 //     M q'' + Omega G q' + K q = 0,   q = x e^{i omega t}:
 //     Q(omega) x = (K - omega^2 M + i omega Omega G) x = 0,
 //
-// K the stiffness plus any geometric stiffness (symmetric, positive
-// semi-definite for a stable structure), M symmetric positive definite, G
+// K the stiffness plus any geometric stiffness and Omega^2 K_Omega (the
+// centrifugal term, element/term.hpp): symmetric, positive semi-definite
+// for a structure that spins below its divergence speed (the count below
+// assumes it), M symmetric positive definite, G
 // skew-symmetric. A quadratic eigenproblem in omega, solved with SLEPc's PEP
 // (TOAR) on P(lambda) = K + lambda Omega G + lambda^2 M, lambda = i omega.
 //

@@ -4,7 +4,7 @@
 // stiffness, damping) plugs into the same cell loop and the same solver
 // instead of widening every interface from (K, M) to (K, M, G, ...).
 //
-//   M q'' + (D + Omega G) q' + (K + K_sigma) q = 0
+//   M q'' + (D + Omega G) q' + (K + K_sigma + Omega^2 K_Omega) q = 0
 //
 // Stiffness and mass are always present; the others only when the scene
 // names an effect that produces them (DESIGN.md "Effects on demand").
@@ -20,19 +20,22 @@ enum class Term {
     mass,                 // M: consistent mass, lumped frame masses
     geometric_stiffness,  // K_sigma: stiffness of a prestress (centrifugal, web tension, gravity)
     gyroscopic,           // G: skew-symmetric, multiplied by the spin speed Omega
+    centrifugal,          // K_Omega: symmetric, multiplied by Omega^2 (effects/rotation.hpp: the
+                          // centrifugal prestress's geometric stiffness less the spin softening)
     damping,              // D: viscous damping
 };
 
-inline constexpr std::array<Term, 5> kAllTerms = {Term::stiffness, Term::mass, Term::geometric_stiffness,
-                                                  Term::gyroscopic, Term::damping};
+inline constexpr std::array<Term, 6> kAllTerms = {Term::stiffness,  Term::mass,        Term::geometric_stiffness,
+                                                  Term::gyroscopic, Term::centrifugal, Term::damping};
 
-// "stiffness", "mass", "geometric stiffness", "gyroscopic", "damping".
+// "stiffness", "mass", "geometric stiffness", "gyroscopic", "centrifugal", "damping".
 constexpr const char* term_name(Term t) {
     switch (t) {
         case Term::stiffness: return "stiffness";
         case Term::mass: return "mass";
         case Term::geometric_stiffness: return "geometric stiffness";
         case Term::gyroscopic: return "gyroscopic";
+        case Term::centrifugal: return "centrifugal";
         case Term::damping: return "damping";
     }
     return "?";
