@@ -271,6 +271,45 @@ PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::
     return coo_matrix(comm, dofs.n_dofs, entries, entries.values_of(Term::gyroscopic), n > 0);
 }
 
+std::vector<double> assemble_harmonic_centrifugal_load(const SectionMesh& mesh,
+                                                       const std::vector<PartMaterial>& materials,
+                                                       const HarmonicDofs& dofs) {
+    std::vector<double> f(dofs.n_dofs, 0.0);
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        const Eigen::Matrix<double, 24, 1> fe =
+            harmonic_quad8_centrifugal_load(cell_coords(mesh, c), materials.at(mesh.cell_part[c]).density);
+        const std::vector<int> d = component_dofs(dofs, mesh.cells[c].data(), 8);
+        for (int k = 0; k < 24; ++k)
+            if (d[k] >= 0) f[d[k]] += fe[k];
+    }
+    return f;
+}
+
+std::vector<SectionStress> harmonic_section_stress(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                                   const HarmonicDofs& dofs, const std::vector<double>& x) {
+    std::vector<SectionStress> out;
+    out.reserve(mesh.n_cells());
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+        const std::vector<int> d = component_dofs(dofs, mesh.cells[c].data(), 8);
+        Eigen::Matrix<double, 24, 1> u;
+        for (int k = 0; k < 24; ++k) u[k] = d[k] >= 0 ? x.at(d[k]) : 0.0;
+        out.push_back(harmonic_quad8_stress(cell_coords(mesh, c), materials.at(mesh.cell_part[c]).C_cylindrical, u));
+    }
+    return out;
+}
+
+PetscMatrix assemble_harmonic_centrifugal(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                          const HarmonicDofs& dofs, int n, const std::vector<SectionStress>& stress,
+                                          MPI_Comm comm) {
+    CooEntries entries;
+    if (mpi_rank(comm) == 0)
+        for (int c = 0; c < mesh.n_cells(); ++c)
+            entries.add(Term::centrifugal, component_dofs(dofs, mesh.cells[c].data(), 8),
+                        harmonic_quad8_centrifugal(cell_coords(mesh, c), materials.at(mesh.cell_part[c]).density,
+                                                   stress.at(c), n));
+    return coo_matrix(comm, dofs.n_dofs, entries, entries.values_of(Term::centrifugal));
+}
+
 std::vector<double> harmonic_rigid_field(const SectionMesh& mesh, const HarmonicDofs& dofs, int n, RigidMotion motion) {
     std::vector<double> r(dofs.n_dofs, 0.0);
     const int lives_in = motion == RigidMotion::x ? 1 : 0;  // sideways: n = 1; along and about z: n = 0

@@ -9,6 +9,7 @@
 
 #include "assembly/cell_loop.hpp"
 #include "assembly/operator_set.hpp"
+#include "element/harmonic_element.hpp"
 #include "geometry/section_mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -65,6 +66,25 @@ HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
 // family (the spinning level, models/harmonic/spinning_harmonic, builds G).
 PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                             const HarmonicDofs& dofs, int n, MPI_Comm comm = PETSC_COMM_WORLD);
+
+// The centrifugal body force rho r e_r per unit Omega^2 on the n = 0 DOFs
+// (every section cell spins), as a vector of dofs.n_dofs values.
+std::vector<double> assemble_harmonic_centrifugal_load(const SectionMesh& mesh,
+                                                       const std::vector<PartMaterial>& materials,
+                                                       const HarmonicDofs& dofs);
+
+// The n = 0 stress (element/harmonic_element.hpp, harmonic_quad8_stress) of
+// a solution x on the n = 0 DOFs, per section cell.
+std::vector<SectionStress> harmonic_section_stress(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                                   const HarmonicDofs& dofs, const std::vector<double>& x);
+
+// K_Omega of wave number n (element/harmonic_element.hpp,
+// harmonic_quad8_centrifugal) over every section cell, from the prestress
+// `stress` (one SectionStress per cell, per unit Omega^2): symmetric, on the
+// DOFs of one family; the springs and frames do not spin and add nothing.
+PetscMatrix assemble_harmonic_centrifugal(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                          const HarmonicDofs& dofs, int n, const std::vector<SectionStress>& stress,
+                                          MPI_Comm comm = PETSC_COMM_WORLD);
 
 // Rigid-body fields of harmonic n on the DOFs: translation along x (n = 1:
 // U = V = 1), along z (n = 0: W = 1) and rotation about z (n = 0: V = r);

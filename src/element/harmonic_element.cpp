@@ -19,6 +19,38 @@ constexpr std::array<std::array<double, 2>, 8> kNodes = {
 Eigen::Vector3d edge_values(double s) { return {s * (s - 1) / 2, s * (s + 1) / 2, 1 - s * s}; }
 Eigen::Vector3d edge_derivatives(double s) { return {s - 0.5, s + 0.5, -2 * s}; }
 
+// The cos family's L_n on (U, V, W) (harmonic_quad8_spin_coupling).
+Eigen::Matrix3d spin_operator(int n) {
+    Eigen::Matrix3d L;
+    if (n == 0)
+        L << 0, 1, 0, -1, 0, 0, 0, 0, 0;
+    else
+        L << n, -1, 0, -1, n, 0, 0, 0, n;
+    return L;
+}
+
+// One Gauss point of a cell: shape values, gradients in (r, z), radius and
+// r dr dz times the rule's weight.
+struct SectionPoint {
+    Eigen::Matrix<double, 8, 1> N;
+    Eigen::Matrix<double, 8, 2> dN;
+    double r = 0, weight = 0;
+};
+
+SectionPoint section_point(const Quad8Coords& x, int i, int j) {
+    SectionPoint p;
+    p.N = quad8_values(kGaussPoints[i], kGaussPoints[j]);
+    const Eigen::Matrix<double, 8, 2> dN_ref = quad8_gradients(kGaussPoints[i], kGaussPoints[j]);
+    const Eigen::Matrix2d J = x.transpose() * dN_ref;
+    const double det = J.determinant();
+    if (!(det > 0)) throw SolveError("section cell with a non-positive Jacobian (" + std::to_string(det) + ")");
+    p.dN = dN_ref * J.inverse();
+    p.r = p.N.dot(x.col(0));
+    p.weight = kGaussWeights[i] * kGaussWeights[j] * det * p.r;
+    return p;
+}
+
+
 }  // namespace
 
 double harmonic_weight(int n) { return n == 0 ? 2 * M_PI : M_PI; }
@@ -101,11 +133,7 @@ HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C,
 }
 
 Quad8Matrix harmonic_quad8_spin_coupling(const Quad8Coords& x, double density, int n) {
-    Eigen::Matrix3d L;
-    if (n == 0)
-        L << 0, 1, 0, -1, 0, 0, 0, 0, 0;
-    else
-        L << n, -1, 0, -1, n, 0, 0, 0, n;
+    const Eigen::Matrix3d L = spin_operator(n);
     const double w_n = harmonic_weight(n);
     Quad8Matrix out = Quad8Matrix::Zero();
     for (int i = 0; i < 3; ++i)
@@ -116,6 +144,61 @@ Quad8Matrix harmonic_quad8_spin_coupling(const Quad8Coords& x, double density, i
             const double weight = w_n * density * kGaussWeights[i] * kGaussWeights[j] * J.determinant() * r;
             for (int a = 0; a < 8; ++a)
                 for (int b = 0; b < 8; ++b) out.block<3, 3>(3 * a, 3 * b) += (weight * N[a] * N[b]) * L;
+        }
+    return out;
+}
+
+Eigen::Matrix<double, 24, 1> harmonic_quad8_centrifugal_load(const Quad8Coords& x, double density) {
+    Eigen::Matrix<double, 24, 1> f = Eigen::Matrix<double, 24, 1>::Zero();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const SectionPoint p = section_point(x, i, j);
+            for (int a = 0; a < 8; ++a) f[3 * a] += harmonic_weight(0) * density * p.N[a] * p.r * p.weight;
+        }
+    return f;
+}
+
+SectionStress harmonic_quad8_stress(const Quad8Coords& x, const Matrix6& C, const Eigen::Matrix<double, 24, 1>& u) {
+    SectionStress out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const SectionPoint p = section_point(x, i, j);
+            // The n = 0 strains (rr, tt, zz, tz, rz, rt) of the header's B.
+            Eigen::Matrix<double, 6, 1> eps = Eigen::Matrix<double, 6, 1>::Zero();
+            for (int a = 0; a < 8; ++a) {
+                const double U = u[3 * a], V = u[3 * a + 1], W = u[3 * a + 2];
+                const double Nr = p.dN(a, 0), Nz = p.dN(a, 1), N_r = p.N[a] / p.r;
+                eps[0] += Nr * U;
+                eps[1] += N_r * U;
+                eps[2] += Nz * W;
+                eps[3] += Nz * V;
+                eps[4] += Nz * U + Nr * W;
+                eps[5] += (Nr - N_r) * V;
+            }
+            const Eigen::Matrix<double, 6, 1> sigma = C * eps;
+            out.col(3 * i + j) << sigma[0], sigma[1], sigma[2], sigma[4];
+        }
+    return out;
+}
+
+Quad8Matrix harmonic_quad8_centrifugal(const Quad8Coords& x, double density, const SectionStress& sigma, int n) {
+    const Eigen::Matrix3d L = spin_operator(n);
+    const Eigen::Matrix3d LtL = L.transpose() * L;
+    const double w_n = harmonic_weight(n);
+    Quad8Matrix out = Quad8Matrix::Zero();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const SectionPoint p = section_point(x, i, j);
+            const Eigen::Vector4d s = sigma.col(3 * i + j);  // rr, tt, zz, rz
+            Eigen::Matrix2d S;
+            S << s[0], s[3], s[3], s[2];
+            const double around = s[1] / (p.r * p.r) - density;
+            for (int a = 0; a < 8; ++a)
+                for (int b = 0; b < 8; ++b) {
+                    const double in_section = p.dN.row(a) * S * p.dN.row(b).transpose();
+                    out.block<3, 3>(3 * a, 3 * b) += (w_n * p.weight) * (in_section * Eigen::Matrix3d::Identity() +
+                                                                        around * p.N[a] * p.N[b] * LtL);
+                }
         }
     return out;
 }

@@ -66,6 +66,31 @@ HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C,
 // 0]] on (a, b) for n >= 1, G = 2 Gamma_0 for n = 0.
 Quad8Matrix harmonic_quad8_spin_coupling(const Quad8Coords& x, double density, int n);
 
+// The centrifugal prestress of a spinning section (effects/rotation.hpp):
+// the stress of the axisymmetric (n = 0) static solve under the body force
+// rho r e_r per unit Omega^2, at each of a cell's 3 x 3 Gauss points, in the
+// order (rr, tt, zz, rz) (the shears tz, rt are those of torsion and stay
+// zero under a radial load). Pa per (rad/s)^2.
+using SectionStress = Eigen::Matrix<double, 4, 9>;
+
+// The body force rho r e_r per unit Omega^2 of one cell on its (U, V, W)
+// nodal values for n = 0: 2 pi int rho N_a r (1, 0, 0) r dr dz.
+Eigen::Matrix<double, 24, 1> harmonic_quad8_centrifugal_load(const Quad8Coords& x, double density);
+
+// The n = 0 stress C eps of the cell's nodal displacements u (U, V, W per
+// node) at its Gauss points, as SectionStress.
+SectionStress harmonic_quad8_stress(const Quad8Coords& x, const Matrix6& C, const Eigen::Matrix<double, 24, 1>& u);
+
+// K_Omega of one cell for wave number n, on one family (the sin family's is
+// the same): the geometric stiffness of the prestress sigma_1 less the
+// convective softening M_L (effects/rotation.hpp),
+//     w_n int [ sum_k grad N^T S grad N (component k) + (sigma_tt / r^2 - rho) N^T L_n^T L_n N ] r dr dz,
+// S = [[s_rr, s_rz], [s_rz, s_zz]] on (d/dr, d/dz), L_n as in the spin
+// coupling: |L_n (U, V, W)|^2 = (n U - V)^2 + (U - n V)^2 + n^2 W^2 is
+// r^2 |grad u|^2 around the circumference and |d u / d theta|^2 both
+// (n = 0: U^2 + V^2). A thin free ring has sigma_tt = rho r^2: the two cancel.
+Quad8Matrix harmonic_quad8_centrifugal(const Quad8Coords& x, double density, const SectionStress& sigma, int n);
+
 // A distributed spring along a straight 3-node section edge (ends a, b and
 // middle node m, in the order a, b, m), stiffness per unit revolved area
 // diag(k_r, k_theta, k_z) on (U, V, W): returns the 9 x 9 matrix

@@ -58,6 +58,25 @@ TEST_CASE("coremodal run on a case with one speed reports the modes at that spee
     CHECK(report.find(" Hz | FW | bending n=1 m=0 |") != std::string::npos);
 }
 
+TEST_CASE("The summary lists centrifugal stiffening exactly when the harmonic level simulated it", "[app][rotation]") {
+    TempDir dir("campbell_effects");
+    dir.write("on.toml", kSmall + "[rotation]\nspeed = \"3000 rpm\"\n");
+    dir.write("off.toml", kSmall + "[rotation]\nspeed = \"3000 rpm\"\ncentrifugal_stiffening = false\n");
+    for (const char* name : {"on", "off"}) {
+        const Run r = run_coremodal(dir, std::string("run ") + name + ".toml --model harmonic --output " + name +
+                                             " --no-plots");
+        INFO(r.err);
+        REQUIRE(r.exit_code == 0);
+        const std::string summary = slurp(dir.path / name / "summary.json");
+        const bool on = std::string(name) == "on";
+        CHECK((summary.find("\"centrifugal_stiffening\"") != std::string::npos) == on);
+        CHECK((summary.find("centrifugal stiffening: the steady stress of the spinning section") != std::string::npos) ==
+              on);
+        CHECK((summary.find("[rotation] centrifugal_stiffening = false") != std::string::npos) == !on);
+        CHECK(summary.find("\"gyroscopic\"") != std::string::npos);
+    }
+}
+
 TEST_CASE("coremodal campbell refuses what it cannot do before any work, and writes nothing", "[app][rotation]") {
     TempDir dir("campbell_bad");
     dir.write("still.toml", kSmall);

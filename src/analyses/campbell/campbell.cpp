@@ -1,6 +1,7 @@
 #include "analyses/campbell/campbell.hpp"
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
@@ -95,16 +96,36 @@ std::string omega_squared_note(const RotationSpec& rotation, const std::string& 
            "the convective Omega^2 term is left out with it (" + why + ")";
 }
 
-std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std::vector<int>& wave_numbers) {
+// The largest hoop and radial stress of the prestress at the sweep's top speed, MPa.
+std::string prestress_size(const CentrifugalPrestress& p, const RotationSpec& rotation) {
+    double hoop = 0, radial = 0;
+    for (const SectionStress& s : p.stress) {
+        hoop = std::max(hoop, s.row(1).cwiseAbs().maxCoeff());
+        radial = std::max(radial, s.row(0).cwiseAbs().maxCoeff());
+    }
+    const double spin = 2 * M_PI * rotation.speeds_hz.back(), mpa = spin * spin / 1e6;
+    return "at " + significant(rotation.speeds_hz.back() * 60) + " rpm the largest hoop stress is " +
+           significant(hoop * mpa) + " MPa and the largest radial stress " + significant(radial * mpa) + " MPa";
+}
+
+std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const RotatingHarmonics& harmonics) {
     std::string ns;
-    for (int n : wave_numbers) ns += (ns.empty() ? "" : ", ") + std::to_string(n);
+    for (int n : harmonics.wave_numbers()) ns += (ns.empty() ? "" : ", ") + std::to_string(n);
     std::vector<std::string> notes{
         "rotation at the harmonic level: the gyroscopic term of every spinning body of revolution (core, rest paper, "
         "chuck bodies and shafts: the material carried through the stationary frame at Omega d/dtheta, which couples "
         "the two families of each wave number n >= 1 into forward and backward travelling waves); bearings and "
         "frames do not spin; wave numbers n = " + ns + ", chosen at rest"};
-    notes.push_back(omega_squared_note(rotation, "the two balance in part; a gyroscopic model to first order in Omega, "
-                                                 "as the beam level's"));
+    if (const CentrifugalPrestress* p = harmonics.prestress())
+        notes.push_back("centrifugal stiffening: the steady stress of the spinning section (an axisymmetric static "
+                        "solve under the body force rho Omega^2 r with the scene's supports; " +
+                        prestress_size(*p, rotation) +
+                        ") as geometric stiffness, with the convective softening -Omega^2 rho |du/dtheta|^2 that "
+                        "goes with it in the stationary frame (effects/rotation.hpp)");
+    else
+        notes.push_back("terms of order Omega^2 not included ([rotation] centrifugal_stiffening = false): the "
+                        "centrifugal prestress and the convective softening are left out together (they balance "
+                        "in part; a gyroscopic model to first order in Omega, as the beam level's)");
     return notes;
 }
 
@@ -117,6 +138,9 @@ std::vector<std::string> solid_notes(const RotationSpec& rotation) {
                                                  "levels'"));
     return notes;
 }
+
+// The levels with a centrifugal term (effects/rotation.hpp).
+bool level_has_centrifugal(const std::string& level) { return level == "harmonic"; }
 
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
     for (const RotatingMode& m : rest)
@@ -197,8 +221,9 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     out.completeness = "per wave number n, the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G "
                        "at the band edge counts the modes below it (every eigenvalue of Q crosses zero downwards)";
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes);
-    out.notes = harmonic_notes(rotation, harmonics.wave_numbers());
+    const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes,
+                                      rotation.centrifugal_stiffening);
+    out.notes = harmonic_notes(rotation, harmonics);
     out.n_dofs = harmonics.n_dofs();
     sweep_from_rest(scene, rotation, reported, [&](double speed) { return harmonics.modes_at(speed); }, out);
 }
@@ -261,7 +286,7 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     out.excitation_orders = rotation.excitation_orders;
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.from_web_speed = rotation.from_web_speed;
-    out.effects = rotating_effect_names(scene, rotation);
+    out.effects = rotating_effect_names(scene, rotation, level_has_centrifugal(scene.model));
     if (scene.model == "beam")
         run_beam_campbell(scene, rotation, options, out);
     else if (scene.model == "harmonic")

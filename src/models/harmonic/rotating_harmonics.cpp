@@ -87,7 +87,7 @@ struct RotatingHarmonics::Harmonic {
 
 RotatingHarmonics::~RotatingHarmonics() = default;
 
-RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window)
+RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening)
     : scene_(scene),
       window_(window),
       section_(make_section_mesh(make_tube_section(scene), scene.supports.clamps)),
@@ -117,9 +117,11 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window)
                std::to_string(window) + ": ask for fewer modes";
     });
     const double edge = window_edge(merged, window).value_or(1e300);
+    if (centrifugal_stiffening)
+        prestress_ = std::make_unique<CentrifugalPrestress>(centrifugal_prestress(scene, section_, materials));
     for (size_t n = 0; n < rest.size(); ++n) {
         auto h = std::make_unique<Harmonic>();
-        h->problem = assemble_spinning_harmonic(scene, section_, materials, static_cast<int>(n));
+        h->problem = assemble_spinning_harmonic(scene, section_, materials, static_cast<int>(n), prestress_.get());
         const long in_window = std::count_if(rest[n].begin(), rest[n].end(), [&](double l) { return l <= edge * (1 + 1e-9); });
         h->n_modes = static_cast<int>(in_window) + kExtraModesPerHarmonic;
         h->lambda_scale = n <= 1 ? request.lambda_scale : rest_lowest[n];

@@ -28,8 +28,10 @@ namespace coremodal {
 class RotatingHarmonics {
 public:
     // The section, its materials and the spinning operator sets of the wave
-    // numbers the lowest `window` modes at rest (pairs counted twice) need.
-    RotatingHarmonics(const Scene& scene, int window);
+    // numbers the lowest `window` modes at rest (pairs counted twice) need;
+    // with the centrifugal term (the prestress solved once) when
+    // `centrifugal_stiffening`.
+    RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening = false);
     ~RotatingHarmonics();
 
     // The lowest `window` modes at spin speed f_rot (Hz), ascending; each
@@ -40,6 +42,8 @@ public:
     long n_dofs() const;                      // the largest problem's DOFs
     std::vector<int> wave_numbers() const;    // the n solved at every speed
     double max_relative_residual() const { return max_residual_; }
+    // The centrifugal prestress, when the term is included.
+    const CentrifugalPrestress* prestress() const { return prestress_.get(); }
 
 private:
     struct Harmonic;
@@ -50,6 +54,7 @@ private:
     std::vector<int> frame_nodes_;
     std::unique_ptr<ModeClassifier> classifier_;
     std::vector<std::unique_ptr<Harmonic>> harmonics_;
+    std::unique_ptr<CentrifugalPrestress> prestress_;
     double lambda_scale_ = 1;
     mutable double max_residual_ = 0;
 };

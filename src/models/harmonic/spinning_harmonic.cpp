@@ -35,7 +35,8 @@ std::vector<double> sub_values(Vec x, IS rows) {
 }  // namespace
 
 SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMesh& mesh,
-                                            const std::vector<PartMaterial>& materials, int n) {
+                                            const std::vector<PartMaterial>& materials, int n,
+                                            const CentrifugalPrestress* prestress) {
     HarmonicSystem rest = assemble_harmonic(scene, mesh, materials, n);
     SpinningHarmonic out;
     out.n = n;
@@ -44,10 +45,13 @@ SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMes
     const MPI_Comm comm = PetscObjectComm((PetscObject)rest.operators.K());
     PetscMatrix gamma = assemble_harmonic_spin_coupling(mesh, materials, rest.dofs, n, comm);
     COREMODAL_PETSC(MatScale(gamma, 2.0));  // G = 2 x the cross term's matrix (header)
+    PetscMatrix centrifugal;
+    if (prestress) centrifugal = assemble_harmonic_centrifugal(mesh, materials, rest.dofs, n, prestress->stress, comm);
     if (n == 0) {
         out.operators.matrices[Term::stiffness] = std::move(rest.operators.matrices[Term::stiffness]);
         out.operators.matrices[Term::mass] = std::move(rest.operators.matrices[Term::mass]);
         out.operators.matrices[Term::gyroscopic] = std::move(gamma);
+        if (prestress) out.operators.matrices[Term::centrifugal] = std::move(centrifugal);
         return out;
     }
     PetscMatrix minus_gamma;
@@ -58,6 +62,8 @@ SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMes
     out.operators.matrices[Term::stiffness] = block_matrix(comm, K, nullptr, nullptr, K, true, rows);
     out.operators.matrices[Term::mass] = block_matrix(comm, M, nullptr, nullptr, M, true);
     out.operators.matrices[Term::gyroscopic] = block_matrix(comm, nullptr, gamma, minus_gamma, nullptr, false);
+    if (prestress)
+        out.operators.matrices[Term::centrifugal] = block_matrix(comm, centrifugal, nullptr, nullptr, centrifugal, true);
     out.cos_rows = std::move(rows[0]);
     out.sin_rows = std::move(rows[1]);
     return out;

@@ -7,7 +7,10 @@
 // n >= 1: the spin couples the cos and sin families (the two members of a
 // pair at rest), so both are unknowns, q = (a, b):
 //     K2 = [[K, 0], [0, K]],  M2 = [[M, 0], [0, M]],  G2 = 2 [[0, Gamma], [-Gamma, 0]]
-// (element/harmonic_element.hpp, harmonic_quad8_spin_coupling). A mode
+// (element/harmonic_element.hpp, harmonic_quad8_spin_coupling). With a
+// centrifugal prestress the set also has K_Omega (Term::centrifugal, per unit
+// Omega^2): K_Omega on each family, [[K_Omega, 0], [0, K_Omega]] for n >= 1
+// (harmonic_quad8_centrifugal). A mode
 // q = (a, b) e^{i omega t} travels with the spin (forward) when
 // Im(a . conj b) > 0: a forward wave cos(n theta - omega t) is a = cos, b = sin.
 // At rest the problem is the harmonic level's, each pair found twice.
@@ -17,6 +20,7 @@
 #include "assembly/operator_set.hpp"
 #include "geometry/section_mesh.hpp"
 #include "material/material.hpp"
+#include "models/harmonic/centrifugal_prestress.hpp"
 #include "scene/scene.hpp"
 
 #include <vector>
@@ -32,8 +36,10 @@ struct SpinningHarmonic {
     int n_families() const { return n == 0 ? 1 : 2; }
 };
 
+// `prestress` null: no centrifugal term (gyroscopic only).
 SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMesh& mesh,
-                                            const std::vector<PartMaterial>& materials, int n);
+                                            const std::vector<PartMaterial>& materials, int n,
+                                            const CentrifugalPrestress* prestress = nullptr);
 
 // The values of a vector of the set on rank 0 (empty elsewhere), split into
 // the cos and sin families (sin empty for n = 0).
