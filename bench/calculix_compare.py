@@ -1,0 +1,117 @@
+#!/usr/bin/env python3
+"""coremodal's solid level against CalculiX (Debian calculix-ccx) on the same
+hex20 mesh (issue 19, docs/performance.md "Against CalculiX").
+
+For each case: build/coremodal_calculix_deck writes coremodal's own mesh of
+the case as a CalculiX deck (C3D20 cells, cylindrically orthotropic
+materials, rigid clamps, the case's modes); then `coremodal run` and `ccx`
+run alternately, --repeats times each, every process timed whole (wall
+clock and peak resident memory of the child, os.wait4). Prints the medians,
+their ratio and the largest relative frequency difference (CalculiX prints 7
+significant digits, so agreement shows as ~1e-7 at best).
+
+    /usr/bin/python3 bench/calculix_compare.py [--repeats 3] [--threads 2] [--mesh coarse] CASE.toml...
+
+--mesh replaces the case's [mesh] by a level (coarse, default, fine); the
+default keeps the case's own. ccx runs with OMP_NUM_THREADS = --threads
+(its SPOOLES solver's threads); coremodal as a user runs it.
+"""
+import argparse
+import json
+import os
+import pathlib
+import platform
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+CORE = ROOT / "build" / "coremodal"
+DECK = ROOT / "build" / "coremodal_calculix_deck"
+
+
+def timed(cmd, cwd, env=None):
+    """(wall seconds, peak RSS in GiB) of one child process; raises on failure."""
+    start = time.perf_counter()
+    with open(pathlib.Path(cwd) / "log.txt", "ab") as log:
+        p = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=log, stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - start
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"{' '.join(map(str, cmd))} failed (see {cwd}/log.txt)")
+    return wall, usage.ru_maxrss / 2**20
+
+
+def case_at_mesh(case, mesh, folder):
+    """The case, its [mesh] table replaced by `level = mesh` (or as it is)."""
+    text = pathlib.Path(case).read_text()
+    if mesh:
+        text = re.sub(r"(?ms)^\[mesh\].*?(?=^\[|\Z)", "", text)
+        text = text.replace("[analysis]", f'[mesh]\nlevel = "{mesh}"\n\n[analysis]', 1)
+    path = pathlib.Path(folder) / pathlib.Path(case).name
+    path.write_text(text)
+    return path
+
+
+def ccx_frequencies(dat):
+    """The CYCLES/TIME column of CalculiX's eigenvalue table."""
+    text = pathlib.Path(dat).read_text()
+    table = text.split("E I G E N V A L U E   O U T P U T")[1].split("P A R T I C I P A T I O N")[0]
+    return [float(m.group(1)) for m in re.finditer(r"^\s+\d+\s+\S+\s+\S+\s+(\S+)\s+\S+\s*$", table, re.M)]
+
+
+def coremodal_frequencies(folder):
+    summary = json.loads((pathlib.Path(folder) / "summary.json").read_text())
+    return [m["frequency_hz"] for m in summary["modes"]], summary
+
+
+def compare(case, args, work):
+    path = case_at_mesh(case, args.mesh, work)
+    out = subprocess.run([str(DECK), str(path), str(pathlib.Path(work) / "deck.inp")], check=True,
+                         capture_output=True, text=True).stdout.strip()
+    env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
+    runs = {"coremodal": [], "ccx": []}
+    for r in range(args.repeats):
+        folder = pathlib.Path(work) / f"run{r}"
+        runs["coremodal"].append(timed([str(CORE), "run", str(path), "-o", str(folder), "--no-plots"], work))
+        runs["ccx"].append(timed(["ccx", "-i", "deck"], work, env))
+    ours, summary = coremodal_frequencies(pathlib.Path(work) / "run0")
+    theirs = ccx_frequencies(pathlib.Path(work) / "deck.dat")
+    n = min(len(ours), len(theirs))
+    diff = max(abs(a - b) / b for a, b in zip(ours[:n], theirs[:n]))
+    med = {k: (statistics.median(w for w, _ in v), max(m for _, m in v)) for k, v in runs.items()}
+    return {"case": pathlib.Path(case).stem, "mesh": args.mesh or "case's", "deck": out,
+            "dofs": summary.get("model", {}).get("n_dofs") or summary.get("n_dofs"), "modes": n,
+            "coremodal_s": med["coremodal"][0], "coremodal_gib": med["coremodal"][1],
+            "ccx_s": med["ccx"][0], "ccx_gib": med["ccx"][1], "max_rel_diff": diff,
+            "all_s": {k: [round(w, 2) for w, _ in v] for k, v in runs.items()}}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("cases", nargs="+")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--mesh", default="")
+    args = ap.parse_args()
+    for tool in (CORE, DECK):
+        if not tool.exists():
+            sys.exit(f"{tool} is missing: bash scripts/build.sh")
+    print(f"machine: {platform.node()}, {os.cpu_count()} cores; load before: {os.getloadavg()[0]:.2f}")
+    print("| case | mesh | DOFs | modes | coremodal s | GiB | CalculiX s | GiB | CalculiX / coremodal | max rel. freq. diff |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for case in args.cases:
+        with tempfile.TemporaryDirectory(prefix="ccx-") as work:
+            r = compare(case, args, work)
+        print(f"| {r['case']} | {r['mesh']} | {r['dofs']} | {r['modes']} | {r['coremodal_s']:.1f} | "
+              f"{r['coremodal_gib']:.2f} | {r['ccx_s']:.1f} | {r['ccx_gib']:.2f} | "
+              f"{r['ccx_s'] / r['coremodal_s']:.2f} | {r['max_rel_diff']:.1e} |", flush=True)
+        print(f"<!-- {r['case']}: runs {r['all_s']}; deck: {r['deck']} -->", flush=True)
+    print(f"load after: {os.getloadavg()[0]:.2f}")
+
+
+if __name__ == "__main__":
+    main()
