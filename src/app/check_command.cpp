@@ -81,8 +81,8 @@ Command add_check_command(CLI::App& app) {
         "check", "Read and validate a case file; print the resolved scene, its effects and the model level (no solve)");
     cmd->add_option("case", options->case_file, "case file (TOML)")->required();
     cmd->add_option("-m,--mesh", options->mesh_level, "mesh level, as for run: coarse, default, fine, very_fine");
-    cmd->add_option("--model", options->model, "model level, as for run: solid, harmonic, auto, beam")
-        ->check(CLI::IsMember({"solid", "harmonic", "auto", "beam"}));
+    cmd->add_option("--model", options->model, "model level, as for run: solid, harmonic, coupled, auto, beam")
+        ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
     return {cmd, [options] { return check_case(*options); }, false};
 }
 

@@ -23,9 +23,10 @@ struct Command {
 inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const std::string& what = "") {
     return cmd->add_option("--model", model,
                            "model level" + what + ", overriding the case's model key: solid (3D), harmonic "
-                           "(axisymmetric scenes, one 2D problem per wave number n), auto (harmonic where the scene "
-                           "allows it, else solid), beam")
-        ->check(CLI::IsMember({"solid", "harmonic", "auto", "beam"}));
+                           "(axisymmetric scenes, one 2D problem per wave number n), coupled (harmonics coupled by "
+                           "segmented chucks, one 2D-cost problem), auto (harmonic where the scene allows it, else "
+                           "solid), beam")
+        ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
 }
 // -o/--output and --force of a command that writes one results folder
 // (default results/<case name><suffix>).

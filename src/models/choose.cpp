@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "models/beam/beam_level.hpp"
+#include "models/coupled/coupled_level.hpp"
 #include "models/harmonic/harmonic_level.hpp"
 #include "models/solid/solid_level.hpp"
 
@@ -62,6 +63,7 @@ std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
     const std::string level = chosen_level(scene);
     if (level == "beam") return std::make_unique<BeamLevel>();
     if (level == "harmonic") return std::make_unique<HarmonicLevel>();
+    if (level == "coupled") return std::make_unique<CoupledLevel>();
     return std::make_unique<SolidLevel>();
 }
 

@@ -9,7 +9,7 @@ const std::vector<KeyDoc>& case_key_docs() {
     static const std::vector<KeyDoc> docs = {
         {"", "name", "the file name without .toml", "case name, used in output file names and summaries"},
         {"", "description", "\"\"", "free text, echoed in the summary"},
-        {"", "model", "\"solid\"", "model level: 3D solid, axisymmetric-harmonic section, auto, or Timoshenko beam network (run --model overrides it)", "solid harmonic auto beam"},
+        {"", "model", "\"solid\"", "model level: 3D solid, axisymmetric-harmonic section, coupled harmonics (segmented chucks), auto, or Timoshenko beam network (run --model overrides it)", "solid harmonic coupled auto beam"},
         {"", "core", kRequired, "the paperboard core"},
         {"", "rest_paper", "none: a bare core", "paper still wound on the core, over its full length"},
         {"", "supports", "none: free-free", "how the core is held: free, rigid clamps or elastic chucks"},

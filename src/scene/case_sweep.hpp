@@ -74,7 +74,7 @@ public:
     const std::vector<SweepParameter>& parameters() const;
     const SweepOptions& options() const;
     // The same sweep with every point at model level `model` (the command
-    // line's --model: solid, harmonic, auto, beam); "" keeps the case's.
+    // line's --model: solid, harmonic, coupled, auto, beam); "" keeps the case's.
     CaseSweep with_model(const std::string& model) const;
 
     int n_points() const;

@@ -126,8 +126,8 @@ struct Scene {
     std::string source_file;  // path of the case file, as given
     std::string description;  // free text from the case file, "" when not given
     // Model level: "solid" (3D FE), "harmonic" (axisymmetric, one 2D problem
-    // per wave number n), "auto" (harmonic where the scene allows, models/choose.cpp
-    // decides) or "beam" (Timoshenko beam network).
+    // per n), "coupled" (harmonics coupled by segmented chucks), "auto" (the
+    // cheapest that fits: models/choose.cpp) or "beam" (Timoshenko network).
     std::string model = "solid";
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;

@@ -113,6 +113,10 @@ std::string kept_modes_assumption(const ResponseChecks& checks, const std::strin
 
 void require_response_level(const Scene& scene) {
     const std::string level = chosen_level(scene);
+    if (level == "coupled")
+        throw InputError(scene.source_file + ": [response] at the coupled level: the coupled harmonics have no "
+                         "spinning terms yet (docs/harmonic.md); expected a body of revolution at model = "
+                         "\"harmonic\", \"solid\" or \"beam\"");
     if (level == "harmonic") require_axisymmetric(scene);
     if (const auto why = why_not_axisymmetric(scene); why && level == "solid")
         throw InputError(scene.source_file + ": [response] at the solid level: " + *why +

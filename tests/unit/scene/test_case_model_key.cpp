@@ -31,9 +31,9 @@ TEST_CASE("The model level is solid unless the case file says harmonic or beam",
 
 TEST_CASE("An unknown model level names file, line, key and the levels there are", "[scene][case_file][model]") {
     CHECK(error_of("model = \"beem\"\n" + kCore) ==
-          "cases/x.toml:1:9: model = \"beem\": unknown value; did you mean \"beam\"?; expected one of solid, harmonic, auto, beam");
+          "cases/x.toml:1:9: model = \"beem\": unknown value; did you mean \"beam\"?; expected one of solid, harmonic, coupled, auto, beam");
     CHECK(error_of("model = \"shell\"\n" + kCore) ==
-          "cases/x.toml:1:9: model = \"shell\": unknown value; expected one of solid, harmonic, auto, beam");
+          "cases/x.toml:1:9: model = \"shell\": unknown value; expected one of solid, harmonic, coupled, auto, beam");
     CHECK(error_of("model = 1\n" + kCore) == "cases/x.toml:1:9: model = 1: expected a string in quotes");
     CHECK(error_of("modle = \"beam\"\n" + kCore) ==
           "cases/x.toml:1:1: unknown key 'modle' at the top level; did you mean 'model'?");

@@ -1,0 +1,327 @@
+// The coupled-harmonic level's steps 2–6, numbered as in a run: the
+// section, then the coupled problem for growing N until it has converged,
+// then the modes named on the revolved section.
+#include "models/coupled/coupled_level.hpp"
+
+#include "assembly/chuck_supports.hpp"
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "common/stopwatch.hpp"
+#include "eigensolve/tolerances.hpp"
+#include "geometry/tube_model.hpp"
+#include "models/choose.hpp"
+#include "models/harmonic/harmonic_level.hpp"
+#include "models/harmonic/harmonic_shapes.hpp"
+#include "models/part_materials.hpp"
+#include "models/solve_steps.hpp"
+#include "modes/classify.hpp"
+#include "modes/mac.hpp"
+#include "modes/mode_shapes.hpp"
+#include "output/run_folder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coremodal {
+
+int CoupledModes::dominant_n(size_t k) const {
+    const std::vector<double>& e = block_energy.at(k);
+    const size_t b = std::max_element(e.begin(), e.end()) - e.begin();
+    return dofs.blocks.at(b).harmonic.n;
+}
+
+namespace {
+
+std::vector<double> block_values(const std::vector<double>& x, const CoupledBlock& block) {
+    return {x.begin() + block.offset, x.begin() + block.offset + block.dofs.n_dofs};
+}
+
+// The rigid motions (x, y, z, about z) on the coupled DOFs: x lives in
+// (1, cos), y in (1, sin) (the same field turned by 90 deg), z and about z in n = 0.
+std::array<std::vector<double>, 4> rigid_fields(const SectionMesh& section, const CoupledDofs& dofs) {
+    std::array<std::vector<double>, 4> r;
+    for (auto& v : r) v.assign(dofs.n_dofs, 0.0);
+    const auto put = [&](int d, int n, Family f, RigidMotion motion) {
+        const int b = dofs.block_of(n, f);
+        if (b < 0) return;
+        const CoupledBlock& block = dofs.blocks[b];
+        const std::vector<double> field = harmonic_rigid_field(section, block.dofs, n, motion);
+        std::copy(field.begin(), field.end(), r[d].begin() + block.offset);
+    };
+    put(0, 1, Family::cos, RigidMotion::x);
+    put(1, 1, Family::sin, RigidMotion::x);
+    put(2, 0, Family::cos, RigidMotion::z);
+    put(3, 0, Family::cos, RigidMotion::rz);
+    return r;
+}
+
+}  // namespace
+
+namespace {
+
+// One independent component's verified modes, mapped onto all blocks' DOFs.
+void solve_component(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                     const CoupledComponent& component, const SolveRequest& request, CoupledModes& out) {
+    CoupledSystem system = assemble_coupled(scene, section, materials, component.dofs);
+    out.mass_kg = std::max(out.mass_kg, system.operators.model_mass);  // the block n = 0 carries it
+    out.n_coupling_entries += system.n_coupling_entries;
+    std::string blocks;
+    for (const CoupledBlock& b : component.dofs.blocks)
+        if (b.harmonic.n < 7) blocks += std::to_string(b.harmonic.n) + (b.harmonic.family == Family::sin ? "s " : "c ");
+    const SolvedModes solved = solve_for_case(scene, system.operators, request, [](const std::string&) {},
+                                              "the coupled problem of the harmonics " + blocks + "... N = " +
+                                                  std::to_string(component.dofs.n_max) + ": ");
+    // Counts add over independent problems, as over the harmonic level's wave numbers.
+    Verification& v = out.verification;
+    const Verification& w = solved.verification;
+    v.max_relative_residual = std::max(v.max_relative_residual, w.max_relative_residual);
+    v.max_orthonormality_error = std::max(v.max_orthonormality_error, w.max_orthonormality_error);
+    v.check_shift = std::min(v.check_shift, w.check_shift);
+    v.negative_pivots_at_shift += w.negative_pivots_at_shift;
+    v.modes_below_shift += w.modes_below_shift;
+    v.eigenvalues_below_band += w.eigenvalues_below_band;
+    v.complete = v.complete && w.complete;
+    const std::array<std::vector<double>, 4> rigid = mpi_rank() == 0 ? rigid_fields(section, out.dofs)
+                                                                       : std::array<std::vector<double>, 4>{};
+    for (size_t k = 0; k < solved.vectors.size(); ++k) {
+        const PetscVector& x = solved.vectors[k];
+        PetscVector Mx;
+        COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
+        COREMODAL_PETSC(MatMult(system.operators.M(), x, Mx));
+        const std::vector<double> v_local = gather_to_root(x), mv_local = gather_to_root(Mx);
+        out.eigenvalues.push_back(solved.eigenvalues[k]);
+        out.residuals.push_back(solved.relative_residuals[k]);
+        if (mpi_rank() != 0) continue;
+        // Onto all blocks' DOFs; M is block diagonal (mass never couples
+        // harmonics), so x^T M x splits by block.
+        std::vector<double> v(out.dofs.n_dofs, 0.0), mv(out.dofs.n_dofs, 0.0), energy(out.dofs.blocks.size(), 0.0);
+        for (size_t b = 0; b < component.dofs.blocks.size(); ++b) {
+            const CoupledBlock& block = component.dofs.blocks[b];
+            const int to = component.offset_in[b];
+            for (int i = 0; i < block.dofs.n_dofs; ++i) {
+                v[to + i] = v_local[block.offset + i];
+                mv[to + i] = mv_local[block.offset + i];
+            }
+            double e = 0;
+            for (int i = 0; i < block.dofs.n_dofs; ++i) e += v_local[block.offset + i] * mv_local[block.offset + i];
+            energy[out.dofs.block_of(block.harmonic.n, block.harmonic.family)] = e;
+        }
+        std::array<double, 4> g{};
+        for (int d = 0; d < 4; ++d)
+            for (int i = 0; i < out.dofs.n_dofs; ++i) g[d] += rigid[d][i] * mv[i];
+        out.block_energy.push_back(std::move(energy));
+        out.gamma.push_back(g);
+        out.vectors.push_back(std::move(v));
+    }
+}
+
+}  // namespace
+
+CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                           int n_max, const SolveRequest& request) {
+    CoupledModes all;
+    all.dofs = coupled_dofs(scene, section, n_max);
+    all.verification.complete = true;
+    all.verification.check_shift = 1e300;
+    const std::vector<PadLayer> pads = pad_layers(scene);
+    // Each independent problem for the modes asked of the whole: every one of
+    // its eigenvalues below the merged band edge is among them (it cannot hold
+    // more of the merged lowest than were asked).
+    for (const CoupledComponent& component : coupled_components(all.dofs, pads))
+        solve_component(scene, section, materials, component, request, all);
+    // Frequency order over the components.
+    std::vector<size_t> order(all.eigenvalues.size());
+    for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return all.eigenvalues[a] < all.eigenvalues[b]; });
+    CoupledModes out;
+    out.dofs = all.dofs;
+    out.mass_kg = all.mass_kg;
+    out.n_coupling_entries = all.n_coupling_entries;
+    out.verification = all.verification;
+    out.n_components = static_cast<int>(coupled_components(all.dofs, pads).size());
+    for (size_t k : order) {
+        out.eigenvalues.push_back(all.eigenvalues[k]);
+        out.residuals.push_back(all.residuals[k]);
+        if (mpi_rank() != 0) continue;
+        out.vectors.push_back(std::move(all.vectors[k]));
+        out.block_energy.push_back(std::move(all.block_energy[k]));
+        out.gamma.push_back(all.gamma[k]);
+    }
+    return out;
+}
+
+std::vector<double> coupled_revolved_shape(const RevolvedMesh& revolved, const CoupledModes& modes, size_t k,
+                                           const std::vector<int>& frame_nodes) {
+    std::vector<double> u(3 * static_cast<size_t>(revolved.mesh.n_nodes()), 0.0);
+    const std::vector<double>& x = modes.vectors.at(k);
+    for (int n = 0; n <= modes.dofs.n_max; ++n) {
+        const int bc = modes.dofs.block_of(n, Family::cos), bs = modes.dofs.block_of(n, Family::sin);
+        const CoupledBlock& c = modes.dofs.blocks.at(bc);
+        const std::vector<double> sin_values = bs < 0 ? std::vector<double>{} : block_values(x, modes.dofs.blocks[bs]);
+        const std::vector<double> part = revolved_field(revolved, c.dofs, n, block_values(x, c), sin_values, frame_nodes);
+        for (size_t i = 0; i < u.size(); ++i) u[i] += part[i];
+    }
+    return u;
+}
+
+namespace {
+
+// The wanted eigenvalues: the lowest `modes` (with a pair's partner), or the band's.
+std::vector<double> wanted(const CoupledModes& m, const Scene& scene, const SolveRequest& request) {
+    std::vector<double> out;
+    for (double lambda : m.eigenvalues) {
+        if (request.lambda_max) {
+            if (in_band(lambda, request)) out.push_back(lambda);
+        } else if (static_cast<int>(out.size()) < scene.analysis.n_modes ||
+                   std::abs(lambda - out.back()) <= kClusterTolerance * std::abs(out.back())) {
+            out.push_back(lambda);  // a pair is never cut in half
+        }
+    }
+    return out;
+}
+
+double frequency_hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
+
+// The largest relative change of a wanted frequency between two truncations
+// (infinite when their counts differ). Rigid modes (f ~ 0) are compared on
+// the scale of the first elastic one.
+double max_change(const std::vector<double>& a, const std::vector<double>& b, double lambda_scale) {
+    if (a.size() != b.size()) return INFINITY;
+    double change = 0;
+    const double floor_hz = frequency_hz(lambda_scale);
+    for (size_t i = 0; i < a.size(); ++i) {
+        const double fa = frequency_hz(a[i]), fb = frequency_hz(b[i]);
+        change = std::max(change, std::abs(fa - fb) / std::max(fb, floor_hz));
+    }
+    return change;
+}
+
+std::string convergence_text(const std::vector<CoupledStep>& steps) {
+    std::string text;
+    for (const CoupledStep& s : steps) {
+        text += (text.empty() ? "" : "; ") + std::string("N=") + std::to_string(s.n_max) + ": " +
+                std::to_string(s.n_dofs) + " DOFs, f1 " + significant(s.frequencies_hz.empty() ? 0.0 : s.frequencies_hz.front(), 7) +
+                " Hz";
+        if (&s != &steps.front()) text += ", max change " + significant(s.max_change, 2);
+    }
+    return text;
+}
+
+}  // namespace
+
+LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
+    Stopwatch stage;
+    if (const auto why = one_sided_contact_reason(scene))
+        throw InputError(scene.source_file + ": model = \"coupled\": " + *why +
+                         "; expected model = \"solid\" or \"auto\"");
+    if (scene.mesh.file)
+        throw InputError(scene.source_file + ": model = \"coupled\": a [mesh] file; the coupled level meshes the "
+                                             "scene's own r-z section; expected model = \"solid\"");
+    const std::vector<PadLayer> pads = pad_layers(scene);
+    const int reach = coupling_reach(pads);
+    if (reach == 0) {
+        // Nothing couples: the harmonics are independent, which the harmonic level solves one at a time.
+        say("[2/7] no segmented expanding element: nothing couples the harmonics; the harmonic level solves them");
+        axisymmetric_ = std::make_unique<HarmonicLevel>();
+        return axisymmetric_->solve(scene, say);
+    }
+    LevelModes out;
+
+    // 2. Mesh: the r–z section (the harmonic level's) and its revolution, for showing the modes.
+    say("[2/7] meshing the r-z section (coupled harmonics: " + std::to_string(pads.size()) +
+        " segmented element(s) couple n to n +- j*" + std::to_string(reach) + ")");
+    const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
+    revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
+    add_frame_nodes(scene, revolved_->mesh);
+    const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
+    out.timing.mesh = stage.lap();
+
+    // 3-5. The coupled problem for N = N_s + 1, 2 N_s + 1, ...: solved, verified,
+    // counted, until one more step moves no wanted frequency by kCoupledTolerance
+    // and N reaches every wanted mode's dominant harmonic plus N_s.
+    say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
+        " nodes; one coupled eigenproblem over n = 0 ... N (SLEPc Krylov-Schur, shift-and-invert with " +
+        shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
+    const SolveRequest request = solve_request(scene);
+    say(shift_scale_text(scene));
+    steps_.clear();
+    std::optional<CoupledModes> previous, current;
+    for (int n_max = reach + 1;; n_max += reach) {
+        if (n_max > kMaxHarmonic)
+            throw SolveError("the coupled harmonics have not converged to " + significant(kCoupledTolerance, 2) +
+                             " by N = " + std::to_string(kMaxHarmonic) + " (" + convergence_text(steps_) +
+                             "); ask for fewer modes or use model = \"solid\"");
+        Stopwatch lap;
+        current = solve_coupled(scene, section, materials, n_max, request);
+        out.timing.factor_and_solve += lap.seconds();
+        CoupledStep step{n_max, current->dofs.n_dofs, {}, 0, lap.seconds()};
+        const std::vector<double> w = wanted(*current, scene, request);
+        for (double lambda : w) step.frequencies_hz.push_back(frequency_hz(lambda));
+        int n_top = 0;
+        for (size_t k = 0; k < w.size(); ++k) n_top = std::max(n_top, current->dominant_n(k));
+        MPI_Bcast(&n_top, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+        step.max_change = previous ? max_change(wanted(*previous, scene, request), w, request.lambda_scale) : 0;
+        say("      N = " + std::to_string(n_max) + ": " + std::to_string(step.n_dofs) + " DOFs, " +
+            std::to_string(w.size()) + " modes from " +
+            significant(step.frequencies_hz.empty() ? 0.0 : step.frequencies_hz.front(), 7) + " Hz" +
+            (previous ? ", largest change " + significant(step.max_change, 2) : std::string()) + ", " +
+            significant(step.seconds, 2) + " s" + (current->verification.complete ? "" : " (INCOMPLETE)"));
+        steps_.push_back(step);
+        if (previous && step.max_change <= kCoupledTolerance && n_max >= n_top + reach) break;
+        previous = std::move(current);
+    }
+    out.verification = current->verification;
+    out.info.level = "coupled";
+    out.info.element = "quad8";
+    out.info.n_dofs = current->dofs.n_dofs;
+    out.info.n_nodes = section.n_nodes();
+    out.info.n_elements = section.n_cells();
+    for (const auto& [name, nodes] : section.node_groups)
+        if (name.rfind("clamp_", 0) == 0) out.info.n_eliminated_nodes += static_cast<long>(nodes.size());
+    out.info.mass_kg = current->mass_kg;
+    out.info.expected_mass_kg = scene.mass_from_dimensions();
+    out.info.mesh_source = "generated section";
+    out.info.harmonics = "coupled n = 0 ... " + std::to_string(current->dofs.n_max) + " (both families for n >= 1), " +
+                         std::to_string(current->n_coupling_entries) + " coupling entries; " +
+                         convergence_text(steps_);
+    out.assumptions.push_back(
+        "coupled harmonics: each segmented element's spring layer acts on its pads only (k(theta) = k on the pads, "
+        "0 between), integrated exactly in theta; harmonics n = 0 ... " + std::to_string(current->dofs.n_max) +
+        ", N grown in steps of N_s = " + std::to_string(reach) + " until one step moved no wanted frequency by more "
+        "than " + significant(kCoupledTolerance, 2) + " (last step: " + significant(steps_.back().max_change, 2) + ")");
+    stage.lap();
+
+    // 6. Name every mode on the revolved mesh with the solid's classifier; effective masses from the rigid fields.
+    say("[5/7] classifying the modes");
+    const bool root = mpi_rank() == 0;
+    const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved_->mesh);
+    const ModeClassifier classifier(revolved_->mesh, roll_nodes(revolved_->mesh));
+    const std::optional<ModeSignatureSampler> signature =
+        root ? std::optional<ModeSignatureSampler>(std::in_place, revolved_->mesh) : std::nullopt;
+    const std::vector<double> w = wanted(*current, scene, request);
+    for (size_t k = 0, kept = 0; k < current->eigenvalues.size() && kept < w.size(); ++k) {
+        const double lambda = current->eigenvalues[k];
+        if (!in_band(lambda, request)) continue;
+        Mode mode = numbered_mode(static_cast<int>(++kept), lambda, current->residuals[k]);
+        if (root) {
+            const auto& g = current->gamma[k];
+            mode.effective_mass.x = g[0] * g[0];
+            mode.effective_mass.y = g[1] * g[1];
+            mode.effective_mass.z = g[2] * g[2];
+            mode.effective_mass.rz = g[3] * g[3];
+            mode.shape = coupled_revolved_shape(*revolved_, *current, k, frame_nodes);
+            mode.label = classifier.classify(mode.shape, lambda, request.lambda_scale);
+            mode.signature = (*signature)(mode.shape);
+        }
+        out.modes.push_back(std::move(mode));
+    }
+    out.timing.classify = stage.lap();
+    return out;
+}
+
+RunPictures CoupledLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
+    if (axisymmetric_) return axisymmetric_->write_shapes(folder, report, plots);
+    return write_mesh_shapes(folder, report, revolved_->mesh, plots);
+}
+
+}  // namespace coremodal

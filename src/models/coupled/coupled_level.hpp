@@ -1,0 +1,86 @@
+// The coupled-harmonic model level (model = "coupled", docs/harmonic.md,
+// "Coupled harmonics"): a scene whose bodies are bodies of revolution but
+// whose chucks hold the bore with segmented expanding elements. The
+// harmonics n = 0 ... N (both families) of the r–z section are unknowns of
+// one symmetric generalized problem, coupled by the pads
+// (models/coupled/coupled_system); solved once with shift-and-invert and
+// proven complete by its inertia; N grows in steps of the coupling reach
+// N_s until the wanted frequencies stop moving (kCoupledTolerance). Modes
+// are summed over the harmonics onto the revolved section and named there
+// as at the harmonic level.
+//
+// A scene nothing couples (no segmented element: the chuck factor's free
+// span, a scene of full bands) is left to the harmonic level, which solves
+// the same independent harmonics one at a time.
+#pragma once
+
+#include "eigensolve/modal_solver.hpp"
+#include "geometry/section_mesh.hpp"
+#include "models/coupled/coupled_system.hpp"
+#include "models/model_level.hpp"
+
+#include <array>
+#include <memory>
+#include <optional>
+
+namespace coremodal {
+
+// N is accepted when one more coupling step (N + N_s) moves none of the
+// wanted frequencies by more than this fraction. Harmonics only add
+// freedom (the spaces are nested), so each frequency falls monotonically
+// with N. The pads' edges make k(theta) jump, so the harmonic content of
+// the bore's motion decays algebraically and N converges slowly: on case
+// 10 the step changes fall from 4.6e-4 (N = 13) to 7.9e-5 (N = 22) and
+// 9e-6 (N = 40), and the truncation error left at a step is about 1.5 times
+// the step (docs/harmonic.md). 1e-4 leaves ~1.5e-4, half the solid's
+// circumferential error at its default 32 elements around (3e-4 on case 10).
+inline constexpr double kCoupledTolerance = 1e-4;
+
+// The verified modes of the coupled problem truncated at N (values on rank 0).
+struct CoupledModes {
+    CoupledDofs dofs;
+    double mass_kg = 0;
+    long n_coupling_entries = 0;
+    int n_components = 1;  // independent problems the pads leave (coupled_components)
+    std::vector<double> eigenvalues, residuals;
+    std::vector<std::vector<double>> vectors;           // M-normalised, on the coupled DOFs
+    std::vector<std::vector<double>> block_energy;      // per mode, per block: x_b^T M_b x_b (sums to 1)
+    std::vector<std::array<double, 4>> gamma;           // x^T M r for translation x, y, z and rotation about z
+    Verification verification;
+
+    // The wave number holding the largest share of mode k's kinetic energy.
+    int dominant_n(size_t k) const;
+};
+
+CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                           int n_max, const SolveRequest& request);
+
+// Node-major (x, y, z) displacements of every revolved node (frame nodes
+// too) for mode k: the sum over the blocks of revolved_field.
+std::vector<double> coupled_revolved_shape(const RevolvedMesh& revolved, const CoupledModes& modes, size_t k,
+                                           const std::vector<int>& frame_nodes);
+
+// One step of the search for N: the truncation and what moved.
+struct CoupledStep {
+    int n_max = 0;
+    long n_dofs = 0;
+    std::vector<double> frequencies_hz;  // the wanted modes'
+    double max_change = 0;  // largest relative change of a wanted frequency from the step before (0 for the first)
+    double seconds = 0;
+};
+
+class CoupledLevel : public ModelLevel {
+public:
+    int steps() const override { return 7; }
+    LevelModes solve(const Scene& scene, const Printer& say) override;
+    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+    // The steps of the search for N (empty when the harmonic level solved the scene).
+    const std::vector<CoupledStep>& convergence() const { return steps_; }
+
+private:
+    std::optional<RevolvedMesh> revolved_;
+    std::unique_ptr<ModelLevel> axisymmetric_;  // when nothing couples
+    std::vector<CoupledStep> steps_;
+};
+
+}  // namespace coremodal

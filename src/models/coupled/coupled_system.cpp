@@ -1,0 +1,228 @@
+#include "models/coupled/coupled_system.hpp"
+
+#include "common/error.hpp"
+#include "common/format.hpp"
+#include "effects/chuck_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coremodal {
+
+Scene with_full_bands(const Scene& scene) {
+    Scene band = scene;
+    for (ChuckSpec& chuck : band.supports.chucks)
+        for (ExpandingElement& e : chuck.expanding) {
+            e.segments = 0;
+            e.segment_angle = 0;
+        }
+    return band;
+}
+
+std::vector<PadLayer> pad_layers(const Scene& scene) {
+    std::vector<PadLayer> out;
+    const SupportEffects effects = support_effects(scene);
+    for (const ChuckEffects& chuck : effects.chucks)
+        for (const ExpandingElement& e : chuck.placement.expanding) {
+            if (e.segments == 0) continue;
+            if (!chuck.spring_layer)
+                throw InputError(scene.source_file + ": model = \"coupled\": the " + chuck.placement.chuck +
+                                 " chuck's segmented element at " + significant(e.center * 1e3) + " mm is " +
+                                 (chuck.bonded ? "bonded" : "in one-sided contact") +
+                                 "; the coupled level models segments as a spring layer; expected interface = "
+                                 "\"spring\" and an expanded chuck, or model = \"solid\"");
+            out.push_back({chuck.placement.chuck, chuck.placement.element_range(e), contact_arcs(e), e.segments,
+                           *chuck.spring_layer});
+        }
+    return out;
+}
+
+int coupling_reach(const std::vector<PadLayer>& pads) {
+    int reach = 0;
+    for (const PadLayer& p : pads) reach = reach == 0 ? p.segments : std::min(reach, p.segments);
+    return reach;
+}
+
+int CoupledDofs::block_of(int n, Family family) const {
+    for (size_t b = 0; b < blocks.size(); ++b)
+        if (blocks[b].harmonic == HarmonicFamily{n, family}) return static_cast<int>(b);
+    return -1;
+}
+
+CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max) {
+    const Scene band = with_full_bands(scene);
+    CoupledDofs out;
+    out.n_max = n_max;
+    for (int n = 0; n <= n_max; ++n) {
+        const HarmonicDofs dofs = harmonic_dofs(band, mesh, n);
+        for (Family f : {Family::cos, Family::sin}) {
+            if (n == 0 && f == Family::sin) continue;
+            out.blocks.push_back({{n, f}, dofs, out.n_dofs});
+            out.n_dofs += dofs.n_dofs;
+        }
+    }
+    return out;
+}
+
+bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b) {
+    const std::vector<Arc> band = {{0, 2 * M_PI}};
+    for (const PadLayer& pad : pads)
+        for (int c = 0; c < 3; ++c)
+            if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
+    return false;
+}
+
+std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const std::vector<PadLayer>& pads) {
+    const int n = static_cast<int>(all.blocks.size());
+    std::vector<int> root(n);
+    for (int b = 0; b < n; ++b) root[b] = b;
+    const auto find = [&](int b) {
+        while (root[b] != b) b = root[b] = root[root[b]];
+        return b;
+    };
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+            if (pads_couple(pads, all.blocks[a].harmonic, all.blocks[b].harmonic)) root[find(a)] = find(b);
+    std::vector<CoupledComponent> out;
+    std::vector<int> component_of_root(n, -1);
+    for (int b = 0; b < n; ++b) {
+        int& c = component_of_root[find(b)];
+        if (c < 0) {
+            c = static_cast<int>(out.size());
+            out.emplace_back();
+            out.back().dofs.n_max = all.n_max;
+        }
+        CoupledComponent& comp = out[c];
+        CoupledBlock block = all.blocks[b];
+        comp.offset_in.push_back(block.offset);
+        block.offset = comp.dofs.n_dofs;
+        comp.dofs.n_dofs += block.dofs.n_dofs;
+        comp.dofs.blocks.push_back(std::move(block));
+    }
+    return out;
+}
+
+namespace {
+
+std::vector<int> shifted(std::vector<int> dofs, int offset) {
+    for (int& d : dofs)
+        if (d >= 0) d += offset;
+    return dofs;
+}
+
+// The global DOFs of a section edge's three nodes (U, V, W each) in a block.
+std::vector<int> edge_dofs(const CoupledBlock& block, const SectionEdge& e) {
+    std::vector<int> out;
+    for (int p = 0; p < 3; ++p)
+        for (int c = 0; c < 3; ++c) {
+            const int d = block.dofs.of_component[3 * e[p] + c];
+            out.push_back(d < 0 ? -1 : d + block.offset);
+        }
+    return out;
+}
+
+// The pad layer's deviation from the full band on one interface edge pair:
+// k_c (I_pads - I_band)(a, b) int N_i N_j r ds on core minus chuck, for
+// every pair of blocks it couples (the diagonal pairs included: there it
+// takes the band's share of the pads' gaps away).
+void add_pad_coupling(const SectionMesh& mesh, const PadLayer& pad, const SectionEdge& core, const SectionEdge& body,
+                      const CoupledDofs& dofs, const CoupledInsert& insert) {
+    Eigen::Matrix<double, 3, 2> x;
+    for (int p = 0; p < 3; ++p) x.row(p) << mesh.nodes[core[p]][0], mesh.nodes[core[p]][1];
+    // int N_i N_j diag(k) r ds: harmonic_edge_spring's w_n = pi for n = 1 taken out.
+    const Eigen::Matrix<double, 9, 9> edge = harmonic_edge_spring(x, pad.layer.per_area_cylindrical(), 1) / M_PI;
+    const Eigen::MatrixXd between = spring_between(edge);  // 18 x 18, node-major (U, V, W) on core then chuck
+    const std::vector<Arc> band = {{0, 2 * M_PI}};
+    for (const CoupledBlock& a : dofs.blocks)
+        for (const CoupledBlock& b : dofs.blocks) {
+            std::array<double, 3> scale{};
+            bool any = false;
+            for (int c = 0; c < 3; ++c) {
+                scale[c] = pad_integral(pad.arcs, a.harmonic, b.harmonic, c) -
+                           pad_integral(band, a.harmonic, b.harmonic, c);
+                any = any || scale[c] != 0;
+            }
+            if (!any) continue;
+            Eigen::MatrixXd K = between;
+            for (int i = 0; i < 18; ++i) K.row(i) *= scale[i % 3];  // diag(k): rows and columns share a component
+            std::vector<int> rows = edge_dofs(a, core), cols = edge_dofs(b, core);
+            const std::vector<int> rows_body = edge_dofs(a, body), cols_body = edge_dofs(b, body);
+            rows.insert(rows.end(), rows_body.begin(), rows_body.end());
+            cols.insert(cols.end(), cols_body.begin(), cols_body.end());
+            insert(SpringLayer::kTerm, rows, cols, K);
+        }
+}
+
+}  // namespace
+
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const CoupledInsert& insert) {
+    const Scene band = with_full_bands(scene);
+    double mass = 0;
+    for (const CoupledBlock& block : dofs.blocks) {
+        const double m = assemble_harmonic_terms(
+            band, mesh, materials, block.dofs, block.harmonic.n,
+            [&](Term t, const std::vector<int>& d, const Eigen::MatrixXd& A) {
+                const std::vector<int> g = shifted(d, block.offset);
+                insert(t, g, g, A);
+            });
+        if (block.harmonic.n == 0) mass = m;
+    }
+    for (const PadLayer& pad : pad_layers(scene)) {
+        const auto& core = mesh.edge_groups.at("interface_" + pad.chuck + "_core");
+        const auto& body = mesh.edge_groups.at("interface_" + pad.chuck + "_chuck");
+        for (size_t e = 0; e < core.size(); ++e) {
+            const double z = mesh.nodes[core[e][2]][1];  // the middle node
+            if (pad.zone.holds(z, 0)) add_pad_coupling(mesh, pad, core[e], body[e], dofs, insert);
+        }
+    }
+    return mass;
+}
+
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, MPI_Comm comm) {
+    CoupledSystem system;
+    system.dofs = dofs;
+    // Coordinate entries for PETSc's COO assembly; every term gets the union
+    // pattern (zeros where it has none), so K - sigma M keeps one pattern.
+    std::vector<PetscInt> i, j;
+    std::vector<PetscScalar> k_values, m_values;
+    const auto block_of_dof = [&](int d) {
+        int b = 0;
+        while (b + 1 < static_cast<int>(system.dofs.blocks.size()) && system.dofs.blocks[b + 1].offset <= d) ++b;
+        return b;
+    };
+    if (mpi_rank(comm) == 0) {
+        system.operators.model_mass = assemble_coupled_terms(
+            scene, mesh, materials, system.dofs,
+            [&](Term t, const std::vector<int>& rows, const std::vector<int>& cols, const Eigen::MatrixXd& A) {
+                for (size_t a = 0; a < rows.size(); ++a)
+                    for (size_t b = 0; b < cols.size(); ++b) {
+                        if (rows[a] < 0 || cols[b] < 0 || A(a, b) == 0) continue;
+                        i.push_back(rows[a]);
+                        j.push_back(cols[b]);
+                        k_values.push_back(t == Term::stiffness ? A(a, b) : 0.0);
+                        m_values.push_back(t == Term::mass ? A(a, b) : 0.0);
+                    }
+            });
+        for (size_t e = 0; e < i.size(); ++e)
+            if (k_values[e] != 0 && block_of_dof(static_cast<int>(i[e])) != block_of_dof(static_cast<int>(j[e])))
+                ++system.n_coupling_entries;
+    }
+    MPI_Bcast(&system.operators.model_mass, 1, MPI_DOUBLE, 0, comm);
+    for (Term t : {Term::stiffness, Term::mass}) {
+        std::vector<PetscInt> ii = i, jj = j;  // PETSc may reorder the arrays it is given
+        PetscMatrix A;
+        COREMODAL_PETSC(MatCreate(comm, A.out()));
+        COREMODAL_PETSC(MatSetSizes(A, PETSC_DECIDE, PETSC_DECIDE, system.dofs.n_dofs, system.dofs.n_dofs));
+        COREMODAL_PETSC(MatSetType(A, MATAIJ));
+        COREMODAL_PETSC(MatSetPreallocationCOO(A, static_cast<PetscCount>(ii.size()), ii.data(), jj.data()));
+        COREMODAL_PETSC(MatSetValuesCOO(A, (t == Term::stiffness ? k_values : m_values).data(), ADD_VALUES));
+        COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+        COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+        system.operators.matrices[t] = std::move(A);
+    }
+    return system;
+}
+
+}  // namespace coremodal

@@ -1,0 +1,105 @@
+// K and M of the coupled-harmonic model (docs/harmonic.md, "Coupled
+// harmonics"): the axisymmetric bodies expanded in wave numbers n = 0 ... N,
+// one family for n = 0 and both (cos, sin) for n >= 1, on the harmonic
+// level's r–z section; an attachment that acts over arcs of the bore (a
+// segmented expanding element's spring layer) couples the harmonics.
+//
+// The split: k chi(theta) = k - k (1 - chi(theta)). The first term is the
+// full band, which is axisymmetric: every block (n, family) is the harmonic
+// level's K_n, M_n of the scene with its segments widened to full bands
+// (assembly/harmonic_system, assemble_harmonic_terms, unchanged; the sin
+// family's block equals the cos family's). The second, the band minus the
+// pads, is the coupling: on each interface edge over a segmented element,
+// for every pair of blocks (a, b) and component c,
+//     k_c (int_pads t_c(a) t_c(b) dtheta - int_0^2pi t_c(a) t_c(b) dtheta) int N_i N_j r ds
+// (models/coupled/pad_integrals), on core minus chuck. It is nonzero only
+// for m = |n +- j N_s| (pads evenly spaced), and never between a cos and a
+// sin family (pads centred at theta = 0 are mirror symmetric about it).
+#pragma once
+
+#include "assembly/harmonic_system.hpp"
+#include "effects/support_effects.hpp"
+#include "models/coupled/pad_integrals.hpp"
+
+#include <functional>
+#include <vector>
+
+namespace coremodal {
+
+// The scene with every segmented expanding element widened to a full band:
+// the same section mesh (the interfaces span the same z), axisymmetric.
+Scene with_full_bands(const Scene& scene);
+
+// A segmented expanding element's spring layer: where it acts and how stiff.
+struct PadLayer {
+    std::string chuck;      // "left" or "right": the mesh groups "interface_<chuck>_core/_chuck"
+    ZRange zone;            // m, z of the element
+    std::vector<Arc> arcs;  // the pads
+    int segments = 0;       // N_s
+    SpringLayer layer;      // k_n, k_t per unit bore area
+};
+
+// Every segmented element of the scene's chucks. A chuck whose segmented
+// element is bonded or in one-sided contact throws InputError (the coupled
+// level models spring layers only; models/choose says which level can).
+std::vector<PadLayer> pad_layers(const Scene& scene);
+
+// The smallest N_s of the scene's pad layers: harmonics couple in steps of
+// it (n to n +- j N_s); 0 when nothing couples.
+int coupling_reach(const std::vector<PadLayer>& pads);
+
+// One block of the coupled unknowns: a wave number and family, its DOFs
+// (harmonic_dofs of the full-band scene) and where they start.
+struct CoupledBlock {
+    HarmonicFamily harmonic;
+    HarmonicDofs dofs;
+    int offset = 0;
+};
+
+struct CoupledDofs {
+    int n_max = 0;  // N
+    std::vector<CoupledBlock> blocks;  // (0, cos), (1, cos), (1, sin), ..., (N, cos), (N, sin)
+    int n_dofs = 0;
+    // The block of (n, family), or -1.
+    int block_of(int n, Family family) const;
+};
+
+CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max);
+
+// Whether the pads couple blocks a and b (some component's I_pads - I_band nonzero).
+bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b);
+
+// The blocks split into the independent problems the pads leave: the
+// connected components of "pads_couple" (three pads: {0, 3, 6, ...} of both
+// families, {1, 2, 4, 5, ...} cos and the same sin; the last two are
+// degenerate partners, a turned copy of each other). Each component's
+// blocks are renumbered from offset 0; `offset_in` keeps where each block
+// sits in `all`.
+struct CoupledComponent {
+    CoupledDofs dofs;
+    std::vector<int> offset_in;  // per block of dofs: its offset in `all`
+};
+std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const std::vector<PadLayer>& pads);
+
+// Receives one matrix of one term on rows x cols of the coupled DOFs (-1:
+// held). The block terms come with rows == cols; a coupling between blocks
+// a != b comes once as (a, b) and once as (b, a).
+using CoupledInsert = std::function<void(Term, const std::vector<int>& rows, const std::vector<int>& cols,
+                                         const Eigen::MatrixXd&)>;
+
+// Every term of the coupled problem, the same loop for a run (PETSc COO) and
+// a unit test (dense Eigen). Returns the model's mass (kg, once, not per block).
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const CoupledInsert& insert);
+
+struct CoupledSystem {
+    CoupledDofs dofs;
+    OperatorSet operators;  // K, M (symmetric); model_mass
+    long n_coupling_entries = 0;  // nonzero entries between different blocks (K)
+};
+
+// K and M on `dofs` (all blocks, or one component's).
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, MPI_Comm comm = PETSC_COMM_WORLD);
+
+}  // namespace coremodal
