@@ -29,6 +29,20 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
     return std::nullopt;
 }
 
+std::optional<std::string> why_coupled(const Scene& scene) {
+    if (scene.mesh.file || one_sided_contact_reason(scene)) return std::nullopt;
+    std::optional<std::string> why;
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding) {
+            if (e.segments == 0) continue;
+            if (chuck.interface.kind != InterfaceKind::spring) return std::nullopt;  // ties over arcs: the solid
+            if (!why) why = why_not_axisymmetric(scene);
+        }
+    if (!why) return std::nullopt;
+    return *why + "; the roll and chucks are bodies of revolution and only the pads' spring layer varies around, "
+                  "so the coupled harmonics solve it exactly in theta at 2D cost";
+}
+
 void require_axisymmetric(const Scene& scene) {
     if (const auto why = one_sided_contact_reason(scene))
         throw InputError(scene.source_file + ": model = \"harmonic\": " + *why +
@@ -41,14 +55,20 @@ void require_axisymmetric(const Scene& scene) {
 
 std::string chosen_level(const Scene& scene) {
     if (scene.model != "auto") return scene.model;
-    return why_not_axisymmetric(scene) ? "solid" : "harmonic";
+    if (!why_not_axisymmetric(scene)) return "harmonic";
+    return why_coupled(scene) ? "coupled" : "solid";
 }
 
 std::string level_choice_text(const Scene& scene, const std::string& given) {
     if (scene.model == "beam") return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
     if (scene.model == "harmonic")
         return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
+    if (scene.model == "coupled")
+        return "coupled (" + given + "): the r-z section, harmonics n = 0 ... N coupled by segmented expanding "
+               "elements in one 2D-cost eigenproblem per independent set";
     const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
+    if (scene.model == "auto" && not_axisymmetric)
+        if (const auto coupled = why_coupled(scene)) return "coupled (" + given + "; " + *coupled + ")";
     if (scene.model == "auto")
         return not_axisymmetric ? "solid (" + given + "; not a body of revolution: " + *not_axisymmetric + ")"
                                 : "harmonic (" + given + "; a body of revolution: no segmented expanding element, "

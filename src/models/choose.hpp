@@ -19,20 +19,27 @@ std::optional<std::string> one_sided_contact_reason(const Scene& scene);
 // nothing when it can.
 std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 
+// Why the coupled-harmonic level (models/coupled) fits a scene the harmonic
+// level cannot solve: its only departure from a body of revolution is
+// segmented expanding elements held by a spring layer; or nothing (a body of
+// revolution, a [mesh] file, a one-sided contact, a bonded segment).
+std::optional<std::string> why_coupled(const Scene& scene);
+
 // An InputError naming the case file and why_not_axisymmetric's reason,
 // for a scene the harmonic level cannot solve (`run` and `check` refuse it alike).
 void require_axisymmetric(const Scene& scene);
 
 // The level a run of the scene uses: its `model`, with "auto" resolved to
 // the cheapest level that represents the whole scene (DESIGN.md): harmonic
-// when the scene is a body of revolution, else the solid.
+// when the scene is a body of revolution, coupled when only segmented
+// expanding elements on a spring layer break the symmetry, else the solid.
 std::string chosen_level(const Scene& scene);
 
 // The level chosen_level picks and why, in words (`coremodal check`);
 // `given`: where the scene's model key came from.
 std::string level_choice_text(const Scene& scene, const std::string& given);
 
-// The level named chosen_level(scene) ("solid", "harmonic" or "beam").
+// The level named chosen_level(scene) ("solid", "harmonic", "coupled" or "beam").
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
 
 }  // namespace coremodal

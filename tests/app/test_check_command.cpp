@@ -147,8 +147,8 @@ TEST_CASE("coremodal check lists a chuck scene's effects and explains model = au
             run_coremodal(dir, "check '" COREMODAL_SOURCE_DIR "/cases/10-segmented-chuck-76x15-2200.toml' --model auto");
         INFO("stdout: " << r.out);
         REQUIRE(r.exit_code == 0);
-        CHECK(has_line(r.out, {"model level: solid (--model auto; not a body of revolution: the left chuck's "
-                               "expanding element at 70 mm has 3 segments"}));
+        CHECK(has_line(r.out, {"model level: coupled (--model auto; the left chuck's expanding element at 70 mm has 3 "
+                               "segments, which are not axisymmetric; the roll and chucks are bodies of revolution"}));
         CHECK(has_line(r.out, {"[supports.left] body_diameter = 0.075 m", "file: bore - 2 x clearance 0.0005 m"}));
         CHECK(has_line(r.out, {"[supports.right] inserted_length = 0.11 m", "mirrors [supports.left]"}));
         CHECK(has_line(r.out, {"[supports.left] normal_stiffness", "from expansion_pressure = 600 kPa (file)"}));

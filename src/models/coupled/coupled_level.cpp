@@ -228,8 +228,11 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     LevelModes out;
 
     // 2. Mesh: the r–z section (the harmonic level's) and its revolution, for showing the modes.
-    say("[2/7] meshing the r-z section (coupled harmonics: " + std::to_string(pads.size()) +
-        " segmented element(s) couple n to n +- j*" + std::to_string(reach) + ")");
+    // Why this level (the run's level line; `check` prints the same).
+    const std::string why = why_coupled(scene).value_or("segmented expanding elements");
+    say("[2/7] coupled harmonics: " + why + "; " + std::to_string(pads.size()) +
+        " segmented element(s) couple n to n +- j*" + std::to_string(reach));
+    say("      meshing the r-z section");
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
     add_frame_nodes(scene, revolved_->mesh);
@@ -284,6 +287,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     out.info.harmonics = "coupled n = 0 ... " + std::to_string(current->dofs.n_max) + " (both families for n >= 1), " +
                          std::to_string(current->n_coupling_entries) + " coupling entries; " +
                          convergence_text(steps_);
+    out.assumptions.push_back("model level coupled: " + why);
     out.assumptions.push_back(
         "coupled harmonics: each segmented element's spring layer acts on its pads only (k(theta) = k on the pads, "
         "0 between), integrated exactly in theta; harmonics n = 0 ... " + std::to_string(current->dofs.n_max) +

@@ -1,8 +1,11 @@
 // The model level a run uses: "auto" resolves to the harmonic level for a
-// body of revolution and to the solid otherwise; a named level stays.
+// body of revolution, to the coupled harmonics when only segmented chucks on
+// a spring layer break the symmetry, and to the solid otherwise; a named
+// level stays.
 #include "models/choose.hpp"
 
 #include "models/beam/beam_level.hpp"
+#include "models/coupled/coupled_level.hpp"
 #include "models/harmonic/harmonic_level.hpp"
 #include "models/solid/solid_level.hpp"
 
@@ -20,7 +23,7 @@ Scene with_model(const std::string& model) {
 
 }  // namespace
 
-TEST_CASE("auto picks the harmonic level for a body of revolution, else the solid", "[model][choose]") {
+TEST_CASE("auto picks the harmonic level for a body of revolution, else the coupled level or the solid", "[model][choose]") {
     Scene plain = with_model("auto");
     CHECK(chosen_level(plain) == "harmonic");
     CHECK(dynamic_cast<HarmonicLevel*>(make_model_level(plain).get()) != nullptr);
@@ -37,12 +40,43 @@ TEST_CASE("auto picks the harmonic level for a body of revolution, else the soli
     element.segments = 3;
     chuck.expanding.push_back(element);
     segmented.supports.chucks.push_back(chuck);
-    CHECK(chosen_level(segmented) == "solid");
+    CHECK(chosen_level(segmented) == "coupled");
     CHECK_THAT(*why_not_axisymmetric(segmented), Catch::Contains("3 segments"));
 }
 
+TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chucks break the symmetry",
+          "[model][choose][coupled]") {
+    Scene segmented = with_model("auto");
+    ChuckSpec chuck;
+    chuck.name = "left";
+    ExpandingElement element;
+    element.segments = 3;
+    chuck.expanding.push_back(element);
+    segmented.supports.chucks.push_back(chuck);
+    CHECK(chosen_level(segmented) == "coupled");
+    CHECK(dynamic_cast<CoupledLevel*>(make_model_level(segmented).get()) != nullptr);
+    CHECK_THAT(*why_coupled(segmented), Catch::Contains("3 segments") && Catch::Contains("coupled harmonics"));
+    CHECK_THAT(level_choice_text(segmented, "the case file"), Catch::StartsWith("coupled (the case file; "));
+
+    SECTION("but not bonded segments (ties over arcs), a one-sided contact or a [mesh] file: the solid") {
+        Scene bonded = segmented;
+        bonded.supports.chucks[0].interface.kind = InterfaceKind::bonded;
+        CHECK(chosen_level(bonded) == "solid");
+        Scene one_sided = segmented;
+        one_sided.supports.chucks[0].interface.contact = ContactKind::one_sided;
+        CHECK(chosen_level(one_sided) == "solid");
+        Scene user_mesh = segmented;
+        user_mesh.mesh.file = "tube.msh";
+        CHECK(chosen_level(user_mesh) == "solid");
+    }
+    SECTION("and a body of revolution stays at the harmonic level") {
+        CHECK(!why_coupled(with_model("auto")));
+        CHECK(chosen_level(with_model("auto")) == "harmonic");
+    }
+}
+
 TEST_CASE("a named model level is kept, and each has its own step count", "[model][choose]") {
-    for (const std::string level : {"solid", "harmonic", "beam"}) CHECK(chosen_level(with_model(level)) == level);
+    for (const std::string level : {"solid", "harmonic", "coupled", "beam"}) CHECK(chosen_level(with_model(level)) == level);
     CHECK(make_model_level(with_model("beam"))->steps() == 4);
     CHECK(make_model_level(with_model("solid"))->steps() == 7);
     CHECK(dynamic_cast<BeamLevel*>(make_model_level(with_model("beam")).get()) != nullptr);
