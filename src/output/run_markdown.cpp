@@ -90,7 +90,10 @@ void model_section(std::ostream& out, const RunReport& r) {
         << m.mesh_source;
     if (m.level != "beam" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
     out << "\n";
-    if (!m.harmonics.empty())
+    if (!m.harmonics.empty() && m.level == "coupled")
+        out << "- harmonics coupled by segmented chucks, one problem per independent set of wave numbers "
+               "(docs/harmonic.md): " << m.harmonics << "\n";
+    else if (!m.harmonics.empty())
         out << "- one 2D problem per wave number n (modes with n >= 1 come in pairs turned by 90°/n): " << m.harmonics
             << "\n";
     out << "- mass: model " << significant(m.mass_kg, 6) << " kg, from the dimensions "
@@ -121,7 +124,8 @@ void model_section(std::ostream& out, const RunReport& r) {
             << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << found
             << " modes found there" << counted << ": **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
     else
-        out << "- inertia counts, one per harmonic at its own shift (listed above), summed with pairs twice: "
+        out << (m.level == "coupled" ? "- inertia counts, one per independent set of the coupled harmonics, summed: "
+                                     : "- inertia counts, one per harmonic at its own shift (listed above), summed with pairs twice: ")
             << v.negative_pivots_at_shift << " eigenvalues, " << found << " modes found" << counted << ": **"
             << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
 }

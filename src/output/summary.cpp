@@ -350,9 +350,10 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
     else  // one count per harmonic, each at its own shift: summed (pairs twice)
         std::snprintf(line, sizeof line,
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots for %ld modes "
-                      "found%s, summed over the harmonics' own counts: %s\n",
+                      "found%s, summed over the %s own counts: %s\n",
                       v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift, found,
-                      counted.c_str(), v.complete ? "complete" : "INCOMPLETE");
+                      counted.c_str(), r.model.level == "coupled" ? "independent sets'" : "harmonics'",
+                      v.complete ? "complete" : "INCOMPLETE");
     out << line;
     if (!r.model.harmonics.empty()) out << "harmonics: " << r.model.harmonics << "\n";
     std::snprintf(line, sizeof line, "mass: model %.6g kg, from dimensions %.6g kg\n", r.model.mass_kg,
