@@ -127,7 +127,8 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
     // Each independent problem for the modes asked of the whole: every one of
     // its eigenvalues below the merged band edge is among them (it cannot hold
     // more of the merged lowest than were asked).
-    for (const CoupledComponent& component : coupled_components(all.dofs, pads))
+    const std::vector<CoupledComponent> components = coupled_components(all.dofs, pads);
+    for (const CoupledComponent& component : components)
         solve_component(scene, section, materials, component, request, all);
     // Frequency order over the components.
     std::vector<size_t> order(all.eigenvalues.size());
@@ -138,7 +139,7 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
     out.mass_kg = all.mass_kg;
     out.n_coupling_entries = all.n_coupling_entries;
     out.verification = all.verification;
-    out.n_components = static_cast<int>(coupled_components(all.dofs, pads).size());
+    out.n_components = static_cast<int>(components.size());
     for (size_t k : order) {
         out.eigenvalues.push_back(all.eigenvalues[k]);
         out.residuals.push_back(all.residuals[k]);
@@ -247,7 +248,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     // counted, until one more step moves no wanted frequency by kCoupledTolerance
     // and N reaches every wanted mode's dominant harmonic plus N_s.
     say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
-        " nodes; one coupled eigenproblem over n = 0 ... N (SLEPc Krylov-Schur, shift-and-invert with " +
+        " nodes; n = 0 ... N coupled, one eigenproblem per independent set (SLEPc Krylov-Schur, shift-and-invert with " +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));
@@ -274,7 +275,8 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
         const std::vector<double> w = wanted(*current, scene, request);
         for (double lambda : w) step.frequencies_hz.push_back(frequency_hz(lambda));
         int n_top = 0;
-        for (size_t k = 0; k < w.size(); ++k) n_top = std::max(n_top, current->dominant_n(k));
+        if (mpi_rank() == 0)  // the vectors live on rank 0
+            for (size_t k = 0; k < w.size(); ++k) n_top = std::max(n_top, current->dominant_n(k));
         MPI_Bcast(&n_top, 1, MPI_INT, 0, PETSC_COMM_WORLD);
         step.max_change = previous ? max_change(wanted(*previous, scene, request), w, request.lambda_scale) : 0;
         say("      N = " + std::to_string(n_max) + ": " + std::to_string(step.n_dofs) + " DOFs, " +

@@ -1,10 +1,10 @@
 // The coupled-harmonic model level (model = "coupled", docs/harmonic.md,
 // "Coupled harmonics"): a scene whose bodies are bodies of revolution but
 // whose chucks hold the bore with segmented expanding elements. The
-// harmonics n = 0 ... N (both families) of the r–z section are unknowns of
-// one symmetric generalized problem, coupled by the pads
-// (models/coupled/coupled_system); solved once with shift-and-invert and
-// proven complete by its inertia; N grows in steps of the coupling reach
+// harmonics n = 0 ... N (both families) of the r–z section are the unknowns,
+// coupled by the pads (models/coupled/coupled_system) into a few independent
+// sets, each one sparse symmetric generalized problem solved with
+// shift-and-invert and proven complete by its inertia; N grows in steps of the coupling reach
 // N_s until the wanted frequencies stop moving (kCoupledTolerance). Modes
 // are summed over the harmonics onto the revolved section and named there
 // as at the harmonic level.
