@@ -25,6 +25,7 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
             if (e.segments > 0)
                 return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
                        " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
+    if (scene.web) return "the paper web ([web]) pulls on one line of the roll's surface, which is not axisymmetric";
     return std::nullopt;
 }
 
