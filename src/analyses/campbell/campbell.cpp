@@ -108,13 +108,26 @@ std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const std:
     return notes;
 }
 
-std::vector<std::string> solid_notes(const RotationSpec& rotation) {
+std::vector<std::string> solid_notes(const RotationSpec& rotation, const RotatingSolid& solid) {
     std::vector<std::string> notes{
         "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies and "
         "shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's term on "
         "the hexahedra); spring layers, bearings and frames do not spin; a body of revolution only"};
-    notes.push_back(omega_squared_note(rotation, "a gyroscopic model to first order in Omega, as the beam and harmonic "
-                                                 "levels'"));
+    if (!rotation.centrifugal_stiffening) {
+        notes.push_back("[rotation] centrifugal_stiffening = false: the terms of order Omega^2 (the centrifugal "
+                        "prestress and the convective spin softening) are left out");
+        return notes;
+    }
+    std::string pinned;
+    for (const std::string& p : solid.pinned_rigid_motions()) pinned += (pinned.empty() ? "" : ", ") + p;
+    notes.push_back("centrifugal stiffening at the solid level: Omega^2 K_Omega on every spinning cell, K_Omega = "
+                    "K_sigma1 - M_L (effects/rotation.hpp): the geometric stiffness of the stress of a static solve "
+                    "under the centrifugal load rho r e_r per unit Omega^2 (the scene's supports; stresses at the "
+                    "integration points, the material turned per point), less the convective spin softening; "
+                    "linear in the prestress (sigma = Omega^2 sigma1)" +
+                    (pinned.empty() ? std::string()
+                                    : "; the static solve pinned one DOF for each rigid motion the supports leave "
+                                      "free (" + pinned + "), on which the load does no work"));
     return notes;
 }
 
@@ -209,9 +222,10 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
     out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
                        "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
-    out.notes = solid_notes(rotation);
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
+    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes,
+                              {.centrifugal_stiffening = rotation.centrifugal_stiffening});
+    out.notes = solid_notes(rotation, solid);
     out.n_dofs = solid.n_dofs();
     sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
 }
@@ -261,7 +275,7 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     out.excitation_orders = rotation.excitation_orders;
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.from_web_speed = rotation.from_web_speed;
-    out.effects = rotating_effect_names(scene, rotation);
+    out.effects = rotating_effect_names(scene, rotation, /*level_has_centrifugal=*/scene.model == "solid");
     if (scene.model == "beam")
         run_beam_campbell(scene, rotation, options, out);
     else if (scene.model == "harmonic")

@@ -6,6 +6,7 @@
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "models/choose.hpp"
 #include "models/part_materials.hpp"
+#include "models/solid/centrifugal_prestress.hpp"
 #include "models/solid/solid_level.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
@@ -51,15 +52,20 @@ void require_spinnable_by_solid(const Scene& scene) {
                          "revolution only (docs/rotation.md); expected full bands, no [mesh] file and expanded chucks");
 }
 
-RotatingSolid::RotatingSolid(const Scene& scene, int window)
+RotatingSolid::RotatingSolid(const Scene& scene, int window, SolidSpinOptions options)
     : scene_(scene), window_(window), mesh_(spinnable_mesh(scene)) {
     const ChuckSupports chucks = chuck_supports(scene, mesh_);
     LevelModes summary;  // the model summary and warnings a run at rest reports; not repeated here
     dofs_ = solid_dofs(scene, mesh_, chucks, summary);
     // Every cell spins (roll, chuck bodies and shafts); the couplings
     // (spring layers, bearings, frames) carry no gyroscopic term.
-    operators_ = assemble_petsc(mesh_, part_materials(scene, mesh_.part_names, "generated mesh"), dofs_,
-                                chucks.couplings, PETSC_COMM_WORLD, {Term::gyroscopic});
+    const std::vector<PartMaterial> materials = part_materials(scene, mesh_.part_names, "generated mesh");
+    operators_ = assemble_petsc(mesh_, materials, dofs_, chucks.couplings, PETSC_COMM_WORLD, {Term::gyroscopic});
+    if (options.centrifugal_stiffening) {
+        const CentrifugalState state = solve_centrifugal_state(operators_, mesh_, materials, dofs_);
+        add_centrifugal_term(operators_, mesh_, materials, dofs_, state, CentrifugalPart::stationary_frame);
+        pinned_ = state.pinned;
+    }
     roll_nodes_ = roll_nodes(mesh_);
     classifier_ = std::make_unique<ModeClassifier>(mesh_, roll_nodes_);
     signature_ = std::make_unique<ModeSignatureSampler>(mesh_);

@@ -27,16 +27,25 @@
 #include "scene/scene.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace coremodal {
 
+// What a spinning solid includes beyond the gyroscopic term.
+struct SolidSpinOptions {
+    // [rotation] centrifugal_stiffening (the case file's default is true):
+    // Term::centrifugal, K_Omega = K_sigma1 - M_L (effects/rotation.hpp),
+    // from a static solve under the centrifugal load (models/solid/centrifugal_prestress).
+    bool centrifugal_stiffening = false;
+};
+
 class RotatingSolid {
 public:
-    // Meshes and assembles the scene with its gyroscopic term; the lowest
-    // `window` modes are solved at every speed. InputError for a scene that
-    // is not a body of revolution (above).
-    RotatingSolid(const Scene& scene, int window);
+    // Meshes and assembles the scene with its gyroscopic term (and the
+    // centrifugal term when asked); the lowest `window` modes are solved at
+    // every speed. InputError for a scene that is not a body of revolution (above).
+    RotatingSolid(const Scene& scene, int window, SolidSpinOptions options = {});
 
     // The lowest `window` modes at spin speed f_rot (Hz), ascending; each
     // RotatingMode's shape is the complex signature of its displacement on
@@ -47,6 +56,8 @@ public:
 
     long n_dofs() const { return dofs_.n_dofs; }
     double max_relative_residual() const { return max_residual_; }
+    // The rigid motions the centrifugal static solve pinned (a free scene), for the run's notes.
+    const std::vector<std::string>& pinned_rigid_motions() const { return pinned_; }
 
 private:
     RotatingMode named_mode(Vec real, Vec imag, double omega, double speed_hz) const;
@@ -60,6 +71,7 @@ private:
     std::unique_ptr<ModeClassifier> classifier_;
     std::unique_ptr<ModeSignatureSampler> signature_;
     double lambda_scale_ = 1;
+    std::vector<std::string> pinned_;
     mutable double max_residual_ = 0;
 };
 
