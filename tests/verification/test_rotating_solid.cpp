@@ -145,9 +145,3 @@ TEST_CASE("At rest the spinning solid level gives the solid run's modes", "[rota
     }
 }
 
-TEST_CASE("The solid level spins bodies of revolution only", "[rotation][solid]") {
-    Scene s = testing::with_chucks(testing::paper_core(0.8, 12, 8), InterfaceKind::spring);
-    s.supports.chucks[0].expanding[0].segments = 3;
-    s.model = "solid";
-    CHECK_THROWS_WITH(RotatingSolid(s, 6), Catch::Contains("3 segments") && Catch::Contains("body of revolution"));
-}
