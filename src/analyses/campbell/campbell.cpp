@@ -140,8 +140,9 @@ std::vector<std::string> solid_notes(const RotationSpec& rotation, const Rotatin
                     (solid.rotating_frame() ? "K_sigma1 on every spinning cell" : "K_Omega on every spinning cell, K_Omega = "
                     "K_sigma1 - M_L (effects/rotation.hpp)") + ": the geometric stiffness of the stress of a static solve "
                     "under the centrifugal load rho r e_r per unit Omega^2 (the scene's supports; stresses at the "
-                    "integration points, the material turned per point), less the convective spin softening; "
-                    "linear in the prestress (sigma = Omega^2 sigma1)" +
+                    "integration points, the material turned per point)" +
+                    (solid.rotating_frame() ? "" : ", less the convective spin softening") +
+                    "; linear in the prestress (sigma = Omega^2 sigma1)" +
                     (pinned.empty() ? std::string()
                                     : "; the static solve pinned one DOF for each rigid motion the supports leave "
                                       "free (" + pinned + "), on which the load does no work"));
@@ -247,9 +248,11 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
     if (solid.rotating_frame())
         out.notes.push_back("the dominant harmonic's share of a mode's energy on the roll's surface, the smallest "
-                            "over every mode at every speed above 0: " + significant(solid.min_harmonic_share(), 3) +
+                            "over every mode reported at every speed above 0: " +
+                            significant(solid.min_harmonic_share(), 3) +
                             " (1 for a body of revolution; below 1 the segments mix harmonics k and k +- their "
-                            "number, and the stationary frequency is that of the dominant one)");
+                            "number, and the stationary frequency is that of the dominant one; below 1/2 a mode has "
+                            "no one stationary frequency, but one at f - k f_rot for each harmonic k it carries)");
 }
 
 }  // namespace

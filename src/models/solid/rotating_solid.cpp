@@ -161,7 +161,11 @@ std::vector<RotatingMode> RotatingSolid::stationary_frame_modes(const Gyroscopic
 // those the rotating-frame solve is complete for.
 std::vector<RotatingMode> RotatingSolid::rotating_frame_modes(const GyroscopicModes& solved, double speed_hz) const {
     const double rigid_hz = gyroscopic_rigid_omega(solve_request(scene_)) / (2 * M_PI);
-    std::vector<RotatingMode> out;
+    struct Converted {
+        RotatingMode mode;
+        double share;
+    };
+    std::vector<Converted> out;
     double highest_hz = 0;
     int largest_n = 0;
     for (const GyroscopicMode& g : solved.modes) {
@@ -181,15 +185,20 @@ std::vector<RotatingMode> RotatingSolid::rotating_frame_modes(const GyroscopicMo
             m.whirl = -wave.k * f_signed > 0 ? Whirl::forward : Whirl::backward;
         else
             m.whirl = Whirl::none;
-        // At rest a pair's modes stand (both directions, half each): no conversion to judge.
-        if (speed_hz > 0) min_share_ = std::min(min_share_, wave.share);
-        out.push_back(std::move(m));
+        out.push_back({std::move(m), wave.share});
     }
     const double complete_below = highest_hz - largest_n * speed_hz;
-    std::erase_if(out, [&](const RotatingMode& m) { return m.frequency_hz > complete_below; });
+    std::erase_if(out, [&](const Converted& c) { return c.mode.frequency_hz > complete_below; });
     std::sort(out.begin(), out.end(),
-              [](const RotatingMode& a, const RotatingMode& b) { return a.frequency_hz < b.frequency_hz; });
-    return out;
+              [](const Converted& a, const Converted& b) { return a.mode.frequency_hz < b.mode.frequency_hz; });
+    if (static_cast<int>(out.size()) > window_) out.resize(window_);
+    std::vector<RotatingMode> modes;
+    for (Converted& c : out) {
+        // At rest a pair's modes stand (both directions, half each): no conversion to judge.
+        if (speed_hz > 0) min_share_ = std::min(min_share_, c.share);
+        modes.push_back(std::move(c.mode));
+    }
+    return modes;
 }
 
 }  // namespace coremodal
