@@ -23,7 +23,7 @@ int run_rotating_case(const FolderCaseOptions& o) {
         throw InputError(o.case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
                                        "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");
     // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which spins
-    // bodies of revolution only (and refuses the others here, before any work).
+    // the others in co-rotating coordinates (and refuses a chuck not expanded here, before any work).
     scene.model = chosen_level(scene);
     require_spinning_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");

@@ -88,14 +88,6 @@ std::vector<std::string> beam_notes(const RotationSpec& rotation) {
     return notes;
 }
 
-// The note of the harmonic and solid levels on what they leave out.
-std::string omega_squared_note(const RotationSpec& rotation, const std::string& why) {
-    return std::string("terms of order Omega^2 not included: ") +
-           (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal "
-                                              "prestress, which is not built yet, and " : "") +
-           "the convective Omega^2 term is left out with it (" + why + ")";
-}
-
 // The largest hoop and radial stress of the prestress at the sweep's top speed, MPa.
 std::string prestress_size(const CentrifugalPrestress& p, const RotationSpec& rotation) {
     double hoop = 0, radial = 0;
@@ -129,18 +121,48 @@ std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const Rota
     return notes;
 }
 
-std::vector<std::string> solid_notes(const RotationSpec& rotation) {
-    std::vector<std::string> notes{
-        "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies and "
-        "shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's term on "
-        "the hexahedra); spring layers, bearings and frames do not spin; a body of revolution only"};
-    notes.push_back(omega_squared_note(rotation, "a gyroscopic model to first order in Omega, as the beam and harmonic "
-                                                 "levels'"));
+std::vector<std::string> solid_notes(const RotationSpec& rotation, const RotatingSolid& solid) {
+    std::vector<std::string> notes;
+    if (solid.rotating_frame())
+        notes.push_back(
+            "rotation at the solid level in co-rotating coordinates (the scene is not a body of revolution; its "
+            "non-spinning parts look the same from every angle): M q'' + Omega G_c q' + (K + Omega^2 (K_sigma1 - "
+            "M_P)) q = 0, the Coriolis term G_c = 2 int rho N^T (e_z x) N dV and the spin softening M_P over every "
+            "mass; each mode's rotating-frame frequency f is brought to the stationary frame by the dominant "
+            "circumferential harmonic k of its shape on the roll's surface: f_stat = |f - k f_rot|, forward when "
+            "-k (f - k f_rot) > 0 (docs/rotation.md)");
+    else
+        notes.push_back(
+            "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies "
+            "and shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's "
+            "term on the hexahedra); spring layers, bearings and frames do not spin");
+    if (!rotation.centrifugal_stiffening && solid.rotating_frame()) {
+        notes.push_back("[rotation] centrifugal_stiffening = false: the centrifugal prestress's stiffness K_sigma1 "
+                        "is left out; the spin softening M_P stays (part of the change of coordinates)");
+        return notes;
+    }
+    if (!rotation.centrifugal_stiffening) {
+        notes.push_back("[rotation] centrifugal_stiffening = false: the terms of order Omega^2 (the centrifugal "
+                        "prestress and the convective spin softening) are left out");
+        return notes;
+    }
+    std::string pinned;
+    for (const std::string& p : solid.pinned_rigid_motions()) pinned += (pinned.empty() ? "" : ", ") + p;
+    notes.push_back(std::string("centrifugal stiffening at the solid level: Omega^2 ") +
+                    (solid.rotating_frame() ? "K_sigma1 on every spinning cell" : "K_Omega on every spinning cell, K_Omega = "
+                    "K_sigma1 - M_L (effects/rotation.hpp)") + ": the geometric stiffness of the stress of a static solve "
+                    "under the centrifugal load rho r e_r per unit Omega^2 (the scene's supports; stresses at the "
+                    "integration points, the material turned per point)" +
+                    (solid.rotating_frame() ? "" : ", less the convective spin softening") +
+                    "; linear in the prestress (sigma = Omega^2 sigma1)" +
+                    (pinned.empty() ? std::string()
+                                    : "; the static solve pinned one DOF for each rigid motion the supports leave "
+                                      "free (" + pinned + "), on which the load does no work"));
     return notes;
 }
 
 // The levels with a centrifugal term (effects/rotation.hpp).
-bool level_has_centrifugal(const std::string& level) { return level == "harmonic"; }
+bool level_has_centrifugal(const std::string& level) { return level == "harmonic" || level == "solid"; }
 
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
     for (const RotatingMode& m : rest)
@@ -234,11 +256,19 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
     out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
                        "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
-    out.notes = solid_notes(rotation);
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
+    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes,
+                              {.centrifugal_stiffening = rotation.centrifugal_stiffening});
+    out.notes = solid_notes(rotation, solid);
     out.n_dofs = solid.n_dofs();
     sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
+    if (solid.rotating_frame())
+        out.notes.push_back("the dominant harmonic's share of a mode's energy on the roll's surface, the smallest "
+                            "over every mode reported at every speed above 0: " +
+                            significant(solid.min_harmonic_share(), 3) +
+                            " (1 for a body of revolution; below 1 the segments mix harmonics k and k +- their "
+                            "number, and the stationary frequency is that of the dominant one; below 1/2 a mode has "
+                            "no one stationary frequency, but one at f - k f_rot for each harmonic k it carries)");
 }
 
 }  // namespace

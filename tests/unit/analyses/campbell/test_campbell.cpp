@@ -87,12 +87,13 @@ TEST_CASE("The rotation tester's Campbell sweep: rest exactly, whirl split, crit
     CHECK(r.speeds_at_rest.safe.front().v_safe_m_s == Approx(0.7 * M_PI * 0.106 * rest.modes[0].frequency_hz));
 }
 
-TEST_CASE("A Campbell sweep at the solid level refuses a scene that is not a body of revolution, before any work",
+TEST_CASE("A Campbell sweep at the solid level refuses a chuck that is not expanded, before any work",
           "[rotation][campbell]") {
-    RotatingCase c = tester(3);
+    RotatingCase c = parse_rotating_case(std::string(COREMODAL_SOURCE_DIR) +
+                                         "/cases/09-news-chucks-not-expanded-76x15-2200.toml");
     c.scene.model = "solid";
     c.scene.mesh.file = "no-such-mesh.msh";  // never read: the check comes first
-    CHECK_THROWS_WITH(run_campbell(c.scene, *c.rotation),
-                      Catch::Contains("[rotation] at the solid level: a [mesh] file") &&
-                          Catch::Contains("right for a body of revolution only"));
+    CHECK_THROWS_WITH(run_campbell(c.scene, RotationSpec{.speeds_hz = {0.0, 10.0}}),
+                      Catch::Contains("[rotation] at the solid level") && Catch::Contains("not expanded") &&
+                          Catch::Contains("time-periodic"));
 }
