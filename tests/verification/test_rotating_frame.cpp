@@ -104,7 +104,8 @@ TEST_CASE("The solid level refuses to spin a chuck not expanded, and a bearing s
     ChuckSupports supports;
     supports.grounded = {0};
     supports.couplings.push_back({{0}, {{Term::stiffness, Eigen::Vector3d(1e6, 2e6, 1e6).asDiagonal().toDenseMatrix()}}});
-    CHECK(anisotropic_support(supports).value_or("") == "a bearing or frame spring differs in x and y");
+    CHECK(anisotropic_support(supports).value_or("") ==
+          "a support to the stand (a bearing or frame spring, or the web's span) differs in x and y");
     supports.couplings[0].terms[0].matrix = Eigen::Vector3d(1e6, 1e6, 3e6).asDiagonal().toDenseMatrix();
     CHECK_FALSE(anisotropic_support(supports));
 }

@@ -73,7 +73,7 @@ std::optional<std::string> anisotropic_support(const ChuckSupports& supports) {
         if (!to_stand || k.size() == 0) continue;
         const Eigen::MatrixXd T = nodewise(generator_J(), static_cast<Eigen::Index>(e.nodes.size()));
         if ((k * T - T * k).norm() > kIsotropicSupport * k.norm())
-            return std::string("a bearing or frame spring differs in x and y");
+            return std::string("a support to the stand (a bearing or frame spring, or the web's span) differs in x and y");
     }
     return std::nullopt;
 }

@@ -29,7 +29,11 @@ Mesh spinnable_mesh(const Scene& scene) {
 
 SpinFrame chosen_frame(const Scene& scene, SpinFrame asked) {
     if (asked != SpinFrame::automatic) return asked;
-    return why_not_axisymmetric(scene) ? SpinFrame::rotating : SpinFrame::stationary;
+    // The web does not spin: the stationary frame holds it as it is, when
+    // everything that spins is a body of revolution.
+    Scene spinning = scene;
+    spinning.web.reset();
+    return why_not_axisymmetric(spinning) ? SpinFrame::rotating : SpinFrame::stationary;
 }
 
 // Rotating frame: the rotating-frame modes solved per mode wanted, since
