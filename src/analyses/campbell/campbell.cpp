@@ -124,11 +124,16 @@ double first_bending_hz(const std::vector<RotatingMode>& rest) {
     return 0;
 }
 
+using ModesAt = std::function<std::vector<RotatingMode>(double)>;
+// Labels a mode that modes_at left unlabelled (empty: modes_at labels every mode).
+using LabelMode = std::function<ModeLabel(const RotatingMode&)>;
+
 // The sweep from rest over the scene's speeds, the modes followed by MAC;
-// fills the points, their residuals and the critical speeds.
-void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
-           const std::function<std::vector<RotatingMode>(double)>& modes_at, const RotationSpec& rotation,
-           CampbellResult& out) {
+// fills the points, their residuals and the critical speeds. A track keeps
+// the label of its first speed, so with `label_new_track` only a mode that
+// starts a track is labelled.
+void sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAt& modes_at,
+           const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track = {}) {
     std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
     int next_track = 1;
     for (size_t s = 0; s < steps.size(); ++s) {
@@ -136,9 +141,13 @@ void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
         step.modes = s == 0 ? at_rest : modes_at(step.speed_hz);
         if (s == 0) {
             for (size_t i = 0; i < step.modes.size(); ++i) step.tracks.push_back(next_track++);
-        } else {
-            follow(steps[s - 1], step, next_track);
+            continue;
         }
+        const int first_new_track = next_track;
+        follow(steps[s - 1], step, next_track);
+        if (label_new_track)
+            for (size_t i = 0; i < step.modes.size(); ++i)
+                if (step.tracks[i] >= first_new_track) step.modes[i].label = label_new_track(step.modes[i]);
     }
     const std::map<int, TrackInfo> info = track_info(steps);
     for (const Step& step : steps) {
@@ -180,14 +189,14 @@ void require_one_process(const Scene& scene, const std::string& level) {
                                              "without mpirun");
 }
 
-// The modes at rest from the spinning model itself, the roll's speeds from
-// its first bending mode, then the sweep.
+// The modes at rest from the spinning model itself (labelled), the roll's
+// speeds from its first bending mode, then the sweep.
 void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
-                     const std::function<std::vector<RotatingMode>(double)>& modes_at, CampbellResult& out) {
-    const std::vector<RotatingMode> at_rest = modes_at(0.0);
+                     const std::vector<RotatingMode>& at_rest, const ModesAt& modes_at, CampbellResult& out,
+                     const LabelMode& label_new_track = {}) {
     const double f1 = first_bending_hz(at_rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    sweep(at_rest, reported, modes_at, rotation, out);
+    sweep(at_rest, reported, modes_at, rotation, out, label_new_track);
 }
 
 void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
@@ -200,7 +209,10 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes);
     out.notes = harmonic_notes(rotation, harmonics.wave_numbers());
     out.n_dofs = harmonics.n_dofs();
-    sweep_from_rest(scene, rotation, reported, [&](double speed) { return harmonics.modes_at(speed); }, out);
+    sweep_from_rest(
+        scene, rotation, reported, harmonics.modes_at(0.0),
+        [&](double speed) { return harmonics.modes_at(speed, Labels::none); }, out,
+        [&](const RotatingMode& m) { return harmonics.label_of(m); });
 }
 
 void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
@@ -213,7 +225,8 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
     const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
     out.n_dofs = solid.n_dofs();
-    sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
+    sweep_from_rest(scene, rotation, reported, solid.modes_at(0.0), [&](double speed) { return solid.modes_at(speed); },
+                    out);
 }
 
 }  // namespace
