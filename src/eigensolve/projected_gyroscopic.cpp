@@ -195,27 +195,35 @@ struct ProjectedGyroscopic::Basis {
         return norm(c) / ((norm_K(spin) + omega * spin * norm_G + omega * omega * norm_M) * norm(cx));
     }
 
-    // Rigid directions of K(Omega) in the basis at 0 Hz, then every
-    // eigenvalue omega >= the rigid line of the Hermitian linearization
-    // H = [[i Omega G, Lambda^1/2], [Lambda^1/2, 0]] (docs/rotation.md).
+    // The modes of the small problem, ascending: the rigid ones at 0 Hz,
+    // then every eigenvalue omega >= the rigid line of the Hermitian
+    // linearization H = [[i Omega G, Lambda^1/2], [Lambda^1/2, 0]]
+    // (docs/rotation.md). H's eigenvalues below the line come in pairs
+    // +-omega (a rigid direction's zero twice at rest; a free body's tilt at
+    // 0 and its precession at +-omega once it spins); each pair is one mode
+    // of the quadratic problem, as the full solver reports it, and a rigid
+    // direction of K(Omega) is exactly one (Q(0) x = K(Omega) x = 0), so the
+    // first ones stand for them.
     std::vector<Candidate> candidates(double spin) const {
         const Dense K = K0 + spin * spin * K_omega;
         const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
         const Dense& U = ks.eigenvectors();
         const Eigen::VectorXd& lambda = ks.eigenvalues();
         const Eigen::Index n = m();
-        std::vector<Candidate> out;
-        for (Eigen::Index k = 0; k < n && lambda[k] < rigid_omega * rigid_omega; ++k)
-            out.push_back({0.0, U.col(k).cast<Complex>()});
         Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
         H.topLeftCorner(n, n) = Complex(0, spin) * (U.transpose() * G * U).cast<Complex>();
         for (Eigen::Index k = 0; k < n; ++k) H(k, n + k) = H(n + k, k) = std::sqrt(std::max(lambda[k], 0.0));
         const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> hs(H);
+        const Eigen::VectorXd& omegas = hs.eigenvalues();
+        const long below_line = (omegas.array().abs() < rigid_omega).count();
+        const long rigid_directions = (lambda.array() < rigid_omega * rigid_omega).count();
+        std::vector<Candidate> out;
+        for (Eigen::Index k = 0; k < std::min((below_line + 1) / 2, rigid_directions); ++k)
+            out.push_back({0.0, U.col(k).cast<Complex>()});
         for (Eigen::Index j = 0; j < 2 * n; ++j) {
-            const double omega = hs.eigenvalues()[j];
-            if (omega < rigid_omega) continue;
-            const Eigen::VectorXcd eta = hs.eigenvectors().col(j).head(n);
-            out.push_back({omega, (U.cast<Complex>() * eta).normalized()});
+            if (omegas[j] < rigid_omega) continue;
+            const Eigen::VectorXcd eta = hs.eigenvectors().col(j).head(n);  // z = (omega eta, Lambda^1/2 eta)
+            out.push_back({omegas[j], (U.cast<Complex>() * eta).normalized()});
         }
         return out;
     }
@@ -336,7 +344,7 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     std::vector<double> residuals;
     for (int i = 0; i < n_report; ++i) {
         residuals.push_back(b.relative_residual(spin, c[i].omega, c[i].y));
-        if (residuals.back() > kMaxProjectedResidual) return std::nullopt;
+        if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
         v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
     }
     const double check = check_omega(c, n_report, scale);
