@@ -168,12 +168,12 @@ GyroscopicInertia::GyroscopicInertia(const OperatorSet& ops, IS first, IS second
     p.unify();
 }
 
-long GyroscopicInertia::negative_count(double spin, double omega) {
+long GyroscopicInertia::negative_count(double spin, double spin_squared, double omega) {
     Pattern& p = *pattern_;
     long count = 0;
     for (double sign : p.signs) {
         COREMODAL_PETSC(MatCopy(p.base, p.work, SAME_NONZERO_PATTERN));
-        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, spin * spin, p.centrifugal, SAME_NONZERO_PATTERN));
+        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, spin_squared, p.centrifugal, SAME_NONZERO_PATTERN));
         COREMODAL_PETSC(MatAXPY(p.work, -omega * omega, p.mass, SAME_NONZERO_PATTERN));
         COREMODAL_PETSC(MatAXPY(p.work, sign * omega * spin, p.coupling, SAME_NONZERO_PATTERN));
         count += p.negative_pivots();

@@ -44,7 +44,11 @@ public:
 
     // neg Q(omega) at spin speed `spin` (both rad/s), the Hermitian matrix's
     // own count (count_gyroscopic_below's value).
-    long negative_count(double spin, double omega);
+    long negative_count(double spin, double omega) { return negative_count(spin, spin * spin, omega); }
+    // The same with the gyroscopic term at `spin` and the centrifugal one at
+    // `spin_squared` apart (Q is affine in the two: a convexity argument
+    // counts at the corners of a region of them, projected_gyroscopic.hpp).
+    long negative_count(double spin, double spin_squared, double omega);
     bool uses_mirrored_families() const;
 
 private:

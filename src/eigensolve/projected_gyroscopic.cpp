@@ -167,6 +167,7 @@ struct ProjectedGyroscopic::Basis {
     PetscMatrix k0_union, k_omega_union, k_work;  // for ||K(Omega)||_1 with a centrifugal term
     Mat K_template = nullptr;    // for vectors of the set's layout
     std::unique_ptr<GyroscopicInertia> inertia;
+    double rigid_line_clear_up_to = -1;  // rad/s: neg Q(omega_0) = 0 proven for spins up to it
 
     Eigen::Index m() const { return V.cols(); }
 
@@ -348,7 +349,9 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
         v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
     }
     const double check = check_omega(c, n_report, scale);
-    const long counted = b.inertia->negative_count(spin, check) - b.inertia->negative_count(spin, b.rigid_omega);
+    const long below_rigid_line =
+        spin <= b.rigid_line_clear_up_to ? 0 : b.inertia->negative_count(spin, b.rigid_omega);
+    const long counted = b.inertia->negative_count(spin, check) - below_rigid_line;
     const long found = std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= b.rigid_omega; });
     if (counted != found) return std::nullopt;
 
@@ -359,6 +362,16 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     v.modes_below_shift = counted;
     v.complete = true;
     return out;
+}
+
+bool ProjectedGyroscopic::prove_rigid_line_clear(double max_spin) {
+    Basis& b = *basis_;
+    const SingleThreadBlas one_thread;
+    const double w0 = b.rigid_omega;
+    bool clear = b.inertia->negative_count(0.0, 0.0, w0) == 0 && b.inertia->negative_count(max_spin, 0.0, w0) == 0;
+    if (clear && b.centrifugal) clear = b.inertia->negative_count(max_spin, max_spin * max_spin, w0) == 0;
+    if (clear) b.rigid_line_clear_up_to = max_spin;
+    return clear;
 }
 
 int ProjectedGyroscopic::basis_size() const { return static_cast<int>(basis_->m()); }

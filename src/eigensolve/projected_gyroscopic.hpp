@@ -73,6 +73,19 @@ public:
     // disagrees (then solve the full problem).
     std::optional<GyroscopicModes> modes_at(double spin) const;
 
+    // Proves, if it holds, that no mode lies below the rigid line omega_0 at
+    // any spin speed in [0, max_spin] (rad/s), so that modes_at needs one
+    // count per speed, not two. Q(omega_0) is affine in (Omega, Omega^2):
+    // Q = A + Omega B + Omega^2 C, and the positive definite matrices are a
+    // convex set; the curve (Omega, Omega^2), 0 <= Omega <= S, lies in the
+    // triangle (0, 0), (S, 0), (S, S^2), so Q(omega_0) positive definite at
+    // those three corners (neg = 0, three counts; two without a centrifugal
+    // term, where Q is affine in Omega alone) is positive definite at every
+    // speed of the range, and neg Q(omega_0) = 0 there. A wave number with
+    // rigid modes (neg Q(omega_0) > 0 at rest) keeps counting at every speed.
+    // Returns whether it holds.
+    bool prove_rigid_line_clear(double max_spin);
+
     int basis_size() const;
     bool counts_mirrored_families() const;
 

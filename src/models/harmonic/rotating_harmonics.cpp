@@ -207,6 +207,11 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels la
     return out;
 }
 
+void RotatingHarmonics::sweep_up_to(double speed_hz) {
+    for (auto& h : harmonics_)
+        if (h->projected) h->projected->prove_rigid_line_clear(2 * M_PI * speed_hz);
+}
+
 long RotatingHarmonics::n_dofs() const {
     long most = 0;
     for (const auto& h : harmonics_) most = std::max<long>(most, h->problem.n_families() * long(h->problem.dofs.n_dofs));

@@ -49,6 +49,11 @@ public:
     // of its problem's DOFs (a, b), so MAC compares modes of one n only.
     // Labels::none leaves every label empty (label_of gives it later).
     std::vector<RotatingMode> modes_at(double speed_hz, Labels labels = Labels::every_mode) const;
+    // Tells the projected solver the sweep's top speed (Hz): a wave number
+    // without modes below the rigid line at rest is proven to have none up
+    // to it (ProjectedGyroscopic::prove_rigid_line_clear), one count per
+    // speed fewer.
+    void sweep_up_to(double speed_hz);
     // The label modes_at gives a mode of this level.
     ModeLabel label_of(const RotatingMode& mode) const;
 
