@@ -162,7 +162,7 @@ std::optional<BracketEnd> bracket_end(const std::vector<Step>& steps, double spe
 // each trial nudged by a fraction of the tolerance towards the end that
 // stayed last, which closes the bracket in one solve once the estimate is
 // that good. Keeps the interpolation (refined = false) if the track is lost.
-void refine(WhirlCrossing& c, const std::vector<Step>& steps, const ModesAtSpeed& modes_at) {
+void refine(WhirlCrossing& c, const std::vector<Step>& steps, const BlockModesAtSpeed& modes_at) {
     constexpr double kNudge = 0.4;  // of the tolerance
     std::optional<BracketEnd> low = bracket_end(steps, c.low_speed_hz, c.track, c.order);
     std::optional<BracketEnd> high = bracket_end(steps, c.high_speed_hz, c.track, c.order);
@@ -175,7 +175,7 @@ void refine(WhirlCrossing& c, const std::vector<Step>& steps, const ModesAtSpeed
         double s = low->speed_hz + width * g_low / (g_low - g_high);
         s += last_moved * -kNudge * tol;  // towards the end that did not move
         s = std::clamp(s, low->speed_hz + 0.1 * tol, high->speed_hz - 0.1 * tol);
-        const std::vector<RotatingMode> modes = modes_at(s);
+        const std::vector<RotatingMode> modes = modes_at(s, low->mode.block);
         ++c.refinement_solves;
         const RotatingMode* m = continuation(modes, *low, *high);
         if (!m) return;
@@ -199,7 +199,8 @@ void refine(WhirlCrossing& c, const std::vector<Step>& steps, const ModesAtSpeed
 }  // namespace
 
 void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
-                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track) {
+                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track,
+                    const BlockModesAtSpeed& block_modes_at) {
     std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
     int next_track = 1;
     for (size_t s = 0; s < steps.size(); ++s) {
@@ -229,8 +230,10 @@ void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, c
         out.points.push_back(std::move(point));
     }
     out.critical = critical_speeds(out.points, out.excitation_orders, out.roll_outer_diameter);
+    const BlockModesAtSpeed refine_with =
+        block_modes_at ? block_modes_at : [&](double speed, int) { return modes_at(speed); };
     for (WhirlCrossing& c : out.critical) {
-        refine(c, steps, modes_at);
+        refine(c, steps, refine_with);
         c.web_speed_m_s = web_speed(c.speed_hz, out.roll_outer_diameter);
     }
     std::sort(out.critical.begin(), out.critical.end(),
@@ -267,10 +270,10 @@ void require_one_process(const Scene& scene, const std::string& level) {
 // speeds from its first bending mode, then the sweep.
 void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
                      const std::vector<RotatingMode>& at_rest, const ModesAtSpeed& modes_at, CampbellResult& out,
-                     const LabelMode& label_new_track = {}) {
+                     const LabelMode& label_new_track = {}, const BlockModesAtSpeed& block_modes_at = {}) {
     const double f1 = first_bending_hz(at_rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track);
+    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track, block_modes_at);
 }
 
 void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
@@ -287,7 +290,8 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     sweep_from_rest(
         scene, rotation, reported, harmonics.modes_at(0.0),
         [&](double speed) { return harmonics.modes_at(speed, Labels::none); }, out,
-        [&](const RotatingMode& m) { return harmonics.label_of(m); });
+        [&](const RotatingMode& m) { return harmonics.label_of(m); },
+        [&](double speed, int n) { return harmonics.modes_at(speed, Labels::none, n); });
     out.solver = "per wave number n, the small Hermitian problem in a basis of its modes at rest and their static "
                  "responses to the spin's forces, every mode's residual taken on the full problem; " +
                  std::to_string(harmonics.n_full_solves()) + " of " + std::to_string(harmonics.n_solves()) +

@@ -111,13 +111,19 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
 // The modes of a spinning level at a speed (Hz), ascending, and a mode's label.
 using ModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz)>;
 using LabelMode = std::function<ModeLabel(const RotatingMode&)>;
+// The modes of one independent problem (RotatingMode::block) at a speed, for
+// a level where solving one is cheaper than solving all (the harmonic level:
+// one wave number).
+using BlockModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz, int block)>;
 
 // run_campbell's sweep on any level's modes (tests): from the modes at rest
 // over rotation.speeds_hz, tracked by MAC; fills out.points and
 // out.critical (refined), out.excitation_orders and out.roll_outer_diameter
 // set by the caller. With `label_new_track` the modes of modes_at need no
-// label: only a mode that starts a track is labelled.
+// label: only a mode that starts a track is labelled. With `block_modes_at`
+// a crossing's refinement solves only its track's block.
 void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
-                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track = {});
+                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track = {},
+                    const BlockModesAtSpeed& block_modes_at = {});
 
 }  // namespace coremodal

@@ -166,11 +166,12 @@ ModeLabel RotatingHarmonics::label_of(const RotatingMode& mode) const {
     return {};
 }
 
-std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels labels) const {
+std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels labels, int only_block) const {
     const double spin = 2 * M_PI * speed_hz;
     SolveRequest request = solve_request(scene_);
     std::vector<RotatingMode> out;
     for (const auto& h : harmonics_) {
+        if (only_block >= 0 && h->problem.n != only_block) continue;
         request.n_modes = h->n_modes;
         request.lambda_scale = h->lambda_scale;
         std::optional<GyroscopicModes> projected;
@@ -203,7 +204,7 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels la
     }
     std::stable_sort(out.begin(), out.end(),
                      [](const RotatingMode& a, const RotatingMode& b) { return a.frequency_hz < b.frequency_hz; });
-    if (static_cast<int>(out.size()) > window_) out.resize(window_);
+    if (only_block < 0 && static_cast<int>(out.size()) > window_) out.resize(window_);
     return out;
 }
 

@@ -48,7 +48,9 @@ public:
     // RotatingMode's `block` is its wave number n and its shape the values
     // of its problem's DOFs (a, b), so MAC compares modes of one n only.
     // Labels::none leaves every label empty (label_of gives it later).
-    std::vector<RotatingMode> modes_at(double speed_hz, Labels labels = Labels::every_mode) const;
+    // With `only_block` >= 0 only that wave number is solved (all its modes,
+    // not cut to the window): a critical speed's refinement follows one track.
+    std::vector<RotatingMode> modes_at(double speed_hz, Labels labels = Labels::every_mode, int only_block = -1) const;
     // Tells the projected solver the sweep's top speed (Hz): a wave number
     // without modes below the rigid line at rest is proven to have none up
     // to it (ProjectedGyroscopic::prove_rigid_line_clear), one count per
