@@ -5,11 +5,12 @@
 // Once per set: a basis V (N x m, M-orthonormal) of
 //   - the modes at rest, (K + K_sigma) phi = lambda M phi, the lowest
 //     `n_rest` (symmetric solver, inertia-counted),
-//   - what the spin adds to them: S^-1 G phi and, with a centrifugal term,
-//     S^-1 K_Omega phi, S = K + K_sigma + tau^2 M (positive definite, tau the
-//     gyroscopic solver's target): the static response of the structure to
-//     the gyroscopic and centrifugal forces of each mode at rest, one step of
-//     a Krylov space, which a mode at speed needs beyond the modes at rest;
+//   - what the spin adds to them: u1 = S^-1 G phi and u2 = S^-1 M u1 and,
+//     with a centrifugal term, the same of K_Omega phi, S = K + K_sigma +
+//     tau^2 M (positive definite, tau the gyroscopic solver's target): the
+//     static response of the structure to the gyroscopic and centrifugal
+//     forces of each mode at rest and the next term of its series in
+//     omega^2 + tau^2, which a mode at speed needs beyond the modes at rest;
 // and every term projected once: V^T (K + K_sigma) V, V^T K_Omega V, V^T G V.
 // Per speed: K(Omega) = K + K_sigma + Omega^2 K_Omega combined in the basis,
 // and the small problem solved whole as the beam level does (an exact
@@ -25,7 +26,8 @@
 // perturbed by round-off relative to its own norm, as the direct product is.
 // And the set is proven complete as solve_gyroscopic proves it: the inertia
 // of the full Hermitian Q(omega) at the band edge and at the rigid line
-// (gyroscopic_inertia.hpp), at every speed. A mode above kMaxProjectedResidual
+// (gyroscopic_inertia.hpp), at every speed (the rigid line's once for a
+// whole sweep where prove_rigid_line_clear holds). A mode above kMaxProjectedResidual
 // or a count that disagrees is not an answer: modes_at returns none, and the
 // caller solves the full problem at that speed (solve_gyroscopic).
 #pragma once
