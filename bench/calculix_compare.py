@@ -22,6 +22,7 @@ import os
 import pathlib
 import platform
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -100,6 +101,8 @@ def main():
     for tool in (CORE, DECK):
         if not tool.exists():
             sys.exit(f"{tool} is missing: bash scripts/build.sh")
+    if shutil.which("ccx") is None:
+        sys.exit("ccx is missing: apt-get install calculix-ccx")
     print(f"machine: {platform.node()}, {os.cpu_count()} cores; load before: {os.getloadavg()[0]:.2f}")
     print("| case | mesh | DOFs | modes | coremodal s | GiB | CalculiX s | GiB | CalculiX / coremodal | max rel. freq. diff |")
     print("|---|---|---|---|---|---|---|---|---|---|")

@@ -23,8 +23,12 @@ int run_rotating_case(const FolderCaseOptions& o) {
         throw InputError(o.case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
                                        "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");
     // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which spins
-    // bodies of revolution only (and refuses the others here, before any work).
+    // the others in co-rotating coordinates (and refuses a chuck not expanded here, before any work).
+    // The coupled-harmonic level has no spinning terms: where "auto" would pick it, the solid spins.
+    // Asked for by name, require_spinning_level says why not.
+    const bool named_coupled = scene.model == "coupled";
     scene.model = chosen_level(scene);
+    if (scene.model == "coupled" && !named_coupled) scene.model = "solid";
     require_spinning_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;

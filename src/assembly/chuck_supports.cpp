@@ -2,12 +2,14 @@
 
 #include "common/error.hpp"
 #include "effects/support_effects.hpp"
+#include "effects/web.hpp"
 #include "element/face.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace coremodal {
 namespace {
@@ -216,6 +218,80 @@ void hold_chuck_by_bearing(const Mesh& mesh, const ChuckEffects& chuck, ChuckSup
     }
 }
 
+// ---- the paper web's line (effects/web.hpp) --------------------------------
+
+// Angle a - b folded into (-pi, pi].
+double angle_between(double a, double b) { return std::remainder(a - b, 2 * M_PI); }
+
+double polar_angle(const Eigen::Vector3d& x) { return std::atan2(x[1], x[0]); }
+
+// The around-the-axis coordinate of the face point at `along` (the other
+// coordinate) where the surface's polar angle is theta: bisection, the
+// angle being monotone across one face.
+double around_coordinate(const FaceCoords& x, bool around_is_xi, double along, double theta) {
+    const auto at = [&](double s) {
+        return angle_between(polar_angle(around_is_xi ? face_point(x, s, along) : face_point(x, along, s)), theta);
+    };
+    double lo = -1, hi = 1;
+    const bool rising = at(hi) > at(lo);
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        ((at(mid) > 0) == rising ? hi : lo) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// The web's springs per unit length on the line theta = const of one face of
+// the roll's outer surface, or nothing when the line misses the face. A line
+// on the edge of two faces belongs to the one on its counter-clockwise side.
+std::optional<CouplingElement> web_line_face(const Mesh& mesh, const FaceSet& set, int f, double theta,
+                                             const Eigen::Matrix3d& k_line) {
+    const FaceCoords x = face_coords(mesh, set, f);
+    double lowest = M_PI, highest = -M_PI;
+    for (int a = 0; a < 4; ++a) {
+        const double d = angle_between(polar_angle(x.row(a).transpose()), theta);
+        lowest = std::min(lowest, d), highest = std::max(highest, d);
+    }
+    // (A face opposite the line has corners near +-pi: its span is not small.)
+    if (!(lowest <= 0 && highest > 0 && highest - lowest < M_PI)) return std::nullopt;
+    const bool around_is_xi = std::abs(angle_between(polar_angle(x.row(1).transpose()), polar_angle(x.row(0).transpose()))) >
+                              std::abs(angle_between(polar_angle(x.row(3).transpose()), polar_angle(x.row(0).transpose())));
+    const int n = set.nodes_per_face;
+    CouplingElement e;
+    e.nodes.assign(set.face(f), set.face(f) + n);
+    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+    // 3-point Gauss along the line integrates its quartic energy exactly.
+    const double g[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, w[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    for (int q = 0; q < 3; ++q) {
+        const double s = around_coordinate(x, around_is_xi, g[q], theta);
+        const double xi = around_is_xi ? s : g[q], eta = around_is_xi ? g[q] : s;
+        Eigen::VectorXd N, dN_dxi, dN_deta;
+        face_shape(n, xi, eta, N, dN_dxi, dN_deta);
+        const Eigen::Vector3d tangent = x.transpose() * (around_is_xi ? dN_deta : dN_dxi);
+        for (int a = 0; a < n; ++a)
+            for (int b = 0; b < n; ++b) K.block<3, 3>(3 * a, 3 * b) += w[q] * tangent.norm() * N[a] * N[b] * k_line;
+    }
+    e.terms.push_back({Term::stiffness, std::move(K)});
+    return e;
+}
+
+// The web's span on the line of the roll's outer surface it leaves from
+// (effects/web.hpp): springs to the ground over every face it crosses.
+void hold_roll_by_web(const Scene& scene, const Mesh& mesh, ChuckSupports& out) {
+    const std::string group = scene.rest_paper ? "rest_paper_outer" : "core_outer";
+    const auto it = mesh.face_groups.find(group);
+    if (it == mesh.face_groups.end())
+        throw InputError(scene.source_file + ": [web] at the solid level needs the generated mesh (its faces '" + group +
+                         "'); expected no [mesh] file, or model = \"beam\"");
+    const double theta = polar_angle(web_tangent_normal(*scene.web));
+    const Eigen::Matrix3d k_line = web_line_stiffness(*scene.web);
+    for (int f = 0; f < it->second.n_faces(); ++f)
+        if (std::optional<CouplingElement> e = web_line_face(mesh, it->second, f, theta, k_line)) {
+            out.grounded.insert(out.grounded.end(), e->nodes.begin(), e->nodes.end());
+            out.couplings.push_back(std::move(*e));
+        }
+}
+
 }  // namespace
 
 void add_frame_nodes(const Scene& scene, Mesh& mesh) {
@@ -234,6 +310,7 @@ ChuckSupports chuck_supports(const Scene& scene, const Mesh& mesh) {
         hold_core_by_chuck(mesh, static_cast<int>(i), chuck, out);
         hold_chuck_by_bearing(mesh, chuck, out);
     }
+    if (scene.web) hold_roll_by_web(scene, mesh, out);
     return out;
 }
 

@@ -7,8 +7,10 @@
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/support_effects.hpp"
+#include "effects/web.hpp"
 #include "eigensolve/tolerances.hpp"
 #include "modes/classify.hpp"
+#include "scene/rotation_spec.hpp"  // roll_outer_diameter
 
 #include <algorithm>
 #include <array>
@@ -325,6 +327,14 @@ ModeLabel label_beam_mode(const BeamNetwork& network, const Eigen::VectorXd& sha
     return label_mode(network, shape, mass_shape, eigenvalue, lambda_scale);
 }
 
+// The web's span on the roll's surface line over the core's length (the
+// rest roll's width), at the roll's outer radius (effects/web.hpp).
+void add_web(BeamNetwork& net, const Scene& scene) {
+    const double radius = roll_outer_diameter(scene) / 2;
+    net.couplings.push_back(
+        {kCoreBeam, -1, 0.0, scene.core.length, web_beam_stiffness_per_length(*scene.web, radius)});
+}
+
 BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& options,
                                std::vector<std::string>* assumptions) {
     COREMODAL_ASSERT(options.core_elements >= 1 && options.refine >= 1);
@@ -338,6 +348,7 @@ BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& optio
         for (size_t k = 0; k < effects.chucks.size(); ++k)
             add_chuck(net, scene, scene.supports.chucks[k], effects.chucks[k], stations, core, options.core_elements,
                       options.refine, notes);
+    if (scene.web) add_web(net, scene);
     if (assumptions) assumptions->insert(assumptions->end(), notes.begin(), notes.end());
     return net;
 }

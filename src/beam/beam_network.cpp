@@ -117,39 +117,62 @@ void add_beam(Assembler& out, const BeamNetwork& net, const BeamNetwork::Beam& b
     }
 }
 
-// Integrates d^T k d over the coupling range, d = N_b q_b - N_a q_a, piece by
-// piece between the nodes of both beams (each piece inside one element of
-// each), with 3-point Gauss: exact for the quadratic shape functions. Every
-// motion is interpolated alike (N = N_node I_6), so each pair of the six
-// nodes adds the 6x6 block (sign N_i)(sign N_j) k.
+// One piece of a coupling: the weights int N_i N_j dz of its nodes (signed
+// by the beam they belong to) times the 6x6 per length, into K.
+template <int n_nodes>
+void add_coupling_piece(Assembler& out, const Eigen::Matrix<double, n_nodes, n_nodes>& weights, const Matrix6& k,
+                        const std::array<int, n_nodes>& nodes) {
+    Eigen::Matrix<double, 6 * n_nodes, 6 * n_nodes> local;
+    for (int i = 0; i < n_nodes; ++i)
+        for (int j = 0; j < n_nodes; ++j) local.template block<6, 6>(6 * i, 6 * j) = weights(i, j) * k;
+    out.add_stiffness(local, dofs_of<n_nodes>(nodes));
+}
+
+// Integrates d^T k d over the coupling range, d = N_b q_b - N_a q_a (or
+// -N_a q_a to the ground), piece by piece between the nodes of both beams
+// (each piece inside one element of each), with 3-point Gauss: exact for the
+// quadratic shape functions. Every motion is interpolated alike (N = N_node
+// I_6), so each pair of nodes adds the 6x6 block (sign N_i)(sign N_j) k.
 void add_coupling(Assembler& out, const BeamNetwork& net, const BeamNetwork::Coupling& c) {
     const std::array<double, 3> g = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
     const std::array<double, 3> w = {5.0 / 18, 8.0 / 18, 5.0 / 18};
-    const BeamNetwork::Beam &a = net.beams.at(c.beam_a), &b = net.beams.at(c.beam_b);
+    const BeamNetwork::Beam& a = net.beams.at(c.beam_a);
+    const BeamNetwork::Beam* b = c.beam_b >= 0 ? &net.beams.at(c.beam_b) : nullptr;  // null: the ground
     std::vector<double> cuts = {c.z_start, c.z_end};
-    for (const auto* beam : {&a, &b})
-        for (int n : beam->nodes)
-            if (net.node_z[n] > c.z_start && net.node_z[n] < c.z_end) cuts.push_back(net.node_z[n]);
+    for (const auto* beam : {&a, b})
+        if (beam)
+            for (int n : beam->nodes)
+                if (net.node_z[n] > c.z_start && net.node_z[n] < c.z_end) cuts.push_back(net.node_z[n]);
     std::sort(cuts.begin(), cuts.end());
-    constexpr int n_nodes = 2 * kElementNodes;
+    constexpr int n3 = kElementNodes, n6 = 2 * kElementNodes;
     for (size_t p = 0; p + 1 < cuts.size(); ++p) {
         const double z0 = cuts[p], h = cuts[p + 1] - z0;
         if (h <= 1e-12 * (c.z_end - c.z_start)) continue;
-        const size_t ea = element_containing(net, a, z0 + h / 2), eb = element_containing(net, b, z0 + h / 2);
-        const TimoshenkoElement el_a = element_of(net, a, ea), el_b = element_of(net, b, eb);
-        const double za = net.node_z[a.nodes[2 * ea]], zb = net.node_z[b.nodes[2 * eb]];
-        Eigen::Matrix<double, n_nodes, n_nodes> weights = Eigen::Matrix<double, n_nodes, n_nodes>::Zero();
+        const size_t ea = element_containing(net, a, z0 + h / 2);
+        const TimoshenkoElement el_a = element_of(net, a, ea);
+        const double za = net.node_z[a.nodes[2 * ea]];
+        const auto na = element_nodes(a, ea);
+        if (!b) {
+            Eigen::Matrix<double, n3, n3> weights = Eigen::Matrix<double, n3, n3>::Zero();
+            for (size_t q = 0; q < g.size(); ++q) {
+                const Eigen::Matrix<double, 1, n3> N = element_shape((z0 + g[q] * h - za) / el_a.length);
+                weights += w[q] * h * N.transpose() * N;
+            }
+            add_coupling_piece<n3>(out, weights, c.stiffness_per_length, na);
+            continue;
+        }
+        const size_t eb = element_containing(net, *b, z0 + h / 2);
+        const TimoshenkoElement el_b = element_of(net, *b, eb);
+        const double zb = net.node_z[b->nodes[2 * eb]];
+        Eigen::Matrix<double, n6, n6> weights = Eigen::Matrix<double, n6, n6>::Zero();
         for (size_t q = 0; q < g.size(); ++q) {
             const double z = z0 + g[q] * h;
-            Eigen::Matrix<double, 1, n_nodes> N;
+            Eigen::Matrix<double, 1, n6> N;
             N << -element_shape((z - za) / el_a.length), element_shape((z - zb) / el_b.length);
             weights += w[q] * h * N.transpose() * N;
         }
-        Eigen::Matrix<double, 6 * n_nodes, 6 * n_nodes> local;
-        for (int i = 0; i < n_nodes; ++i)
-            for (int j = 0; j < n_nodes; ++j) local.block<6, 6>(6 * i, 6 * j) = weights(i, j) * c.stiffness_per_length;
-        const auto na = element_nodes(a, ea), nb = element_nodes(b, eb);
-        out.add_stiffness(local, dofs_of<n_nodes>({na[0], na[1], na[2], nb[0], nb[1], nb[2]}));
+        const auto nb = element_nodes(*b, eb);
+        add_coupling_piece<n6>(out, weights, c.stiffness_per_length, {na[0], na[1], na[2], nb[0], nb[1], nb[2]});
     }
 }
 

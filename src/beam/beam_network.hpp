@@ -35,7 +35,8 @@ struct BeamNetwork {
     };
     // A spring layer between two beams over z_start..z_end: energy per unit
     // length 1/2 d^T k d, d = (motion of beam b) - (motion of beam a), both
-    // interpolated with their own elements' shape functions.
+    // interpolated with their own elements' shape functions; beam_b = -1 ties
+    // beam a to the ground (a web's span, a foundation): d = -(motion of a).
     struct Coupling {
         int beam_a = 0, beam_b = 0;
         double z_start = 0, z_end = 0;  // m

@@ -1,5 +1,7 @@
 #include "effects/support_effects.hpp"
 
+#include "effects/web.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -58,6 +60,7 @@ std::vector<std::string> effect_names(const Scene& scene, const SupportEffects& 
     std::vector<std::string> out{"core"};
     if (scene.rest_paper) out.push_back("rest_paper");
     if (!effects.clamps.empty()) out.push_back(RigidClamp::kName);
+    if (scene.web) out.push_back(PaperWeb::kName);
     const auto& chucks = effects.chucks;
     if (chucks.empty()) return out;
     const auto any = [&](auto pred) { return std::any_of(chucks.begin(), chucks.end(), pred); };

@@ -26,11 +26,13 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
             if (e.segments > 0)
                 return "the " + chuck.name + " chuck's expanding element at " + significant(e.center * 1e3) +
                        " mm has " + std::to_string(e.segments) + " segments, which are not axisymmetric";
+    if (scene.web) return "the paper web ([web]) pulls on one line of the roll's surface, which is not axisymmetric";
     return std::nullopt;
 }
 
 std::optional<std::string> why_coupled(const Scene& scene) {
-    if (scene.mesh.file || one_sided_contact_reason(scene)) return std::nullopt;
+    // The web (a line on the roll's surface) is not built at this level yet: the solid takes it.
+    if (scene.mesh.file || one_sided_contact_reason(scene) || scene.web) return std::nullopt;
     std::optional<std::string> why;
     for (const ChuckSpec& chuck : scene.supports.chucks)
         for (const ExpandingElement& e : chuck.expanding) {

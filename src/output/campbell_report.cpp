@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -36,11 +37,13 @@ std::string campbell_rows(const CampbellResult& r) {
 }
 
 std::string critical_rows(const CampbellResult& r) {
-    std::string out = "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label\n";
+    std::string out = "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label,refined,"
+                      "interpolated_speed_rpm\n";
     for (const WhirlCrossing& c : r.critical)
         out += std::to_string(c.order) + "," + num(c.speed_hz * kRpmPerHz) + "," + num(c.speed_hz) + "," +
                num(c.frequency_hz) + "," + num(c.web_speed_m_s) + "," + std::to_string(c.track) + "," +
-               whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "\n";
+               whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "," + (c.refined ? "true" : "false") +
+               "," + num(c.interpolated_speed_hz * kRpmPerHz) + "\n";
     return out;
 }
 
@@ -48,7 +51,8 @@ toml::table critical_json(const WhirlCrossing& c) {
     return toml::table{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
                        {"speed_hz", c.speed_hz},    {"frequency_hz", c.frequency_hz},
                        {"web_speed_m_s", c.web_speed_m_s}, {"track", c.track},
-                       {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)}};
+                       {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)},
+                       {"refined", c.refined}, {"interpolated_speed_rpm", c.interpolated_speed_hz * kRpmPerHz}};
 }
 
 toml::table safe_speed_json(const CampbellResult& r) {
@@ -87,6 +91,16 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
 }
 
 std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
+
+std::string refinement_sentence(const CampbellResult& r) {
+    if (r.critical.empty()) return "";
+    const long refined = std::count_if(r.critical.begin(), r.critical.end(), [](const WhirlCrossing& c) { return c.refined; });
+    std::string out = "Critical speeds: " + std::to_string(refined) + " of " + std::to_string(r.critical.size()) +
+                      " refined by solving inside the sweep's bracket until it is narrower than " +
+                      significant(kCrossingSpeedTolerance, 1) + " of the speed";
+    if (refined < long(r.critical.size())) out += "; the others are linear interpolations (the track was lost inside the bracket)";
+    return out + ".\n\n";
+}
 
 std::string critical_table(const CampbellResult& r) {
     if (r.critical.empty()) return "No excitation line crosses a natural frequency within the sweep.\n";
@@ -154,6 +168,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
            "||(K + i w W G - w^2 M) x|| / ((||K|| + w W ||G|| + w^2 ||M||) ||x||) over every mode at every speed: "
         << significant(r.max_relative_residual, 2)
         << ". Complete: " << r.completeness << ". Modes are followed from speed to speed by MAC, starting at rest.\n\n"
+        << refinement_sentence(r)
         << "Tables: campbell.csv (speed, tracked mode, frequency, whirl), critical_speeds.csv, summary.json. Solve "
         << minutes_or_seconds(r.solve_seconds) << ".\n";
     return out.str();

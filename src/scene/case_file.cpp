@@ -28,6 +28,7 @@ Scene CaseReader::read(const toml::table& root) {
     scene.core = read_core(top, scene);
     scene.rest_paper = read_rest_paper(top, scene);
     scene.supports = read_supports(top, scene);
+    scene.web = read_web(top, scene);
     scene.analysis = read_analysis(top);
     scene.mesh = read_mesh(top, scene);
     read_rotation(top, scene);  // checked with every key; parse_rotating_case keeps it

@@ -270,6 +270,7 @@ constexpr TableTitle kTables[] = {
     {"calibration", "[calibration]: a sweep whose chuck factor is fitted, for `coremodal calibrate`"},
     {"parameter", "an item of parameters: key, and values or from/to/steps"},
     {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/rotation.md)"},
+    {"web", "[web]: the paper web pulls on one line of the roll's surface (docs/web.md)"},
     {"damping", "[damping]: relative damping of the modes for the forced response (docs/response.md)"},
     {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},
     {"rayleigh", "[damping] rayleigh: D = alpha M + beta K, from alpha and beta or from zeta at two frequencies"},

@@ -163,6 +163,7 @@ private:
     // ---- [rest_paper] ---------------------------------------------------
 
     std::optional<RestPaperSpec> read_rest_paper(const Section& top, Scene& scene) const;
+    std::optional<WebSpec> read_web(const Section& top, Scene& scene) const;
 
     // ---- materials ------------------------------------------------------
 

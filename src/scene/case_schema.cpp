@@ -44,6 +44,15 @@ constexpr PlausibleRange kPlausibleOvality{0.0, 10e-3, 0.3e-3, "core roundness d
 constexpr PlausibleRange kPlausibleEccentricity{0.0, 20e-3, 0.5e-3, "an eccentric rest roll: ~0.1-5 mm"};
 // Unbalance: balancing grades put a 100 kg roll at ~1e-3-1e-2 kg m.
 constexpr PlausibleRange kPlausibleUnbalance{0.0, 1.0, 2e-3, "rolls and cores: ~0.1-100 g m (balancing grades, ISO 21940)"};
+// [web] (docs/web.md): running tensions of printing and converting webs are
+// ~100-1000 N/m (Roisum, The Mechanics of Web Handling, TAPPI 1998), a guide
+// roller sits tens of centimetres to a few metres from the roll, papers and
+// boards are 30 um to ~1 mm thick, and paper's in-plane moduli are a few GPa
+// (MD 2-10 GPa: Niskanen, Paper Physics, 2nd ed., ch. 5).
+constexpr PlausibleRange kPlausibleWebTension{5.0, 20e3, 300.0, "running web tensions are ~100-1000 N/m (Roisum 1998)"};
+constexpr PlausibleRange kPlausibleWebSpan{0.02, 20.0, 1.0, "roll surface to the first guide roller: ~0.1-5 m"};
+constexpr PlausibleRange kPlausibleWebThickness{10e-6, 3e-3, 80e-6, "papers and boards are ~30 um to ~1 mm thick"};
+constexpr PlausibleRange kPlausibleWebModulus{0.2e9, 30e9, 5e9, "paper's in-plane moduli are ~2-10 GPa (Niskanen, Paper Physics)"};
 constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (DOMAIN.md section 7)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
@@ -108,6 +117,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "study", ValueKind::table),
         plain_key("", "calibration", ValueKind::table),
         plain_key("", "rotation", ValueKind::table),
+        plain_key("", "web", ValueKind::table),
         plain_key("", "damping", ValueKind::table),
         plain_key("", "excitation", ValueKind::table),
         plain_key("", "response", ValueKind::table),
@@ -192,6 +202,14 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("rotation", "web_speeds", ValueKind::list),
         plain_key("rotation", "excitation_orders", ValueKind::list),
         plain_key("rotation", "centrifugal_stiffening", ValueKind::boolean),
+
+        // [web]: the paper web pulls on the roll along a line (docs/web.md).
+        {"web", "tension", ValueKind::quantity, Dimension::line_force, 0.0, 1e6, true, kPlausibleWebTension},
+        {"web", "span", ValueKind::quantity, Dimension::length, 0.0, kMaxLength, true, kPlausibleWebSpan},
+        {"web", "angle", ValueKind::quantity, Dimension::angle, -2 * M_PI, 2 * M_PI},
+        {"web", "thickness", ValueKind::quantity, Dimension::length, 0.0, 0.1, true, kPlausibleWebThickness},
+        {"web", "modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
+        {"web", "shear_modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
 
         // [damping], [excitation], [response]: the forced response (docs/response.md).
         {"damping", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},

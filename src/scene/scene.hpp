@@ -91,6 +91,18 @@ struct ChuckSpec {
     double li() const;
 };
 
+// [web]: the paper web leaving the roll along one line of its outer surface
+// towards the first guide roller (effects/web.hpp, docs/web.md).
+struct WebSpec {
+    double tension = 0;        // N/m, per unit width
+    double span = 0;           // m, roll surface to the guide roller
+    double angle = 0;          // rad, the direction the web leaves in (0 = +x, about +z)
+    double thickness = 0;      // m
+    double modulus = 0;        // Pa, in-plane modulus along the web (MD)
+    double shear_modulus = 0;  // Pa, in-plane shear modulus
+    std::string shear_source;  // where shear_modulus comes from: "[web] shear_modulus" or the default's rule
+};
+
 enum class SupportKind { free, clamped, chucks };
 
 struct SupportSpec {
@@ -132,6 +144,7 @@ struct Scene {
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;
     SupportSpec supports;
+    std::optional<WebSpec> web;
     MeshSpec mesh;
     AnalysisSpec analysis;
     // Values the program assumed because the file did not say (e.g. a library

@@ -84,6 +84,12 @@ constexpr std::array kUnits = {
     UnitSpec{"kN/m", Dimension::stiffness, 1e3, false},
     UnitSpec{"MN/m", Dimension::stiffness, 1e6, false},
 
+    // A web's tension per unit width: the symbols of a stiffness, read as
+    // this dimension where a line force is expected (find_unit).
+    UnitSpec{"N/m", Dimension::line_force, 1.0, true},
+    UnitSpec{"kN/m", Dimension::line_force, 1e3, true},
+    UnitSpec{"N/mm", Dimension::line_force, 1e3, true},
+
     UnitSpec{"kg*m", Dimension::unbalance, 1.0, true},
     UnitSpec{"kg*mm", Dimension::unbalance, 1.0, true, 1e3},
     UnitSpec{"g*mm", Dimension::unbalance, 1.0, true, 1e6},
@@ -135,11 +141,17 @@ std::string lower(std::string_view s) {
     return out;
 }
 
-const UnitSpec* find_unit(std::string_view symbol) {
+// The unit of that symbol, of dimension `preferred` where two share it
+// (N/m: a stiffness or a line force).
+const UnitSpec* find_unit(std::string_view symbol, Dimension preferred) {
     const std::string key = normalise_unit(symbol);
+    const UnitSpec* found = nullptr;
     for (const UnitSpec& u : kUnits)
-        if (normalise_unit(u.symbol) == key) return &u;
-    return nullptr;
+        if (normalise_unit(u.symbol) == key) {
+            if (u.dimension == preferred) return &u;
+            if (!found) found = &u;
+        }
+    return found;
 }
 
 // "MPA" or "hz": the unit meant, if case is the only difference.
@@ -196,6 +208,8 @@ const char* dimension_name(Dimension d) {
             return "rotational stiffness";
         case Dimension::unbalance:
             return "unbalance (mass times eccentricity)";
+        case Dimension::line_force:
+            return "force per unit width";
     }
     return "quantity";
 }
@@ -226,6 +240,8 @@ const char* si_unit(Dimension d) {
             return "N*m/rad";
         case Dimension::unbalance:
             return "kg*m";
+        case Dimension::line_force:
+            return "N/m";
     }
     return "";
 }
@@ -275,7 +291,7 @@ double parse_quantity(std::string_view text, Dimension expected) {
             "'" + std::string(s) + "' has no unit; " + expected_text(expected) +
             ", or write a plain number (no quotes) for " + si_unit(expected));
     }
-    const UnitSpec* u = find_unit(unit);
+    const UnitSpec* u = find_unit(unit, expected);
     if (!u) {
         std::string msg = "unknown unit '" + std::string(unit) + "'";
         if (const UnitSpec* near = find_unit_ignoring_case(unit);

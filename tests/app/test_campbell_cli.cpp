@@ -83,13 +83,14 @@ TEST_CASE("coremodal campbell refuses what it cannot do before any work, and wri
     const Run still = run_coremodal(dir, "campbell still.toml --output out");
     CHECK(still.exit_code == 1);
     CHECK(still.err.find("still.toml: no [rotation] table") != std::string::npos);
-    // Segmented expanding elements (case 10): "auto" is the solid, which spins bodies of revolution only.
-    dir.write("segments.toml", slurp(std::string(COREMODAL_SOURCE_DIR) + "/cases/10-segmented-chuck-76x15-2200.toml") +
-                                   "\n[rotation]\nspeed = \"10 Hz\"\n");
-    const Run segments = run_coremodal(dir, "campbell segments.toml --output out");
-    CHECK(segments.exit_code == 1);
-    CHECK(segments.err.find("[rotation] at the solid level: the left chuck's expanding element") != std::string::npos);
-    CHECK(segments.err.find("right for a body of revolution only") != std::string::npos);
+    // A chuck not expanded (case 09): gravity and a one-sided contact stay
+    // put while the roll turns, constant in neither frame.
+    dir.write("loose.toml", slurp(std::string(COREMODAL_SOURCE_DIR) + "/cases/09-news-chucks-not-expanded-76x15-2200.toml") +
+                                "\n[rotation]\nspeed = \"10 Hz\"\n");
+    const Run loose = run_coremodal(dir, "campbell loose.toml --output out");
+    CHECK(loose.exit_code == 1);
+    CHECK(loose.err.find("[rotation] at the solid level: the left chuck is not expanded") != std::string::npos);
+    CHECK(loose.err.find("time-periodic") != std::string::npos);
     dir.write("bad.toml", kSmall + "[rotation]\nspeeds = [\"10 Hz\", \"5 Hz\"]\n");
     const Run bad = run_coremodal(dir, "campbell bad.toml --output out");
     CHECK(bad.exit_code == 1);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 
 namespace coremodal {
 namespace {
@@ -88,14 +89,6 @@ std::vector<std::string> beam_notes(const RotationSpec& rotation) {
     return notes;
 }
 
-// The note of the harmonic and solid levels on what they leave out.
-std::string omega_squared_note(const RotationSpec& rotation, const std::string& why) {
-    return std::string("terms of order Omega^2 not included: ") +
-           (rotation.centrifugal_stiffening ? "[rotation] centrifugal_stiffening = true asks for the centrifugal "
-                                              "prestress, which is not built yet, and " : "") +
-           "the convective Omega^2 term is left out with it (" + why + ")";
-}
-
 // The largest hoop and radial stress of the prestress at the sweep's top speed, MPa.
 std::string prestress_size(const CentrifugalPrestress& p, const RotationSpec& rotation) {
     double hoop = 0, radial = 0;
@@ -129,18 +122,48 @@ std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const Rota
     return notes;
 }
 
-std::vector<std::string> solid_notes(const RotationSpec& rotation) {
-    std::vector<std::string> notes{
-        "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies and "
-        "shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's term on "
-        "the hexahedra); spring layers, bearings and frames do not spin; a body of revolution only"};
-    notes.push_back(omega_squared_note(rotation, "a gyroscopic model to first order in Omega, as the beam and harmonic "
-                                                 "levels'"));
+std::vector<std::string> solid_notes(const RotationSpec& rotation, const RotatingSolid& solid) {
+    std::vector<std::string> notes;
+    if (solid.rotating_frame())
+        notes.push_back(
+            "rotation at the solid level in co-rotating coordinates (the scene is not a body of revolution; its "
+            "non-spinning parts look the same from every angle): M q'' + Omega G_c q' + (K + Omega^2 (K_sigma1 - "
+            "M_P)) q = 0, the Coriolis term G_c = 2 int rho N^T (e_z x) N dV and the spin softening M_P over every "
+            "mass; each mode's rotating-frame frequency f is brought to the stationary frame by the dominant "
+            "circumferential harmonic k of its shape on the roll's surface: f_stat = |f - k f_rot|, forward when "
+            "-k (f - k f_rot) > 0 (docs/rotation.md)");
+    else
+        notes.push_back(
+            "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies "
+            "and shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's "
+            "term on the hexahedra); spring layers, bearings and frames do not spin");
+    if (!rotation.centrifugal_stiffening && solid.rotating_frame()) {
+        notes.push_back("[rotation] centrifugal_stiffening = false: the centrifugal prestress's stiffness K_sigma1 "
+                        "is left out; the spin softening M_P stays (part of the change of coordinates)");
+        return notes;
+    }
+    if (!rotation.centrifugal_stiffening) {
+        notes.push_back("[rotation] centrifugal_stiffening = false: the terms of order Omega^2 (the centrifugal "
+                        "prestress and the convective spin softening) are left out");
+        return notes;
+    }
+    std::string pinned;
+    for (const std::string& p : solid.pinned_rigid_motions()) pinned += (pinned.empty() ? "" : ", ") + p;
+    notes.push_back(std::string("centrifugal stiffening at the solid level: Omega^2 ") +
+                    (solid.rotating_frame() ? "K_sigma1 on every spinning cell" : "K_Omega on every spinning cell, K_Omega = "
+                    "K_sigma1 - M_L (effects/rotation.hpp)") + ": the geometric stiffness of the stress of a static solve "
+                    "under the centrifugal load rho r e_r per unit Omega^2 (the scene's supports; stresses at the "
+                    "integration points, the material turned per point)" +
+                    (solid.rotating_frame() ? "" : ", less the convective spin softening") +
+                    "; linear in the prestress (sigma = Omega^2 sigma1)" +
+                    (pinned.empty() ? std::string()
+                                    : "; the static solve pinned one DOF for each rigid motion the supports leave "
+                                      "free (" + pinned + "), on which the load does no work"));
     return notes;
 }
 
 // The levels with a centrifugal term (effects/rotation.hpp).
-bool level_has_centrifugal(const std::string& level) { return level == "harmonic"; }
+bool level_has_centrifugal(const std::string& level) { return level == "harmonic" || level == "solid"; }
 
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
     for (const RotatingMode& m : rest)
@@ -148,11 +171,82 @@ double first_bending_hz(const std::vector<RotatingMode>& rest) {
     return 0;
 }
 
-// The sweep from rest over the scene's speeds, the modes followed by MAC;
-// fills the points, their residuals and the critical speeds.
-void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
-           const std::function<std::vector<RotatingMode>(double)>& modes_at, const RotationSpec& rotation,
-           CampbellResult& out) {
+// One end of a crossing's bracket: a speed, g = f_track - order f_rot there
+// (> 0 below the crossing, <= 0 above), and the track's mode.
+struct BracketEnd {
+    double speed_hz = 0, g = 0;
+    RotatingMode mode;
+};
+
+// The mode of `modes` that continues the track between the bracket's ends:
+// of their block, the largest sum of the MACs with the two ends' modes (a
+// planar pair at rest has MAC 1/2 with both whirls; the spinning end tells
+// them apart), at least kSameModeMac with one of them; none otherwise.
+const RotatingMode* continuation(const std::vector<RotatingMode>& modes, const BracketEnd& low, const BracketEnd& high) {
+    const RotatingMode* best = nullptr;
+    double best_sum = 0;
+    for (const RotatingMode& m : modes) {
+        if (m.block != low.mode.block) continue;
+        const double a = complex_mac(m.shape, low.mode.shape), b = complex_mac(m.shape, high.mode.shape);
+        if (std::max(a, b) >= kSameModeMac && a + b > best_sum) best = &m, best_sum = a + b;
+    }
+    return best;
+}
+
+// The track's mode at the sweep's step of speed `speed_hz`.
+std::optional<BracketEnd> bracket_end(const std::vector<Step>& steps, double speed_hz, int track, int order) {
+    for (const Step& step : steps)
+        if (step.reported && step.speed_hz == speed_hz)
+            for (size_t i = 0; i < step.modes.size(); ++i)
+                if (step.tracks[i] == track)
+                    return BracketEnd{speed_hz, step.modes[i].frequency_hz - order * speed_hz, step.modes[i]};
+    return std::nullopt;
+}
+
+// Regula falsi with the Illinois modification (the g of an end that stays
+// twice is halved, so that both ends close in) on g(f_rot) = f_track - k f_rot,
+// each trial nudged by a fraction of the tolerance towards the end that
+// stayed last, which closes the bracket in one solve once the estimate is
+// that good. Keeps the interpolation (refined = false) if the track is lost.
+void refine(WhirlCrossing& c, const std::vector<Step>& steps, const BlockModesAtSpeed& modes_at) {
+    constexpr double kNudge = 0.4;  // of the tolerance
+    std::optional<BracketEnd> low = bracket_end(steps, c.low_speed_hz, c.track, c.order);
+    std::optional<BracketEnd> high = bracket_end(steps, c.high_speed_hz, c.track, c.order);
+    if (!low || !high) return;
+    double g_low = low->g, g_high = high->g;  // Illinois-scaled
+    int last_moved = 0;                       // -1 low, +1 high
+    while (high->speed_hz - low->speed_hz > kCrossingSpeedTolerance * high->speed_hz) {
+        if (c.refinement_solves >= kMaxRefinementSolves) return;
+        const double width = high->speed_hz - low->speed_hz, tol = kCrossingSpeedTolerance * high->speed_hz;
+        double s = low->speed_hz + width * g_low / (g_low - g_high);
+        s += last_moved * -kNudge * tol;  // towards the end that did not move
+        s = std::clamp(s, low->speed_hz + 0.1 * tol, high->speed_hz - 0.1 * tol);
+        const std::vector<RotatingMode> modes = modes_at(s, low->mode.block);
+        ++c.refinement_solves;
+        const RotatingMode* m = continuation(modes, *low, *high);
+        if (!m) return;
+        const BracketEnd end{s, m->frequency_hz - c.order * s, *m};
+        if (end.g > 0) {
+            if (last_moved == -1) g_high /= 2;
+            low = end, g_low = end.g, last_moved = -1;
+        } else {
+            if (last_moved == +1) g_low /= 2;
+            high = end, g_high = end.g, last_moved = +1;
+        }
+    }
+    const double speed = low->speed_hz + (high->speed_hz - low->speed_hz) * low->g / (low->g - high->g);
+    c.low_speed_hz = low->speed_hz;
+    c.high_speed_hz = high->speed_hz;
+    c.speed_hz = speed;
+    c.frequency_hz = c.order * speed;
+    c.refined = true;
+}
+
+}  // namespace
+
+void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
+                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track,
+                    const BlockModesAtSpeed& block_modes_at) {
     std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
     int next_track = 1;
     for (size_t s = 0; s < steps.size(); ++s) {
@@ -160,9 +254,13 @@ void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
         step.modes = s == 0 ? at_rest : modes_at(step.speed_hz);
         if (s == 0) {
             for (size_t i = 0; i < step.modes.size(); ++i) step.tracks.push_back(next_track++);
-        } else {
-            follow(steps[s - 1], step, next_track);
+            continue;
         }
+        const int first_new_track = next_track;
+        follow(steps[s - 1], step, next_track);
+        if (label_new_track)
+            for (size_t i = 0; i < step.modes.size(); ++i)
+                if (step.tracks[i] >= first_new_track) step.modes[i].label = label_new_track(step.modes[i]);
     }
     const std::map<int, TrackInfo> info = track_info(steps);
     for (const Step& step : steps) {
@@ -178,7 +276,17 @@ void sweep(const std::vector<RotatingMode>& at_rest, size_t reported,
         out.points.push_back(std::move(point));
     }
     out.critical = critical_speeds(out.points, out.excitation_orders, out.roll_outer_diameter);
+    const BlockModesAtSpeed refine_with =
+        block_modes_at ? block_modes_at : [&](double speed, int) { return modes_at(speed); };
+    for (WhirlCrossing& c : out.critical) {
+        refine(c, steps, refine_with);
+        c.web_speed_m_s = web_speed(c.speed_hz, out.roll_outer_diameter);
+    }
+    std::sort(out.critical.begin(), out.critical.end(),
+              [](const WhirlCrossing& x, const WhirlCrossing& y) { return x.speed_hz < y.speed_hz; });
 }
+
+namespace {
 
 void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
                        CampbellResult& out) {
@@ -194,7 +302,7 @@ void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const B
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     const size_t reported = out.rest.modes.size();
     const int window = static_cast<int>(reported) + kExtraTrackedModes;
-    sweep(at_rest, reported, [&](double speed) { return network.modes_at(speed, window); }, rotation, out);
+    campbell_sweep(at_rest, reported, [&](double speed) { return network.modes_at(speed, window); }, rotation, out);
 }
 
 // The levels that solve with SLEPc run a sweep in one process.
@@ -204,28 +312,37 @@ void require_one_process(const Scene& scene, const std::string& level) {
                                              "without mpirun");
 }
 
-// The modes at rest from the spinning model itself, the roll's speeds from
-// its first bending mode, then the sweep.
+// The modes at rest from the spinning model itself (labelled), the roll's
+// speeds from its first bending mode, then the sweep.
 void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
-                     const std::function<std::vector<RotatingMode>(double)>& modes_at, CampbellResult& out) {
-    const std::vector<RotatingMode> at_rest = modes_at(0.0);
+                     const std::vector<RotatingMode>& at_rest, const ModesAtSpeed& modes_at, CampbellResult& out,
+                     const LabelMode& label_new_track = {}, const BlockModesAtSpeed& block_modes_at = {}) {
     const double f1 = first_bending_hz(at_rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    sweep(at_rest, reported, modes_at, rotation, out);
+    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track, block_modes_at);
 }
 
 void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
     require_one_process(scene, "harmonic");
     out.level = "harmonic";
-    out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) per wave number n";
-    out.completeness = "per wave number n, the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G "
-                       "at the band edge counts the modes below it (every eigenvalue of Q crosses zero downwards)";
+    out.completeness = "per wave number n and speed, the inertia of the full Hermitian Q(omega) = K - omega^2 M + i "
+                       "omega Omega G at the band edge and at the rigid line counts the modes between them (every "
+                       "eigenvalue of Q crosses zero downwards)";
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes,
-                                      rotation.centrifugal_stiffening);
+    RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes,
+                                rotation.centrifugal_stiffening);
+    harmonics.sweep_up_to(rotation.speeds_hz.back());
     out.notes = harmonic_notes(rotation, harmonics);
     out.n_dofs = harmonics.n_dofs();
-    sweep_from_rest(scene, rotation, reported, [&](double speed) { return harmonics.modes_at(speed); }, out);
+    sweep_from_rest(
+        scene, rotation, reported, harmonics.modes_at(0.0),
+        [&](double speed) { return harmonics.modes_at(speed, Labels::none); }, out,
+        [&](const RotatingMode& m) { return harmonics.label_of(m); },
+        [&](double speed, int n) { return harmonics.modes_at(speed, Labels::none, n); });
+    out.solver = "per wave number n, the small Hermitian problem in a basis of its modes at rest and their static "
+                 "responses to the spin's forces, every mode's residual taken on the full problem; " +
+                 std::to_string(harmonics.n_full_solves()) + " of " + std::to_string(harmonics.n_solves()) +
+                 " problems (one n at one speed) solved whole with SLEPc PEP (TOAR) where the basis fell short";
 }
 
 void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
@@ -234,11 +351,20 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
     out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
                        "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
-    out.notes = solid_notes(rotation);
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes);
+    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes,
+                              {.centrifugal_stiffening = rotation.centrifugal_stiffening});
+    out.notes = solid_notes(rotation, solid);
     out.n_dofs = solid.n_dofs();
-    sweep_from_rest(scene, rotation, reported, [&](double speed) { return solid.modes_at(speed); }, out);
+    sweep_from_rest(scene, rotation, reported, solid.modes_at(0.0), [&](double speed) { return solid.modes_at(speed); },
+                    out);
+    if (solid.rotating_frame())
+        out.notes.push_back("the dominant harmonic's share of a mode's energy on the roll's surface, the smallest "
+                            "over every mode reported at every speed above 0: " +
+                            significant(solid.min_harmonic_share(), 3) +
+                            " (1 for a body of revolution; below 1 the segments mix harmonics k and k +- their "
+                            "number, and the stationary frequency is that of the dominant one; below 1/2 a mode has "
+                            "no one stationary frequency, but one at f - k f_rot for each harmonic k it carries)");
 }
 
 }  // namespace
@@ -271,7 +397,11 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
                 const double g0 = a.frequency_hz - k * s0, g1 = b->frequency_hz - k * s1;
                 if (!(g0 > 0 && g1 <= 0)) continue;  // the line rises through the curve
                 const double t = g0 / (g0 - g1), speed = s0 + t * (s1 - s0);
-                out.push_back({k, a.track, b->whirl, a.label, speed, k * speed, web_speed(speed, dp)});
+                WhirlCrossing c{k, a.track, b->whirl, a.label, speed, k * speed, web_speed(speed, dp)};
+                c.low_speed_hz = s0;
+                c.high_speed_hz = s1;
+                c.interpolated_speed_hz = speed;
+                out.push_back(c);
             }
         }
     std::sort(out.begin(), out.end(), [](const WhirlCrossing& x, const WhirlCrossing& y) { return x.speed_hz < y.speed_hz; });

@@ -20,6 +20,7 @@
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,18 @@ struct CampbellPoint {
     std::vector<CampbellMode> modes;  // the lowest ones, as many as at rest
 };
 
+// Critical speeds are refined until the bracket [low, high] of f_rot that
+// holds the root of f_track(f_rot) - k f_rot is this narrow relative to it.
+constexpr double kCrossingSpeedTolerance = 1e-6;
+// Solves per crossing at most (a smooth f_track needs 4 to 8).
+constexpr int kMaxRefinementSolves = 30;
+
 // A crossing of the excitation line f = order * f_rot with a tracked
-// natural frequency, by linear interpolation between two speeds of the sweep.
+// natural frequency: found between two speeds of the sweep (low, high),
+// then refined by solving at speeds inside that bracket (run_campbell:
+// regula falsi with the Illinois modification on g = f_track - order f_rot,
+// the track followed by MAC from the bracket's ends) until the bracket is
+// narrower than kCrossingSpeedTolerance relative to the speed.
 struct WhirlCrossing {
     int order = 1;
     int track = 0;
@@ -57,6 +68,10 @@ struct WhirlCrossing {
     double speed_hz = 0;      // f_rot at the crossing
     double frequency_hz = 0;  // = order * speed_hz
     double web_speed_m_s = 0; // pi Dp f_rot
+    double low_speed_hz = 0, high_speed_hz = 0;  // the bracket: the sweep's speeds, or refined
+    double interpolated_speed_hz = 0;            // linear interpolation between the sweep's two speeds
+    bool refined = false;     // false: the interpolation (the track was lost inside the bracket)
+    int refinement_solves = 0;
 };
 
 struct CampbellResult {
@@ -88,8 +103,27 @@ void require_spinning_level(const Scene& scene);
 // already); SolveError from the solver.
 CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {});
 
-// Crossings of f = order f_rot with every track of `points` (tests, and run_campbell).
+// Crossings of f = order f_rot with every track of `points`, by linear
+// interpolation between two speeds (run_campbell refines them).
 std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& points, const std::vector<int>& orders,
                                            double roll_outer_diameter);
+
+// The modes of a spinning level at a speed (Hz), ascending, and a mode's label.
+using ModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz)>;
+using LabelMode = std::function<ModeLabel(const RotatingMode&)>;
+// The modes of one independent problem (RotatingMode::block) at a speed, for
+// a level where solving one is cheaper than solving all (the harmonic level:
+// one wave number).
+using BlockModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz, int block)>;
+
+// run_campbell's sweep on any level's modes (tests): from the modes at rest
+// over rotation.speeds_hz, tracked by MAC; fills out.points and
+// out.critical (refined), out.excitation_orders and out.roll_outer_diameter
+// set by the caller. With `label_new_track` the modes of modes_at need no
+// label: only a mode that starts a track is labelled. With `block_modes_at`
+// a crossing's refinement solves only its track's block.
+void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
+                    const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track = {},
+                    const BlockModesAtSpeed& block_modes_at = {});
 
 }  // namespace coremodal

@@ -219,6 +219,10 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     if (const auto why = one_sided_contact_reason(scene))
         throw InputError(scene.source_file + ": model = \"coupled\": " + *why +
                          "; expected model = \"solid\" or \"auto\"");
+    if (scene.web)
+        throw InputError(scene.source_file + ": model = \"coupled\": the paper web ([web]) is not modelled at the "
+                                             "coupled-harmonic level yet; expected model = \"solid\", \"beam\" or "
+                                             "\"auto\"");
     if (scene.mesh.file)
         throw InputError(scene.source_file + ": model = \"coupled\": a [mesh] file; the coupled level meshes the "
                                              "scene's own r-z section; expected model = \"solid\"");

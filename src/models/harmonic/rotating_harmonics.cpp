@@ -3,6 +3,7 @@
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
+#include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/tube_section.hpp"
 #include "models/harmonic/harmonic_search.hpp"
 #include "models/harmonic/harmonic_shapes.hpp"
@@ -19,6 +20,11 @@ namespace {
 // Modes solved per wave number beyond those it has among the window at rest:
 // a backward wave coming down with speed, or a pair's second member.
 constexpr int kExtraModesPerHarmonic = 2;
+// The modes at rest in each n's projection basis (projected_gyroscopic.hpp):
+// this many times the modes solved per speed, plus a few, so that the modes
+// at speed, mixtures of the ones at rest nearby, are carried by the basis.
+constexpr int kRestBasisFactor = 2;
+constexpr int kExtraRestModes = 4;
 
 const Progress kQuiet = [](const std::string&) {};
 
@@ -83,11 +89,12 @@ struct RotatingHarmonics::Harmonic {
     // harmonic's own lowest eigenvalue at rest, so that the target sits
     // next to its modes (a ring harmonic's lie far above the scene's first).
     double lambda_scale = 1;
+    std::unique_ptr<ProjectedGyroscopic> projected;  // SpinSolver::projected
 };
 
 RotatingHarmonics::~RotatingHarmonics() = default;
 
-RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening)
+RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening, SpinSolver solver)
     : scene_(scene),
       window_(window),
       section_(make_section_mesh(make_tube_section(scene), scene.supports.clamps)),
@@ -125,18 +132,56 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
         const long in_window = std::count_if(rest[n].begin(), rest[n].end(), [&](double l) { return l <= edge * (1 + 1e-9); });
         h->n_modes = static_cast<int>(in_window) + kExtraModesPerHarmonic;
         h->lambda_scale = n <= 1 ? request.lambda_scale : rest_lowest[n];
+        if (solver == SpinSolver::projected) {
+            SolveRequest r = request;
+            r.n_modes = h->n_modes;
+            r.lambda_scale = h->lambda_scale;
+            h->projected = std::make_unique<ProjectedGyroscopic>(h->problem.operators, r,
+                                                                 kRestBasisFactor * h->n_modes + kExtraRestModes,
+                                                                 h->problem.cos_rows, h->problem.sin_rows);
+        }
         harmonics_.push_back(std::move(h));
     }
 }
 
-std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz) const {
+// The label of the larger real snapshot of x = re + i im, on the revolved section.
+ModeLabel RotatingHarmonics::label(const SpinningHarmonic& h, const FamilyValues& re, const FamilyValues& im,
+                                   double omega) const {
+    const FamilyValues& snapshot = squared_norm(re) >= squared_norm(im) ? re : im;
+    const std::vector<double> field =
+        revolved_field(revolved_, h.dofs, h.n, snapshot.cos_values, snapshot.sin_values, frame_nodes_);
+    return classifier_->classify(field, omega * omega, lambda_scale_);
+}
+
+ModeLabel RotatingHarmonics::label_of(const RotatingMode& mode) const {
+    for (const auto& h : harmonics_) {
+        if (h->problem.n != mode.block) continue;
+        const size_t n_cos = h->problem.dofs.n_dofs;
+        FamilyValues re, im;
+        for (Eigen::Index k = 0; k < mode.shape.size(); ++k) {
+            (size_t(k) < n_cos ? re.cos_values : re.sin_values).push_back(mode.shape[k].real());
+            (size_t(k) < n_cos ? im.cos_values : im.sin_values).push_back(mode.shape[k].imag());
+        }
+        return label(h->problem, re, im, 2 * M_PI * mode.frequency_hz);
+    }
+    COREMODAL_ASSERT(!"a mode of a wave number this level solves");
+    return {};
+}
+
+std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels labels, int only_block) const {
     const double spin = 2 * M_PI * speed_hz;
     SolveRequest request = solve_request(scene_);
     std::vector<RotatingMode> out;
     for (const auto& h : harmonics_) {
+        if (only_block >= 0 && h->problem.n != only_block) continue;
         request.n_modes = h->n_modes;
         request.lambda_scale = h->lambda_scale;
-        const GyroscopicModes solved = solve_gyroscopic(h->problem.operators, spin, request, kQuiet);
+        std::optional<GyroscopicModes> projected;
+        if (h->projected) projected = h->projected->modes_at(spin);
+        ++n_solves_;
+        if (!projected) ++n_full_solves_;
+        const GyroscopicModes solved =
+            projected ? std::move(*projected) : solve_gyroscopic(h->problem.operators, spin, request, kQuiet);
         if (!solved.verification.complete)
             throw SolveError("the modes of wave number n = " + std::to_string(h->problem.n) + " at " +
                              std::to_string(speed_hz * 60) + " rpm are not proven complete");
@@ -155,18 +200,19 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz) const {
             // solver returns any mix of them: standing, no whirl.
             if (speed_hz > 0 && std::abs(m.circularity) >= kPlanarCircularity)
                 m.whirl = m.circularity > 0 ? Whirl::forward : Whirl::backward;
-            // The label of its largest real snapshot, on the revolved section.
-            const FamilyValues& snapshot = squared_norm(re) >= squared_norm(im) ? re : im;
-            const std::vector<double> field = revolved_field(revolved_, h->problem.dofs, h->problem.n,
-                                                             snapshot.cos_values, snapshot.sin_values, frame_nodes_);
-            m.label = classifier_->classify(field, omega * omega, lambda_scale_);
+            if (labels == Labels::every_mode) m.label = label(h->problem, re, im, omega);
             out.push_back(std::move(m));
         }
     }
     std::stable_sort(out.begin(), out.end(),
                      [](const RotatingMode& a, const RotatingMode& b) { return a.frequency_hz < b.frequency_hz; });
-    if (static_cast<int>(out.size()) > window_) out.resize(window_);
+    if (only_block < 0 && static_cast<int>(out.size()) > window_) out.resize(window_);
     return out;
+}
+
+void RotatingHarmonics::sweep_up_to(double speed_hz) {
+    for (auto& h : harmonics_)
+        if (h->projected) h->projected->prove_rigid_line_clear(2 * M_PI * speed_hz);
 }
 
 long RotatingHarmonics::n_dofs() const {

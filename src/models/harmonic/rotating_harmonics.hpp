@@ -12,6 +12,13 @@
 // have no mode among the lowest `window` and their lowest frequency rises),
 // so that every speed solves the same problems and modes can be followed by
 // MAC from speed to speed within each n.
+//
+// How each speed is solved (SpinSolver): by default in a basis fixed per n
+// (eigensolve/projected_gyroscopic.hpp: the modes at rest of n and the
+// static responses to their spin forces), every mode verified by its
+// residual on the full problem and the set proven complete by the inertia
+// of the full Q(omega) at every speed; where either fails, that n at that
+// speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
 #include "beam/rotating_modes.hpp"
@@ -25,28 +32,48 @@
 
 namespace coremodal {
 
+enum class SpinSolver { projected, full };
+// Labelling a mode (the classifier on the revolved section) costs more than
+// solving it in the projected basis; a sweep labels a track once.
+enum class Labels { every_mode, none };
+
 class RotatingHarmonics {
 public:
     // The section, its materials and the spinning operator sets of the wave
     // numbers the lowest `window` modes at rest (pairs counted twice) need;
     // with the centrifugal term (the prestress solved once) when
     // `centrifugal_stiffening`.
-    RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening = false);
+    RotatingHarmonics(const Scene& scene, int window, bool centrifugal_stiffening = false,
+                      SpinSolver solver = SpinSolver::projected);
     ~RotatingHarmonics();
 
     // The lowest `window` modes at spin speed f_rot (Hz), ascending; each
     // RotatingMode's `block` is its wave number n and its shape the values
     // of its problem's DOFs (a, b), so MAC compares modes of one n only.
-    std::vector<RotatingMode> modes_at(double speed_hz) const;
+    // Labels::none leaves every label empty (label_of gives it later).
+    // With `only_block` >= 0 only that wave number is solved (all its modes,
+    // not cut to the window): a critical speed's refinement follows one track.
+    std::vector<RotatingMode> modes_at(double speed_hz, Labels labels = Labels::every_mode, int only_block = -1) const;
+    // Tells the projected solver the sweep's top speed (Hz): a wave number
+    // without modes below the rigid line at rest is proven to have none up
+    // to it (ProjectedGyroscopic::prove_rigid_line_clear), one count per
+    // speed fewer.
+    void sweep_up_to(double speed_hz);
+    // The label modes_at gives a mode of this level.
+    ModeLabel label_of(const RotatingMode& mode) const;
 
     long n_dofs() const;                      // the largest problem's DOFs
     std::vector<int> wave_numbers() const;    // the n solved at every speed
     double max_relative_residual() const { return max_residual_; }
     // The centrifugal prestress, when the term is included.
     const CentrifugalPrestress* prestress() const { return prestress_.get(); }
+    // Problems (one n at one speed) solved whole, and in all.
+    long n_full_solves() const { return n_full_solves_; }
+    long n_solves() const { return n_solves_; }
 
 private:
     struct Harmonic;
+    ModeLabel label(const SpinningHarmonic& h, const FamilyValues& re, const FamilyValues& im, double omega) const;
     const Scene& scene_;
     int window_;
     SectionMesh section_;
@@ -57,6 +84,7 @@ private:
     std::unique_ptr<CentrifugalPrestress> prestress_;
     double lambda_scale_ = 1;
     mutable double max_residual_ = 0;
+    mutable long n_full_solves_ = 0, n_solves_ = 0;
 };
 
 }  // namespace coremodal

@@ -6,23 +6,42 @@
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "models/choose.hpp"
 #include "models/part_materials.hpp"
+#include "models/solid/centrifugal_prestress.hpp"
+#include "models/solid/rotating_frame.hpp"
 #include "models/solid/solid_level.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
 
 #include <cmath>
 #include <complex>
+#include <set>
 
 namespace coremodal {
 namespace {
 
 const Progress kQuiet = [](const std::string&) {};
 
-// The scene's mesh, after the check that it is a body of revolution (header).
+// The scene's mesh, after the check that it can spin (header).
 Mesh spinnable_mesh(const Scene& scene) {
     require_spinnable_by_solid(scene);
     return make_solid_mesh(scene);
 }
+
+SpinFrame chosen_frame(const Scene& scene, SpinFrame asked) {
+    if (asked != SpinFrame::automatic) return asked;
+    // The web does not spin: the stationary frame holds it as it is, when
+    // everything that spins is a body of revolution.
+    Scene spinning = scene;
+    spinning.web.reset();
+    return why_not_axisymmetric(spinning) ? SpinFrame::rotating : SpinFrame::stationary;
+}
+
+// Rotating frame: the rotating-frame modes solved per mode wanted, since
+// the lowest in the stationary frame are not the lowest in the rotating
+// one (an n-wave moves by n f_rot between the two).
+constexpr int kRotatingFrameSolveFactor = 2;
+// The largest circumferential harmonic read on the roll's surface.
+constexpr int kMaxSurfaceHarmonic = 12;
 
 // Forward (+1) to backward (-1): 2 sum Im(ux conj uy) / sum (|ux|^2 + |uy|^2)
 // over `nodes` of the complex node displacements re + i im (n_nodes x 3).
@@ -45,30 +64,57 @@ double squared_norm(const std::vector<double>& v) {
 }  // namespace
 
 void require_spinnable_by_solid(const Scene& scene) {
-    if (const auto why = why_not_axisymmetric(scene))
+    if (const auto why = why_not_corotating(scene))
         throw InputError(scene.source_file + ": [rotation] at the solid level: " + *why +
-                         "; the solid level's gyroscopic term is the stationary frame's, right for a body of "
-                         "revolution only (docs/rotation.md); expected full bands, no [mesh] file and expanded chucks");
+                         " (docs/rotation.md); expected expanded chucks (contact = \"uniform\" or bonded)");
 }
 
-RotatingSolid::RotatingSolid(const Scene& scene, int window)
-    : scene_(scene), window_(window), mesh_(spinnable_mesh(scene)) {
+RotatingSolid::RotatingSolid(const Scene& scene, int window, SolidSpinOptions options)
+    : scene_(scene), window_(window), mesh_(spinnable_mesh(scene)), frame_(chosen_frame(scene, options.frame)) {
     const ChuckSupports chucks = chuck_supports(scene, mesh_);
+    if (frame_ == SpinFrame::rotating)
+        if (const auto why = anisotropic_support(chucks))
+            throw InputError(scene.source_file + ": [rotation] at the solid level: " + *why +
+                             ", and the scene is not a body of revolution (" +
+                             why_not_axisymmetric(scene).value_or("asked for the rotating frame") +
+                             "): neither frame sees constant coefficients (docs/rotation.md)");
     LevelModes summary;  // the model summary and warnings a run at rest reports; not repeated here
     dofs_ = solid_dofs(scene, mesh_, chucks, summary);
-    // Every cell spins (roll, chuck bodies and shafts); the couplings
-    // (spring layers, bearings, frames) carry no gyroscopic term.
-    operators_ = assemble_petsc(mesh_, part_materials(scene, mesh_.part_names, "generated mesh"), dofs_,
-                                chucks.couplings, PETSC_COMM_WORLD, {Term::gyroscopic});
+    assemble(scene, chucks, options.centrifugal_stiffening);
     roll_nodes_ = roll_nodes(mesh_);
     classifier_ = std::make_unique<ModeClassifier>(mesh_, roll_nodes_);
     signature_ = std::make_unique<ModeSignatureSampler>(mesh_);
     lambda_scale_ = solve_request(scene).lambda_scale;
+    if (frame_ == SpinFrame::rotating) {
+        surface_nodes_ = roll_surface_nodes(mesh_, roll_nodes_);
+        std::set<long> angles;  // distinct angles around: the harmonics they resolve
+        for (int n : surface_nodes_) angles.insert(std::lround(std::atan2(mesh_.nodes[n][1], mesh_.nodes[n][0]) * 1e6));
+        max_wave_number_ = std::min<int>(kMaxSurfaceHarmonic, static_cast<int>(angles.size()) / 2 - 1);
+    }
 }
 
-RotatingMode RotatingSolid::named_mode(Vec real, Vec imag, double omega, double speed_hz) const {
-    const std::vector<double> re = gather_node_displacements(real, mesh_, dofs_);
-    const std::vector<double> im = gather_node_displacements(imag, mesh_, dofs_);
+// Every cell spins (roll, chuck bodies and shafts); the couplings (spring
+// layers, bearings, frames) carry no gyroscopic or centrifugal term in the
+// stationary frame. In the rotating frame the Coriolis and spin-softening
+// terms act on every mass (a change of coordinates), the prestress's
+// stiffness on the cells only.
+void RotatingSolid::assemble(const Scene& scene, const ChuckSupports& chucks, bool centrifugal_stiffening) {
+    const std::vector<PartMaterial> materials =
+        part_materials(scene, mesh_.part_names, scene.mesh.file ? *scene.mesh.file : "generated mesh");
+    const bool stationary = frame_ == SpinFrame::stationary;
+    operators_ = assemble_petsc(mesh_, materials, dofs_, chucks.couplings, PETSC_COMM_WORLD,
+                                stationary ? std::vector<Term>{Term::gyroscopic} : std::vector<Term>{});
+    if (centrifugal_stiffening) {
+        const CentrifugalState state = solve_centrifugal_state(operators_, mesh_, materials, dofs_);
+        add_centrifugal_term(operators_, mesh_, materials, dofs_, state,
+                             stationary ? CentrifugalPart::stationary_frame : CentrifugalPart::stress_stiffness_only);
+        pinned_ = state.pinned;
+    }
+    if (!stationary) add_rotating_frame_terms(operators_, dofs_);
+}
+
+RotatingMode RotatingSolid::named_mode(const std::vector<double>& re, const std::vector<double>& im, double omega,
+                                       double speed_hz) const {
     RotatingMode m;
     m.frequency_hz = omega / (2 * M_PI);
     // The label of its largest real snapshot, as the solid run names modes.
@@ -87,20 +133,76 @@ RotatingMode RotatingSolid::named_mode(Vec real, Vec imag, double omega, double 
 
 std::vector<RotatingMode> RotatingSolid::modes_at(double speed_hz) const {
     SolveRequest request = solve_request(scene_);
-    request.n_modes = window_;
+    request.n_modes = frame_ == SpinFrame::rotating ? kRotatingFrameSolveFactor * window_ : window_;
     const GyroscopicModes solved = solve_gyroscopic(operators_, 2 * M_PI * speed_hz, request, kQuiet);
     if (!solved.verification.complete)
         throw SolveError("the solid level's modes at " + std::to_string(speed_hz * 60) + " rpm are not proven complete");
-    const double rigid_omega = gyroscopic_rigid_omega(request);
-    std::vector<RotatingMode> out;
-    for (const GyroscopicMode& g : solved.modes) {
-        RotatingMode m = named_mode(g.real, g.imag, g.omega < rigid_omega ? 0.0 : g.omega, speed_hz);
-        m.relative_residual = g.relative_residual;
-        max_residual_ = std::max(max_residual_, g.relative_residual);
-        out.push_back(std::move(m));
-    }
+    for (const GyroscopicMode& g : solved.modes) max_residual_ = std::max(max_residual_, g.relative_residual);
+    std::vector<RotatingMode> out =
+        frame_ == SpinFrame::rotating ? rotating_frame_modes(solved, speed_hz) : stationary_frame_modes(solved, speed_hz);
     if (static_cast<int>(out.size()) > window_) out.resize(window_);
     return out;
+}
+
+std::vector<RotatingMode> RotatingSolid::stationary_frame_modes(const GyroscopicModes& solved, double speed_hz) const {
+    const double rigid_omega = gyroscopic_rigid_omega(solve_request(scene_));
+    std::vector<RotatingMode> out;
+    for (const GyroscopicMode& g : solved.modes) {
+        RotatingMode m = named_mode(gather_node_displacements(g.real, mesh_, dofs_),
+                                    gather_node_displacements(g.imag, mesh_, dofs_),
+                                    g.omega < rigid_omega ? 0.0 : g.omega, speed_hz);
+        m.relative_residual = g.relative_residual;
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+// Each rotating-frame mode x e^{i omega t} with dominant harmonic k on the
+// roll's surface is, seen from the stationary frame, x at omega - k Omega
+// (a negative one is the conjugate mode at its absolute value): f_stat =
+// |f - k f_rot|, forward when -k (f - k f_rot) > 0 (header). Only the modes
+// below the highest solved frequency less the largest |k| f_rot are kept:
+// those the rotating-frame solve is complete for.
+std::vector<RotatingMode> RotatingSolid::rotating_frame_modes(const GyroscopicModes& solved, double speed_hz) const {
+    const double rigid_hz = gyroscopic_rigid_omega(solve_request(scene_)) / (2 * M_PI);
+    struct Converted {
+        RotatingMode mode;
+        double share;
+    };
+    std::vector<Converted> out;
+    double highest_hz = 0;
+    int largest_n = 0;
+    for (const GyroscopicMode& g : solved.modes) {
+        std::vector<double> re = gather_node_displacements(g.real, mesh_, dofs_);
+        std::vector<double> im = gather_node_displacements(g.imag, mesh_, dofs_);
+        const double f = g.omega / (2 * M_PI);
+        highest_hz = std::max(highest_hz, f);
+        const WaveContent wave = dominant_harmonic(re, im, mesh_, surface_nodes_, max_wave_number_);
+        largest_n = std::max(largest_n, std::abs(wave.k));
+        const double f_signed = f - wave.k * speed_hz;
+        if (f_signed < 0)
+            for (double& v : im) v = -v;  // the conjugate mode
+        const double f_stat = std::abs(f_signed) < rigid_hz ? 0.0 : std::abs(f_signed);
+        RotatingMode m = named_mode(re, im, 2 * M_PI * f_stat, speed_hz);
+        m.relative_residual = g.relative_residual;
+        if (speed_hz > 0 && wave.k != 0 && m.label.type != "rigid" && f_stat > 0)
+            m.whirl = -wave.k * f_signed > 0 ? Whirl::forward : Whirl::backward;
+        else
+            m.whirl = Whirl::none;
+        out.push_back({std::move(m), wave.share});
+    }
+    const double complete_below = highest_hz - largest_n * speed_hz;
+    std::erase_if(out, [&](const Converted& c) { return c.mode.frequency_hz > complete_below; });
+    std::sort(out.begin(), out.end(),
+              [](const Converted& a, const Converted& b) { return a.mode.frequency_hz < b.mode.frequency_hz; });
+    if (static_cast<int>(out.size()) > window_) out.resize(window_);
+    std::vector<RotatingMode> modes;
+    for (Converted& c : out) {
+        // At rest a pair's modes stand (both directions, half each): no conversion to judge.
+        if (speed_hz > 0) min_share_ = std::min(min_share_, c.share);
+        modes.push_back(std::move(c.mode));
+    }
+    return modes;
 }
 
 }  // namespace coremodal

@@ -1,42 +1,61 @@
 // The solid level of a spinning scene ([rotation], docs/rotation.md): the
-// solid level's mesh, DOF map and operator set with the cells' gyroscopic
-// term (element/element.hpp, element_gyroscopic), assembled once; at each
-// speed the quadratic solver (eigensolve/gyroscopic_solver.hpp: SLEPc PEP,
-// every mode verified by its residual, complete by the inertia of the
-// Hermitian Q(omega)) on the whole solid. Each mode is labelled on the mesh
-// (its largest real snapshot, with the solid run's classifier) and marked
-// forward or backward by the circularity of its x/y motion at the roll's
-// nodes (whirl for n = 1, the travelling wave's direction for n >= 2).
+// solid level's mesh, DOF map and operator set with the spin terms,
+// assembled once; at each speed the quadratic solver
+// (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every mode verified by its
+// residual, complete by the inertia of the Hermitian Q(omega)) on the whole
+// solid. Each mode is labelled on the mesh (its largest real snapshot, with
+// the solid run's classifier) and marked forward or backward (whirl for
+// n = 1, the travelling wave's direction for n >= 2).
 //
-// The gyroscopic term is the stationary frame's (the material carried
-// through each point at Omega d/dtheta), right for a body of revolution
-// only: a scene that is not one (segmented expanding elements, a one-sided
-// contact, a user mesh) is refused, since its spinning parts would carry
-// their asymmetry round with them (time-periodic coefficients in the
-// stationary frame). Every scene the solid level spins, the harmonic level
-// spins too: the solid's spinning modes check that level's on the same
-// scene and give the 3D shapes.
+// Two frames (SpinFrame):
+// - stationary, for a body of revolution: the material carried through each
+//   point at Omega d/dtheta (element_gyroscopic; K_Omega = K_sigma1 - M_L);
+//   a forward mode by the circularity of its x/y motion at the roll's nodes.
+// - rotating, for a scene that is not one (segmented expanding elements, a
+//   user mesh) but whose non-spinning parts look the same from every angle
+//   (models/solid/rotating_frame.hpp): the co-rotating equations, constant
+//   in time there; each mode's frequency is brought to the stationary frame
+//   by its dominant circumferential harmonic on the roll's surface.
+// A one-sided contact under gravity, or a bearing stiffer in x than in y,
+// is refused with the reason (time-periodic in both frames).
 #pragma once
 
 #include "assembly/dof_map.hpp"
 #include "assembly/operator_set.hpp"
+#include "assembly/chuck_supports.hpp"
 #include "beam/rotating_modes.hpp"
+#include "eigensolve/gyroscopic_solver.hpp"
 #include "mesh/mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace coremodal {
 
+enum class SpinFrame { automatic, stationary, rotating };
+
+// What a spinning solid includes beyond the gyroscopic term.
+struct SolidSpinOptions {
+    // automatic: stationary for a body of revolution, rotating otherwise.
+    // A test may ask for the rotating frame on a body of revolution (both
+    // must then give the same stationary frequencies).
+    SpinFrame frame = SpinFrame::automatic;
+    // [rotation] centrifugal_stiffening (the case file's default is true):
+    // Term::centrifugal, K_Omega = K_sigma1 - M_L (effects/rotation.hpp),
+    // from a static solve under the centrifugal load (models/solid/centrifugal_prestress).
+    bool centrifugal_stiffening = false;
+};
+
 class RotatingSolid {
 public:
-    // Meshes and assembles the scene with its gyroscopic term; the lowest
-    // `window` modes are solved at every speed. InputError for a scene that
-    // is not a body of revolution (above).
-    RotatingSolid(const Scene& scene, int window);
+    // Meshes and assembles the scene with its gyroscopic term (and the
+    // centrifugal term when asked); the lowest `window` modes are solved at
+    // every speed. InputError for a scene that is not a body of revolution (above).
+    RotatingSolid(const Scene& scene, int window, SolidSpinOptions options = {});
 
     // The lowest `window` modes at spin speed f_rot (Hz), ascending; each
     // RotatingMode's shape is the complex signature of its displacement on
@@ -47,9 +66,19 @@ public:
 
     long n_dofs() const { return dofs_.n_dofs; }
     double max_relative_residual() const { return max_residual_; }
+    // The rigid motions the centrifugal static solve pinned (a free scene), for the run's notes.
+    const std::vector<std::string>& pinned_rigid_motions() const { return pinned_; }
+    bool rotating_frame() const { return frame_ == SpinFrame::rotating; }
+    // Rotating frame: the smallest share of its dominant harmonic of any
+    // mode returned so far (1 in the stationary frame).
+    double min_harmonic_share() const { return min_share_; }
 
 private:
-    RotatingMode named_mode(Vec real, Vec imag, double omega, double speed_hz) const;
+    RotatingMode named_mode(const std::vector<double>& re, const std::vector<double>& im, double omega,
+                            double speed_hz) const;
+    void assemble(const Scene& scene, const ChuckSupports& chucks, bool centrifugal_stiffening);
+    std::vector<RotatingMode> stationary_frame_modes(const GyroscopicModes& solved, double speed_hz) const;
+    std::vector<RotatingMode> rotating_frame_modes(const GyroscopicModes& solved, double speed_hz) const;
 
     const Scene& scene_;
     int window_;
@@ -60,11 +89,16 @@ private:
     std::unique_ptr<ModeClassifier> classifier_;
     std::unique_ptr<ModeSignatureSampler> signature_;
     double lambda_scale_ = 1;
+    std::vector<std::string> pinned_;
+    SpinFrame frame_ = SpinFrame::stationary;
+    std::vector<int> surface_nodes_;  // rotating frame: where the harmonics are read
+    int max_wave_number_ = 0;
+    mutable double min_share_ = 1;
     mutable double max_residual_ = 0;
 };
 
-// InputError naming the case file when the scene is not a body of
-// revolution (models/choose, why_not_axisymmetric): the check above, before any work.
+// InputError naming the case file when the scene cannot spin at the solid
+// level in either frame (a one-sided contact under gravity): before any work.
 void require_spinnable_by_solid(const Scene& scene);
 
 }  // namespace coremodal

@@ -1,0 +1,381 @@
+#include "eigensolve/projected_gyroscopic.hpp"
+
+#include "common/error.hpp"
+#include "eigensolve/gyroscopic_inertia.hpp"
+#include "eigensolve/tolerances.hpp"
+
+#include <Eigen/Dense>
+
+#include "common/blas_threads.hpp"
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace coremodal {
+namespace {
+
+// S = K + K_sigma + tau^2 M with tau = this fraction of sqrt(lambda_scale):
+// solve_gyroscopic's target (positive definite with rigid modes or not).
+constexpr double kTargetFraction = 0.5;
+// A direction of the basis whose M-Gram eigenvalue is below this fraction of
+// the largest (after scaling every column to M-norm 1) is a combination of
+// the others to round-off: dropped.
+constexpr double kDependentDirection = 1e-14;
+// Terms of the static responses' series per mode at rest and force (static_responses).
+constexpr int kKrylovDepth = 2;
+
+using Dense = Eigen::MatrixXd;
+using Complex = std::complex<double>;
+using KSPHandle = PetscHandle<KSP, KSPDestroy>;
+
+const Progress kQuiet = [](const std::string&) {};
+
+PetscMatrix referenced(Mat A) {
+    COREMODAL_PETSC(PetscObjectReference((PetscObject)A));
+    return PetscMatrix(A);
+}
+
+double norm_1(Mat A) {
+    PetscReal n;
+    COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
+    return n;
+}
+
+// A V, column by column (one process: the sweep refuses mpirun).
+Dense apply(Mat A, const Dense& V) {
+    Dense out(V.rows(), V.cols());
+    PetscVector x, y;
+    COREMODAL_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, V.rows(), nullptr, x.out()));
+    COREMODAL_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, V.rows(), nullptr, y.out()));
+    for (Eigen::Index j = 0; j < V.cols(); ++j) {
+        COREMODAL_PETSC(VecPlaceArray(x, V.col(j).data()));
+        COREMODAL_PETSC(VecPlaceArray(y, out.col(j).data()));
+        COREMODAL_PETSC(MatMult(A, x, y));
+        COREMODAL_PETSC(VecResetArray(x));
+        COREMODAL_PETSC(VecResetArray(y));
+    }
+    return out;
+}
+
+Eigen::VectorXd values_of(Vec x) {
+    PetscInt n;
+    const PetscScalar* a;
+    COREMODAL_PETSC(VecGetLocalSize(x, &n));
+    COREMODAL_PETSC(VecGetArrayRead(x, &a));
+    Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(a, n);
+    COREMODAL_PETSC(VecRestoreArrayRead(x, &a));
+    return out;
+}
+
+// One pass of M-orthonormalisation: columns scaled to M-norm 1, then the
+// eigenvectors of their Gram matrix, dependent directions dropped.
+Dense m_orthonormal_pass(Mat M, const Dense& V) {
+    const Dense gram = V.transpose() * apply(M, V);
+    const Eigen::VectorXd scale = gram.diagonal().cwiseSqrt().cwiseInverse();
+    const Dense scaled = scale.asDiagonal() * (0.5 * (gram + gram.transpose())) * scale.asDiagonal();
+    const Eigen::SelfAdjointEigenSolver<Dense> es(scaled);
+    const double largest = es.eigenvalues().maxCoeff();
+    Eigen::Index kept = 0;
+    while (kept < es.eigenvalues().size() &&
+           es.eigenvalues()[es.eigenvalues().size() - 1 - kept] > kDependentDirection * largest)
+        ++kept;
+    const Dense directions = es.eigenvectors().rightCols(kept);
+    const Eigen::VectorXd inv_sqrt = es.eigenvalues().tail(kept).cwiseSqrt().cwiseInverse();
+    return V * scale.asDiagonal() * directions * inv_sqrt.asDiagonal();
+}
+
+// The modes at rest of the set's stiffness (with any geometric stiffness) and mass.
+SolvedModes rest_modes(Mat K, Mat M, double model_mass, const SolveRequest& request, int n_rest) {
+    OperatorSet rest;
+    rest.matrices[Term::stiffness] = referenced(K);
+    rest.matrices[Term::mass] = referenced(M);
+    rest.model_mass = model_mass;
+    SolveRequest r = request;
+    r.n_modes = n_rest;
+    return solve_modes(rest, r, kQuiet);
+}
+
+// For every force matrix A and mode at rest x: u_1 = S^-1 A x and
+// u_k = S^-1 M u_(k-1) up to kKrylovDepth, S = K + tau^2 M factored once
+// (Cholesky). u_1 is the static response at -tau^2; the further terms are
+// the series of the response at a frequency omega in powers of
+// (omega^2 + tau^2), which a mode far above tau needs.
+std::vector<Eigen::VectorXd> static_responses(Mat K, Mat M, double tau, const std::vector<Mat>& forces,
+                                              const std::vector<PetscVector>& rest) {
+    PetscMatrix S;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, S.out()));
+    COREMODAL_PETSC(MatAXPY(S, tau * tau, M, DIFFERENT_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatSetOption(S, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatSetOption(S, MAT_SPD, PETSC_TRUE));
+    KSPHandle ksp;
+    COREMODAL_PETSC(KSPCreate(PetscObjectComm((PetscObject)K), ksp.out()));
+    COREMODAL_PETSC(KSPSetOperators(ksp, S, S));
+    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
+    PC pc;
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PetscObjectComm((PetscObject)K))));
+    COREMODAL_PETSC(KSPSetUp(ksp));
+    std::vector<Eigen::VectorXd> out;
+    PetscVector f, u;
+    COREMODAL_PETSC(MatCreateVecs(K, u.out(), f.out()));
+    for (Mat A : forces)
+        for (const PetscVector& x : rest) {
+            COREMODAL_PETSC(MatMult(A, x, f));
+            for (int k = 0; k < kKrylovDepth; ++k) {
+                if (k > 0) COREMODAL_PETSC(MatMult(M, u, f));
+                COREMODAL_PETSC(KSPSolve(ksp, f, u));
+                out.push_back(values_of(u));
+            }
+        }
+    return out;
+}
+
+struct Candidate {
+    double omega = 0;
+    Eigen::VectorXcd y;  // in the basis, |y| = 1: x = V y, x^H M x = 1
+};
+
+// How many to report: the wanted count, extended over the last one's
+// cluster (gyroscopic_solver.cpp's rule).
+int reported_count(const std::vector<Candidate>& c, int wanted, double scale) {
+    int n = std::min<int>(wanted, c.size());
+    const auto lambda = [&](int i) { return c[i].omega * c[i].omega; };
+    while (n > 0 && n < int(c.size()) && lambda(n) - lambda(n - 1) <= kClusterTolerance * std::max(lambda(n - 1), scale))
+        ++n;
+    return n;
+}
+
+// The count's point in the gap after the last reported mode (gyroscopic_solver.cpp's rule).
+double check_omega(const std::vector<Candidate>& c, int n_report, double scale) {
+    const double last = c[n_report - 1].omega * c[n_report - 1].omega;
+    const double check = n_report < int(c.size()) ? 0.5 * (last + c[n_report].omega * c[n_report].omega)
+                                                   : last + kClusterTolerance * std::max(last, scale);
+    return std::sqrt(check);
+}
+
+}  // namespace
+
+struct ProjectedGyroscopic::Basis {
+    SolveRequest request;
+    double rigid_omega = 0;
+    bool centrifugal = false;
+    Dense V;                     // N x m, M-orthonormal
+    Dense K0, K_omega, G;        // projected: K + K_sigma, K_Omega, G
+    Eigen::MatrixXd R;           // of W = [V, K0 V, (K_Omega V), M V, G V] = Q_W R
+    double norm_K0 = 0, norm_G = 0, norm_M = 0;
+    PetscMatrix k0_union, k_omega_union, k_work;  // for ||K(Omega)||_1 with a centrifugal term
+    Mat K_template = nullptr;    // for vectors of the set's layout
+    std::unique_ptr<GyroscopicInertia> inertia;
+    double rigid_line_clear_up_to = -1;  // rad/s: neg Q(omega_0) = 0 proven for spins up to it
+
+    Eigen::Index m() const { return V.cols(); }
+
+    double norm_K(double spin) const {
+        if (!centrifugal || spin == 0) return norm_K0;
+        COREMODAL_PETSC(MatCopy(k0_union, k_work, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(k_work, spin * spin, k_omega_union, SAME_NONZERO_PATTERN));
+        return norm_1(k_work);
+    }
+
+    // ||Q(omega) x|| / ((||K(Omega)|| + omega Omega ||G|| + omega^2 ||M||) ||x||) for x = V y (header).
+    double relative_residual(double spin, double omega, const Eigen::VectorXcd& y) const {
+        const Eigen::Index n = m(), blocks = R.cols() / n;
+        Eigen::VectorXcd c = Eigen::VectorXcd::Zero(R.cols()), cx = Eigen::VectorXcd::Zero(R.cols());
+        Eigen::Index b = 1;
+        c.segment(b++ * n, n) = y;
+        if (centrifugal) c.segment(b++ * n, n) = spin * spin * y;
+        c.segment(b++ * n, n) = -omega * omega * y;
+        c.segment(b++ * n, n) = Complex(0, omega * spin) * y;
+        COREMODAL_ASSERT(b == blocks);
+        cx.head(n) = y;
+        const auto upper = R.triangularView<Eigen::Upper>();
+        const auto norm = [&](const Eigen::VectorXcd& v) {
+            return std::hypot((upper * v.real()).norm(), (upper * v.imag()).norm());
+        };
+        return norm(c) / ((norm_K(spin) + omega * spin * norm_G + omega * omega * norm_M) * norm(cx));
+    }
+
+    // The modes of the small problem, ascending: the rigid ones at 0 Hz,
+    // then every eigenvalue omega >= the rigid line of the Hermitian
+    // linearization H = [[i Omega G, Lambda^1/2], [Lambda^1/2, 0]]
+    // (docs/rotation.md). H's eigenvalues below the line come in pairs
+    // +-omega (a rigid direction's zero twice at rest; a free body's tilt at
+    // 0 and its precession at +-omega once it spins); each pair is one mode
+    // of the quadratic problem, as the full solver reports it, and a rigid
+    // direction of K(Omega) is exactly one (Q(0) x = K(Omega) x = 0), so the
+    // first ones stand for them.
+    std::vector<Candidate> candidates(double spin) const {
+        const Dense K = K0 + spin * spin * K_omega;
+        const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
+        const Dense& U = ks.eigenvectors();
+        const Eigen::VectorXd& lambda = ks.eigenvalues();
+        const Eigen::Index n = m();
+        Eigen::MatrixXcd H = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+        H.topLeftCorner(n, n) = Complex(0, spin) * (U.transpose() * G * U).cast<Complex>();
+        for (Eigen::Index k = 0; k < n; ++k) H(k, n + k) = H(n + k, k) = std::sqrt(std::max(lambda[k], 0.0));
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> hs(H);
+        const Eigen::VectorXd& omegas = hs.eigenvalues();
+        const long below_line = (omegas.array().abs() < rigid_omega).count();
+        const long rigid_directions = (lambda.array() < rigid_omega * rigid_omega).count();
+        std::vector<Candidate> out;
+        for (Eigen::Index k = 0; k < std::min((below_line + 1) / 2, rigid_directions); ++k)
+            out.push_back({0.0, U.col(k).cast<Complex>()});
+        for (Eigen::Index j = 0; j < 2 * n; ++j) {
+            if (omegas[j] < rigid_omega) continue;
+            const Eigen::VectorXcd eta = hs.eigenvectors().col(j).head(n);  // z = (omega eta, Lambda^1/2 eta)
+            out.push_back({omegas[j], (U.cast<Complex>() * eta).normalized()});
+        }
+        return out;
+    }
+
+    // x_j^H ((omega_i + omega_j) M - i Omega G) x_i normalised, over elastic
+    // modes of distinct frequency (gyroscopic_solver.hpp), in the basis.
+    double orthogonality_error(double spin, const std::vector<Candidate>& c, int n_report) const {
+        const Eigen::MatrixXcd iG = Complex(0, spin) * G.cast<Complex>();
+        const auto product = [&](int j, int i) {
+            return Complex(c[j].y.dot((c[i].omega + c[j].omega) * c[i].y - iG * c[i].y));
+        };
+        double worst = 0;
+        for (int i = 0; i < n_report; ++i)
+            for (int j = 0; j < i; ++j) {
+                const double wi = c[i].omega, wj = c[j].omega;
+                if (wj < rigid_omega || (wi * wi - wj * wj) <= kClusterTolerance * wi * wi) continue;
+                worst = std::max(worst, std::abs(product(j, i)) / std::sqrt(std::abs(product(i, i) * product(j, j))));
+            }
+        return worst;
+    }
+
+    GyroscopicMode full_mode(const Candidate& c, double relative_residual) const {
+        GyroscopicMode mode;
+        mode.omega = c.omega;
+        mode.relative_residual = relative_residual;
+        const Eigen::VectorXcd x = V * c.y;
+        const auto fill = [&](PetscVector& part, const Eigen::VectorXd& values) {
+            COREMODAL_PETSC(MatCreateVecs(K_template, part.out(), nullptr));
+            PetscScalar* a;
+            COREMODAL_PETSC(VecGetArray(part, &a));
+            Eigen::Map<Eigen::VectorXd>(a, values.size()) = values;
+            COREMODAL_PETSC(VecRestoreArray(part, &a));
+        };
+        fill(mode.real, x.real());
+        fill(mode.imag, x.imag());
+        return mode;
+    }
+};
+
+ProjectedGyroscopic::~ProjectedGyroscopic() = default;
+
+ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequest& request, int n_rest, IS first,
+                                         IS second)
+    : basis_(std::make_unique<Basis>()) {
+    Basis& b = *basis_;
+    COREMODAL_ASSERT(ops.has(Term::gyroscopic) && !ops.has(Term::damping) && !request.lambda_max);
+    COREMODAL_ASSERT(mpi_size(PetscObjectComm((PetscObject)ops.K())) == 1);
+    b.request = request;
+    b.rigid_omega = gyroscopic_rigid_omega(request);
+    b.centrifugal = ops.has(Term::centrifugal);
+    const EffectiveStiffness at_rest(ops, 0.0);  // K + K_sigma
+    const Mat K0 = at_rest.get(), M = ops.M(), G = ops[Term::gyroscopic];
+    b.K_template = ops.K();
+
+    // 1. The modes at rest and the static responses to their spin forces.
+    const SolvedModes rest = rest_modes(K0, M, ops.model_mass, request, std::max(n_rest, request.n_modes));
+    std::vector<Mat> forces{G};
+    if (b.centrifugal) forces.push_back(ops[Term::centrifugal]);
+    const double tau = kTargetFraction * std::sqrt(request.lambda_scale);
+    const std::vector<Eigen::VectorXd> enrichment = static_responses(K0, M, tau, forces, rest.vectors);
+
+    // 2. The basis, M-orthonormal (twice: the second pass removes what round-off left of the first's error).
+    PetscInt n_dofs;
+    COREMODAL_PETSC(MatGetSize(K0, &n_dofs, nullptr));
+    Dense V(n_dofs, rest.vectors.size() + enrichment.size());
+    Eigen::Index col = 0;
+    for (const PetscVector& x : rest.vectors) V.col(col++) = values_of(x);
+    for (const Eigen::VectorXd& x : enrichment) V.col(col++) = x;
+    b.V = m_orthonormal_pass(M, m_orthonormal_pass(M, V));
+
+    // 3. Every term projected once, and the R factor of the residual's columns.
+    std::vector<Dense> columns{b.V, apply(K0, b.V)};
+    b.K0 = b.V.transpose() * columns.back();
+    b.K_omega = Dense::Zero(b.m(), b.m());
+    if (b.centrifugal) {
+        columns.push_back(apply(ops[Term::centrifugal], b.V));
+        b.K_omega = b.V.transpose() * columns.back();
+    }
+    columns.push_back(apply(M, b.V));
+    columns.push_back(apply(G, b.V));
+    b.G = b.V.transpose() * columns.back();
+    b.G = 0.5 * (b.G - b.G.transpose());
+    Dense W(n_dofs, b.m() * columns.size());
+    for (size_t k = 0; k < columns.size(); ++k) W.middleCols(k * b.m(), b.m()) = columns[k];
+    columns.clear();
+    b.R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(W.cols()).triangularView<Eigen::Upper>();
+
+    // 4. The norms of the residual's scale, and the full set's inertia count.
+    b.norm_K0 = norm_1(K0);
+    b.norm_G = norm_1(G);
+    b.norm_M = norm_1(M);
+    if (b.centrifugal) {
+        COREMODAL_PETSC(MatDuplicate(K0, MAT_COPY_VALUES, b.k0_union.out()));
+        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, ops[Term::centrifugal], DIFFERENT_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_omega_union.out()));
+        COREMODAL_PETSC(MatZeroEntries(b.k0_union));  // the union's pattern, then K0's values on it
+        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, K0, SUBSET_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatZeroEntries(b.k_omega_union));
+        COREMODAL_PETSC(MatAXPY(b.k_omega_union, 1.0, ops[Term::centrifugal], SUBSET_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_work.out()));
+    }
+    b.inertia = std::make_unique<GyroscopicInertia>(ops, first, second);
+}
+
+std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const {
+    const Basis& b = *basis_;
+    const double scale = b.request.lambda_scale;
+    // Small fronts and small dense problems: OpenBLAS's second thread only
+    // waits (sched_yield in the profile of a sweep), common/blas_threads.hpp.
+    const SingleThreadBlas one_thread;
+    std::vector<Candidate> c = b.candidates(spin);
+    std::stable_sort(c.begin(), c.end(), [](const Candidate& x, const Candidate& y) { return x.omega < y.omega; });
+    const int n_report = reported_count(c, b.request.n_modes, scale);
+    if (n_report < b.request.n_modes) return std::nullopt;
+
+    GyroscopicModes out;
+    Verification& v = out.verification;
+    std::vector<double> residuals;
+    for (int i = 0; i < n_report; ++i) {
+        residuals.push_back(b.relative_residual(spin, c[i].omega, c[i].y));
+        if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
+        v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
+    }
+    const double check = check_omega(c, n_report, scale);
+    const long below_rigid_line =
+        spin <= b.rigid_line_clear_up_to ? 0 : b.inertia->negative_count(spin, b.rigid_omega);
+    const long counted = b.inertia->negative_count(spin, check) - below_rigid_line;
+    const long found = std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= b.rigid_omega; });
+    if (counted != found) return std::nullopt;
+
+    for (int i = 0; i < n_report; ++i) out.modes.push_back(b.full_mode(c[i], residuals[i]));
+    v.max_orthonormality_error = b.orthogonality_error(spin, c, n_report);
+    v.check_shift = check * check;
+    v.negative_pivots_at_shift = counted;
+    v.modes_below_shift = counted;
+    v.complete = true;
+    return out;
+}
+
+bool ProjectedGyroscopic::prove_rigid_line_clear(double max_spin) {
+    Basis& b = *basis_;
+    const SingleThreadBlas one_thread;
+    const double w0 = b.rigid_omega;
+    bool clear = b.inertia->negative_count(0.0, 0.0, w0) == 0 && b.inertia->negative_count(max_spin, 0.0, w0) == 0;
+    if (clear && b.centrifugal) clear = b.inertia->negative_count(max_spin, max_spin * max_spin, w0) == 0;
+    if (clear) b.rigid_line_clear_up_to = max_spin;
+    return clear;
+}
+
+int ProjectedGyroscopic::basis_size() const { return static_cast<int>(basis_->m()); }
+
+bool ProjectedGyroscopic::counts_mirrored_families() const { return basis_->inertia->uses_mirrored_families(); }
+
+}  // namespace coremodal

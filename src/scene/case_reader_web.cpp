@@ -1,0 +1,31 @@
+// [web]: the paper web leaving the roll (scene/scene.hpp WebSpec,
+// effects/web.hpp, docs/web.md). Every key but shear_modulus is required;
+// its default is Baum's rule. What the model makes of the web goes into the
+// scene's assumptions, which every level echoes.
+#include "scene/case_reader.hpp"
+
+#include "effects/web.hpp"
+
+namespace coremodal::case_reading {
+
+std::optional<WebSpec> CaseReader::read_web(const Section& top, Scene& scene) const {
+    const std::optional<Section> web = section(top, "web", "web");
+    if (!web) return std::nullopt;
+    WebSpec spec;
+    spec.tension = required(*web, "tension", "the web's tension per unit width, e.g. tension = \"300 N/m\"");
+    spec.span = required(*web, "span", "the free span to the first guide roller, e.g. span = \"1.2 m\"");
+    spec.angle = required(*web, "angle", "the direction the web leaves in, e.g. angle = \"30 deg\" (0 = +x)");
+    spec.thickness = required(*web, "thickness", "the web's thickness, e.g. thickness = \"80 um\"");
+    spec.modulus = required(*web, "modulus", "the web's in-plane modulus along its length, e.g. modulus = \"5 GPa\"");
+    if (const std::optional<double> g = quantity(*web, "shear_modulus")) {
+        spec.shear_modulus = *g;
+        spec.shear_source = "[web] shear_modulus";
+    } else {
+        spec.shear_modulus = PaperWeb::default_shear_modulus(spec.modulus);
+        spec.shear_source = PaperWeb::kShearRule;
+    }
+    for (std::string& line : web_assumptions(spec)) scene.assumptions.push_back(std::move(line));
+    return spec;
+}
+
+}  // namespace coremodal::case_reading
