@@ -1,5 +1,6 @@
 #include "eigensolve/gyroscopic_solver.hpp"
 
+#include "eigensolve/band_edge.hpp"
 #include "common/blas_threads.hpp"
 #include "common/error.hpp"
 #include "common/heartbeat.hpp"
@@ -226,23 +227,14 @@ double max_orthogonality_error(const SpinningOperators& op, const std::vector<Gy
     return worst;
 }
 
-// How many candidates to report: the wanted count, extended over the last
-// mode's cluster (eigenvalues omega^2 within kClusterTolerance).
-int reported_count(const std::vector<Candidate>& c, int wanted, double scale) {
-    int n = std::min<int>(wanted, c.size());
-    const auto lambda = [&](int i) { return c[i].omega * c[i].omega; };
-    while (n > 0 && n < int(c.size()) && lambda(n) - lambda(n - 1) <= kClusterTolerance * std::max(lambda(n - 1), scale))
-        ++n;
-    return n;
+// The eigenvalues omega^2 of the candidates, ascending as they are: what
+// eigensolve/band_edge.hpp's report and count rule reads.
+std::vector<double> squared_omegas(const std::vector<Candidate>& c) {
+    std::vector<double> lambdas;
+    for (const Candidate& x : c) lambdas.push_back(x.omega * x.omega);
+    return lambdas;
 }
 
-// The count's point, in the gap after the last reported mode (omega, rad/s).
-double check_omega(const std::vector<Candidate>& c, int n_report, double scale) {
-    const double last = c[n_report - 1].omega * c[n_report - 1].omega;
-    const double check = n_report < int(c.size()) ? 0.5 * (last + c[n_report].omega * c[n_report].omega)
-                                                   : last + kClusterTolerance * std::max(last, scale);
-    return std::sqrt(check);
-}
 
 GyroscopicModes verified(const SpinningOperators& op, std::vector<Candidate>& c, int n_report, double rigid_omega,
                          double check, long counted) {
@@ -309,12 +301,13 @@ GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, cons
             const Heartbeat beat("solving the quadratic problem", progress);
             return run_pep(op, tau, nev, request, n_converged);
         }();
-        const int n_report = reported_count(c, wanted, scale);
+        const std::vector<double> lambdas = squared_omegas(c);
+        const int n_report = reported_count(lambdas, wanted, scale);
         if (n_report < wanted)
             throw SolveError("converged " + std::to_string(n_converged) + " eigenvalues of the quadratic problem, " +
                              std::to_string(n_report) + " of the " + std::to_string(wanted) +
                              " modes requested; raise [analysis] max_iterations");
-        const double check = check_omega(c, n_report, scale);
+        const double check = std::sqrt(check_point(lambdas, n_report, scale));
         progress("checking completeness: inertia of Q(omega) at the band edge");
         const long counted = embedded_negative_count(op, check) / 2 - below_rigid;
         const long found = std::count_if(c.begin(), c.begin() + n_report,

@@ -1,5 +1,7 @@
 #include "eigensolve/modal_solver.hpp"
 
+#include "eigensolve/band_edge.hpp"
+
 #include "common/error.hpp"
 #include "common/heartbeat.hpp"
 #include "eigensolve/petsc_algebra.hpp"
@@ -121,16 +123,6 @@ Attempt run_eps(Mat K, Mat M, double sigma, int nev, const SolveRequest& request
         a.vectors.push_back(std::move(x));
     }
     return a;
-}
-
-// How many of the converged modes to report: the wanted count, extended so
-// that every member of the last mode's cluster is included.
-int reported_count(const std::vector<double>& lambdas, int wanted, double scale) {
-    int n = std::min<int>(wanted, lambdas.size());
-    while (n > 0 && n < int(lambdas.size()) &&
-           lambdas[n] - lambdas[n - 1] <= kClusterTolerance * std::max(std::abs(lambdas[n - 1]), scale))
-        ++n;
-    return n;
 }
 
 // Retries after a failed completeness check before giving up.
@@ -284,13 +276,6 @@ std::string unconverged_text(int n_converged, int wanted, const SolveRequest& re
     s << "converged " << n_converged << " of " << wanted << " requested modes (tolerance " << request.tolerance
       << "); raise [analysis] max_iterations (now " << request.max_iterations << ") or loosen [analysis] tolerance";
     return s.str();
-}
-
-// The inertia check sits in the gap after the last reported mode.
-double check_point(const std::vector<double>& lambdas, int n_report, double scale) {
-    const double last = lambdas[n_report - 1];
-    return n_report < int(lambdas.size()) ? 0.5 * (last + lambdas[n_report])
-                                          : last + kClusterTolerance * std::max(std::abs(last), scale);
 }
 
 SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {

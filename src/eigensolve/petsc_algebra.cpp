@@ -1,5 +1,7 @@
 #include "eigensolve/petsc_algebra.hpp"
 
+#include "eigensolve/modal_solver.hpp"  // shift_invert_factor_package
+
 #include "common/error.hpp"
 
 #include <string>
@@ -54,6 +56,19 @@ PC direct_shift_and_invert(ST st) {
     COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
     COREMODAL_PETSC(KSPGetPC(ksp, &pc));
     return pc;
+}
+
+PetscKsp direct_cholesky_solver(MPI_Comm comm, const char* prefix) {
+    PetscKsp ksp;
+    COREMODAL_PETSC(KSPCreate(comm, ksp.out()));
+    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
+    PC pc = nullptr;
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(comm)));
+    COREMODAL_PETSC(KSPSetOptionsPrefix(ksp, prefix));
+    COREMODAL_PETSC(KSPSetFromOptions(ksp));
+    return ksp;
 }
 
 }  // namespace coremodal

@@ -21,6 +21,13 @@ inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
 // names A in the error raised when the factorisation fails.
 long negative_eigenvalue_count(Mat A, const char* what);
 
+// A direct Cholesky solver (KSP "preonly") with the shift-and-invert's
+// factor package (modal_solver.hpp), its options under `prefix` (e.g.
+// "static_": -static_pc_factor_mat_solver_type mumps); the caller sets the
+// operators. For the static solves of a solid's prestress.
+using PetscKsp = PetscHandle<KSP, KSPDestroy>;
+PetscKsp direct_cholesky_solver(MPI_Comm comm, const char* prefix);
+
 // Shift-and-invert with a direct solve (KSP "preonly") on `st`; returns the
 // preconditioner whose factor type and package the caller sets.
 PC direct_shift_and_invert(ST st);

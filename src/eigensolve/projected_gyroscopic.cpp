@@ -1,5 +1,6 @@
 #include "eigensolve/projected_gyroscopic.hpp"
 
+#include "eigensolve/band_edge.hpp"
 #include "common/error.hpp"
 #include "eigensolve/gyroscopic_inertia.hpp"
 #include "eigensolve/tolerances.hpp"
@@ -136,23 +137,14 @@ struct Candidate {
     Eigen::VectorXcd y;  // in the basis, |y| = 1: x = V y, x^H M x = 1
 };
 
-// How many to report: the wanted count, extended over the last one's
-// cluster (gyroscopic_solver.cpp's rule).
-int reported_count(const std::vector<Candidate>& c, int wanted, double scale) {
-    int n = std::min<int>(wanted, c.size());
-    const auto lambda = [&](int i) { return c[i].omega * c[i].omega; };
-    while (n > 0 && n < int(c.size()) && lambda(n) - lambda(n - 1) <= kClusterTolerance * std::max(lambda(n - 1), scale))
-        ++n;
-    return n;
+// The eigenvalues omega^2 of the candidates, ascending as they are: what
+// eigensolve/band_edge.hpp's report and count rule reads.
+std::vector<double> squared_omegas(const std::vector<Candidate>& c) {
+    std::vector<double> lambdas;
+    for (const Candidate& x : c) lambdas.push_back(x.omega * x.omega);
+    return lambdas;
 }
 
-// The count's point in the gap after the last reported mode (gyroscopic_solver.cpp's rule).
-double check_omega(const std::vector<Candidate>& c, int n_report, double scale) {
-    const double last = c[n_report - 1].omega * c[n_report - 1].omega;
-    const double check = n_report < int(c.size()) ? 0.5 * (last + c[n_report].omega * c[n_report].omega)
-                                                   : last + kClusterTolerance * std::max(last, scale);
-    return std::sqrt(check);
-}
 
 }  // namespace
 
@@ -337,7 +329,8 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     const SingleThreadBlas one_thread;
     std::vector<Candidate> c = b.candidates(spin);
     std::stable_sort(c.begin(), c.end(), [](const Candidate& x, const Candidate& y) { return x.omega < y.omega; });
-    const int n_report = reported_count(c, b.request.n_modes, scale);
+    const std::vector<double> lambdas = squared_omegas(c);
+    const int n_report = reported_count(lambdas, b.request.n_modes, scale);
     if (n_report < b.request.n_modes) return std::nullopt;
 
     GyroscopicModes out;
@@ -348,7 +341,7 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
         if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
         v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
     }
-    const double check = check_omega(c, n_report, scale);
+    const double check = std::sqrt(check_point(lambdas, n_report, scale));
     const long below_rigid_line =
         spin <= b.rigid_line_clear_up_to ? 0 : b.inertia->negative_count(spin, b.rigid_omega);
     const long counted = b.inertia->negative_count(spin, check) - below_rigid_line;

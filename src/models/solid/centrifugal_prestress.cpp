@@ -14,7 +14,6 @@
 namespace coremodal {
 namespace {
 
-using PetscKsp = PetscHandle<KSP, KSPDestroy>;
 
 // A rigid motion is free when |K r| / (max diag K |r|) is below this: round-off
 // of the assembly (measured ~1e-16 on free tubes) against at least ~1e-6 for
@@ -97,20 +96,6 @@ PetscVector centrifugal_load(Mat K, const Mesh& mesh, const std::vector<PartMate
     return f;
 }
 
-PetscKsp cholesky_solver(Mat K) {
-    PetscKsp ksp;
-    COREMODAL_PETSC(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(K)), ksp.out()));
-    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
-    PC pc = nullptr;
-    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
-    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
-    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PETSC_COMM_WORLD)));
-    COREMODAL_PETSC(KSPSetOptionsPrefix(ksp, "centrifugal_"));  // -centrifugal_pc_factor_mat_solver_type mumps
-    COREMODAL_PETSC(KSPSetFromOptions(ksp));
-    COREMODAL_PETSC(KSPSetOperators(ksp, K, K));
-    return ksp;
-}
-
 // The node displacements (3 per mesh node) of a DOF vector on every rank.
 std::vector<double> node_values(Vec u, const Mesh& mesh, const DofMap& dofs) {
     const std::vector<double> values = gather_to_all(u);
@@ -154,7 +139,9 @@ CentrifugalState solve_centrifugal_state(const OperatorSet& operators, const Mes
     COREMODAL_PETSC(VecAssemblyBegin(f));
     COREMODAL_PETSC(VecAssemblyEnd(f));
     COREMODAL_PETSC(MatSetOption(K_pinned, MAT_SYMMETRIC, PETSC_TRUE));
-    const PetscKsp ksp = cholesky_solver(K_pinned);
+    // -centrifugal_pc_factor_mat_solver_type mumps chooses another factor.
+    const PetscKsp ksp = direct_cholesky_solver(PetscObjectComm(reinterpret_cast<PetscObject>(K_pinned.get())), "centrifugal_");
+    COREMODAL_PETSC(KSPSetOperators(ksp, K_pinned, K_pinned));
     PetscVector u;
     COREMODAL_PETSC(VecDuplicate(f, u.out()));
     COREMODAL_PETSC(KSPSolve(ksp, f, u));

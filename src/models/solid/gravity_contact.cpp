@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "eigensolve/modal_solver.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 #include "modes/mode_shapes.hpp"
 
 #include <algorithm>
@@ -11,7 +12,6 @@
 namespace coremodal {
 namespace {
 
-using PetscKsp = PetscHandle<KSP, KSPDestroy>;
 
 // In the static solve the contact is frictionless: a symmetric roll's
 // weight is carried by normal pressure, and friction would only resist the
@@ -99,19 +99,6 @@ void linearise(const std::vector<ContactFace>& faces, const Iterate& it, const S
     COREMODAL_PETSC(VecAssemblyBegin(rhs));
     COREMODAL_PETSC(VecAssemblyEnd(rhs));
     add_couplings_to(K_work, springs, dofs);
-}
-
-PetscKsp cholesky_solver(Mat K) {
-    PetscKsp ksp;
-    COREMODAL_PETSC(KSPCreate(PetscObjectComm(reinterpret_cast<PetscObject>(K)), ksp.out()));
-    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
-    PC pc = nullptr;
-    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
-    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
-    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PETSC_COMM_WORLD)));
-    COREMODAL_PETSC(KSPSetOptionsPrefix(ksp, "static_"));  // -static_pc_factor_mat_solver_type mumps
-    COREMODAL_PETSC(KSPSetFromOptions(ksp));
-    return ksp;
 }
 
 // One Newton step: the interpenetration at every point after solving with
@@ -254,7 +241,8 @@ GravityContact solve_gravity_contact(const OperatorSet& base, const DofMap& dofs
     COREMODAL_PETSC(MatDuplicate(base.K(), MAT_COPY_VALUES, K_work.out()));
     COREMODAL_PETSC(MatSetOption(K_work, MAT_SYMMETRIC, PETSC_TRUE));
     COREMODAL_PETSC(MatSetOption(K_work, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-    const PetscKsp ksp = cholesky_solver(K_work);
+    // -static_pc_factor_mat_solver_type mumps chooses another factor.
+    const PetscKsp ksp = direct_cholesky_solver(PetscObjectComm(reinterpret_cast<PetscObject>(K_work.get())), "static_");
     Iterate it = first_iterate(faces);
     GravityContact out;
     for (int k = 1; k <= kMaxContactIterations; ++k) {
