@@ -136,7 +136,7 @@ TEST_CASE("K_Omega of a free body: nothing on a rigid translation, and a rigid t
 }
 
 TEST_CASE("A free thin ring spinning as fast as it vibrates: Bryan's exact form with the centrifugal term",
-          "[rotation][solid][centrifugal]") {
+          "[rotation][solid][centrifugal][long]") {
     // The thin steel ring of the gyroscopic test (R ~ 0.5 m, t/R = 0.01,
     // 2 x 128 x 2 hex20), at f_rot = 0.6 f0 (f0 its own n = 2 frequency at
     // rest). The hoop prestress rho R^2 Omega^2 and the spin softening M_L
