@@ -140,16 +140,23 @@ TEST_CASE("Harmonic level: the n = 2 mode of a thin free-free tube is the inexte
     CHECK(oval.frequency_hz == Approx(omega / (2 * M_PI)).epsilon(5e-3));
 }
 
-TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, else the solid", "[harmonic]") {
+TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, else the coupled level or the solid",
+          "[harmonic]") {
     Scene scene = with_chucks(paper_core(0.8, 8, 8), InterfaceKind::spring);
     scene.model = "auto";
     scene.analysis.n_modes = 4;
     CHECK(solve_quietly(scene).model.level == "harmonic");
+    // Segmented pads on a spring layer: only the pads vary around, the coupled harmonics.
     scene.supports.chucks[0].expanding[0].segments = 3;
     scene.supports.chucks[0].expanding[0].segment_angle = 1.0;
+    const RunReport coupled = solve_quietly(scene);
+    CHECK(coupled.model.level == "coupled");
+    CHECK(coupled.scene.model == "coupled");  // the summary's case says what ran
+    // Bonded pads (ties over arcs): the solid.
+    for (ChuckSpec& c : scene.supports.chucks) c.interface.kind = InterfaceKind::bonded;
     const RunReport solid = solve_quietly(scene);
     CHECK(solid.model.level == "solid3d");
-    CHECK(solid.scene.model == "solid");  // the summary's case says what ran
+    CHECK(solid.scene.model == "solid");
 }
 
 TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatever the number asked",
