@@ -302,7 +302,10 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
     Dense W(n_dofs, b.m() * columns.size());
     for (size_t k = 0; k < columns.size(); ++k) W.middleCols(k * b.m(), b.m()) = columns[k];
     columns.clear();
-    b.R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(W.cols()).triangularView<Eigen::Upper>();
+    // R is W's upper trapezoidal factor: as many rows as W has columns, or as
+    // it has rows when a small problem has fewer DOFs than W has columns
+    // (||W c|| = ||R c|| either way).
+    b.R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(std::min(W.rows(), W.cols())).triangularView<Eigen::Upper>();
 
     // 4. The norms of the residual's scale, and the full set's inertia count.
     b.norm_K0 = norm_1(K0);
