@@ -147,7 +147,8 @@ TEST_CASE("A thin spinning ring with centrifugal stiffening: the exact stationar
     // rho R^2 Omega^2), so omega = sqrt(omega_0^2 + beta^2 Omega^2) +-
     // beta Omega, beta = n (n^2 - 1) / (n^2 + 1), at any speed. At f_rot =
     // 0.4 f_0 the split is of the order of omega_0 itself; the ring's
-    // thickness and extensibility move the result by O((t/R)^2) ~ 1e-4.
+    // thickness and extensibility move the result by O((t/R)^2) ~ 1e-4, the
+    // bound (measured: 5e-6 and 7e-6 at n = 2).
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
     ring.model = "harmonic";
     const RotatingHarmonics harmonics(ring, 16, true);
@@ -171,8 +172,8 @@ TEST_CASE("A thin spinning ring with centrifugal stiffening: the exact stationar
         }
         INFO("n = " << n << ", f0 " << f0 << " Hz, f_rot " << f_rot << " Hz: FW " << fw << " (exact " << exact_fw
                     << "), BW " << bw << " (exact " << exact_bw << ")");
-        CHECK(fw == Approx(exact_fw).epsilon(5e-4));
-        CHECK(bw == Approx(exact_bw).epsilon(5e-4));
+        CHECK(fw == Approx(exact_fw).epsilon(1e-4));  // (t/R)^2 = 1e-4; measured 5e-6
+        CHECK(bw == Approx(exact_bw).epsilon(1e-4));  // measured 7e-6
         CHECK(worst < 1e-8);
     }
 }
