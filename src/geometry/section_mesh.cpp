@@ -94,6 +94,7 @@ void mesh_tube(const TubeSection& s, const std::vector<ClampSpec>& clamps, Secti
         const SectionEdge e = tube.edge_along_z(0, cj);
         const double z0 = tube.z_line(2 * cj), z1 = tube.z_line(2 * cj + 2);
         mesh.edge_groups["core_inner"].push_back(e);
+        mesh.edge_groups["roll_outer"].push_back(tube.edge_along_z(2 * tube.cells_r(), cj));
         for (const auto& [chuck, zone] : s.interfaces)
             if (within(z0, z1, zone.first, zone.second)) mesh.edge_groups["interface_" + chuck + "_core"].push_back(e);
         for (const ClampSpec& c : clamps)

@@ -25,7 +25,8 @@ struct SectionMesh {
     std::vector<std::array<int, 8>> cells;     // quad8, gmsh order, xi along r, eta along z
     std::vector<int> cell_part;                // index into part_names
     std::vector<std::string> part_names;       // "core", "rest_paper", "chuck_left", "chuck_right"
-    // Edges along z (ordered by z): "core_inner", "interface_<chuck>_core",
+    // Edges along z (ordered by z): "core_inner", "roll_outer" (the roll's
+    // outer surface: the rest paper's, or the core's), "interface_<chuck>_core",
     // "interface_<chuck>_chuck" (the k-th edge faces the k-th core edge);
     // along r: "bearing_<chuck>" (the shaft end face).
     std::map<std::string, std::vector<SectionEdge>> edge_groups;

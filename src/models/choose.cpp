@@ -31,8 +31,7 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
 }
 
 std::optional<std::string> why_coupled(const Scene& scene) {
-    // The web (a line on the roll's surface) is not built at this level yet: the solid takes it.
-    if (scene.mesh.file || one_sided_contact_reason(scene) || scene.web) return std::nullopt;
+    if (scene.mesh.file || one_sided_contact_reason(scene)) return std::nullopt;
     std::optional<std::string> why;
     for (const ChuckSpec& chuck : scene.supports.chucks)
         for (const ExpandingElement& e : chuck.expanding) {
@@ -40,9 +39,11 @@ std::optional<std::string> why_coupled(const Scene& scene) {
             if (chuck.interface.kind != InterfaceKind::spring) return std::nullopt;  // ties over arcs: the solid
             if (!why) why = why_not_axisymmetric(scene);
         }
+    if (scene.web) why = why ? *why + "; the paper web pulls on one line of the roll's surface" : why_not_axisymmetric(scene);
     if (!why) return std::nullopt;
-    return *why + "; the roll and chucks are bodies of revolution and only the pads' spring layer varies around, "
-                  "so the coupled harmonics solve it exactly in theta at 2D cost";
+    return *why + "; the roll and chucks are bodies of revolution and only " +
+           (scene.web ? "what is attached to them" : "the pads' spring layer") +
+           " varies around, so the coupled harmonics solve it exactly in theta at 2D cost";
 }
 
 void require_axisymmetric(const Scene& scene) {
@@ -67,7 +68,7 @@ std::string level_choice_text(const Scene& scene, const std::string& given) {
         return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
     if (scene.model == "coupled")
         return "coupled (" + given + "): the r-z section, harmonics n = 0 ... N coupled by segmented expanding "
-               "elements in one 2D-cost eigenproblem per independent set";
+               "elements or the paper web in one 2D-cost eigenproblem per independent set";
     const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
     if (scene.model == "auto" && not_axisymmetric)
         if (const auto coupled = why_coupled(scene)) return "coupled (" + given + "; " + *coupled + ")";

@@ -26,6 +26,7 @@ Scene free_span_scene(const Scene& scene, double span) {
     free.name = scene.name + "-free-span";
     free.core.length = span;
     free.supports = {};
+    free.web.reset();  // k compares the roll in its stand with the same roll free: nothing holds it
     free.analysis = {};
     free.analysis.n_modes = 8;  // 6 rigid modes and the bending pair
     free.mesh.along_per_segment.clear();  // a ladder's counts are for the scene's segments, not the span's
@@ -99,7 +100,8 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
 void check_rigid_modes(const RunReport& report) {
     const Scene& s = report.scene;
     // A user mesh may hold parts that touch nothing (warned about: six rigid modes each).
-    if (s.supports.kind != SupportKind::free || s.mesh.file || s.analysis.f_min_hz.value_or(0.0) > 0) return;
+    // (A web holds a scene without supports: it has fewer rigid modes.)
+    if (s.supports.kind != SupportKind::free || s.web || s.mesh.file || s.analysis.f_min_hz.value_or(0.0) > 0) return;
     const std::vector<Mode>& modes = report.modes.modes;
     const int expected = std::min<int>(kFreeBodyRigidModes, static_cast<int>(modes.size()));
     int rigid = 0, lowest_rigid = 0;

@@ -186,6 +186,7 @@ Scene free_span_variant(const Scene& scene) {
     Scene free = scene;
     free.core.length = scene.core.length - li;
     free.supports = {};
+    free.web.reset();
     free.analysis = {};
     free.analysis.n_modes = kFreeSpanModes;
     free.mesh.along_per_segment.clear();

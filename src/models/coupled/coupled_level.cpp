@@ -123,11 +123,10 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
     all.dofs = coupled_dofs(scene, section, n_max);
     all.verification.complete = true;
     all.verification.check_shift = 1e300;
-    const std::vector<PadLayer> pads = pad_layers(scene);
     // Each independent problem for the modes asked of the whole: every one of
     // its eigenvalues below the merged band edge is among them (it cannot hold
     // more of the merged lowest than were asked).
-    const std::vector<CoupledComponent> components = coupled_components(all.dofs, pads);
+    const std::vector<CoupledComponent> components = coupled_components(all.dofs, attachments(scene));
     for (const CoupledComponent& component : components)
         solve_component(scene, section, materials, component, request, all);
     // Frequency order over the components.
@@ -212,6 +211,18 @@ std::string convergence_text(const std::vector<CoupledStep>& steps) {
     return text;
 }
 
+// What couples the harmonics, for the run's level line.
+std::string coupling_text(const Attachments& attached) {
+    std::string text;
+    if (!attached.pads.empty())
+        text = std::to_string(attached.pads.size()) + " segmented element(s) couple n to n +- j*" +
+               std::to_string(attached.step());
+    if (attached.web)
+        text += std::string(text.empty() ? "" : "; ") + "the web's line at theta = " +
+                significant(attached.web->theta * 180 / M_PI, 4) + " deg couples every n to every m";
+    return text;
+}
+
 }  // namespace
 
 LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
@@ -219,18 +230,15 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     if (const auto why = one_sided_contact_reason(scene))
         throw InputError(scene.source_file + ": model = \"coupled\": " + *why +
                          "; expected model = \"solid\" or \"auto\"");
-    if (scene.web)
-        throw InputError(scene.source_file + ": model = \"coupled\": the paper web ([web]) is not modelled at the "
-                                             "coupled-harmonic level yet; expected model = \"solid\", \"beam\" or "
-                                             "\"auto\"");
     if (scene.mesh.file)
         throw InputError(scene.source_file + ": model = \"coupled\": a [mesh] file; the coupled level meshes the "
                                              "scene's own r-z section; expected model = \"solid\"");
-    const std::vector<PadLayer> pads = pad_layers(scene);
-    const int reach = coupling_reach(pads);
+    const Attachments attached = attachments(scene);
+    const int reach = attached.step();
     if (reach == 0) {
         // Nothing couples: the harmonics are independent, which the harmonic level solves one at a time.
-        say("[2/7] no segmented expanding element: nothing couples the harmonics; the harmonic level solves them");
+        say("[2/7] no segmented expanding element and no web: nothing couples the harmonics; the harmonic level "
+            "solves them");
         axisymmetric_ = std::make_unique<HarmonicLevel>();
         return axisymmetric_->solve(scene, say);
     }
@@ -238,9 +246,8 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
 
     // 2. Mesh: the r–z section (the harmonic level's) and its revolution, for showing the modes.
     // Why this level (the run's level line; `check` prints the same).
-    const std::string why = why_coupled(scene).value_or("segmented expanding elements");
-    say("[2/7] coupled harmonics: " + why + "; " + std::to_string(pads.size()) +
-        " segmented element(s) couple n to n +- j*" + std::to_string(reach));
+    const std::string why = why_coupled(scene).value_or("segmented expanding elements or the web");
+    say("[2/7] coupled harmonics: " + why + "; " + coupling_text(attached));
     say("      meshing the r-z section");
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
@@ -308,10 +315,13 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
                          convergence_text(steps_);
     out.assumptions.push_back("model level coupled: " + why);
     out.assumptions.push_back(
-        "coupled harmonics: each segmented element's spring layer acts on its pads only (k(theta) = k on the pads, "
-        "0 between), integrated exactly in theta; harmonics n = 0 ... " + std::to_string(current->dofs.n_max) +
-        ", N grown in steps of N_s = " + std::to_string(reach) + " until one step moved no wanted frequency by more "
-        "than " + significant(kCoupledTolerance, 2) + " (last step: " + significant(steps_.back().max_change, 2) + ")");
+        std::string("coupled harmonics: ") +
+        (attached.pads.empty() ? "" : "each segmented element's spring layer acts on its pads only (k(theta) = k on "
+                                      "the pads, 0 between), integrated exactly in theta; ") +
+        (attached.web ? "the web's springs act on one line of the roll's surface, exactly at its angle; " : "") +
+        "harmonics n = 0 ... " + std::to_string(current->dofs.n_max) + ", N grown in steps of " +
+        std::to_string(reach) + " until one step moved no wanted frequency by more than " +
+        significant(kCoupledTolerance, 2) + " (last step: " + significant(steps_.back().max_change, 2) + ")");
     stage.lap();
 
     // 6. Name every mode on the revolved mesh with the solid's classifier; effective masses from the rigid fields.

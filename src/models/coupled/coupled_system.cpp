@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "effects/chuck_placement.hpp"
+#include "effects/web.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,10 +39,55 @@ std::vector<PadLayer> pad_layers(const Scene& scene) {
     return out;
 }
 
-int coupling_reach(const std::vector<PadLayer>& pads) {
+Eigen::Matrix3d harmonic_to_cartesian(HarmonicFamily h, double theta) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    const double t_r = trig_factor(h, 0, theta), t_t = trig_factor(h, 1, theta), t_z = trig_factor(h, 2, theta);
+    Eigen::Matrix3d B;
+    B << c * t_r, -s * t_t, 0, s * t_r, c * t_t, 0, 0, 0, t_z;
+    return B;
+}
+
+namespace {
+
+// B_a^T K_line B_b: the web's line between blocks a and b, per unit length
+// and per pair of node values.
+Eigen::Matrix3d web_between(const WebLine& web, HarmonicFamily a, HarmonicFamily b) {
+    return harmonic_to_cartesian(a, web.theta).transpose() * web.stiffness * harmonic_to_cartesian(b, web.theta);
+}
+
+// Below this share of the line's stiffness an entry is round-off of one that
+// vanishes exactly (sin n theta at theta on a symmetry line).
+constexpr double kVanishingShare = 1e-12;
+
+bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b) {
+    const std::vector<Arc> band = {{0, 2 * M_PI}};
+    for (const PadLayer& pad : pads)
+        for (int c = 0; c < 3; ++c)
+            if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool Attachments::couple(HarmonicFamily a, HarmonicFamily b) const {
+    if (pads_couple(pads, a, b)) return true;
+    return web && web_between(*web, a, b).cwiseAbs().maxCoeff() > kVanishingShare * web->stiffness.norm();
+}
+
+int Attachments::step() const {
     int reach = 0;
     for (const PadLayer& p : pads) reach = reach == 0 ? p.segments : std::min(reach, p.segments);
-    return reach;
+    return reach > 0 ? reach : web ? 1 : 0;
+}
+
+Attachments attachments(const Scene& scene) {
+    Attachments out;
+    out.pads = pad_layers(scene);
+    if (scene.web) {
+        const Eigen::Vector3d p = web_tangent_normal(*scene.web);
+        out.web = WebLine{std::atan2(p.y(), p.x()), web_line_stiffness(*scene.web)};
+    }
+    return out;
 }
 
 int CoupledDofs::block_of(int n, Family family) const {
@@ -65,15 +111,7 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max)
     return out;
 }
 
-bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b) {
-    const std::vector<Arc> band = {{0, 2 * M_PI}};
-    for (const PadLayer& pad : pads)
-        for (int c = 0; c < 3; ++c)
-            if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
-    return false;
-}
-
-std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const std::vector<PadLayer>& pads) {
+std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached) {
     const int n = static_cast<int>(all.blocks.size());
     std::vector<int> root(n);
     for (int b = 0; b < n; ++b) root[b] = b;
@@ -83,7 +121,7 @@ std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const s
     };
     for (int a = 0; a < n; ++a)
         for (int b = a + 1; b < n; ++b)
-            if (pads_couple(pads, all.blocks[a].harmonic, all.blocks[b].harmonic)) root[find(a)] = find(b);
+            if (attached.couple(all.blocks[a].harmonic, all.blocks[b].harmonic)) root[find(a)] = find(b);
     std::vector<CoupledComponent> out;
     std::vector<int> component_of_root(n, -1);
     for (int b = 0; b < n; ++b) {
@@ -154,6 +192,25 @@ void add_pad_coupling(const SectionMesh& mesh, const PadLayer& pad, const Sectio
         }
 }
 
+// The web's line on one edge of the roll's outer surface (r constant):
+// int N_i N_j dz B_a^T K_line B_b for every pair of blocks it couples.
+void add_web_coupling(const SectionMesh& mesh, const WebLine& web, const SectionEdge& edge, const CoupledDofs& dofs,
+                      const CoupledInsert& insert) {
+    Eigen::Matrix<double, 3, 2> x;
+    for (int p = 0; p < 3; ++p) x.row(p) << mesh.nodes[edge[p]][0], mesh.nodes[edge[p]][1];
+    // int N_i N_j r ds (times the identity, node-major): harmonic_edge_spring's w_n = pi for n = 1 and r taken out.
+    const Eigen::Matrix<double, 9, 9> weights = harmonic_edge_spring(x, Eigen::Vector3d::Ones(), 1) / (M_PI * x(0, 0));
+    for (const CoupledBlock& a : dofs.blocks)
+        for (const CoupledBlock& b : dofs.blocks) {
+            const Eigen::Matrix3d k = web_between(web, a.harmonic, b.harmonic);
+            if (k.cwiseAbs().maxCoeff() <= kVanishingShare * web.stiffness.norm()) continue;
+            Eigen::MatrixXd K(9, 9);
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) K.block<3, 3>(3 * i, 3 * j) = weights(3 * i, 3 * j) * k;
+            insert(Term::stiffness, edge_dofs(a, edge), edge_dofs(b, edge), K);
+        }
+}
+
 }  // namespace
 
 double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
@@ -169,7 +226,10 @@ double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const
             });
         if (block.harmonic.n == 0) mass = m;
     }
-    for (const PadLayer& pad : pad_layers(scene)) {
+    const Attachments attached = attachments(scene);
+    if (attached.web)
+        for (const SectionEdge& e : mesh.edge_groups.at("roll_outer")) add_web_coupling(mesh, *attached.web, e, dofs, insert);
+    for (const PadLayer& pad : attached.pads) {
         const auto& core = mesh.edge_groups.at("interface_" + pad.chuck + "_core");
         const auto& body = mesh.edge_groups.at("interface_" + pad.chuck + "_chuck");
         for (size_t e = 0; e < core.size(); ++e) {

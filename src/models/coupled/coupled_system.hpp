@@ -15,6 +15,9 @@
 // (models/coupled/pad_integrals), on core minus chuck. It is nonzero only
 // for m = |n +- j N_s| (pads evenly spaced), and never between a cos and a
 // sin family (pads centred at theta = 0 are mirror symmetric about it).
+// The paper web's line adds, on each edge of the roll's outer surface,
+//     int N_i N_j dz  B_a(theta)^T K_line B_b(theta)
+// for every pair of blocks (B = harmonic_to_cartesian at the line's angle).
 #pragma once
 
 #include "assembly/harmonic_system.hpp"
@@ -22,6 +25,7 @@
 #include "models/coupled/pad_integrals.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace coremodal {
@@ -44,9 +48,31 @@ struct PadLayer {
 // level models spring layers only; models/choose says which level can).
 std::vector<PadLayer> pad_layers(const Scene& scene);
 
-// The smallest N_s of the scene's pad layers: harmonics couple in steps of
-// it (n to n +- j N_s); 0 when nothing couples.
-int coupling_reach(const std::vector<PadLayer>& pads);
+// The paper web's line on the roll's outer surface (effects/web.hpp): at the
+// polar angle theta of its tangent point, springs per unit length of roll in
+// global x, y, z. A line at one angle couples every n to every m, and the
+// cos with the sin families unless theta lies on their symmetry lines.
+struct WebLine {
+    double theta = 0;
+    Eigen::Matrix3d stiffness = Eigen::Matrix3d::Zero();  // N/m^2
+};
+
+// The Cartesian displacement (x, y, z) at angle theta of one node's (U, V, W)
+// in block h: (u_r, u_theta, u_z) = (t_r U, t_theta V, t_z W) turned by theta.
+Eigen::Matrix3d harmonic_to_cartesian(HarmonicFamily h, double theta);
+
+// What couples the harmonics: the segmented elements' pads and the web's line.
+struct Attachments {
+    std::vector<PadLayer> pads;
+    std::optional<WebLine> web;
+    bool any() const { return !pads.empty() || web.has_value(); }
+    // Whether they couple blocks a and b (some term of theirs nonzero between them).
+    bool couple(HarmonicFamily a, HarmonicFamily b) const;
+    // N grows in steps of this: the smallest N_s of the pads (they couple n to
+    // n +- j N_s), or 1 for a web alone (its line couples every n).
+    int step() const;
+};
+Attachments attachments(const Scene& scene);
 
 // One block of the coupled unknowns: a wave number and family, its DOFs
 // (harmonic_dofs of the full-band scene) and where they start.
@@ -66,11 +92,8 @@ struct CoupledDofs {
 
 CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max);
 
-// Whether the pads couple blocks a and b (some component's I_pads - I_band nonzero).
-bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b);
-
-// The blocks split into the independent problems the pads leave: the
-// connected components of "pads_couple" (three pads: {0, 3, 6, ...} of both
+// The blocks split into the independent problems the attachments leave: the
+// connected components of Attachments::couple (three pads: {0, 3, 6, ...} of both
 // families, {1, 2, 4, 5, ...} cos and the same sin; the last two are
 // degenerate partners, a turned copy of each other). Each component's
 // blocks are renumbered from offset 0; `offset_in` keeps where each block
@@ -79,7 +102,7 @@ struct CoupledComponent {
     CoupledDofs dofs;
     std::vector<int> offset_in;  // per block of dofs: its offset in `all`
 };
-std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const std::vector<PadLayer>& pads);
+std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached);
 
 // Receives one matrix of one term on rows x cols of the coupled DOFs (-1:
 // held). The block terms come with rows == cols; a coupling between blocks

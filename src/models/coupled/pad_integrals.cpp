@@ -35,6 +35,11 @@ Factor factor_of(HarmonicFamily h, int component) {
 
 }  // namespace
 
+double trig_factor(HarmonicFamily h, int component, double theta) {
+    const Factor f = factor_of(h, component);
+    return f.sign * (f.is_cos ? std::cos(f.n * theta) : std::sin(f.n * theta));
+}
+
 double pad_integral(const std::vector<Arc>& arcs, HarmonicFamily a, HarmonicFamily b, int component) {
     const Factor f = factor_of(a, component), g = factor_of(b, component);
     const int d = f.n - g.n, s = f.n + g.n;

@@ -33,6 +33,9 @@ struct HarmonicFamily {
 double arcs_cos_integral(const std::vector<Arc>& arcs, int p);
 double arcs_sin_integral(const std::vector<Arc>& arcs, int p);
 
+// t_c(h; theta): the trig factor above, at one angle.
+double trig_factor(HarmonicFamily h, int component, double theta);
+
 // int over the arcs of t_c(a; theta) t_c(b; theta) dtheta for component c
 // (0: r, 1: theta, 2: z).
 double pad_integral(const std::vector<Arc>& arcs, HarmonicFamily a, HarmonicFamily b, int component);
