@@ -15,6 +15,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Sparse>
+
 #include <cmath>
 
 using namespace coremodal;
@@ -241,4 +243,64 @@ TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the
     INFO("bare " << f_bare << " Hz; on the web " << f_low << " and " << f_high << " Hz");
     CHECK(f_low > f_bare);
     CHECK(f_high - f_low > 0.01 * f_bare);
+}
+
+TEST_CASE("Coupled level: the sin set of three pads is a signed copy of the cos set, and is not solved twice",
+          "[coupled]") {
+    // Three 60-degree pads: the sets {1, 2, 4, 5, 7} cos and sin (N = 7).
+    // The sin set's K and M are S K S and S M S of the cos set's, S =
+    // diag(s_n) with s_n = +1 for n = 1 mod 3 and -1 for n = 2 mod 3: the
+    // pads couple n and m of one class through C(n - m) alike in both
+    // families, and of opposite classes through C(n + m), whose sign the sin
+    // family turns (docs/harmonic.md). Checked on the assembled matrices.
+    const Scene scene = segmented_chucks(3, 60, 16, 8);
+    const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
+    const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
+    const CoupledDofs all = coupled_dofs(scene, section, 7);
+    const std::vector<CoupledComponent> sets = coupled_components(all, attachments(scene));
+    REQUIRE(sets.size() == 3);
+    int partners = 0;
+    for (const CoupledComponent& partner : sets) {
+        if (partner.partner_of < 0) continue;
+        ++partners;
+        const CoupledComponent& primary = sets[partner.partner_of];
+        REQUIRE(partner.dofs.blocks.size() == primary.dofs.blocks.size());
+        for (size_t b = 0; b < partner.dofs.blocks.size(); ++b) {
+            const HarmonicFamily h = partner.dofs.blocks[b].harmonic;
+            CHECK(h.family == Family::sin);
+            CHECK(primary.dofs.blocks[b].harmonic == HarmonicFamily{h.n, Family::cos});
+            CHECK(partner.block_sign[b] == (h.n % 3 == 1 ? 1.0 : -1.0) * partner.block_sign[0]);
+        }
+        const auto sparse = [&](const CoupledDofs& d, Term which) {
+            std::vector<Eigen::Triplet<double>> t;
+            assemble_coupled_terms(scene, section, materials, d,
+                                   [&](Term term, const std::vector<int>& rows, const std::vector<int>& cols,
+                                       const Eigen::MatrixXd& A) {
+                                       if (term != which && !(which == Term::stiffness && term != Term::mass)) return;
+                                       for (size_t a = 0; a < rows.size(); ++a)
+                                           for (size_t c = 0; c < cols.size(); ++c)
+                                               if (rows[a] >= 0 && cols[c] >= 0) t.emplace_back(rows[a], cols[c], A(a, c));
+                                   });
+            Eigen::SparseMatrix<double> A(d.n_dofs, d.n_dofs);
+            A.setFromTriplets(t.begin(), t.end());
+            return A;
+        };
+        Eigen::VectorXd s(partner.dofs.n_dofs);
+        for (size_t b = 0; b < partner.dofs.blocks.size(); ++b)
+            s.segment(partner.dofs.blocks[b].offset, partner.dofs.blocks[b].dofs.n_dofs).setConstant(partner.block_sign[b]);
+        for (Term t : {Term::stiffness, Term::mass}) {
+            const Eigen::SparseMatrix<double> A = sparse(primary.dofs, t), B = sparse(partner.dofs, t);
+            const Eigen::SparseMatrix<double> SAS = s.asDiagonal() * A * s.asDiagonal();
+            CHECK((B - SAS).norm() <= 1e-13 * A.norm());
+            CHECK(A.norm() > 0);
+        }
+    }
+    CHECK(partners == 1);
+    SECTION("four pads: the sets of n = 2 mod 4 are coupled through C(n + m) within their class, and are no partners") {
+        const Scene four = segmented_chucks(4, 45, 16, 8);
+        const std::vector<CoupledComponent> sets4 = coupled_components(coupled_dofs(four, section, 6), attachments(four));
+        for (const CoupledComponent& c : sets4)
+            if (c.partner_of >= 0)
+                for (const CoupledBlock& b : c.dofs.blocks) CHECK(b.harmonic.n % 2 == 1);
+    }
 }

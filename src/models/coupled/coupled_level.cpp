@@ -59,21 +59,53 @@ std::array<std::vector<double>, 4> rigid_fields(const SectionMesh& section, cons
 
 namespace {
 
-// One independent component's verified modes, mapped onto all blocks' DOFs.
-void solve_component(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
-                     const CoupledComponent& component, const SolveRequest& request, CoupledModes& out) {
+// One independent component's verified modes on its own DOFs (the vectors
+// and their products with M on rank 0).
+struct ComponentModes {
+    std::vector<double> eigenvalues, residuals;
+    std::vector<std::vector<double>> x, Mx;
+    Verification verification;
+    double mass_kg = 0;
+    long n_coupling_entries = 0;
+};
+
+ComponentModes solve_component(const Scene& scene, const SectionMesh& section,
+                               const std::vector<PartMaterial>& materials, const CoupledComponent& component,
+                               const SolveRequest& request) {
     CoupledSystem system = assemble_coupled(scene, section, materials, component.dofs);
-    out.mass_kg = std::max(out.mass_kg, system.operators.model_mass);  // the block n = 0 carries it
-    out.n_coupling_entries += system.n_coupling_entries;
+    ComponentModes out;
+    out.mass_kg = system.operators.model_mass;
+    out.n_coupling_entries = system.n_coupling_entries;
     std::string blocks;
     for (const CoupledBlock& b : component.dofs.blocks)
         if (b.harmonic.n < 7) blocks += std::to_string(b.harmonic.n) + (b.harmonic.family == Family::sin ? "s " : "c ");
     const SolvedModes solved = solve_for_case(scene, system.operators, request, [](const std::string&) {},
                                               "the coupled problem of the harmonics " + blocks + "... N = " +
                                                   std::to_string(component.dofs.n_max) + ": ");
+    out.verification = solved.verification;
+    out.eigenvalues = solved.eigenvalues;
+    out.residuals = solved.relative_residuals;
+    for (const PetscVector& x : solved.vectors) {
+        PetscVector Mx;
+        COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
+        COREMODAL_PETSC(MatMult(system.operators.M(), x, Mx));
+        std::vector<double> v = gather_to_root(x), mv = gather_to_root(Mx);
+        if (mpi_rank() != 0) continue;
+        out.x.push_back(std::move(v));
+        out.Mx.push_back(std::move(mv));
+    }
+    return out;
+}
+
+// A component's modes added to the whole, mapped onto all blocks' DOFs;
+// `sign` (per block of `component`) maps a primary's modes onto its partner.
+void add_component(const CoupledComponent& component, const ComponentModes& modes, const std::vector<double>& sign,
+                   const std::array<std::vector<double>, 4>& rigid, CoupledModes& out) {
+    out.mass_kg = std::max(out.mass_kg, modes.mass_kg);  // the block n = 0 carries it
+    out.n_coupling_entries += modes.n_coupling_entries;
     // Counts add over independent problems, as over the harmonic level's wave numbers.
     Verification& v = out.verification;
-    const Verification& w = solved.verification;
+    const Verification& w = modes.verification;
     v.max_relative_residual = std::max(v.max_relative_residual, w.max_relative_residual);
     v.max_orthonormality_error = std::max(v.max_orthonormality_error, w.max_orthonormality_error);
     v.check_shift = std::min(v.check_shift, w.check_shift);
@@ -81,37 +113,29 @@ void solve_component(const Scene& scene, const SectionMesh& section, const std::
     v.modes_below_shift += w.modes_below_shift;
     v.eigenvalues_below_band += w.eigenvalues_below_band;
     v.complete = v.complete && w.complete;
-    const std::array<std::vector<double>, 4> rigid = mpi_rank() == 0 ? rigid_fields(section, out.dofs)
-                                                                       : std::array<std::vector<double>, 4>{};
-    for (size_t k = 0; k < solved.vectors.size(); ++k) {
-        const PetscVector& x = solved.vectors[k];
-        PetscVector Mx;
-        COREMODAL_PETSC(VecDuplicate(x, Mx.out()));
-        COREMODAL_PETSC(MatMult(system.operators.M(), x, Mx));
-        const std::vector<double> v_local = gather_to_root(x), mv_local = gather_to_root(Mx);
-        out.eigenvalues.push_back(solved.eigenvalues[k]);
-        out.residuals.push_back(solved.relative_residuals[k]);
-        if (mpi_rank() != 0) continue;
-        // Onto all blocks' DOFs; M is block diagonal (mass never couples
-        // harmonics), so x^T M x splits by block.
-        std::vector<double> v(out.dofs.n_dofs, 0.0), mv(out.dofs.n_dofs, 0.0), energy(out.dofs.blocks.size(), 0.0);
+    out.eigenvalues.insert(out.eigenvalues.end(), modes.eigenvalues.begin(), modes.eigenvalues.end());
+    out.residuals.insert(out.residuals.end(), modes.residuals.begin(), modes.residuals.end());
+    for (size_t k = 0; k < modes.x.size(); ++k) {
+        // M is block diagonal (mass never couples harmonics), so x^T M x splits by block.
+        std::vector<double> x(out.dofs.n_dofs, 0.0), mx(out.dofs.n_dofs, 0.0), energy(out.dofs.blocks.size(), 0.0);
         for (size_t b = 0; b < component.dofs.blocks.size(); ++b) {
             const CoupledBlock& block = component.dofs.blocks[b];
             const int to = component.offset_in[b];
-            for (int i = 0; i < block.dofs.n_dofs; ++i) {
-                v[to + i] = v_local[block.offset + i];
-                mv[to + i] = mv_local[block.offset + i];
-            }
+            const double s = sign.empty() ? 1.0 : sign[b];
             double e = 0;
-            for (int i = 0; i < block.dofs.n_dofs; ++i) e += v_local[block.offset + i] * mv_local[block.offset + i];
+            for (int i = 0; i < block.dofs.n_dofs; ++i) {
+                x[to + i] = s * modes.x[k][block.offset + i];
+                mx[to + i] = s * modes.Mx[k][block.offset + i];
+                e += x[to + i] * mx[to + i];
+            }
             energy[out.dofs.block_of(block.harmonic.n, block.harmonic.family)] = e;
         }
         std::array<double, 4> g{};
         for (int d = 0; d < 4; ++d)
-            for (int i = 0; i < out.dofs.n_dofs; ++i) g[d] += rigid[d][i] * mv[i];
+            for (int i = 0; i < out.dofs.n_dofs; ++i) g[d] += rigid[d][i] * mx[i];
         out.block_energy.push_back(std::move(energy));
         out.gamma.push_back(g);
-        out.vectors.push_back(std::move(v));
+        out.vectors.push_back(std::move(x));
     }
 }
 
@@ -127,8 +151,19 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
     // its eigenvalues below the merged band edge is among them (it cannot hold
     // more of the merged lowest than were asked).
     const std::vector<CoupledComponent> components = coupled_components(all.dofs, attachments(scene));
-    for (const CoupledComponent& component : components)
-        solve_component(scene, section, materials, component, request, all);
+    const std::array<std::vector<double>, 4> rigid = mpi_rank() == 0 ? rigid_fields(section, all.dofs)
+                                                                       : std::array<std::vector<double>, 4>{};
+    std::vector<ComponentModes> solved(components.size());
+    for (size_t c = 0; c < components.size(); ++c) {
+        const CoupledComponent& component = components[c];
+        if (component.partner_of >= 0) {
+            // A congruent copy of an earlier set (S K S, S M S): its modes are S x, its counts the primary's.
+            add_component(component, solved[component.partner_of], component.block_sign, rigid, all);
+            continue;
+        }
+        solved[c] = solve_component(scene, section, materials, component, request);
+        add_component(component, solved[c], {}, rigid, all);
+    }
     // Frequency order over the components.
     std::vector<size_t> order(all.eigenvalues.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;

@@ -111,6 +111,55 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max)
     return out;
 }
 
+namespace {
+
+// One pad layer's coupling between blocks a and b, component c, up to the
+// edge integrals (which are the same for every pair): I_pads - I_band.
+double pad_coupling(const PadLayer& pad, HarmonicFamily a, HarmonicFamily b, int c) {
+    const std::vector<Arc> band = {{0, 2 * M_PI}};
+    return pad_integral(pad.arcs, a, b, c) - pad_integral(band, a, b, c);
+}
+
+// s per block when `sin` is the partner of `cos` (see CoupledComponent), else nothing.
+std::optional<std::vector<double>> partner_signs(const CoupledDofs& cos, const CoupledDofs& sin,
+                                                 const Attachments& attached) {
+    const size_t n = cos.blocks.size();
+    if (attached.web || n != sin.blocks.size()) return std::nullopt;
+    for (size_t i = 0; i < n; ++i) {
+        const HarmonicFamily a = cos.blocks[i].harmonic, b = sin.blocks[i].harmonic;
+        if (a.n < 1 || a.n != b.n || a.family != Family::cos || b.family != Family::sin) return std::nullopt;
+    }
+    const auto value = [&](const PadLayer& pad, const CoupledDofs& d, size_t i, size_t j, int c) {
+        return pad_coupling(pad, d.blocks[i].harmonic, d.blocks[j].harmonic, c);
+    };
+    // Signs spread from block 0 along the couplings; then every pair of every layer is checked.
+    std::vector<double> s(n, 0.0);
+    s[0] = 1;
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const PadLayer& pad : attached.pads)
+            for (size_t i = 0; i < n; ++i)
+                for (size_t j = 0; j < n && s[i] != 0; ++j)
+                    for (int c = 0; c < 3 && s[j] == 0; ++c)
+                        if (const double v = value(pad, cos, i, j, c); v != 0) {
+                            s[j] = s[i] * (value(pad, sin, i, j, c) * v > 0 ? 1 : -1);
+                            grew = true;
+                        }
+    }
+    for (double& x : s)
+        if (x == 0) x = 1;  // a block nothing couples to the rest
+    for (const PadLayer& pad : attached.pads)
+        for (size_t i = 0; i < n; ++i)
+            for (size_t j = 0; j < n; ++j)
+                for (int c = 0; c < 3; ++c) {
+                    const double v = value(pad, cos, i, j, c), w = value(pad, sin, i, j, c);
+                    if (std::abs(w - s[i] * s[j] * v) > kVanishingIntegral * 2 * M_PI) return std::nullopt;
+                }
+    return s;
+}
+
+}  // namespace
+
 std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached) {
     const int n = static_cast<int>(all.blocks.size());
     std::vector<int> root(n);
@@ -138,6 +187,13 @@ std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const A
         comp.dofs.n_dofs += block.dofs.n_dofs;
         comp.dofs.blocks.push_back(std::move(block));
     }
+    for (size_t c = 0; c < out.size(); ++c)
+        for (size_t p = 0; p < c && out[c].partner_of < 0; ++p)
+            if (out[p].partner_of < 0)
+                if (auto signs = partner_signs(out[p].dofs, out[c].dofs, attached)) {
+                    out[c].partner_of = static_cast<int>(p);
+                    out[c].block_sign = std::move(*signs);
+                }
     return out;
 }
 

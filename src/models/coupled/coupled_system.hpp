@@ -98,9 +98,20 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max)
 // degenerate partners, a turned copy of each other). Each component's
 // blocks are renumbered from offset 0; `offset_in` keeps where each block
 // sits in `all`.
+//
+// A set of sin families whose every coupling equals that of the set of the
+// same wave numbers' cos families up to a sign per wave number is that set's
+// partner: K_sin = S K_cos S and M_sin = S M_cos S with S = diag(s_n), s_n =
+// +-1 (three pads: s_n = +1 for n = 1 mod 3, -1 for n = 2 mod 3; the blocks'
+// own K_n, M_n are the same for both families). A congruence by a signature
+// matrix: the same eigenvalues, the same inertia at every shift, and
+// eigenvectors S x. The partner is not solved; `partner_of` names its
+// primary and `block_sign` holds s per block.
 struct CoupledComponent {
     CoupledDofs dofs;
     std::vector<int> offset_in;  // per block of dofs: its offset in `all`
+    int partner_of = -1;             // index of the component this one mirrors, or -1
+    std::vector<double> block_sign;  // s per block (partners only)
 };
 std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached);
 
