@@ -48,17 +48,6 @@ CoupledModes coupled_at(const Scene& scene, int n_max) {
     return solve_coupled(scene, section, materials, n_max, solve_request(scene));
 }
 
-WebSpec web_at(double angle_deg, double tension, double modulus) {
-    WebSpec w;
-    w.tension = tension;
-    w.span = 1.2;
-    w.angle = angle_deg * M_PI / 180;
-    w.thickness = 80e-6;
-    w.modulus = modulus;
-    w.shear_modulus = PaperWeb::default_shear_modulus(modulus);
-    return w;
-}
-
 }  // namespace
 
 TEST_CASE("Coupled level with full bands: block diagonal, the harmonic level's eigenvalues to 1e-8", "[coupled]") {
@@ -151,7 +140,7 @@ TEST_CASE("Coupled level: the web's line holds a rigid roll with its three sprin
     // R exactly). The shifts live in (1, cos) and (1, sin), the axial motion
     // and the turn in n = 0: the web couples those blocks.
     Scene scene = paper_core(1.0, 16, 8);
-    scene.web = web_at(30, 300, 5e9);
+    scene.web = web_along(30, 300, 5e9);
     Scene bare = scene;
     bare.web.reset();
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
@@ -210,7 +199,7 @@ TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the
     // coupled truncation and the solid's quadratic arcs), as for the pads.
     const auto scene_at = [](int around, const std::string& level) {
         Scene s = clamp_both_ends(paper_core(1.0, around, 24), 0.07);
-        s.web = web_at(0, 2000, 20e9);
+        s.web = web_along(0, 2000, 20e9);
         s.analysis.n_modes = 6;
         s.model = level;
         return s;

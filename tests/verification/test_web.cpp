@@ -20,20 +20,7 @@
 
 using namespace coremodal;
 
-namespace {
-
-WebSpec web_along(double angle_deg, double tension = 300, double modulus = 5e9) {
-    WebSpec w;
-    w.tension = tension;
-    w.span = 1.2;
-    w.angle = angle_deg * M_PI / 180;
-    w.thickness = 80e-6;
-    w.modulus = modulus;
-    w.shear_modulus = PaperWeb::default_shear_modulus(modulus);
-    return w;
-}
-
-}  // namespace
+using testing::web_along;
 
 TEST_CASE("The web's springs on a section, by hand", "[web]") {
     const WebSpec w = web_along(30);

@@ -4,6 +4,7 @@
 
 #include "analyses/run/run.hpp"
 #include "assembly/chuck_supports.hpp"
+#include "effects/web.hpp"
 #include "geometry/tube_model.hpp"
 #include "mesh/gmsh_mesh.hpp"
 #include "scene/scene.hpp"
@@ -119,6 +120,19 @@ inline Mesh generated_mesh(const Scene& s) {
     Mesh mesh = read_current_gmsh_mesh("test mesh");
     add_frame_nodes(s, mesh);
     return mesh;
+}
+
+// A news web 80 um thick over a 1.2 m span, leaving at angle_deg, with
+// Baum's shear modulus (effects/web.hpp).
+inline WebSpec web_along(double angle_deg, double tension = 300, double modulus = 5e9) {
+    WebSpec w;
+    w.tension = tension;
+    w.span = 1.2;
+    w.angle = angle_deg * M_PI / 180;
+    w.thickness = 80e-6;
+    w.modulus = modulus;
+    w.shear_modulus = PaperWeb::default_shear_modulus(modulus);
+    return w;
 }
 
 // The rigid-clamp scene the chucks approach: clamps over the bands.
