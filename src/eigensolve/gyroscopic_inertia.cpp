@@ -1,6 +1,7 @@
 #include "eigensolve/gyroscopic_inertia.hpp"
 
 #include "common/error.hpp"
+#include "common/log_event.hpp"
 
 #include <petscmat.h>
 
@@ -169,18 +170,36 @@ GyroscopicInertia::GyroscopicInertia(const OperatorSet& ops, IS first, IS second
 }
 
 long GyroscopicInertia::negative_count(double spin, double spin_squared, double omega) {
+    return negative_count(Combination{1.0, spin_squared, -omega * omega, omega * spin});
+}
+
+long GyroscopicInertia::negative_count(const Combination& c) {
+    const LogEvent event("CmInertiaCount");
     Pattern& p = *pattern_;
+    // Without the coupling the two mirrored families are one matrix twice.
+    const bool twice = p.mirrored && c.coupling == 0;
     long count = 0;
     for (double sign : p.signs) {
+        if (twice && sign < 0) {
+            count *= 2;
+            break;
+        }
         COREMODAL_PETSC(MatCopy(p.base, p.work, SAME_NONZERO_PATTERN));
-        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, spin_squared, p.centrifugal, SAME_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatAXPY(p.work, -omega * omega, p.mass, SAME_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatAXPY(p.work, sign * omega * spin, p.coupling, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatScale(p.work, c.stiffness));
+        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, c.centrifugal, p.centrifugal, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(p.work, c.mass, p.mass, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(p.work, sign * c.coupling, p.coupling, SAME_NONZERO_PATTERN));
         count += p.negative_pivots();
     }
     return p.mirrored ? count : count / 2;  // the real form has every eigenvalue of Q twice
 }
 
 bool GyroscopicInertia::uses_mirrored_families() const { return pattern_->mirrored; }
+
+GyroscopicInertia::FamilyBlocks GyroscopicInertia::family_blocks() const {
+    const Pattern& p = *pattern_;
+    if (!p.mirrored) return {};
+    return {p.base.get(), p.centrifugal.get(), p.mass.get(), p.coupling.get()};
+}
 
 }  // namespace coremodal

@@ -49,7 +49,22 @@ public:
     // `spin_squared` apart (Q is affine in the two: a convexity argument
     // counts at the corners of a region of them, projected_gyroscopic.hpp).
     long negative_count(double spin, double spin_squared, double omega);
+    // neg of the Hermitian combination  stiffness (K + K_sigma) + centrifugal K_Omega
+    // + mass M + coupling i G  of the set's terms: negative_count(spin,
+    // spin_squared, omega) is {1, spin_squared, -omega^2, omega spin}; the
+    // effective stiffness at a speed, K(Omega) + omega_0^2 M, is {1, Omega^2, omega_0^2, 0}.
+    struct Combination {
+        double stiffness = 0, centrifugal = 0, mass = 0, coupling = 0;
+    };
+    long negative_count(const Combination& c);
     bool uses_mirrored_families() const;
+    // With mirrored families: one family's blocks (header, 1) on one nonzero
+    // pattern, K + K_sigma (S), K_Omega (null without the term), M_S and the
+    // coupling Gab of G = [[0, Gab], [-Gab, 0]]; all null otherwise.
+    struct FamilyBlocks {
+        Mat stiffness = nullptr, centrifugal = nullptr, mass = nullptr, coupling = nullptr;
+    };
+    FamilyBlocks family_blocks() const;
 
 private:
     struct Pattern;
