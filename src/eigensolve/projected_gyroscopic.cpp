@@ -25,6 +25,20 @@ constexpr double kTargetFraction = 0.5;
 constexpr double kDependentDirection = 1e-14;
 // Terms of the static responses' series per mode at rest and force (static_responses).
 constexpr int kKrylovDepth = 2;
+// Counting at fewer speeds (header, docs/rotation.md). The bounds gamma and
+// kappa are guessed from the projected terms (their largest |eigenvalue| in
+// the basis, a lower bound of the full term's), times kBoundMargin, and
+// doubled up to kBoundTries times until the inertia counts prove them (the
+// margin keeps gamma M -+ i G away from singular, where the LDL^T's signs
+// would be round-off). A certificate's gap delta is this fraction of the
+// distance, in omega^2, from the count's point to the nearest candidate
+// (the candidates are approximations; the two counts decide), and one is
+// made only where the bound predicts it covers kMinCertifiedSteps more
+// speeds of the sweep's step: it costs two counts where a speed costs one.
+constexpr double kBoundMargin = 1.25;
+constexpr int kBoundTries = 4;
+constexpr double kGapFraction = 0.5;
+constexpr double kMinCertifiedSteps = 3;
 
 using Dense = Eigen::MatrixXd;
 using Complex = std::complex<double>;
@@ -183,6 +197,16 @@ struct ProjectedGyroscopic::Basis {
     Mat K_template = nullptr;    // for vectors of the set's layout
     std::unique_ptr<GyroscopicInertia> inertia;
     double rigid_line_clear_up_to = -1;  // rad/s: neg Q(omega_0) = 0 proven for spins up to it
+    // Counting at fewer speeds (header): the proven bounds (gamma < 0: none),
+    // the certificates made so far and the last speed counted.
+    double gamma = -1, kappa = 0;
+    struct Certificate {
+        double spin, omega, delta;
+        long count;
+    };
+    mutable std::vector<Certificate> certificates;
+    mutable double last_spin = -1;
+    mutable CountStatistics stats;
     double stiffness_clear_up_to = -1;   // rad/s: K(Omega) + omega_0^2 M >= 0 proven for spins up to it
 
     Eigen::Index m() const { return V.cols(); }
@@ -313,6 +337,99 @@ struct ProjectedGyroscopic::Basis {
                 worst = std::max(worst, std::abs(product(j, i)) / std::sqrt(std::abs(product(i, i) * product(j, j))));
             }
         return worst;
+    }
+
+    // neg Q at the count's point and the modes found between the rigid line
+    // and it: at the band edge `check` (one count), or at an earlier
+    // certificate's point where Weyl's bound covers this speed (no count),
+    // or at the band edge with a new certificate (two counts; three where
+    // they differ). Only where the rigid line is proven clear (nothing to
+    // subtract) and the bounds are proven; header and docs/rotation.md.
+    struct Count {
+        double point;
+        long negative, found;
+    };
+    Count count_modes(double spin, const std::vector<Candidate>& c, int n_report, double check, double norm_K_at_spin) const {
+        ++stats.speeds;
+        const long found_reported =
+            std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= rigid_omega; });
+        const bool certifiable = gamma >= 0 && spin <= rigid_line_clear_up_to;
+        const double step = last_spin >= 0 ? std::abs(spin - last_spin) : 0;
+        last_spin = spin;
+        if (!certifiable) {
+            ++stats.counted;
+            return {check, inertia->negative_count(spin, check), found_reported};
+        }
+        // The candidates below `point`, every one beyond the reported ones verified; or none.
+        const auto found_below = [&](double point) -> std::optional<long> {
+            long found = 0;
+            for (size_t i = 0; i < c.size() && c[i].omega < point; ++i) {
+                if (int(i) >= n_report && relative_residual(spin, c[i].omega, c[i], norm_K_at_spin) > kMaxProjectedResidual)
+                    return std::nullopt;
+                if (c[i].omega >= rigid_omega) ++found;
+            }
+            return found;
+        };
+        for (auto k = certificates.rbegin(); k != certificates.rend(); ++k) {
+            if (k->omega <= c[n_report - 1].omega) continue;  // above the reported modes only
+            const double moved =
+                std::abs(spin * spin - k->spin * k->spin) * kappa + k->omega * std::abs(spin - k->spin) * gamma;
+            if (moved >= k->delta) continue;
+            if (const std::optional<long> found = found_below(k->omega)) {
+                ++stats.certified;
+                return {k->omega, k->count, *found};
+            }
+        }
+        if (step > 0 && n_report < int(c.size())) {
+            const double p2 = check * check, lo = c[n_report - 1].omega * c[n_report - 1].omega,
+                         hi = c[n_report].omega * c[n_report].omega;
+            const double delta = kGapFraction * std::min(p2 - lo, hi - p2);
+            const double reach = kMinCertifiedSteps * step;
+            const double moved = ((spin + reach) * (spin + reach) - spin * spin) * kappa + check * reach * gamma;
+            if (delta > 0 && moved < delta) {
+                ++stats.certificates;
+                const long below = inertia->negative_count({1.0, spin * spin, -p2 + delta, check * spin});  // Q + delta M
+                const long above = inertia->negative_count({1.0, spin * spin, -p2 - delta, check * spin});  // Q - delta M
+                if (below == above) {
+                    certificates.push_back({spin, check, delta, below});
+                    return {check, below, found_reported};
+                }
+                ++stats.certificate_failed;
+            }
+        }
+        ++stats.counted;
+        return {check, inertia->negative_count(spin, check), found_reported};
+    }
+
+    // gamma and kappa of the header, proven by inertia counts (gamma < 0: not proven).
+    void prove_bounds() {
+        const auto largest = [](const Eigen::VectorXd& eigenvalues) { return eigenvalues.cwiseAbs().maxCoeff(); };
+        const auto proven = [](double guess, const auto& holds) {
+            for (int k = 0; k < kBoundTries; ++k, guess *= 2)
+                if (holds(guess)) return guess;
+            return -1.0;
+        };
+        // kappa first: with a centrifugal term it is the bound that fails
+        // (the prestress's geometric stiffness on the mesh's shortest waves),
+        // and then gamma is not worth its count.
+        double k = 0;
+        if (centrifugal) {
+            const Dense sym = 0.5 * (K_omega + K_omega.transpose());
+            const double k0 = kBoundMargin * std::max(largest(Eigen::SelfAdjointEigenSolver<Dense>(sym).eigenvalues()), 1e-300);
+            k = proven(k0, [&](double x) {
+                return inertia->negative_count({0.0, 1.0, x, 0.0}) == 0 && inertia->negative_count({0.0, -1.0, x, 0.0}) == 0;
+            });
+            if (k < 0) return;
+        }
+        const Eigen::MatrixXcd iG = family ? G.cast<Complex>() : Eigen::MatrixXcd(Complex(0, 1) * G.cast<Complex>());
+        const double g0 = kBoundMargin * std::max(largest(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(iG).eigenvalues()), 1e-300);
+        // gamma M - i G and gamma M + i G have one spectrum (complex conjugates, G real): one count.
+        const double g = proven(g0, [&](double x) { return inertia->negative_count({0.0, 0.0, x, -1.0}) == 0; });
+        if (g < 0 || k < 0) return;
+        gamma = g;
+        kappa = k;
+        stats.gamma = g;
+        stats.kappa = centrifugal ? k : -1;
     }
 
     GyroscopicMode full_mode(const Candidate& c, double relative_residual) const {
@@ -449,16 +566,16 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     GyroscopicModes out;
     Verification& v = out.verification;
     std::vector<double> residuals;
+    const double norm_K = b.norm_K(spin);  // once per speed: a pass over the full matrices
     {
         const LogEvent event("CmProjResidual");
-        const double norm_K = b.norm_K(spin);  // once per speed: a pass over the full matrices
         for (int i = 0; i < n_report; ++i) {
             residuals.push_back(b.relative_residual(spin, c[i].omega, c[i], norm_K));
             if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
             v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
         }
     }
-    const double check = std::sqrt(check_point(lambdas, n_report, scale));
+    const double band_edge = std::sqrt(check_point(lambdas, n_report, scale));
     const long below_rigid_line =
         spin <= b.rigid_line_clear_up_to ? 0 : b.inertia->negative_count(spin, b.rigid_omega);
     // The count's premise (gyroscopic_solver.hpp): K(Omega) + omega_0^2 M >= 0,
@@ -468,8 +585,9 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
         const long soft = b.inertia->negative_count(stiffness_at(spin, b.rigid_omega));
         if (soft > 0) throw SolveError(indefinite_stiffness_text(spin, soft));
     }
-    const long counted = b.inertia->negative_count(spin, check) - below_rigid_line;
-    const long found = std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= b.rigid_omega; });
+    const Basis::Count count = b.count_modes(spin, c, n_report, band_edge, norm_K);
+    const double check = count.point;
+    const long counted = count.negative - below_rigid_line, found = count.found;
     if (counted != found) return std::nullopt;
 
     for (int i = 0; i < n_report; ++i) out.modes.push_back(b.full_mode(c[i], residuals[i]));
@@ -491,6 +609,10 @@ bool ProjectedGyroscopic::prove_rigid_line_clear(double max_spin) {
         // neg Q(omega_0) = 0 at every speed of the range implies the count's
         // premise there (interlacing, gyroscopic_solver.hpp).
         b.rigid_line_clear_up_to = b.stiffness_clear_up_to = max_spin;
+        try {
+            b.prove_bounds();
+        } catch (const SolveError&) {  // a count's factorisation failed: count at every speed
+        }
         return true;
     }
     // The premise on its own: K(Omega) + omega_0^2 M is affine in Omega^2, so
@@ -501,6 +623,8 @@ bool ProjectedGyroscopic::prove_rigid_line_clear(double max_spin) {
     if (stiff) b.stiffness_clear_up_to = max_spin;
     return false;
 }
+
+ProjectedGyroscopic::CountStatistics ProjectedGyroscopic::count_statistics() const { return basis_->stats; }
 
 int ProjectedGyroscopic::basis_size() const { return static_cast<int>(basis_->m()); }
 

@@ -91,6 +91,28 @@ public:
     int basis_size() const;
     bool counts_mirrored_families() const;
 
+    // Counting at fewer speeds (docs/rotation.md, "Counting at fewer
+    // speeds"). After prove_rigid_line_clear has held, the sweep's counts
+    // may come from a certificate: at (Omega_1, omega_1) the two counts
+    // neg(Q - delta M) = neg(Q + delta M) = N say that no eigenvalue of the
+    // pencil (Q, M) lies in [-delta, delta); Weyl's inequality moves each by
+    // at most ||M^-1/2 (Q(Omega, omega_1) - Q(Omega_1, omega_1)) M^-1/2|| <=
+    // |Omega^2 - Omega_1^2| kappa + omega_1 |Omega - Omega_1| gamma, with
+    // gamma M -+ i G >= 0 and kappa M -+ K_Omega >= 0 proven by inertia
+    // counts once per set; so neg Q(Omega, omega_1) = N wherever that bound
+    // is below delta. A speed uses it when omega_1 lies above its reported
+    // modes and every candidate below omega_1 is verified; otherwise it
+    // counts, as before.
+    struct CountStatistics {
+        long speeds = 0;            // modes_at calls that reached the count
+        long counted = 0;           // of them, counted at their own point (one count)
+        long certificates = 0;      // of them, a new certificate made (two counts)
+        long certificate_failed = 0;  // of those, the two counts differed: counted again (three)
+        long certified = 0;         // of them, by an earlier certificate (no count)
+        double gamma = -1, kappa = -1;  // the proven bounds (-1: none)
+    };
+    CountStatistics count_statistics() const;
+
 private:
     struct Basis;
     std::unique_ptr<Basis> basis_;

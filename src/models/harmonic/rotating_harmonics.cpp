@@ -223,6 +223,22 @@ void RotatingHarmonics::sweep_up_to(double speed_hz) {
         if (h->projected) h->projected->prove_rigid_line_clear(2 * M_PI * speed_hz);
 }
 
+ProjectedGyroscopic::CountStatistics RotatingHarmonics::count_statistics() const {
+    ProjectedGyroscopic::CountStatistics all;
+    for (const auto& h : harmonics_) {
+        if (!h->projected) continue;
+        const ProjectedGyroscopic::CountStatistics s = h->projected->count_statistics();
+        all.speeds += s.speeds;
+        all.counted += s.counted;
+        all.certificates += s.certificates;
+        all.certificate_failed += s.certificate_failed;
+        all.certified += s.certified;
+        all.gamma = std::max(all.gamma, s.gamma);
+        all.kappa = std::max(all.kappa, s.kappa);
+    }
+    return all;
+}
+
 long RotatingHarmonics::n_dofs() const {
     long most = 0;
     for (const auto& h : harmonics_) most = std::max<long>(most, h->problem.n_families() * long(h->problem.dofs.n_dofs));

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "beam/rotating_modes.hpp"
+#include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "models/harmonic/spinning_harmonic.hpp"
 #include "modes/classify.hpp"
@@ -69,6 +70,9 @@ public:
     const CentrifugalPrestress* prestress() const { return prestress_.get(); }
     // Problems (one n at one speed) solved whole, and in all.
     long n_full_solves() const { return n_full_solves_; }
+    // The projected solver's completeness counts over every wave number
+    // (ProjectedGyroscopic::CountStatistics; gamma and kappa the largest).
+    ProjectedGyroscopic::CountStatistics count_statistics() const;
     long n_solves() const { return n_solves_; }
 
 private:
