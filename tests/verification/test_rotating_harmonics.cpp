@@ -132,7 +132,16 @@ void check_same_modes(const Scene& scene, int window, const std::vector<double>&
             INFO("speed " << speed << " Hz, mode " << i + 1 << ": " << a[i].frequency_hz << " / " << b[i].frequency_hz << " Hz");
             CHECK(a[i].block == b[i].block);
             const bool precession = a[i].block == 1 && std::abs(a[i].frequency_hz - precession_hz * speed) < 0.01 * speed;
-            CHECK(a[i].frequency_hz == Approx(b[i].frequency_hz).epsilon(precession ? 1e-4 : tolerance).margin(1e-12));
+            if (precession) {
+                // A free body's tilt precesses at Omega I_p / I_t: a double zero
+                // at rest, which the full solver (TOAR) resolves to ~sqrt(eps)
+                // (measured 3e-4 off the closed form at 0.1 Hz) and the basis
+                // to 7.5e-5: both against the closed form, to 5e-4.
+                CHECK(a[i].frequency_hz == Approx(precession_hz * speed).epsilon(5e-4));
+                CHECK(b[i].frequency_hz == Approx(precession_hz * speed).epsilon(5e-4));
+                continue;
+            }
+            CHECK(a[i].frequency_hz == Approx(b[i].frequency_hz).epsilon(tolerance).margin(1e-12));
             CHECK(a[i].relative_residual < (a[i].frequency_hz > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual));
             if (a[i].frequency_hz > 0 && speed > 0) CHECK(a[i].whirl == b[i].whirl);
         }
@@ -166,7 +175,9 @@ TEST_CASE("Spinning harmonics in a projection basis: the full quadratic solver's
         // at rest by that much): compared to 1e-6.
         Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
         ring.model = "harmonic";
-        check_same_modes(ring, 16, {0.0, 0.1, 1.0, 5.0}, 1e-6, 2.0);  // I_p = 2 I_t, thin
+        // The precession's I_p / I_t of the annulus a = 0.495, b = 0.5 m, L = 0.02 m (rigid body).
+        const double a2b2 = 0.495 * 0.495 + 0.5 * 0.5, ratio = (a2b2 / 2) / (a2b2 / 4 + 0.02 * 0.02 / 12);
+        check_same_modes(ring, 16, {0.0, 0.1, 1.0, 5.0}, 1e-6, ratio);
     }
 }
 
