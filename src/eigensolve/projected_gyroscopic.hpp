@@ -102,14 +102,15 @@ public:
     // counts once per set; so neg Q(Omega, omega_1) = N wherever that bound
     // is below delta. A speed uses it when omega_1 lies above its reported
     // modes and every candidate below omega_1 is verified; otherwise it
-    // counts, as before.
+    // counts, as before. Only for a set without a centrifugal term (kappa =
+    // 0): with one, kappa is out of reach (projected_gyroscopic.cpp).
     struct CountStatistics {
         long speeds = 0;            // modes_at calls that reached the count
         long counted = 0;           // of them, counted at their own point (one count)
         long certificates = 0;      // of them, a new certificate made (two counts)
         long certificate_failed = 0;  // of those, the two counts differed: counted again (three)
         long certified = 0;         // of them, by an earlier certificate (no count)
-        double gamma = -1, kappa = -1;  // the proven bounds (-1: none)
+        double gamma = -1;          // the proven bound (-1: none, no certificates)
     };
     CountStatistics count_statistics() const;
 

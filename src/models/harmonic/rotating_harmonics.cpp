@@ -234,7 +234,6 @@ ProjectedGyroscopic::CountStatistics RotatingHarmonics::count_statistics() const
         all.certificate_failed += s.certificate_failed;
         all.certified += s.certified;
         all.gamma = std::max(all.gamma, s.gamma);
-        all.kappa = std::max(all.kappa, s.kappa);
     }
     return all;
 }

@@ -71,7 +71,7 @@ public:
     // Problems (one n at one speed) solved whole, and in all.
     long n_full_solves() const { return n_full_solves_; }
     // The projected solver's completeness counts over every wave number
-    // (ProjectedGyroscopic::CountStatistics; gamma and kappa the largest).
+    // (ProjectedGyroscopic::CountStatistics; gamma the largest).
     ProjectedGyroscopic::CountStatistics count_statistics() const;
     long n_solves() const { return n_solves_; }
 
