@@ -288,8 +288,9 @@ std::string indefinite_stiffness_text(double spin, long n_negative) {
          "In co-rotating coordinates (segmented chucks at the solid level) this is what happens above the "
          "first forward critical speed of order 1, where that whirl's frequency in the rotating frame has "
          "passed through zero; in the stationary frame, a centrifugal softening stronger than the structure. "
-         "Sweep [rotation] speeds below this speed (the order-1 crossings below it are reported), or, for a "
-         "body of revolution, use the stationary frame (model = \"harmonic\")";
+         "End the [rotation] speeds below this speed, or, for a body of revolution, spin it in the "
+         "stationary frame (model = \"harmonic\"), where the stiffness stays definite until the centrifugal "
+         "softening outgrows it";
     return s.str();
 }
 
