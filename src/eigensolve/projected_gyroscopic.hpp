@@ -27,7 +27,10 @@
 // And the set is proven complete as solve_gyroscopic proves it: the inertia
 // of the full Hermitian Q(omega) at the band edge and at the rigid line
 // (gyroscopic_inertia.hpp), at every speed (the rigid line's once for a
-// whole sweep where prove_rigid_line_clear holds). A mode above kMaxProjectedResidual
+// whole sweep where prove_rigid_line_clear holds; the band edge's carried
+// from an earlier speed where a certificate reaches, count_statistics).
+// With mirrored families (n >= 1) the basis is one family's and the small
+// problem real symmetric (projected_gyroscopic.cpp, family_candidates). A mode above kMaxProjectedResidual
 // or a count that disagrees is not an answer: modes_at returns none, and the
 // caller solves the full problem at that speed (solve_gyroscopic).
 #pragma once

@@ -17,7 +17,8 @@
 // (eigensolve/projected_gyroscopic.hpp: the modes at rest of n and the
 // static responses to their spin forces), every mode verified by its
 // residual on the full problem and the set proven complete by the inertia
-// of the full Q(omega) at every speed; where either fails, that n at that
+// of the full Q(omega) at every speed (or carried from an earlier speed by
+// Weyl's bound, ProjectedGyroscopic::count_statistics); where either fails, that n at that
 // speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
