@@ -299,3 +299,28 @@ TEST_CASE("Counting at fewer speeds: Weyl's bound carries a count from speed to 
         }
     }
 }
+
+TEST_CASE("Wave number 0's count on its split families equals the real form's, at half the size",
+          "[rotation][harmonic]") {
+    // D = diag(I, i I) on (meridional, tangential) makes n = 0's Hermitian
+    // Q(omega) real symmetric (gyroscopic_inertia.hpp, 3): its count must be
+    // the real form [[A, -B], [B, A]]'s halved, which needs no structure.
+    for (bool centrifugal : {false, true}) {
+        const std::unique_ptr<TubeHarmonic> t = tube_harmonic(0, centrifugal);
+        REQUIRE(t->h.meridional_rows.get() != nullptr);
+        GyroscopicInertia split(t->h.operators, t->h.meridional_rows, t->h.tangential_rows);
+        GyroscopicInertia real_form(t->h.operators);
+        REQUIRE(split.uses_split_families());
+        REQUIRE_FALSE(real_form.uses_split_families());
+        const double f1 = 2 * M_PI * 415.0;  // the tube's first bending frequency, rad/s, a scale
+        long largest = 0;
+        for (double spin : {0.0, 0.3 * f1, 1.0 * f1})
+            for (double omega : {0.5 * f1, 3.0 * f1, 10.0 * f1, 30.0 * f1}) {
+                INFO("centrifugal " << centrifugal << ", spin " << spin << ", omega " << omega);
+                const long n = real_form.negative_count(spin, omega);
+                CHECK(split.negative_count(spin, omega) == n);
+                largest = std::max(largest, n);
+            }
+        CHECK(largest > 2);  // the points count modes: the test can fail
+    }
+}

@@ -145,7 +145,8 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
             r.lambda_scale = h->lambda_scale;
             h->projected = std::make_unique<ProjectedGyroscopic>(h->problem.operators, r,
                                                                  kRestBasisFactor * h->n_modes + kExtraRestModes,
-                                                                 h->problem.cos_rows, h->problem.sin_rows);
+                                                                 n == 0 ? h->problem.meridional_rows : h->problem.cos_rows,
+                                                                 n == 0 ? h->problem.tangential_rows : h->problem.sin_rows);
         }
         harmonics_.push_back(std::move(h));
     }
