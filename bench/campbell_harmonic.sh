@@ -8,6 +8,11 @@
 # seconds and their medians.
 #
 #   bash bench/campbell_harmonic.sh [REPEATS] [extra coremodal options]
+#
+# ROTATION_EXTRA adds lines to the [rotation] table, e.g.
+#   ROTATION_EXTRA='centrifugal_stiffening = false' bash bench/campbell_harmonic.sh 3
+# and OUT_TAG names the copies of campbell.csv and critical_speeds.csv left
+# in /tmp (default: none), to compare two builds' answers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats=${1:-3}
@@ -16,7 +21,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 for case in cases/07-*.toml cases/08-*.toml; do
     name=$(basename "$case" .toml)
-    { cat "$case"; printf '\n[rotation]\nspeeds = ["0 rpm", "3000 rpm"]\npoints = 41\nexcitation_orders = [1, 2]\n'; } \
+    { cat "$case"; printf '\n[rotation]\nspeeds = ["0 rpm", "3000 rpm"]\npoints = 41\nexcitation_orders = [1, 2]\n%s\n' "${ROTATION_EXTRA:-}"; } \
         > "$work/$name.toml"
     walls=() cpus=()
     for ((r = 1; r <= repeats; ++r)); do
@@ -31,6 +36,6 @@ for case in cases/07-*.toml cases/08-*.toml; do
     head -n 8 "$work/log"
     median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
     echo "$name: median of $repeats: wall $(median "${walls[@]}") s, cpu $(median "${cpus[@]}") s"
-    cp "$work/$name-out/critical_speeds.csv" "/tmp/${name}-critical_speeds.csv" 2>/dev/null || true
-    cp "$work/$name-out/campbell.csv" "/tmp/${name}-campbell.csv" 2>/dev/null || true
+    cp "$work/$name-out/critical_speeds.csv" "/tmp/${name}${OUT_TAG:+-$OUT_TAG}-critical_speeds.csv" 2>/dev/null || true
+    cp "$work/$name-out/campbell.csv" "/tmp/${name}${OUT_TAG:+-$OUT_TAG}-campbell.csv" 2>/dev/null || true
 done

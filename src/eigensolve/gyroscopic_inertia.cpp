@@ -1,6 +1,7 @@
 #include "eigensolve/gyroscopic_inertia.hpp"
 
 #include "common/error.hpp"
+#include "common/log_event.hpp"
 
 #include <petscmat.h>
 
@@ -61,6 +62,38 @@ std::optional<PetscMatrix> mirrored_coupling(Mat G, IS first, IS second) {
     return g12;
 }
 
+PetscInt size_of(IS is) {
+    PetscInt n;
+    COREMODAL_PETSC(ISGetSize(is, &n));
+    return n;
+}
+
+// Split families (header, 3): every symmetric term has zero blocks between
+// the two sets and G only those; then S G with S = -1 on the first set, +1
+// on the second (symmetric), or none.
+std::optional<PetscMatrix> split_coupling(const std::vector<Mat>& symmetric, Mat G, IS first, IS second) {
+    for (Mat A : symmetric)
+        if (A && !nearly_zero(sub_matrix(A, first, second), norm_1(A))) return std::nullopt;
+    const double scale = norm_1(G);
+    if (!nearly_zero(sub_matrix(G, first, first), scale) || !nearly_zero(sub_matrix(G, second, second), scale))
+        return std::nullopt;
+    PetscMatrix out;
+    COREMODAL_PETSC(MatDuplicate(G, MAT_COPY_VALUES, out.out()));
+    PetscVector s;
+    COREMODAL_PETSC(MatCreateVecs(G, nullptr, s.out()));
+    COREMODAL_PETSC(VecSet(s, 1.0));
+    PetscInt n;
+    const PetscInt* rows;
+    COREMODAL_PETSC(ISGetLocalSize(first, &n));
+    COREMODAL_PETSC(ISGetIndices(first, &rows));
+    for (PetscInt k = 0; k < n; ++k) COREMODAL_PETSC(VecSetValue(s, rows[k], -1.0, INSERT_VALUES));
+    COREMODAL_PETSC(ISRestoreIndices(first, &rows));
+    COREMODAL_PETSC(VecAssemblyBegin(s));
+    COREMODAL_PETSC(VecAssemblyEnd(s));
+    COREMODAL_PETSC(MatDiagonalScale(out, s, nullptr));
+    return out;
+}
+
 // [[A, B], [C, D]] as one AIJ matrix (null blocks are zero).
 PetscMatrix blocks(Mat a, Mat b, Mat c, Mat d) {
     PetscMatrix nest, out;
@@ -84,6 +117,8 @@ PetscMatrix negated(Mat A) {
 // for each sign in `signs`; every part on one nonzero pattern (header, 2).
 struct GyroscopicInertia::Pattern {
     bool mirrored = false;
+    bool real_form = false;  // counted on [[A, -B], [B, A]]: every eigenvalue twice
+    bool split = false;      // split families (header, 3)
     PetscMatrix base, centrifugal, mass, coupling;  // centrifugal may be null
     PetscMatrix work, factor;
     bool analysed = false;
@@ -139,7 +174,7 @@ GyroscopicInertia::GyroscopicInertia(const OperatorSet& ops, IS first, IS second
     COREMODAL_ASSERT(ops.has(Term::gyroscopic));
     const EffectiveStiffness at_rest(ops, 0.0);  // K + K_sigma
     const Mat centrifugal = ops.has(Term::centrifugal) ? ops[Term::centrifugal] : nullptr;
-    if (first && second) {
+    if (first && second && size_of(first) == size_of(second)) {
         std::optional<PetscMatrix> base = mirrored_block(at_rest.get(), first, second);
         std::optional<PetscMatrix> mass = mirrored_block(ops.M(), first, second);
         std::optional<PetscMatrix> cent;
@@ -157,7 +192,19 @@ GyroscopicInertia::GyroscopicInertia(const OperatorSet& ops, IS first, IS second
             p.signs = {+1.0, -1.0};
         }
     }
-    if (!p.mirrored) {  // the real form [[A, -B], [B, A]] of Q = A + iB
+    if (!p.mirrored && first && second) {
+        if (std::optional<PetscMatrix> coupling =
+                split_coupling({at_rest.get(), ops.M(), centrifugal}, ops[Term::gyroscopic], first, second)) {
+            p.split = true;
+            COREMODAL_PETSC(MatDuplicate(at_rest.get(), MAT_COPY_VALUES, p.base.out()));
+            COREMODAL_PETSC(MatDuplicate(ops.M(), MAT_COPY_VALUES, p.mass.out()));
+            if (centrifugal) COREMODAL_PETSC(MatDuplicate(centrifugal, MAT_COPY_VALUES, p.centrifugal.out()));
+            p.coupling = std::move(*coupling);
+            p.signs = {+1.0};
+        }
+    }
+    if (!p.mirrored && !p.split) {  // the real form [[A, -B], [B, A]] of Q = A + iB
+        p.real_form = true;
         p.base = blocks(at_rest.get(), nullptr, nullptr, at_rest.get());
         p.mass = blocks(ops.M(), nullptr, nullptr, ops.M());
         if (centrifugal) p.centrifugal = blocks(centrifugal, nullptr, nullptr, centrifugal);
@@ -169,18 +216,38 @@ GyroscopicInertia::GyroscopicInertia(const OperatorSet& ops, IS first, IS second
 }
 
 long GyroscopicInertia::negative_count(double spin, double spin_squared, double omega) {
+    return negative_count(Combination{1.0, spin_squared, -omega * omega, omega * spin});
+}
+
+long GyroscopicInertia::negative_count(const Combination& c) {
+    const LogEvent event("CmInertiaCount");
     Pattern& p = *pattern_;
+    // Without the coupling the two mirrored families are one matrix twice.
+    const bool twice = p.mirrored && c.coupling == 0;
     long count = 0;
     for (double sign : p.signs) {
+        if (twice && sign < 0) {
+            count *= 2;
+            break;
+        }
         COREMODAL_PETSC(MatCopy(p.base, p.work, SAME_NONZERO_PATTERN));
-        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, spin_squared, p.centrifugal, SAME_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatAXPY(p.work, -omega * omega, p.mass, SAME_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatAXPY(p.work, sign * omega * spin, p.coupling, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatScale(p.work, c.stiffness));
+        if (p.centrifugal.get()) COREMODAL_PETSC(MatAXPY(p.work, c.centrifugal, p.centrifugal, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(p.work, c.mass, p.mass, SAME_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(p.work, sign * c.coupling, p.coupling, SAME_NONZERO_PATTERN));
         count += p.negative_pivots();
     }
-    return p.mirrored ? count : count / 2;  // the real form has every eigenvalue of Q twice
+    return p.real_form ? count / 2 : count;  // the real form has every eigenvalue of Q twice
 }
 
 bool GyroscopicInertia::uses_mirrored_families() const { return pattern_->mirrored; }
+
+bool GyroscopicInertia::uses_split_families() const { return pattern_->split; }
+
+GyroscopicInertia::FamilyBlocks GyroscopicInertia::family_blocks() const {
+    const Pattern& p = *pattern_;
+    if (!p.mirrored) return {};
+    return {p.base.get(), p.centrifugal.get(), p.mass.get(), p.coupling.get()};
+}
 
 }  // namespace coremodal

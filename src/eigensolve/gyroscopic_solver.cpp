@@ -266,7 +266,33 @@ std::string count_mismatch_text(long counted, long found, double check) {
     return s.str();
 }
 
+// neg(K(Omega) + omega_0^2 M): the stiffness the count assumes (header).
+long stiffness_negative_count(const SpinningOperators& op, double rigid_omega) {
+    PetscMatrix A;
+    COREMODAL_PETSC(MatDuplicate(op.K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, rigid_omega * rigid_omega, op.M, DIFFERENT_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    return negative_eigenvalue_count(A, "the effective stiffness K(Omega) + omega_0^2 M");
+}
+
 }  // namespace
+
+std::string indefinite_stiffness_text(double spin, long n_negative) {
+    std::ostringstream s;
+    s << "at " << spin * 60 / (2 * M_PI) << " rpm (" << spin / (2 * M_PI)
+      << " Hz) the stiffness at speed, K + Omega^2 K_Omega (the centrifugal prestress, less the spin "
+         "softening), is indefinite: an inertia count finds "
+      << n_negative << " direction" << (n_negative == 1 ? "" : "s")
+      << " softer than the rigid line. The gyroscopic solver's completeness count assumes it is not "
+         "(every mode must cross the count's zero downwards), so no modes are reported at this speed. "
+         "In co-rotating coordinates (segmented chucks at the solid level) this is what happens above the "
+         "first forward critical speed of order 1, where that whirl's frequency in the rotating frame has "
+         "passed through zero; in the stationary frame, a centrifugal softening stronger than the structure. "
+         "End the [rotation] speeds below this speed, or, for a body of revolution, spin it in the "
+         "stationary frame (model = \"harmonic\"), where the stiffness stays definite until the centrifugal "
+         "softening outgrows it";
+    return s.str();
+}
 
 double gyroscopic_rigid_omega(const SolveRequest& request) {
     return kQuadraticRigidFrequencyFraction * std::sqrt(request.lambda_scale);
@@ -293,6 +319,12 @@ GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, cons
     const int wanted = std::min<int>(request.n_modes, n_dofs);
     int nev = std::min<int>(2 * n_dofs, 2 * (wanted + std::max(kMinExtraModes, wanted / 4)));
     const long below_rigid = embedded_negative_count(op, rigid_omega) / 2;
+    // The count's premise, K(Omega) + omega_0^2 M >= 0: free where nothing
+    // is below the rigid line (header), one count of the set's size otherwise.
+    if (below_rigid > 0 && spin > 0) {
+        const long soft = stiffness_negative_count(op, rigid_omega);
+        if (soft > 0) throw SolveError(indefinite_stiffness_text(spin, soft));
+    }
     for (int attempt = 0;; ++attempt) {
         progress("factorising P(tau) = K + tau Omega G + tau^2 M and solving the quadratic problem for " +
                  std::to_string(nev) + " eigenvalues");

@@ -30,6 +30,21 @@
 // counted (tolerances.hpp says why the line sits higher than the symmetric
 // solver's). At Omega = 0 this is the symmetric solver's count.
 //
+// The count needs less than K >= 0: a mode omega > omega_0 crosses
+// downwards when x^H K x > -omega^2 x^H M x, so K(Omega) + omega_0^2 M >= 0
+// (no eigenvalue of K(Omega) x = lambda M x below -omega_0^2) is enough. It
+// holds wherever neg Q(omega_0) = 0, the usual case, for free: Q(omega_0)'s
+// real form restricted to real vectors (x, 0) is K(Omega) - omega_0^2 M, and
+// a restriction has no more negative eigenvalues than the whole (Cauchy's
+// interlacing). Where Q(omega_0) has negative eigenvalues (rigid modes, or a
+// stiffness that the spin has made indefinite) one more count, of
+// K(Omega) + omega_0^2 M, decides; when it is not zero the count proves
+// nothing: no modes are reported at that speed, and SolveError says why
+// (indefinite_stiffness_text). It happens where the centrifugal softening
+// outgrows the stiffness: in co-rotating coordinates (models/solid/
+// rotating_frame.hpp) above the first forward critical speed of order 1,
+// where a forward whirl's rotating-frame frequency has passed through zero.
+//
 // Orthogonality: for modes of different frequency the equations of the two
 // give x_j^H ((omega_i + omega_j) M - i Omega G) x_i = 0 (not x_j^H M x_i = 0),
 // and x^H (2 omega M - i Omega G) x = (omega^2 x^H M x + x^H K x) / omega > 0
@@ -43,6 +58,7 @@
 #include "common/petsc_handle.hpp"
 #include "eigensolve/modal_solver.hpp"
 
+#include <string>
 #include <vector>
 
 namespace coremodal {
@@ -78,5 +94,10 @@ double gyroscopic_rigid_omega(const SolveRequest& request);
 // neg Q(omega) / 2: the modes with frequency below omega (rad/s), rigid
 // modes included as their null directions dictate (see above).
 long count_gyroscopic_below(const OperatorSet& operators, double spin, double omega);
+
+// Why no modes are reported at spin speed `spin` (rad/s): the effective
+// stiffness K(Omega) has `n_negative` eigenvalues (against M) below
+// -omega_0^2 there (above); what it means and what the user can do.
+std::string indefinite_stiffness_text(double spin, long n_negative);
 
 }  // namespace coremodal

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "common/blas_threads.hpp"
+#include "common/log_event.hpp"
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -24,6 +25,20 @@ constexpr double kTargetFraction = 0.5;
 constexpr double kDependentDirection = 1e-14;
 // Terms of the static responses' series per mode at rest and force (static_responses).
 constexpr int kKrylovDepth = 2;
+// Counting at fewer speeds (header, docs/rotation.md). The bound gamma is
+// guessed from the projected term (its largest |eigenvalue| in the basis, a
+// lower bound of the full term's), times kBoundMargin, and doubled up to
+// kBoundTries times until the inertia count proves it (the margin keeps
+// gamma M -+ i G away from singular, where the LDL^T's signs would be
+// round-off). A certificate's gap delta is this fraction of the
+// distance, in omega^2, from the count's point to the nearest candidate
+// (the candidates are approximations; the two counts decide), and one is
+// made only where the bound predicts it covers kMinCertifiedSteps more
+// speeds of the sweep's step: it costs two counts where a speed costs one.
+constexpr double kBoundMargin = 1.25;
+constexpr int kBoundTries = 4;
+constexpr double kGapFraction = 0.5;
+constexpr double kMinCertifiedSteps = 3;
 
 using Dense = Eigen::MatrixXd;
 using Complex = std::complex<double>;
@@ -135,7 +150,20 @@ std::vector<Eigen::VectorXd> static_responses(Mat K, Mat M, double tau, const st
 struct Candidate {
     double omega = 0;
     Eigen::VectorXcd y;  // in the basis, |y| = 1: x = V y, x^H M x = 1
+    // One family's basis (mirrored families): +1 a forward mode x = (f, -i f) / sqrt 2,
+    // -1 a backward one x = (f, i f) / sqrt 2, f = V y; 0 in the whole set's basis.
+    int sign = 0;
 };
+
+std::vector<PetscInt> indices_of(IS is) {
+    PetscInt n;
+    const PetscInt* a;
+    COREMODAL_PETSC(ISGetLocalSize(is, &n));
+    COREMODAL_PETSC(ISGetIndices(is, &a));
+    std::vector<PetscInt> out(a, a + n);
+    COREMODAL_PETSC(ISRestoreIndices(is, &a));
+    return out;
+}
 
 // The eigenvalues omega^2 of the candidates, ascending as they are: what
 // eigensolve/band_edge.hpp's report and count rule reads.
@@ -146,20 +174,40 @@ std::vector<double> squared_omegas(const std::vector<Candidate>& c) {
 }
 
 
+// K(Omega) + omega_0^2 M, the count's premise (gyroscopic_solver.hpp).
+GyroscopicInertia::Combination stiffness_at(double spin, double rigid_omega) {
+    return {1.0, spin * spin, rigid_omega * rigid_omega, 0.0};
+}
+
 }  // namespace
 
 struct ProjectedGyroscopic::Basis {
     SolveRequest request;
     double rigid_omega = 0;
     bool centrifugal = false;
+    // Mirrored families (gyroscopic_inertia.hpp, 1): the basis is one
+    // family's, and G below is the projected coupling Gab (symmetric).
+    bool family = false;
+    std::vector<PetscInt> first_rows, second_rows;  // where the families sit in a vector of the set
     Dense V;                     // N x m, M-orthonormal
-    Dense K0, K_omega, G;        // projected: K + K_sigma, K_Omega, G
+    Dense K0, K_omega, G;        // projected: K + K_sigma, K_Omega, G (or Gab)
     Eigen::MatrixXd R;           // of W = [V, K0 V, (K_Omega V), M V, G V] = Q_W R
     double norm_K0 = 0, norm_G = 0, norm_M = 0;
     PetscMatrix k0_union, k_omega_union, k_work;  // for ||K(Omega)||_1 with a centrifugal term
     Mat K_template = nullptr;    // for vectors of the set's layout
     std::unique_ptr<GyroscopicInertia> inertia;
     double rigid_line_clear_up_to = -1;  // rad/s: neg Q(omega_0) = 0 proven for spins up to it
+    // Counting at fewer speeds (header): the proven bounds (gamma < 0: none),
+    // the certificates made so far and the last speed counted.
+    double gamma = -1, kappa = 0;
+    struct Certificate {
+        double spin, omega, delta;
+        long count;
+    };
+    mutable std::vector<Certificate> certificates;
+    mutable double last_spin = -1;
+    mutable CountStatistics stats;
+    double stiffness_clear_up_to = -1;   // rad/s: K(Omega) + omega_0^2 M >= 0 proven for spins up to it
 
     Eigen::Index m() const { return V.cols(); }
 
@@ -170,22 +218,28 @@ struct ProjectedGyroscopic::Basis {
         return norm_1(k_work);
     }
 
-    // ||Q(omega) x|| / ((||K(Omega)|| + omega Omega ||G|| + omega^2 ||M||) ||x||) for x = V y (header).
-    double relative_residual(double spin, double omega, const Eigen::VectorXcd& y) const {
+    // ||Q(omega) x|| / ((||K(Omega)|| + omega Omega ||G|| + omega^2 ||M||) ||x||) for x = V y (header),
+    // `norm_K_at_spin` = norm_K(spin). In one family's basis Q x = 0 is
+    // (K(Omega) - omega^2 M + sign omega Omega Gab) f = 0 with ||Q x|| = ||that||
+    // and ||x|| = ||f|| (U of gyroscopic_inertia.hpp is unitary), and the
+    // 1-norms of K, M and G are those of S, M_S and Gab (block diagonal; G's
+    // columns each hold one block of Gab).
+    double relative_residual(double spin, double omega, const Candidate& x, double norm_K_at_spin) const {
+        const Eigen::VectorXcd& y = x.y;
         const Eigen::Index n = m(), blocks = R.cols() / n;
         Eigen::VectorXcd c = Eigen::VectorXcd::Zero(R.cols()), cx = Eigen::VectorXcd::Zero(R.cols());
         Eigen::Index b = 1;
         c.segment(b++ * n, n) = y;
         if (centrifugal) c.segment(b++ * n, n) = spin * spin * y;
         c.segment(b++ * n, n) = -omega * omega * y;
-        c.segment(b++ * n, n) = Complex(0, omega * spin) * y;
+        c.segment(b++ * n, n) = (family ? Complex(x.sign * omega * spin, 0) : Complex(0, omega * spin)) * y;
         COREMODAL_ASSERT(b == blocks);
         cx.head(n) = y;
         const auto upper = R.triangularView<Eigen::Upper>();
         const auto norm = [&](const Eigen::VectorXcd& v) {
             return std::hypot((upper * v.real()).norm(), (upper * v.imag()).norm());
         };
-        return norm(c) / ((norm_K(spin) + omega * spin * norm_G + omega * omega * norm_M) * norm(cx));
+        return norm(c) / ((norm_K_at_spin + omega * spin * norm_G + omega * omega * norm_M) * norm(cx));
     }
 
     // The modes of the small problem, ascending: the rigid ones at 0 Hz,
@@ -197,7 +251,9 @@ struct ProjectedGyroscopic::Basis {
     // of the quadratic problem, as the full solver reports it, and a rigid
     // direction of K(Omega) is exactly one (Q(0) x = K(Omega) x = 0), so the
     // first ones stand for them.
-    std::vector<Candidate> candidates(double spin) const {
+    std::vector<Candidate> candidates(double spin) const { return family ? family_candidates(spin) : set_candidates(spin); }
+
+    std::vector<Candidate> set_candidates(double spin) const {
         const Dense K = K0 + spin * spin * K_omega;
         const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
         const Dense& U = ks.eigenvectors();
@@ -221,12 +277,57 @@ struct ProjectedGyroscopic::Basis {
         return out;
     }
 
+    // One family's basis (mirrored families, gyroscopic_inertia.hpp): Q is
+    // unitarily diag(A + B, A - B), A = K(Omega) - omega^2 M_S, B = omega Omega
+    // Gab, and A - B at omega is A + B at -omega, so the modes are the real
+    // eigenvalues omega of the real symmetric quadratic problem
+    //     (K(Omega) + omega Omega Gab - omega^2 M_S) f = 0,
+    // omega > 0 a forward mode (x = (f, -i f) / sqrt 2: Im(a . conj b) > 0,
+    // spinning_harmonic.hpp) at omega, omega < 0 a backward one
+    // (x = (f, i f) / sqrt 2) at |omega|. Its exact linearization, as the
+    // beam level's planes alike (docs/rotation.md), is real symmetric of
+    // twice the family basis' size: H = [[Omega Gab^, Lambda^1/2],
+    // [Lambda^1/2, 0]] in the eigenvectors of K(Omega)^; a quarter of the
+    // whole set's Hermitian H's size in complex arithmetic, some thirty
+    // times less work. Each eigenvalue is one mode (the whole set's H has
+    // it twice, +-omega). Below the rigid line: a rigid direction f of
+    // K(Omega)^ stands for two rigid modes of the set, (f, -+i f) / sqrt 2,
+    // as many as H has eigenvalues there, at most.
+    std::vector<Candidate> family_candidates(double spin) const {
+        const Dense K = K0 + spin * spin * K_omega;
+        const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
+        const Dense& U = ks.eigenvectors();
+        const Eigen::VectorXd& lambda = ks.eigenvalues();
+        const Eigen::Index n = m();
+        Dense H = Dense::Zero(2 * n, 2 * n);
+        H.topLeftCorner(n, n) = spin * (U.transpose() * G * U);
+        for (Eigen::Index k = 0; k < n; ++k) H(k, n + k) = H(n + k, k) = std::sqrt(std::max(lambda[k], 0.0));
+        const Eigen::SelfAdjointEigenSolver<Dense> hs(H);
+        const Eigen::VectorXd& omegas = hs.eigenvalues();
+        const long below_line = (omegas.array().abs() < rigid_omega).count();
+        const long rigid_directions = (lambda.array() < rigid_omega * rigid_omega).count();
+        std::vector<Candidate> out;
+        for (Eigen::Index k = 0; k < std::min(below_line, 2 * rigid_directions); ++k)
+            out.push_back({0.0, U.col(k / 2).cast<Complex>(), k % 2 == 0 ? +1 : -1});
+        for (Eigen::Index j = 0; j < 2 * n; ++j) {
+            if (std::abs(omegas[j]) < rigid_omega) continue;
+            const Eigen::VectorXd eta = hs.eigenvectors().col(j).head(n);  // z = (omega eta, Lambda^1/2 eta)
+            out.push_back({std::abs(omegas[j]), (U * eta).normalized().cast<Complex>(), omegas[j] > 0 ? +1 : -1});
+        }
+        return out;
+    }
+
     // x_j^H ((omega_i + omega_j) M - i Omega G) x_i normalised, over elastic
-    // modes of distinct frequency (gyroscopic_solver.hpp), in the basis.
+    // modes of distinct frequency (gyroscopic_solver.hpp), in the basis. In
+    // one family's basis, for two modes of one sign s, it is
+    // (omega_i + omega_j) f_j^H f_i - s Omega f_j^H Gab f_i; of opposite signs zero.
     double orthogonality_error(double spin, const std::vector<Candidate>& c, int n_report) const {
         const Eigen::MatrixXcd iG = Complex(0, spin) * G.cast<Complex>();
+        const Eigen::MatrixXcd sG = spin * G.cast<Complex>();
         const auto product = [&](int j, int i) {
-            return Complex(c[j].y.dot((c[i].omega + c[j].omega) * c[i].y - iG * c[i].y));
+            if (!family) return Complex(c[j].y.dot((c[i].omega + c[j].omega) * c[i].y - iG * c[i].y));
+            if (c[i].sign != c[j].sign) return Complex(0, 0);
+            return Complex(c[j].y.dot((c[i].omega + c[j].omega) * c[i].y - double(c[i].sign) * (sG * c[i].y)));
         };
         double worst = 0;
         for (int i = 0; i < n_report; ++i)
@@ -236,6 +337,95 @@ struct ProjectedGyroscopic::Basis {
                 worst = std::max(worst, std::abs(product(j, i)) / std::sqrt(std::abs(product(i, i) * product(j, j))));
             }
         return worst;
+    }
+
+    // neg Q at the count's point and the modes found between the rigid line
+    // and it: at the band edge `check` (one count), or at an earlier
+    // certificate's point where Weyl's bound covers this speed (no count),
+    // or at the band edge with a new certificate (two counts; three where
+    // they differ). Only where the rigid line is proven clear (nothing to
+    // subtract) and the bounds are proven; header and docs/rotation.md.
+    struct Count {
+        double point;
+        long negative, found;
+    };
+    Count count_modes(double spin, const std::vector<Candidate>& c, int n_report, double check, double norm_K_at_spin) const {
+        ++stats.speeds;
+        const long found_reported =
+            std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= rigid_omega; });
+        const bool certifiable = gamma >= 0 && spin <= rigid_line_clear_up_to;
+        const double step = last_spin >= 0 ? std::abs(spin - last_spin) : 0;
+        last_spin = spin;
+        if (!certifiable) {
+            ++stats.counted;
+            return {check, inertia->negative_count(spin, check), found_reported};
+        }
+        // The candidates below `point`, every one beyond the reported ones verified; or none.
+        const auto found_below = [&](double point) -> std::optional<long> {
+            long found = 0;
+            for (size_t i = 0; i < c.size() && c[i].omega < point; ++i) {
+                if (int(i) >= n_report && relative_residual(spin, c[i].omega, c[i], norm_K_at_spin) > kMaxProjectedResidual)
+                    return std::nullopt;
+                if (c[i].omega >= rigid_omega) ++found;
+            }
+            return found;
+        };
+        for (auto k = certificates.rbegin(); k != certificates.rend(); ++k) {
+            if (k->omega <= c[n_report - 1].omega) continue;  // above the reported modes only
+            const double moved =
+                std::abs(spin * spin - k->spin * k->spin) * kappa + k->omega * std::abs(spin - k->spin) * gamma;
+            if (moved >= k->delta) continue;
+            if (const std::optional<long> found = found_below(k->omega)) {
+                ++stats.certified;
+                return {k->omega, k->count, *found};
+            }
+        }
+        if (step > 0 && n_report < int(c.size())) {
+            const double p2 = check * check, lo = c[n_report - 1].omega * c[n_report - 1].omega,
+                         hi = c[n_report].omega * c[n_report].omega;
+            const double delta = kGapFraction * std::min(p2 - lo, hi - p2);
+            const double reach = kMinCertifiedSteps * step;
+            const double moved = ((spin + reach) * (spin + reach) - spin * spin) * kappa + check * reach * gamma;
+            if (delta > 0 && moved < delta) {
+                ++stats.certificates;
+                const long below = inertia->negative_count({1.0, spin * spin, -p2 + delta, check * spin});  // Q + delta M
+                const long above = inertia->negative_count({1.0, spin * spin, -p2 - delta, check * spin});  // Q - delta M
+                if (below == above) {
+                    certificates.push_back({spin, check, delta, below});
+                    return {check, below, found_reported};
+                }
+                ++stats.certificate_failed;
+            }
+        }
+        ++stats.counted;
+        return {check, inertia->negative_count(spin, check), found_reported};
+    }
+
+    // gamma and kappa of the header, proven by inertia counts (gamma < 0: not proven).
+    void prove_bounds() {
+        const auto largest = [](const Eigen::VectorXd& eigenvalues) { return eigenvalues.cwiseAbs().maxCoeff(); };
+        const auto proven = [](double guess, const auto& holds) {
+            for (int k = 0; k < kBoundTries; ++k, guess *= 2)
+                if (holds(guess)) return guess;
+            return -1.0;
+        };
+        // With a centrifugal term the bound kappa (kappa M -+ K_Omega >= 0)
+        // enters too, and it is the worst vector's |x^H K_Omega x| / x^H M x:
+        // the prestress's geometric stiffness on the mesh's shortest waves
+        // makes it 10^3 to 10^4 on cases 07 and 08 (2.8e3 to 3.7e4, found by
+        // doubling), where a sweep's step would need it below ~10; proving it
+        // cost counts and no certificate ever followed (docs/rotation.md). So
+        // certificates are made for sets without the term only (kappa = 0).
+        if (centrifugal) return;
+        const double k = 0;
+        const Eigen::MatrixXcd iG = family ? G.cast<Complex>() : Eigen::MatrixXcd(Complex(0, 1) * G.cast<Complex>());
+        const double g0 = kBoundMargin * std::max(largest(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(iG).eigenvalues()), 1e-300);
+        // gamma M - i G and gamma M + i G have one spectrum (complex conjugates, G real): one count.
+        const double g = proven(g0, [&](double x) { return inertia->negative_count({0.0, 0.0, x, -1.0}) == 0; });
+        if (g < 0) return;
+        gamma = g;
+        kappa = k;
+        stats.gamma = g;
     }
 
     GyroscopicMode full_mode(const Candidate& c, double relative_residual) const {
@@ -250,8 +440,23 @@ struct ProjectedGyroscopic::Basis {
             Eigen::Map<Eigen::VectorXd>(a, values.size()) = values;
             COREMODAL_PETSC(VecRestoreArray(part, &a));
         };
-        fill(mode.real, x.real());
-        fill(mode.imag, x.imag());
+        const auto fill_families = [&](PetscVector& part, const Eigen::VectorXd& first, const Eigen::VectorXd& second) {
+            COREMODAL_PETSC(MatCreateVecs(K_template, part.out(), nullptr));
+            PetscScalar* a;
+            COREMODAL_PETSC(VecGetArray(part, &a));
+            for (size_t k = 0; k < first_rows.size(); ++k) a[first_rows[k]] = first[k];
+            for (size_t k = 0; k < second_rows.size(); ++k) a[second_rows[k]] = second[k];
+            COREMODAL_PETSC(VecRestoreArray(part, &a));
+        };
+        if (!family) {
+            fill(mode.real, x.real());
+            fill(mode.imag, x.imag());
+            return mode;
+        }
+        // (f, -i s f) / sqrt 2 with f = p + i q: real parts (p, s q), imaginary (q, -s p), over sqrt 2.
+        const double s = c.sign, r = 1 / std::sqrt(2.0);
+        fill_families(mode.real, r * x.real(), s * r * x.imag());
+        fill_families(mode.imag, r * x.imag(), -s * r * x.real());
         return mode;
     }
 };
@@ -261,6 +466,7 @@ ProjectedGyroscopic::~ProjectedGyroscopic() = default;
 ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequest& request, int n_rest, IS first,
                                          IS second)
     : basis_(std::make_unique<Basis>()) {
+    const LogEvent event("CmProjBasis");
     Basis& b = *basis_;
     COREMODAL_ASSERT(ops.has(Term::gyroscopic) && !ops.has(Term::damping) && !request.lambda_max);
     COREMODAL_ASSERT(mpi_size(PetscObjectComm((PetscObject)ops.K())) == 1);
@@ -268,15 +474,39 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
     b.rigid_omega = gyroscopic_rigid_omega(request);
     b.centrifugal = ops.has(Term::centrifugal);
     const EffectiveStiffness at_rest(ops, 0.0);  // K + K_sigma
-    const Mat K0 = at_rest.get(), M = ops.M(), G = ops[Term::gyroscopic];
     b.K_template = ops.K();
+    {
+        const LogEvent setup("CmInertiaSetup");
+        b.inertia = std::make_unique<GyroscopicInertia>(ops, first, second);
+    }
+    // The matrices the basis is built from, projected on and verified with:
+    // the whole set's, or one family's when the families are mirrored
+    // (family_candidates says why that is exact).
+    const GyroscopicInertia::FamilyBlocks family = b.inertia->family_blocks();
+    b.family = family.stiffness != nullptr;
+    const Mat K0 = b.family ? family.stiffness : at_rest.get(), M = b.family ? family.mass : ops.M(),
+              G = b.family ? family.coupling : ops[Term::gyroscopic];
+    const Mat K_omega = b.centrifugal ? (b.family ? family.centrifugal : ops[Term::centrifugal]) : nullptr;
+    // Every mode of one family at rest is a pair of the set's.
+    int n_basis_rest = std::max(n_rest, request.n_modes);
+    if (b.family) {
+        n_basis_rest = (n_basis_rest + 1) / 2 + 1;
+        b.first_rows = indices_of(first);
+        b.second_rows = indices_of(second);
+    }
 
     // 1. The modes at rest and the static responses to their spin forces.
-    const SolvedModes rest = rest_modes(K0, M, ops.model_mass, request, std::max(n_rest, request.n_modes));
+    const SolvedModes rest = [&] {
+        const LogEvent event("CmProjRestModes");
+        return rest_modes(K0, M, ops.model_mass, request, n_basis_rest);
+    }();
     std::vector<Mat> forces{G};
-    if (b.centrifugal) forces.push_back(ops[Term::centrifugal]);
+    if (b.centrifugal) forces.push_back(K_omega);
     const double tau = kTargetFraction * std::sqrt(request.lambda_scale);
-    const std::vector<Eigen::VectorXd> enrichment = static_responses(K0, M, tau, forces, rest.vectors);
+    const std::vector<Eigen::VectorXd> enrichment = [&] {
+        const LogEvent event("CmProjStatic");
+        return static_responses(K0, M, tau, forces, rest.vectors);
+    }();
 
     // 2. The basis, M-orthonormal (twice: the second pass removes what round-off left of the first's error).
     PetscInt n_dofs;
@@ -285,43 +515,46 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
     Eigen::Index col = 0;
     for (const PetscVector& x : rest.vectors) V.col(col++) = values_of(x);
     for (const Eigen::VectorXd& x : enrichment) V.col(col++) = x;
-    b.V = m_orthonormal_pass(M, m_orthonormal_pass(M, V));
+    {
+        const LogEvent event("CmProjOrthonormal");
+        b.V = m_orthonormal_pass(M, m_orthonormal_pass(M, V));
+    }
 
     // 3. Every term projected once, and the R factor of the residual's columns.
     std::vector<Dense> columns{b.V, apply(K0, b.V)};
     b.K0 = b.V.transpose() * columns.back();
     b.K_omega = Dense::Zero(b.m(), b.m());
     if (b.centrifugal) {
-        columns.push_back(apply(ops[Term::centrifugal], b.V));
+        columns.push_back(apply(K_omega, b.V));
         b.K_omega = b.V.transpose() * columns.back();
     }
     columns.push_back(apply(M, b.V));
     columns.push_back(apply(G, b.V));
     b.G = b.V.transpose() * columns.back();
-    b.G = 0.5 * (b.G - b.G.transpose());
+    b.G = b.family ? Dense(0.5 * (b.G + b.G.transpose())) : Dense(0.5 * (b.G - b.G.transpose()));
     Dense W(n_dofs, b.m() * columns.size());
     for (size_t k = 0; k < columns.size(); ++k) W.middleCols(k * b.m(), b.m()) = columns[k];
     columns.clear();
     // R is W's upper trapezoidal factor: as many rows as W has columns, or as
     // it has rows when a small problem has fewer DOFs than W has columns
     // (||W c|| = ||R c|| either way).
+    const LogEvent qr_event("CmProjQR");
     b.R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(std::min(W.rows(), W.cols())).triangularView<Eigen::Upper>();
 
-    // 4. The norms of the residual's scale, and the full set's inertia count.
+    // 4. The norms of the residual's scale.
     b.norm_K0 = norm_1(K0);
     b.norm_G = norm_1(G);
     b.norm_M = norm_1(M);
     if (b.centrifugal) {
         COREMODAL_PETSC(MatDuplicate(K0, MAT_COPY_VALUES, b.k0_union.out()));
-        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, ops[Term::centrifugal], DIFFERENT_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, K_omega, DIFFERENT_NONZERO_PATTERN));
         COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_omega_union.out()));
         COREMODAL_PETSC(MatZeroEntries(b.k0_union));  // the union's pattern, then K0's values on it
         COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, K0, SUBSET_NONZERO_PATTERN));
         COREMODAL_PETSC(MatZeroEntries(b.k_omega_union));
-        COREMODAL_PETSC(MatAXPY(b.k_omega_union, 1.0, ops[Term::centrifugal], SUBSET_NONZERO_PATTERN));
+        COREMODAL_PETSC(MatAXPY(b.k_omega_union, 1.0, K_omega, SUBSET_NONZERO_PATTERN));
         COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_work.out()));
     }
-    b.inertia = std::make_unique<GyroscopicInertia>(ops, first, second);
 }
 
 std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const {
@@ -330,7 +563,10 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     // Small fronts and small dense problems: OpenBLAS's second thread only
     // waits (sched_yield in the profile of a sweep), common/blas_threads.hpp.
     const SingleThreadBlas one_thread;
-    std::vector<Candidate> c = b.candidates(spin);
+    std::vector<Candidate> c = [&] {
+        const LogEvent event("CmProjSmall");
+        return b.candidates(spin);
+    }();
     std::stable_sort(c.begin(), c.end(), [](const Candidate& x, const Candidate& y) { return x.omega < y.omega; });
     const std::vector<double> lambdas = squared_omegas(c);
     const int n_report = reported_count(lambdas, b.request.n_modes, scale);
@@ -339,16 +575,28 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     GyroscopicModes out;
     Verification& v = out.verification;
     std::vector<double> residuals;
-    for (int i = 0; i < n_report; ++i) {
-        residuals.push_back(b.relative_residual(spin, c[i].omega, c[i].y));
-        if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
-        v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
+    const double norm_K = b.norm_K(spin);  // once per speed: a pass over the full matrices
+    {
+        const LogEvent event("CmProjResidual");
+        for (int i = 0; i < n_report; ++i) {
+            residuals.push_back(b.relative_residual(spin, c[i].omega, c[i], norm_K));
+            if (residuals.back() > (c[i].omega > 0 ? kMaxProjectedResidual : kMaxRigidModeResidual)) return std::nullopt;
+            v.max_relative_residual = std::max(v.max_relative_residual, residuals.back());
+        }
     }
-    const double check = std::sqrt(check_point(lambdas, n_report, scale));
+    const double band_edge = std::sqrt(check_point(lambdas, n_report, scale));
     const long below_rigid_line =
         spin <= b.rigid_line_clear_up_to ? 0 : b.inertia->negative_count(spin, b.rigid_omega);
-    const long counted = b.inertia->negative_count(spin, check) - below_rigid_line;
-    const long found = std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= b.rigid_omega; });
+    // The count's premise (gyroscopic_solver.hpp): K(Omega) + omega_0^2 M >= 0,
+    // proven by interlacing where nothing is below the rigid line, for the
+    // sweep by prove_rigid_line_clear, or here by one more count.
+    if (below_rigid_line > 0 && spin > b.stiffness_clear_up_to) {
+        const long soft = b.inertia->negative_count(stiffness_at(spin, b.rigid_omega));
+        if (soft > 0) throw SolveError(indefinite_stiffness_text(spin, soft));
+    }
+    const Basis::Count count = b.count_modes(spin, c, n_report, band_edge, norm_K);
+    const double check = count.point;
+    const long counted = count.negative - below_rigid_line, found = count.found;
     if (counted != found) return std::nullopt;
 
     for (int i = 0; i < n_report; ++i) out.modes.push_back(b.full_mode(c[i], residuals[i]));
@@ -366,9 +614,26 @@ bool ProjectedGyroscopic::prove_rigid_line_clear(double max_spin) {
     const double w0 = b.rigid_omega;
     bool clear = b.inertia->negative_count(0.0, 0.0, w0) == 0 && b.inertia->negative_count(max_spin, 0.0, w0) == 0;
     if (clear && b.centrifugal) clear = b.inertia->negative_count(max_spin, max_spin * max_spin, w0) == 0;
-    if (clear) b.rigid_line_clear_up_to = max_spin;
-    return clear;
+    if (clear) {
+        // neg Q(omega_0) = 0 at every speed of the range implies the count's
+        // premise there (interlacing, gyroscopic_solver.hpp).
+        b.rigid_line_clear_up_to = b.stiffness_clear_up_to = max_spin;
+        try {
+            b.prove_bounds();
+        } catch (const SolveError&) {  // a count's factorisation failed: count at every speed
+        }
+        return true;
+    }
+    // The premise on its own: K(Omega) + omega_0^2 M is affine in Omega^2, so
+    // positive semi-definite at Omega = 0 and at the top speed (the
+    // semi-definite matrices are a convex set) means at every speed between.
+    bool stiff = b.inertia->negative_count(stiffness_at(0.0, w0)) == 0;
+    if (stiff && b.centrifugal) stiff = b.inertia->negative_count(stiffness_at(max_spin, w0)) == 0;
+    if (stiff) b.stiffness_clear_up_to = max_spin;
+    return false;
 }
+
+ProjectedGyroscopic::CountStatistics ProjectedGyroscopic::count_statistics() const { return basis_->stats; }
 
 int ProjectedGyroscopic::basis_size() const { return static_cast<int>(basis_->m()); }
 

@@ -27,7 +27,10 @@
 // And the set is proven complete as solve_gyroscopic proves it: the inertia
 // of the full Hermitian Q(omega) at the band edge and at the rigid line
 // (gyroscopic_inertia.hpp), at every speed (the rigid line's once for a
-// whole sweep where prove_rigid_line_clear holds). A mode above kMaxProjectedResidual
+// whole sweep where prove_rigid_line_clear holds; the band edge's carried
+// from an earlier speed where a certificate reaches, count_statistics).
+// With mirrored families (n >= 1) the basis is one family's and the small
+// problem real symmetric (projected_gyroscopic.cpp, family_candidates). A mode above kMaxProjectedResidual
 // or a count that disagrees is not an answer: modes_at returns none, and the
 // caller solves the full problem at that speed (solve_gyroscopic).
 #pragma once
@@ -90,6 +93,29 @@ public:
 
     int basis_size() const;
     bool counts_mirrored_families() const;
+
+    // Counting at fewer speeds (docs/rotation.md, "Counting at fewer
+    // speeds"). After prove_rigid_line_clear has held, the sweep's counts
+    // may come from a certificate: at (Omega_1, omega_1) the two counts
+    // neg(Q - delta M) = neg(Q + delta M) = N say that no eigenvalue of the
+    // pencil (Q, M) lies in [-delta, delta); Weyl's inequality moves each by
+    // at most ||M^-1/2 (Q(Omega, omega_1) - Q(Omega_1, omega_1)) M^-1/2|| <=
+    // |Omega^2 - Omega_1^2| kappa + omega_1 |Omega - Omega_1| gamma, with
+    // gamma M -+ i G >= 0 and kappa M -+ K_Omega >= 0 proven by inertia
+    // counts once per set; so neg Q(Omega, omega_1) = N wherever that bound
+    // is below delta. A speed uses it when omega_1 lies above its reported
+    // modes and every candidate below omega_1 is verified; otherwise it
+    // counts, as before. Only for a set without a centrifugal term (kappa =
+    // 0): with one, kappa is out of reach (projected_gyroscopic.cpp).
+    struct CountStatistics {
+        long speeds = 0;            // modes_at calls that reached the count
+        long counted = 0;           // of them, counted at their own point (one count)
+        long certificates = 0;      // of them, a new certificate made (two counts)
+        long certificate_failed = 0;  // of those, the two counts differed: counted again (three)
+        long certified = 0;         // of them, by an earlier certificate (no count)
+        double gamma = -1;          // the proven bound (-1: none, no certificates)
+    };
+    CountStatistics count_statistics() const;
 
 private:
     struct Basis;

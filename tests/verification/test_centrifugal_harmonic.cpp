@@ -8,6 +8,8 @@
 // ring, omega = sqrt(omega_0^2 + beta^2 Omega^2) +- beta Omega.
 #include "assembly/harmonic_system.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
+#include "eigensolve/petsc_algebra.hpp"
+#include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "geometry/tube_section.hpp"
 #include "models/harmonic/centrifugal_prestress.hpp"
@@ -199,4 +201,43 @@ TEST_CASE("A thin spinning ring with the convective softening alone misses the e
     const double fw_softening = solve_gyroscopic(h.operators, spin, request, quiet).modes.back().omega;
     INFO("FW with softening only " << fw_softening << " rad/s, exact " << exact_fw);
     CHECK(std::abs(fw_softening / exact_fw - 1) > 0.05);
+}
+
+TEST_CASE("A stiffness the spin has made indefinite is refused by both gyroscopic solvers, never counted",
+          "[rotation][harmonic][centrifugal]") {
+    // The ring of the test above with the convective softening alone,
+    // K_Omega = -M_L: on the inextensional n = 2 wave (V = U / n) the
+    // softening's Rayleigh quotient is (n - 1/n)^2 / (1 + 1/n^2) = 1.8, so
+    // K - Omega^2 M_L turns negative on it above Omega = omega_0 / sqrt 1.8
+    // = 0.745 omega_0. At 0.4 omega_0 (the test above) both solvers answer;
+    // at 1.0 omega_0 the stiffness has a direction below -omega_0^2 / 4 (an
+    // inertia count of K(Omega) + omega_0^2/4 M, the independent check),
+    // and both must refuse with the speed and the reason.
+    Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
+    const Section s = section_of(ring);
+    CentrifugalPrestress softening_only = centrifugal_prestress(ring, s.mesh, s.materials);
+    for (SectionStress& st : softening_only.stress) st.setZero();
+    const SpinningHarmonic h = assemble_spinning_harmonic(ring, s.mesh, s.materials, 2, &softening_only);
+    SolveRequest request = solve_request(ring);
+    request.n_modes = 2;
+    const Progress quiet = [](const std::string&) {};
+    request.lambda_scale = std::pow(solve_gyroscopic(h.operators, 0.0, request, quiet).modes.at(0).omega, 2);
+    const double omega0 = std::sqrt(request.lambda_scale);
+    {
+        const EffectiveStiffness at_speed(h.operators, omega0);
+        PetscMatrix A;
+        COREMODAL_PETSC(MatDuplicate(at_speed.get(), MAT_COPY_VALUES, A.out()));
+        COREMODAL_PETSC(MatAXPY(A, 0.25 * request.lambda_scale, h.operators.M(), DIFFERENT_NONZERO_PATTERN));
+        REQUIRE(negative_eigenvalue_count(A, "K(Omega) + omega_0^2 / 4 M") > 0);
+    }
+    CHECK_NOTHROW(solve_gyroscopic(h.operators, 0.4 * omega0, request, quiet));
+    CHECK_THROWS_WITH(solve_gyroscopic(h.operators, omega0, request, quiet),
+                      Catch::Contains("is indefinite") && Catch::Contains("no modes are reported"));
+    // The projected sweep: the rigid line is not clear over [0, omega_0]
+    // (Q(omega_0) is indefinite at the top), nor the stiffness; the speed's
+    // own count refuses.
+    ProjectedGyroscopic projected(h.operators, request, 8, h.cos_rows, h.sin_rows);
+    CHECK_FALSE(projected.prove_rigid_line_clear(omega0));
+    CHECK(projected.modes_at(0.4 * omega0).has_value());
+    CHECK_THROWS_WITH(projected.modes_at(omega0), Catch::Contains("is indefinite"));
 }

@@ -139,3 +139,25 @@ TEST_CASE("Case 10 spins at the solid level on the coarse mesh: at rest the soli
     CHECK(noted("dominant harmonic's share"));
     CHECK(std::find(campbell.effects.begin(), campbell.effects.end(), "centrifugal_stiffening") != campbell.effects.end());
 }
+
+TEST_CASE("Above the first forward critical speed the rotating frame's stiffness is indefinite: refused, with the speed",
+          "[rotation][solid][rotating_frame]") {
+    // The clamped steel tube of the first test, in co-rotating coordinates.
+    // There K(Omega) = K + Omega^2 (K_sigma1 - M_P); on the first bending
+    // pair's forward whirl it is k - Omega^2 m (a Jeffcott rotor seen from
+    // its own axes), so it turns negative where f_rot passes that whirl's
+    // stationary frequency: at 1.3 f1 it is about -0.7 k, far below the
+    // rigid line's -omega_0^2 (1e-4 of the first eigenvalue). The
+    // completeness count assumes K(Omega) + omega_0^2 M >= 0
+    // (gyroscopic_solver.hpp): no modes at that speed, and the message says
+    // which speed and why. Below it (0.8 f1) the frame solves as before.
+    Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 0.6, 1, 16, 8, 10), 0.03);
+    tube.model = "solid";
+    const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
+    const double f1 = rotating.modes_at(0.0).front().frequency_hz;
+    CHECK_NOTHROW(rotating.modes_at(0.8 * f1));
+    const double rpm = 1.3 * f1 * 60;
+    CHECK_THROWS_WITH(rotating.modes_at(1.3 * f1),
+                      Catch::Contains("is indefinite") && Catch::Contains(std::to_string(rpm).substr(0, 5)) &&
+                          Catch::Contains("no modes are reported") && Catch::Contains("below this speed"));
+}

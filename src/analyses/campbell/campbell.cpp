@@ -343,6 +343,12 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
                  "responses to the spin's forces, every mode's residual taken on the full problem; " +
                  std::to_string(harmonics.n_full_solves()) + " of " + std::to_string(harmonics.n_solves()) +
                  " problems (one n at one speed) solved whole with SLEPc PEP (TOAR) where the basis fell short";
+    const ProjectedGyroscopic::CountStatistics counts = harmonics.count_statistics();
+    out.completeness += "; of " + std::to_string(counts.speeds) + " counts at the band edge, " +
+                        std::to_string(counts.certified) + " came from an earlier speed's gap certificate (Weyl's "
+                        "bound on the pencil, docs/rotation.md), " + std::to_string(counts.certificates) +
+                        " made one (two counts; " + std::to_string(counts.certificate_failed) +
+                        " failed and counted again) and " + std::to_string(counts.counted) + " counted";
 }
 
 void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {

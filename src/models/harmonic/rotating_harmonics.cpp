@@ -2,6 +2,7 @@
 
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
+#include "common/log_event.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/tube_section.hpp"
@@ -111,6 +112,7 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
     std::vector<double> rest_lowest;        // per n: its lowest eigenvalue at rest
     std::vector<double> merged;
     const auto visit = [&](int n) -> HarmonicVisit {
+        const LogEvent event("CmRestSearch");
         HarmonicSystem system = assemble_harmonic(scene, section_, materials, n);
         const std::optional<double> edge = n >= 2 ? window_edge(merged, window) : std::nullopt;
         const std::vector<double> lambdas = rest_eigenvalues(scene, system, request, edge, window);
@@ -124,11 +126,16 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
                std::to_string(window) + ": ask for fewer modes";
     });
     const double edge = window_edge(merged, window).value_or(1e300);
-    if (centrifugal_stiffening)
+    if (centrifugal_stiffening) {
+        const LogEvent event("CmPrestress");
         prestress_ = std::make_unique<CentrifugalPrestress>(centrifugal_prestress(scene, section_, materials));
+    }
     for (size_t n = 0; n < rest.size(); ++n) {
         auto h = std::make_unique<Harmonic>();
-        h->problem = assemble_spinning_harmonic(scene, section_, materials, static_cast<int>(n), prestress_.get());
+        {
+            const LogEvent event("CmSpinAssembly");
+            h->problem = assemble_spinning_harmonic(scene, section_, materials, static_cast<int>(n), prestress_.get());
+        }
         const long in_window = std::count_if(rest[n].begin(), rest[n].end(), [&](double l) { return l <= edge * (1 + 1e-9); });
         h->n_modes = static_cast<int>(in_window) + kExtraModesPerHarmonic;
         h->lambda_scale = n <= 1 ? request.lambda_scale : rest_lowest[n];
@@ -138,7 +145,8 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
             r.lambda_scale = h->lambda_scale;
             h->projected = std::make_unique<ProjectedGyroscopic>(h->problem.operators, r,
                                                                  kRestBasisFactor * h->n_modes + kExtraRestModes,
-                                                                 h->problem.cos_rows, h->problem.sin_rows);
+                                                                 n == 0 ? h->problem.meridional_rows : h->problem.cos_rows,
+                                                                 n == 0 ? h->problem.tangential_rows : h->problem.sin_rows);
         }
         harmonics_.push_back(std::move(h));
     }
@@ -147,6 +155,7 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
 // The label of the larger real snapshot of x = re + i im, on the revolved section.
 ModeLabel RotatingHarmonics::label(const SpinningHarmonic& h, const FamilyValues& re, const FamilyValues& im,
                                    double omega) const {
+    const LogEvent event("CmLabel");
     const FamilyValues& snapshot = squared_norm(re) >= squared_norm(im) ? re : im;
     const std::vector<double> field =
         revolved_field(revolved_, h.dofs, h.n, snapshot.cos_values, snapshot.sin_values, frame_nodes_);
@@ -213,6 +222,21 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels la
 void RotatingHarmonics::sweep_up_to(double speed_hz) {
     for (auto& h : harmonics_)
         if (h->projected) h->projected->prove_rigid_line_clear(2 * M_PI * speed_hz);
+}
+
+ProjectedGyroscopic::CountStatistics RotatingHarmonics::count_statistics() const {
+    ProjectedGyroscopic::CountStatistics all;
+    for (const auto& h : harmonics_) {
+        if (!h->projected) continue;
+        const ProjectedGyroscopic::CountStatistics s = h->projected->count_statistics();
+        all.speeds += s.speeds;
+        all.counted += s.counted;
+        all.certificates += s.certificates;
+        all.certificate_failed += s.certificate_failed;
+        all.certified += s.certified;
+        all.gamma = std::max(all.gamma, s.gamma);
+    }
+    return all;
 }
 
 long RotatingHarmonics::n_dofs() const {

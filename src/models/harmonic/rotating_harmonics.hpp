@@ -17,11 +17,13 @@
 // (eigensolve/projected_gyroscopic.hpp: the modes at rest of n and the
 // static responses to their spin forces), every mode verified by its
 // residual on the full problem and the set proven complete by the inertia
-// of the full Q(omega) at every speed; where either fails, that n at that
+// of the full Q(omega) at every speed (or carried from an earlier speed by
+// Weyl's bound, ProjectedGyroscopic::count_statistics); where either fails, that n at that
 // speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
 #include "beam/rotating_modes.hpp"
+#include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "models/harmonic/spinning_harmonic.hpp"
 #include "modes/classify.hpp"
@@ -69,6 +71,9 @@ public:
     const CentrifugalPrestress* prestress() const { return prestress_.get(); }
     // Problems (one n at one speed) solved whole, and in all.
     long n_full_solves() const { return n_full_solves_; }
+    // The projected solver's completeness counts over every wave number
+    // (ProjectedGyroscopic::CountStatistics; gamma the largest).
+    ProjectedGyroscopic::CountStatistics count_statistics() const;
     long n_solves() const { return n_solves_; }
 
 private:

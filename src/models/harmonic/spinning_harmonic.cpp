@@ -34,6 +34,29 @@ std::vector<double> sub_values(Vec x, IS rows) {
 
 }  // namespace
 
+namespace {
+
+// The n = 0 DOFs split into meridional (U, W, frames) and tangential (V) ones (header).
+void split_meridional(SpinningHarmonic& h) {
+    std::vector<char> kind(h.dofs.n_dofs, 0);  // 1 meridional, 2 tangential, 3 both
+    for (size_t k = 0; k < h.dofs.of_component.size(); ++k)
+        if (const int d = h.dofs.of_component[k]; d >= 0) kind[d] |= (k % 3 == 1) ? 2 : 1;
+    for (int d : h.dofs.frame)
+        if (d >= 0) kind[d] |= 1;
+    std::vector<PetscInt> rows[2];
+    for (int d = 0; d < h.dofs.n_dofs; ++d) {
+        if (kind[d] != 1 && kind[d] != 2) return;
+        rows[kind[d] - 1].push_back(d);
+    }
+    if (rows[0].empty() || rows[1].empty()) return;
+    COREMODAL_PETSC(ISCreateGeneral(PETSC_COMM_SELF, rows[0].size(), rows[0].data(), PETSC_COPY_VALUES,
+                                    h.meridional_rows.out()));
+    COREMODAL_PETSC(ISCreateGeneral(PETSC_COMM_SELF, rows[1].size(), rows[1].data(), PETSC_COPY_VALUES,
+                                    h.tangential_rows.out()));
+}
+
+}  // namespace
+
 SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMesh& mesh,
                                             const std::vector<PartMaterial>& materials, int n,
                                             const CentrifugalPrestress* prestress) {
@@ -48,6 +71,7 @@ SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMes
     PetscMatrix centrifugal;
     if (prestress) centrifugal = assemble_harmonic_centrifugal(mesh, materials, rest.dofs, n, prestress->stress, comm);
     if (n == 0) {
+        if (mpi_size(comm) == 1) split_meridional(out);
         out.operators.matrices[Term::stiffness] = std::move(rest.operators.matrices[Term::stiffness]);
         out.operators.matrices[Term::mass] = std::move(rest.operators.matrices[Term::mass]);
         out.operators.matrices[Term::gyroscopic] = std::move(gamma);

@@ -32,6 +32,12 @@ struct SpinningHarmonic {
     HarmonicDofs dofs;      // of one family (the harmonic level's)
     OperatorSet operators;  // n = 0: on dofs; n >= 1: on (a, b), 2 x dofs.n_dofs
     PetscIndexSet cos_rows, sin_rows;  // n >= 1: where a and b sit in a vector of the set
+    // n = 0 on one process: the meridional DOFs (U, W and the frames' axial
+    // DOFs) and the tangential ones (V). K, M and K_Omega do not couple them
+    // and G couples only them (L_0 turns u_r into u_theta): the count's
+    // Hermitian Q is then a real symmetric matrix of the set's size
+    // (gyroscopic_inertia.hpp). Null where a DOF is both (a tie) or in parallel.
+    PetscIndexSet meridional_rows, tangential_rows;
 
     int n_families() const { return n == 0 ? 1 : 2; }
 };
