@@ -395,42 +395,105 @@ std::string shift_text(double sigma) {
     return s.str();
 }
 
-// The one-factor solve, or none when the prediction failed in a way only
-// the two-factor path below answers (logged through `progress`).
-std::optional<SolvedModes> solve_at_predicted_edge(Mat K, Mat M, const SolveRequest& request, int wanted,
-                                                   double sigma, long n_dofs, const Progress& progress) {
-    progress("factorising K - sigma M (LDL^T) at the predicted band edge, " + shift_text(sigma) +
+long count_below_shift(const Attempt& a, double sigma) {
+    return std::count_if(a.lambdas.begin(), a.lambdas.end(), [&](double l) { return l < sigma; });
+}
+
+// A Krylov space built from one vector holds one direction of each
+// eigenspace; the other members of a multiple eigenvalue (the six rigid
+// modes of a free body, exact pairs) enter only through round-off, and with
+// the shift far above them they may not converge among the lowest. The
+// missing ones are the lowest eigenvalues M-orthogonal to those found below
+// sigma: SLEPc's deflation space, on the factor already made. Adds those found
+// below sigma to `a`, in ascending order.
+void add_missed_partners(EPS eps, Mat K, double sigma, long missing, Attempt& a) {
+    std::vector<Vec> found;
+    for (size_t i = 0; i < a.lambdas.size(); ++i)
+        if (a.lambdas[i] < sigma) found.push_back(a.vectors[i]);
+    COREMODAL_PETSC(EPSSetDeflationSpace(eps, static_cast<PetscInt>(found.size()), found.data()));
+    COREMODAL_PETSC(EPSSetDimensions(eps, static_cast<PetscInt>(missing) + 1, PETSC_DEFAULT, PETSC_DEFAULT));
+    COREMODAL_PETSC(EPSSolve(eps));
+    Attempt more = converged_pairs(eps, K);
+    std::vector<std::pair<double, PetscVector>> all;
+    for (size_t i = 0; i < a.lambdas.size(); ++i) all.emplace_back(a.lambdas[i], std::move(a.vectors[i]));
+    for (size_t i = 0; i < more.lambdas.size(); ++i)
+        if (more.lambdas[i] < sigma) all.emplace_back(more.lambdas[i], std::move(more.vectors[i]));
+    std::stable_sort(all.begin(), all.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    a.lambdas.clear();
+    a.vectors.clear();
+    for (auto& [lambda, x] : all) {
+        a.lambdas.push_back(lambda);
+        a.vectors.push_back(std::move(x));
+    }
+    a.n_converged += more.n_converged;
+}
+
+// What one pass at a shift gave: the modes, proven complete by its own
+// factor's count; or where the next pass should factor (the edge of the
+// wanted modes found); or neither (the factor failed).
+struct ShiftPass {
+    std::optional<SolvedModes> modes;
+    std::optional<double> next_shift;
+};
+
+// Factors K - sigma M once (LDL^T), solves for the lowest modes on that
+// factor, and proves them complete by its inertia when sigma lies above
+// them and not too far (most_below_one_shift).
+ShiftPass solve_at_shift(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma, long n_dofs,
+                         const std::string& where, const Progress& progress) {
+    progress("factorising K - sigma M (LDL^T) at " + where + ", " + shift_text(sigma) +
              ": one factor for the solve and the count");
     const Heartbeat beat("factorising K - sigma M and solving", progress);
     auto eps = configure_ldlt(K, M, sigma, request);
     const std::optional<long> below = factor_and_count(eps, progress);
-    if (!below) return std::nullopt;
+    if (!below) return {};
     const bool one_factor = *below >= wanted && *below <= most_below_one_shift(wanted);
     if (!one_factor)
-        progress("the prediction missed: " + std::to_string(*below) + " eigenvalues below sigma for " +
-                 std::to_string(wanted) + " wanted; solving for the lowest modes at this shift, then counting again "
-                 "at the edge found (a second factorization)");
+        progress("the shift missed: " + std::to_string(*below) + " eigenvalues below sigma for " +
+                 std::to_string(wanted) + " wanted; solving for the lowest modes at this shift to find their edge");
     const int nev = static_cast<int>(std::min<long>(
         n_dofs, one_factor ? *below + 1 : wanted + std::max(kMinExtraModes, wanted / 4)));
     progress("solving for " + std::to_string(nev) + " modes (" + std::to_string(*below) + " below sigma)");
     COREMODAL_PETSC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     COREMODAL_PETSC(EPSSolve(eps));
     Attempt a = converged_pairs(eps, K);
+    long found_below = count_below_shift(a, sigma);
+    // Each round finds at least one member of every eigenspace still missed
+    // (one more of the rigid modes, say); a round that finds none ends it.
+    for (long before = -1; found_below < *below && found_below > before;) {
+        progress("found " + std::to_string(found_below) + " of the " + std::to_string(*below) +
+                 " modes below sigma (a multiple eigenvalue's partner, such as a rigid mode): solving again, on the "
+                 "same factor, M-orthogonally to those found");
+        before = found_below;
+        add_missed_partners(eps, K, sigma, *below - found_below, a);
+        found_below = count_below_shift(a, sigma);
+    }
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));
-    const long found_below = std::count_if(a.lambdas.begin(), a.lambdas.end(), [&](double l) { return l < sigma; });
-    if (one_factor) {
-        if (found_below == *below && n_report <= *below)
-            return verified_modes(K, M, a, n_report, sigma, *below, found_below);
+    if (one_factor && found_below == *below && n_report <= *below)
+        return {verified_modes(K, M, a, n_report, sigma, *below, found_below), std::nullopt};
+    if (one_factor)
         progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
-                 std::to_string(*below) + ": counting again at the edge found");
+                 std::to_string(*below));
+    return {std::nullopt, check_point(a.lambdas, n_report, request.lambda_scale)};
+}
+
+// The predicted shift, then once the edge the first pass found; none when
+// neither proves the modes complete (the caller then takes the negative
+// shift and a separate count). Every step is said through `progress`.
+constexpr int kShiftPasses = 2;
+
+std::optional<SolvedModes> solve_at_predicted_edge(Mat K, Mat M, const SolveRequest& request, int wanted,
+                                                   double sigma, long n_dofs, const Progress& progress) {
+    std::string where = "the predicted band edge";
+    for (int pass = 0; pass < kShiftPasses; ++pass) {
+        ShiftPass p = solve_at_shift(K, M, request, wanted, sigma, n_dofs, where, progress);
+        if (p.modes) return std::move(p.modes);
+        if (!p.next_shift) return std::nullopt;
+        sigma = *p.next_shift;
+        where = "the band edge found (re-shifted: a second factorization)";
     }
-    const double check = check_point(a.lambdas, n_report, request.lambda_scale);
-    progress("checking completeness: inertia of K - sigma M at the band edge");
-    const long pivots = count_below(K, M, check);
-    if (pivots == n_report) return verified_modes(K, M, a, n_report, check, pivots, n_report);
-    progress("inertia count says " + std::to_string(pivots) + " modes lie below the edge, " +
-             std::to_string(n_report) + " found: solving again with a negative shift");
+    progress("no shift near the band edge proved the modes complete: solving with a negative shift");
     return std::nullopt;
 }
 
