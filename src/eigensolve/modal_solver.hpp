@@ -1,6 +1,9 @@
 // The generalized Hermitian eigenproblem K x = lambda M x with SLEPc:
-// Krylov–Schur, shift-and-invert with a MUMPS LDL^T factor of K - sigma M.
-// Four acts (SLEPc ex13): configure, solve, extract and verify, prove complete.
+// Krylov–Schur, shift-and-invert on a factor of K - sigma M. Four acts
+// (SLEPc ex13): configure, solve, extract and verify, prove complete. With a
+// predicted band edge, one MUMPS LDL^T factor just above the wanted modes
+// is both the operator and the completeness count; otherwise a Cholesky
+// factor at a negative shift and a second (LDL^T) factor for the count.
 #pragma once
 
 #include "assembly/operator_set.hpp"
