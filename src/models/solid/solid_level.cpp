@@ -226,10 +226,9 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     // 5. Solve, verify, prove complete. The scale of the first elastic
     //    eigenvalue sets the shift (and what counts as rigid).
     SolveRequest request = solve_request(scene);
-    const bool predictable = !request.lambda_max && !why_not_axisymmetric(scene);
-    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
-        (predictable ? std::string("one MUMPS LDL^T at the predicted band edge, which also counts)")
-                     : shift_invert_factor_package(PETSC_COMM_WORLD) + std::string("; MUMPS LDL^T for the count)")));
+    // Which factors: the solver's progress lines say (one LDL^T at a
+    // predicted band edge, or a negative shift and a second factor to count).
+    say("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert)");
     request.predicted_eigenvalues = predicted_eigenvalues(scene, request, say);
     say(shift_scale_text(scene));
     const SolvedModes solved = solve_for_case(scene, system, request, say, "");
