@@ -135,14 +135,16 @@ void linearise_about_gravity(const Scene& scene, const DofMap& dofs, const Chuck
 constexpr int kPredictedExtraModes = 6;
 
 // The lowest eigenvalues of the same scene at the harmonic level, when the
-// scene is a body of revolution: the same section, exact in theta, one 2D
+// scene is a held body of revolution: the same section, exact in theta, one 2D
 // problem per wave number (under a second for a rest roll). The solve places
 // its one LDL^T factor in the gap they predict above the wanted modes
 // (eigensolve/modal_solver.hpp); none for a band, or a scene the harmonic level
 // cannot take (the solve then uses a negative shift and a second factor
 // for the count).
 std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest& request, const Printer& say) {
-    if (request.lambda_max || why_not_axisymmetric(scene)) return {};
+    // A free body's rigid modes keep the solver on its negative shift
+    // (modal_solver.cpp, predicted_shift): no prediction is needed there.
+    if (request.lambda_max || scene.supports.kind == SupportKind::free || why_not_axisymmetric(scene)) return {};
     Scene axisymmetric = scene;
     axisymmetric.model = "harmonic";
     axisymmetric.analysis.n_modes = request.n_modes + kPredictedExtraModes;
