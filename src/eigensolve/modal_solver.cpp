@@ -291,12 +291,12 @@ std::string unconverged_text(int n_converged, int wanted, const SolveRequest& re
 // modes. That one factor is SLEPc's shift-and-invert operator, and its
 // negative pivots are the number of eigenvalues below sigma (Sylvester):
 // when the solve finds exactly that many below sigma, nothing below was
-// missed, with no second factorization. A shift next to the wanted modes
-// also separates them better in the transformed spectrum 1 / (lambda - sigma)
-// than a shift below zero, so the Krylov-Schur iteration needs fewer solves.
+// missed, with no second factorization. The number of solves stays about
+// that of the negative shift (case 03: 103 against 115; case 02: 89
+// against 80; docs/performance.md, issue 19).
 
-// The prediction may place sigma above this many more modes than wanted
-// before the solve computes only the wanted ones and counts again at their
+// The prediction may place sigma above this many modes (more than wanted)
+// before the pass solves for the wanted ones only and re-shifts to their
 // edge (a second factorization): each mode below sigma costs solves.
 int most_below_one_shift(int wanted) { return wanted + std::max(kMinExtraModes, wanted / 2); }
 
