@@ -134,6 +134,14 @@ void linearise_about_gravity(const Scene& scene, const DofMap& dofs, const Chuck
 // above them, where the solve's one factorization is placed.
 constexpr int kPredictedExtraModes = 6;
 
+// Off: measured on case 03 at load ~2 (docs/performance.md, issue 19), the
+// one MUMPS LDL^T saves ~6.5 s of factorization against CHOLMOD + a MUMPS
+// count, but its 103 triangular solves cost 7.5 s more than CHOLMOD's 115
+// (0.22 s against 0.13 s each): 55.4 s against 53.5 s wall. The solver's
+// one-factor path stays (tested, eigensolve/modal_solver.hpp) for when its
+// solves get cheaper (block solves); turn this on to use it.
+constexpr bool kPredictBandEdge = false;
+
 // The lowest eigenvalues of the same scene at the harmonic level, when the
 // scene is a held body of revolution: the same section, exact in theta, one 2D
 // problem per wave number (under a second for a rest roll). The solve places
@@ -144,7 +152,9 @@ constexpr int kPredictedExtraModes = 6;
 std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest& request, const Printer& say) {
     // A free body's rigid modes keep the solver on its negative shift
     // (modal_solver.cpp, predicted_shift): no prediction is needed there.
-    if (request.lambda_max || scene.supports.kind == SupportKind::free || why_not_axisymmetric(scene)) return {};
+    if (!kPredictBandEdge || request.lambda_max || scene.supports.kind == SupportKind::free ||
+        why_not_axisymmetric(scene))
+        return {};
     Scene axisymmetric = scene;
     axisymmetric.model = "harmonic";
     axisymmetric.analysis.n_modes = request.n_modes + kPredictedExtraModes;
