@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Do two coremodal programs give the same frequencies on every shipped case?
 
-    /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--cases GLOB ...]
+    /usr/bin/python3 bench/same_results.py OLD_BINARY NEW_BINARY [--mesh coarse] [--model solid] [--cases GLOB ...]
 
 Runs each case file of cases/ and cases/hard/ (not the [study] and [winder] cases) with both
 programs (`run CASE --no-plots -q -o DIR`), reads the modes' frequencies from both
@@ -28,10 +28,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def run(binary, case, out, mesh):
+def run(binary, case, out, mesh, model=None):
     args = [binary, "run", case, "--no-plots", "-q", "-o", out]
     if mesh:
         args += ["--mesh", mesh]
+    if model:
+        args += ["--model", model]
     start = time.time()
     p = subprocess.run(args, cwd=ROOT, capture_output=True, text=True)
     return p.returncode, p.stderr.strip().splitlines()[-1:] , time.time() - start
@@ -77,6 +79,7 @@ def main():
     ap.add_argument("old")
     ap.add_argument("new")
     ap.add_argument("--mesh", default=None, help="mesh level for both (default: each case's own)")
+    ap.add_argument("--model", default=None, help="model level for both (default: each case's own)")
     ap.add_argument("--tolerance", type=float, default=1e-10)
     ap.add_argument("--cases", nargs="*", default=None, help="case files (default: cases/*.toml and cases/hard/*.toml)")
     a = ap.parse_args()
@@ -91,7 +94,7 @@ def main():
             if re.search(r"^\[(study|winder)\]", text, re.M):  # not `coremodal run` cases (a table, not a comment)
                 continue
             outs = [os.path.join(tmp, f"{i}-old"), os.path.join(tmp, f"{i}-new")]
-            results = [run(b, case, o, a.mesh) for b, o in zip((a.old, a.new), outs)]
+            results = [run(b, case, o, a.mesh, a.model) for b, o in zip((a.old, a.new), outs)]
             codes = [r[0] for r in results]
             if codes[0] != 0 or codes[1] != 0:
                 same = codes[0] == codes[1]

@@ -1,6 +1,9 @@
 // The generalized Hermitian eigenproblem K x = lambda M x with SLEPc:
-// Krylov–Schur, shift-and-invert with a MUMPS LDL^T factor of K - sigma M.
-// Four acts (SLEPc ex13): configure, solve, extract and verify, prove complete.
+// Krylov–Schur, shift-and-invert on a factor of K - sigma M. Four acts
+// (SLEPc ex13): configure, solve, extract and verify, prove complete. With a
+// predicted band edge, one MUMPS LDL^T factor just above the wanted modes
+// is both the operator and the completeness count; otherwise a Cholesky
+// factor at a negative shift and a second (LDL^T) factor for the count.
 #pragma once
 
 #include "assembly/operator_set.hpp"
@@ -19,6 +22,13 @@ namespace coremodal {
 // The case's request (mode_request.hpp) and SLEPc's iteration limit.
 struct SolveRequest : ModeRequest {
     int max_iterations = 500;
+    // The lowest eigenvalues of another model of the same scene (rad^2/s^2,
+    // ascending; e.g. the harmonic level's for the solid's body of
+    // revolution), or none. When it reaches past the wanted modes, K - sigma M
+    // is factored once (LDL^T) in the predicted gap above them and that
+    // factor serves both the shift-and-invert and the inertia count; a wrong
+    // prediction falls back to a second count, or to the negative shift.
+    std::vector<double> predicted_eigenvalues;
 };
 
 // The most modes one eigenproblem is solved for ([analysis] modes has the

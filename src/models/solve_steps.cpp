@@ -10,7 +10,8 @@
 namespace coremodal {
 
 SolveRequest solve_request(const Scene& scene) {
-    SolveRequest request{mode_request(scene, ModeFamilies::beam_and_section)};
+    SolveRequest request;
+    static_cast<ModeRequest&>(request) = mode_request(scene, ModeFamilies::beam_and_section);
     request.max_iterations = scene.analysis.max_iterations;
     return request;
 }

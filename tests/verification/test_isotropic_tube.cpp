@@ -29,7 +29,10 @@ const RunReport& free_free_tube() {
 TEST_CASE("A free-free tube's modes are verified and proven complete", "[verification][tube]") {
     const auto& r = free_free_tube();
     CHECK(r.modes.verification.complete);
-    CHECK(r.modes.verification.negative_pivots_at_shift == long(r.modes.modes.size()));
+    // Every eigenvalue below the count's shift was found (the shift may lie
+    // above more modes than reported: issue 19's one factor at the predicted edge).
+    CHECK(r.modes.verification.negative_pivots_at_shift == r.modes.verification.modes_below_shift);
+    CHECK(r.modes.verification.modes_below_shift >= long(r.modes.modes.size()));
     CHECK(r.modes.verification.max_relative_residual < 1e-8);
     CHECK(r.modes.verification.max_orthonormality_error < 1e-8);
 }

@@ -12,6 +12,8 @@
 #include "geometry/tube_model.hpp"
 #include "mesh/connectivity.hpp"
 #include "mesh/gmsh_mesh.hpp"
+#include "models/choose.hpp"
+#include "models/harmonic/harmonic_level.hpp"
 #include "models/part_materials.hpp"
 #include "models/solid/gravity_contact.hpp"
 #include "models/solve_steps.hpp"
@@ -128,6 +130,57 @@ void linearise_about_gravity(const Scene& scene, const DofMap& dofs, const Chuck
     }
 }
 
+// Modes the prediction holds beyond the wanted ones: enough to see the gap
+// above them, where the solve's one factorization is placed.
+constexpr int kPredictedExtraModes = 6;
+
+// Off: measured on case 03 at load ~2 (docs/performance.md, issue 19), the
+// one MUMPS LDL^T saves ~6.5 s of factorization against CHOLMOD + a MUMPS
+// count, but its 103 triangular solves cost 7.5 s more than CHOLMOD's 115
+// (0.22 s against 0.13 s each): 55.4 s against 53.5 s wall. The solver's
+// one-factor path stays (tested, eigensolve/modal_solver.hpp) for when its
+// solves get cheaper (block solves); turn this on to use it.
+constexpr bool kPredictBandEdge = false;
+
+// The lowest eigenvalues of the same scene at the harmonic level, when the
+// scene is a held body of revolution: the same section, exact in theta, one 2D
+// problem per wave number (under a second for a rest roll). The solve places
+// its one LDL^T factor in the gap they predict above the wanted modes
+// (eigensolve/modal_solver.hpp); none for a band, or a scene the harmonic level
+// cannot take (the solve then uses a negative shift and a second factor
+// for the count).
+std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest& request, const Printer& say) {
+    // A free body's rigid modes keep the solver on its negative shift
+    // (modal_solver.cpp, predicted_shift): no prediction is needed there.
+    if (!kPredictBandEdge || request.lambda_max || scene.supports.kind == SupportKind::free ||
+        why_not_axisymmetric(scene))
+        return {};
+    Scene axisymmetric = scene;
+    axisymmetric.model = "harmonic";
+    axisymmetric.analysis.n_modes = request.n_modes + kPredictedExtraModes;
+    Stopwatch watch;
+    std::vector<double> lambdas;
+    // A stage of its own in -log_view, apart from the solid's solve.
+    static PetscLogStage stage = [] {
+        PetscLogStage s;
+        PetscLogStageRegister("Band edge predict", &s);
+        return s;
+    }();
+    PetscLogStagePush(stage);
+    try {
+        HarmonicLevel level;
+        for (const Mode& mode : level.solve(axisymmetric, Printer{false}).modes) lambdas.push_back(mode.eigenvalue);
+    } catch (const std::exception& e) {
+        PetscLogStagePop();
+        say(std::string("      no prediction of the band edge from the harmonic level: ") + e.what());
+        return {};
+    }
+    PetscLogStagePop();
+    say("      band edge predicted by the harmonic level (" + std::to_string(lambdas.size()) + " modes, " +
+        std::to_string(watch.lap()) + " s)");
+    return lambdas;
+}
+
 }  // namespace
 
 Mesh make_solid_mesh(const Scene& scene) {
@@ -184,9 +237,11 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
 
     // 5. Solve, verify, prove complete. The scale of the first elastic
     //    eigenvalue sets the shift (and what counts as rigid).
-    say(std::string("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert with ") +
-        shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
-    const SolveRequest request = solve_request(scene);
+    SolveRequest request = solve_request(scene);
+    // Which factors: the solver's progress lines say (one LDL^T at a
+    // predicted band edge, or a negative shift and a second factor to count).
+    say("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert)");
+    request.predicted_eigenvalues = predicted_eigenvalues(scene, request, say);
     say(shift_scale_text(scene));
     const SolvedModes solved = solve_for_case(scene, system, request, say, "");
     out.verification = solved.verification;
