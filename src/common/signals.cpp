@@ -39,6 +39,9 @@ struct State {
     std::atomic<int> signal{0};
     std::set<pid_t> children;
     std::set<fs::path> folders;
+    // Children registered after the signal (forked just before it, recorded
+    // just after): child_started stops them itself.
+    size_t stopped_late = 0;
 };
 
 // Never destroyed: the interrupt thread may use it while the main thread
@@ -54,7 +57,8 @@ std::set<pid_t> running_children() {
 }
 
 // Passes `sig` on to every child, waits for them to be reaped, and kills
-// those that outlive kChildGrace. Returns how many there were.
+// those that outlive kChildGrace. Returns how many there were, those
+// child_started stopped meanwhile included.
 size_t stop_children(int sig) {
     const std::set<pid_t> first = running_children();
     for (pid_t pid : first) ::kill(pid, sig);
@@ -66,7 +70,8 @@ size_t stop_children(int sig) {
             std::this_thread::sleep_for(kPoll);
         if (running_children().empty()) break;
     }
-    return first.size();
+    std::lock_guard<std::mutex> guard(state().lock);
+    return first.size() + state().stopped_late;
 }
 
 // Removes the folders, which another thread may still be writing into.
@@ -164,7 +169,9 @@ void keep_on_interrupt(const fs::path& folder) {
 void child_started(pid_t pid) {
     std::lock_guard<std::mutex> guard(state().lock);
     state().children.insert(pid);
-    if (state().signal) ::kill(pid, state().signal);
+    if (!state().signal) return;
+    ::kill(pid, state().signal);
+    ++state().stopped_late;
 }
 
 void child_reaped(pid_t pid) {

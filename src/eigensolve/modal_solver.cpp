@@ -26,13 +26,19 @@ constexpr double kShiftFraction = 0.5;
 // inertia check is placed and catch a degenerate partner of the last mode.
 constexpr int kMinExtraModes = 4;
 
-PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
+// Krylov-Schur on the symmetric-definite pencil (K, M), aimed at sigma.
+PetscHandle<EPS, EPSDestroy> krylov_schur_at(Mat K, Mat M, double sigma) {
     PetscHandle<EPS, EPSDestroy> eps;
     COREMODAL_PETSC(EPSCreate(PetscObjectComm((PetscObject)K), eps.out()));
     COREMODAL_PETSC(EPSSetOperators(eps, K, M));
     COREMODAL_PETSC(EPSSetProblemType(eps, EPS_GHEP));
     COREMODAL_PETSC(EPSSetType(eps, EPSKRYLOVSCHUR));
     COREMODAL_PETSC(EPSSetTarget(eps, sigma));
+    return eps;
+}
+
+PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
+    PetscHandle<EPS, EPSDestroy> eps = krylov_schur_at(K, M, sigma);
     COREMODAL_PETSC(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
     COREMODAL_PETSC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
     COREMODAL_PETSC(EPSSetTolerances(eps, request.tolerance, request.max_iterations));
@@ -330,12 +336,7 @@ PetscErrorCode lowest_first(PetscScalar ar, PetscScalar, PetscScalar br, PetscSc
 // Krylov-Schur with shift-and-invert at sigma on a MUMPS LDL^T factor that
 // reports its inertia; the lowest eigenvalues wanted (sigma lies above them).
 PetscHandle<EPS, EPSDestroy> configure_ldlt(Mat K, Mat M, double sigma, const SolveRequest& request) {
-    PetscHandle<EPS, EPSDestroy> eps;
-    COREMODAL_PETSC(EPSCreate(PetscObjectComm((PetscObject)K), eps.out()));
-    COREMODAL_PETSC(EPSSetOperators(eps, K, M));
-    COREMODAL_PETSC(EPSSetProblemType(eps, EPS_GHEP));
-    COREMODAL_PETSC(EPSSetType(eps, EPSKRYLOVSCHUR));
-    COREMODAL_PETSC(EPSSetTarget(eps, sigma));
+    PetscHandle<EPS, EPSDestroy> eps = krylov_schur_at(K, M, sigma);
     // The lowest eigenvalues, not those nearest sigma: every one below sigma
     // is wanted, however far below. Shift-and-invert takes only a target or
     // a user's order; SLEPc applies it to the back-transformed values.

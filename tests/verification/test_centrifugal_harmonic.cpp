@@ -180,16 +180,29 @@ TEST_CASE("A thin spinning ring with centrifugal stiffening: the exact stationar
     }
 }
 
+namespace {
+
+// The thin free ring (R = 0.5 m, t = 5 mm, 2 cm wide) of the exact split.
+Scene thin_ring() { return testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16); }
+
+// Its n = 2 spinning set with the prestress's stress set to zero: the
+// convective softening -Omega^2 M_L alone as K_Omega.
+SpinningHarmonic softening_only(const Scene& ring, const Section& s) {
+    CentrifugalPrestress prestress = centrifugal_prestress(ring, s.mesh, s.materials);
+    for (SectionStress& st : prestress.stress) st.setZero();
+    return assemble_spinning_harmonic(ring, s.mesh, s.materials, 2, &prestress);
+}
+
+}  // namespace
+
 TEST_CASE("A thin spinning ring with the convective softening alone misses the exact split",
           "[rotation][harmonic][centrifugal]") {
     // The control of the test above: the same ring and wave number n = 2 with
     // the prestress's stress set to zero (softening -Omega^2 M_L only) is
     // off by far more than that test's tolerance, so the test can fail.
-    Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
+    const Scene ring = thin_ring();
     const Section s = section_of(ring);
-    CentrifugalPrestress softening_only = centrifugal_prestress(ring, s.mesh, s.materials);
-    for (SectionStress& st : softening_only.stress) st.setZero();
-    const SpinningHarmonic h = assemble_spinning_harmonic(ring, s.mesh, s.materials, 2, &softening_only);
+    const SpinningHarmonic h = softening_only(ring, s);
     const SpinningHarmonic full_model =
         assemble_spinning_harmonic(ring, s.mesh, s.materials, 2, nullptr);  // no Omega^2 term: the exact split too
     SolveRequest request = solve_request(ring);
@@ -213,11 +226,9 @@ TEST_CASE("A stiffness the spin has made indefinite is refused by both gyroscopi
     // at 1.0 omega_0 the stiffness has a direction below -omega_0^2 / 4 (an
     // inertia count of K(Omega) + omega_0^2/4 M, the independent check),
     // and both must refuse with the speed and the reason.
-    Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
+    const Scene ring = thin_ring();
     const Section s = section_of(ring);
-    CentrifugalPrestress softening_only = centrifugal_prestress(ring, s.mesh, s.materials);
-    for (SectionStress& st : softening_only.stress) st.setZero();
-    const SpinningHarmonic h = assemble_spinning_harmonic(ring, s.mesh, s.materials, 2, &softening_only);
+    const SpinningHarmonic h = softening_only(ring, s);
     SolveRequest request = solve_request(ring);
     request.n_modes = 2;
     const Progress quiet = [](const std::string&) {};
