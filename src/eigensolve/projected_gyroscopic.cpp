@@ -3,6 +3,7 @@
 #include "eigensolve/band_edge.hpp"
 #include "common/error.hpp"
 #include "eigensolve/gyroscopic_inertia.hpp"
+#include "eigensolve/projection_basis.hpp"
 #include "eigensolve/tolerances.hpp"
 
 #include <Eigen/Dense>
@@ -19,12 +20,6 @@ namespace {
 // S = K + K_sigma + tau^2 M with tau = this fraction of sqrt(lambda_scale):
 // solve_gyroscopic's target (positive definite with rigid modes or not).
 constexpr double kTargetFraction = 0.5;
-// A direction of the basis whose M-Gram eigenvalue is below this fraction of
-// the largest (after scaling every column to M-norm 1) is a combination of
-// the others to round-off: dropped.
-constexpr double kDependentDirection = 1e-14;
-// Terms of the static responses' series per mode at rest and force (static_responses).
-constexpr int kKrylovDepth = 2;
 // Counting at fewer speeds (header, docs/rotation.md). The bound gamma is
 // guessed from the projected term (its largest |eigenvalue| in the basis, a
 // lower bound of the full term's), times kBoundMargin, and doubled up to
@@ -42,110 +37,6 @@ constexpr double kMinCertifiedSteps = 3;
 
 using Dense = Eigen::MatrixXd;
 using Complex = std::complex<double>;
-using KSPHandle = PetscHandle<KSP, KSPDestroy>;
-
-const Progress kQuiet = [](const std::string&) {};
-
-PetscMatrix referenced(Mat A) {
-    COREMODAL_PETSC(PetscObjectReference((PetscObject)A));
-    return PetscMatrix(A);
-}
-
-double norm_1(Mat A) {
-    PetscReal n;
-    COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
-    return n;
-}
-
-// A V, column by column (one process: the sweep refuses mpirun).
-Dense apply(Mat A, const Dense& V) {
-    Dense out(V.rows(), V.cols());
-    PetscVector x, y;
-    COREMODAL_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, V.rows(), nullptr, x.out()));
-    COREMODAL_PETSC(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, V.rows(), nullptr, y.out()));
-    for (Eigen::Index j = 0; j < V.cols(); ++j) {
-        COREMODAL_PETSC(VecPlaceArray(x, V.col(j).data()));
-        COREMODAL_PETSC(VecPlaceArray(y, out.col(j).data()));
-        COREMODAL_PETSC(MatMult(A, x, y));
-        COREMODAL_PETSC(VecResetArray(x));
-        COREMODAL_PETSC(VecResetArray(y));
-    }
-    return out;
-}
-
-Eigen::VectorXd values_of(Vec x) {
-    PetscInt n;
-    const PetscScalar* a;
-    COREMODAL_PETSC(VecGetLocalSize(x, &n));
-    COREMODAL_PETSC(VecGetArrayRead(x, &a));
-    Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(a, n);
-    COREMODAL_PETSC(VecRestoreArrayRead(x, &a));
-    return out;
-}
-
-// One pass of M-orthonormalisation: columns scaled to M-norm 1, then the
-// eigenvectors of their Gram matrix, dependent directions dropped.
-Dense m_orthonormal_pass(Mat M, const Dense& V) {
-    const Dense gram = V.transpose() * apply(M, V);
-    const Eigen::VectorXd scale = gram.diagonal().cwiseSqrt().cwiseInverse();
-    const Dense scaled = scale.asDiagonal() * (0.5 * (gram + gram.transpose())) * scale.asDiagonal();
-    const Eigen::SelfAdjointEigenSolver<Dense> es(scaled);
-    const double largest = es.eigenvalues().maxCoeff();
-    Eigen::Index kept = 0;
-    while (kept < es.eigenvalues().size() &&
-           es.eigenvalues()[es.eigenvalues().size() - 1 - kept] > kDependentDirection * largest)
-        ++kept;
-    const Dense directions = es.eigenvectors().rightCols(kept);
-    const Eigen::VectorXd inv_sqrt = es.eigenvalues().tail(kept).cwiseSqrt().cwiseInverse();
-    return V * scale.asDiagonal() * directions * inv_sqrt.asDiagonal();
-}
-
-// The modes at rest of the set's stiffness (with any geometric stiffness) and mass.
-SolvedModes rest_modes(Mat K, Mat M, double model_mass, const SolveRequest& request, int n_rest) {
-    OperatorSet rest;
-    rest.matrices[Term::stiffness] = referenced(K);
-    rest.matrices[Term::mass] = referenced(M);
-    rest.model_mass = model_mass;
-    SolveRequest r = request;
-    r.n_modes = n_rest;
-    return solve_modes(rest, r, kQuiet);
-}
-
-// For every force matrix A and mode at rest x: u_1 = S^-1 A x and
-// u_k = S^-1 M u_(k-1) up to kKrylovDepth, S = K + tau^2 M factored once
-// (Cholesky). u_1 is the static response at -tau^2; the further terms are
-// the series of the response at a frequency omega in powers of
-// (omega^2 + tau^2), which a mode far above tau needs.
-std::vector<Eigen::VectorXd> static_responses(Mat K, Mat M, double tau, const std::vector<Mat>& forces,
-                                              const std::vector<PetscVector>& rest) {
-    PetscMatrix S;
-    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, S.out()));
-    COREMODAL_PETSC(MatAXPY(S, tau * tau, M, DIFFERENT_NONZERO_PATTERN));
-    COREMODAL_PETSC(MatSetOption(S, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatSetOption(S, MAT_SPD, PETSC_TRUE));
-    KSPHandle ksp;
-    COREMODAL_PETSC(KSPCreate(PetscObjectComm((PetscObject)K), ksp.out()));
-    COREMODAL_PETSC(KSPSetOperators(ksp, S, S));
-    COREMODAL_PETSC(KSPSetType(ksp, KSPPREONLY));
-    PC pc;
-    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
-    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
-    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PetscObjectComm((PetscObject)K))));
-    COREMODAL_PETSC(KSPSetUp(ksp));
-    std::vector<Eigen::VectorXd> out;
-    PetscVector f, u;
-    COREMODAL_PETSC(MatCreateVecs(K, u.out(), f.out()));
-    for (Mat A : forces)
-        for (const PetscVector& x : rest) {
-            COREMODAL_PETSC(MatMult(A, x, f));
-            for (int k = 0; k < kKrylovDepth; ++k) {
-                if (k > 0) COREMODAL_PETSC(MatMult(M, u, f));
-                COREMODAL_PETSC(KSPSolve(ksp, f, u));
-                out.push_back(values_of(u));
-            }
-        }
-    return out;
-}
 
 struct Candidate {
     double omega = 0;
@@ -154,16 +45,6 @@ struct Candidate {
     // -1 a backward one x = (f, i f) / sqrt 2, f = V y; 0 in the whole set's basis.
     int sign = 0;
 };
-
-std::vector<PetscInt> indices_of(IS is) {
-    PetscInt n;
-    const PetscInt* a;
-    COREMODAL_PETSC(ISGetLocalSize(is, &n));
-    COREMODAL_PETSC(ISGetIndices(is, &a));
-    std::vector<PetscInt> out(a, a + n);
-    COREMODAL_PETSC(ISRestoreIndices(is, &a));
-    return out;
-}
 
 // The eigenvalues omega^2 of the candidates, ascending as they are: what
 // eigensolve/band_edge.hpp's report and count rule reads.
@@ -253,9 +134,15 @@ struct ProjectedGyroscopic::Basis {
     // first ones stand for them.
     std::vector<Candidate> candidates(double spin) const { return family ? family_candidates(spin) : set_candidates(spin); }
 
-    std::vector<Candidate> set_candidates(double spin) const {
+    // K(Omega) in the basis, symmetrised, and its eigen-decomposition: the
+    // linearizations below are written in its eigenvectors.
+    Eigen::SelfAdjointEigenSolver<Dense> stiffness_eigen(double spin) const {
         const Dense K = K0 + spin * spin * K_omega;
-        const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
+        return Eigen::SelfAdjointEigenSolver<Dense>(0.5 * (K + K.transpose()));
+    }
+
+    std::vector<Candidate> set_candidates(double spin) const {
+        const Eigen::SelfAdjointEigenSolver<Dense> ks = stiffness_eigen(spin);
         const Dense& U = ks.eigenvectors();
         const Eigen::VectorXd& lambda = ks.eigenvalues();
         const Eigen::Index n = m();
@@ -294,8 +181,7 @@ struct ProjectedGyroscopic::Basis {
     // K(Omega)^ stands for two rigid modes of the set, (f, -+i f) / sqrt 2,
     // as many as H has eigenvalues there, at most.
     std::vector<Candidate> family_candidates(double spin) const {
-        const Dense K = K0 + spin * spin * K_omega;
-        const Eigen::SelfAdjointEigenSolver<Dense> ks(0.5 * (K + K.transpose()));
+        const Eigen::SelfAdjointEigenSolver<Dense> ks = stiffness_eigen(spin);
         const Dense& U = ks.eigenvectors();
         const Eigen::VectorXd& lambda = ks.eigenvalues();
         const Eigen::Index n = m();
@@ -521,15 +407,15 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
     }
 
     // 3. Every term projected once, and the R factor of the residual's columns.
-    std::vector<Dense> columns{b.V, apply(K0, b.V)};
+    std::vector<Dense> columns{b.V, apply_columns(K0, b.V)};
     b.K0 = b.V.transpose() * columns.back();
     b.K_omega = Dense::Zero(b.m(), b.m());
     if (b.centrifugal) {
-        columns.push_back(apply(K_omega, b.V));
+        columns.push_back(apply_columns(K_omega, b.V));
         b.K_omega = b.V.transpose() * columns.back();
     }
-    columns.push_back(apply(M, b.V));
-    columns.push_back(apply(G, b.V));
+    columns.push_back(apply_columns(M, b.V));
+    columns.push_back(apply_columns(G, b.V));
     b.G = b.V.transpose() * columns.back();
     b.G = b.family ? Dense(0.5 * (b.G + b.G.transpose())) : Dense(0.5 * (b.G - b.G.transpose()));
     Dense W(n_dofs, b.m() * columns.size());
