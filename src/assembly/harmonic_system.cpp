@@ -43,11 +43,12 @@ private:
 
 }  // namespace
 
-HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n) {
+HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n, const std::vector<int>& also_held) {
     ComponentMap map(mesh.n_nodes());
     const auto hold_node = [&](int node) {
         for (int c = 0; c < 3; ++c) map.hold(3 * node + c);
     };
+    for (int node : also_held) hold_node(node);
     const SupportEffects effects = support_effects(scene);
     for (const RigidClamp& c : effects.clamps)
         for (int node : mesh.node_groups.at("clamp_" + c.name)) hold_node(node);

@@ -33,8 +33,9 @@ struct HarmonicSystem {
 };
 
 // The DOFs of wave number n: clamps and rigid bearings held, bonded
-// interfaces tied, the axis conditions, one frame DOF per frame mass in n <= 1.
-HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n);
+// interfaces tied, the axis conditions, one frame DOF per frame mass in n <= 1;
+// `also_held` nodes held too (the coupled level's local harmonics).
+HarmonicDofs harmonic_dofs(const Scene& scene, const SectionMesh& mesh, int n, const std::vector<int>& also_held = {});
 
 // The section cells' stiffness and mass alone (no supports) for the cells
 // `take(cell)` selects, handed to `insert`. Returns their mass (kg).

@@ -240,10 +240,11 @@ void require_symmetric_problem(const OperatorSet& ops) {
 struct Wanted {
     int n_modes = 0;
     std::optional<Verification> empty_band;
+    std::optional<BandCount> band;  // a band's counts, which also prove the solve complete
 };
 
 Wanted wanted_modes(Mat K, Mat M, const SolveRequest& request, long n_dofs, const Progress& progress) {
-    Wanted w{request.n_modes, std::nullopt};
+    Wanted w{request.n_modes, std::nullopt, std::nullopt};
     if (request.lambda_max) {
         const BandCount band = count_band(K, M, request, n_dofs, progress);
         if (band.empty()) {
@@ -251,6 +252,7 @@ Wanted wanted_modes(Mat K, Mat M, const SolveRequest& request, long n_dofs, cons
             return w;
         }
         w.n_modes = static_cast<int>(band.below_upper);
+        w.band = band;
     }
     if (w.n_modes > n_dofs)
         throw InputError("[analysis] modes = " + std::to_string(w.n_modes) + " asks for more modes than the model "
@@ -528,6 +530,14 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
         }();
         const int n_report = reported_count(a.lambdas, wanted, scale);
         if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));
+        // A band's upper edge was counted before the solve: as many modes
+        // found below it as it has eigenvalues there proves them all found.
+        if (w.band && n_report == wanted) {
+            const double edge = *request.lambda_max;
+            const long below_edge = std::count_if(a.lambdas.begin(), a.lambdas.end(), [&](double l) { return l < edge; });
+            if (below_edge == w.band->below_upper)
+                return verified_modes(K, M, a, n_report, edge, w.band->below_upper, below_edge);
+        }
         const double check = check_point(a.lambdas, n_report, scale);
         progress("checking completeness: inertia of K - sigma M at the band edge");
         const long pivots = [&] {

@@ -24,10 +24,10 @@ using namespace coremodal::testing;
 
 namespace {
 
-// The paper core of the chuck tests (1 m, 76 x 15 mm) on spring-layer chucks,
-// each band cut into `segments` pads of `angle_deg` (0: full bands).
-Scene segmented_chucks(int segments, double angle_deg, int around = 16, int along = 24) {
-    Scene s = with_chucks(paper_core(1.0, around, along), InterfaceKind::spring);
+// The paper core of the chuck tests (76 x 15 mm, 1 m unless said) on spring-layer
+// chucks, each band cut into `segments` pads of `angle_deg` (0: full bands).
+Scene segmented_chucks(int segments, double angle_deg, int around = 16, int along = 24, double length = 1.0) {
+    Scene s = with_chucks(paper_core(length, around, along), InterfaceKind::spring);
     for (ChuckSpec& c : s.supports.chucks)
         for (ExpandingElement& e : c.expanding) {
             e.segments = segments;
@@ -42,10 +42,10 @@ Scene at_level(Scene s, const std::string& level) {
     return s;
 }
 
-CoupledModes coupled_at(const Scene& scene, int n_max) {
+CoupledModes coupled_at(const Scene& scene, int n_max, const std::optional<LocalHarmonics>& local = std::nullopt) {
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
-    return solve_coupled(scene, section, materials, n_max, solve_request(scene));
+    return solve_coupled(scene, section, materials, n_max, solve_request(scene), local);
 }
 
 }  // namespace
@@ -102,6 +102,46 @@ TEST_CASE("Coupled level converges in N from above, in shrinking steps", "[coupl
     CHECK(step[2] < step[1]);
     CHECK(step[3] < step[2]);
     CHECK(step[3] < step[1] / 4);  // measured: 0.0139, 0.0039, 0.0017 (eigenvalues, twice the frequency change)
+}
+
+TEST_CASE("Coupled level: harmonics kept near the pads bound the whole ones from above, and show a reach too short",
+          "[coupled]") {
+    // A 2.2 m core (case 10's) on three 60 deg pads per chuck, N = 7.
+    const Scene scene = segmented_chucks(3, 60, 16, 40, 2.2);
+    const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
+    const Attachments attached = attachments(scene);
+    const std::optional<LocalHarmonics> local = local_harmonics(attached, section);
+    REQUIRE(local);
+    LocalHarmonics short_reach = *local;
+    short_reach.reach_2 /= 32;  // an eighth of a diameter at n = 2
+    const CoupledModes whole = coupled_at(scene, 7), kept = coupled_at(scene, 7, local),
+                       cut = coupled_at(scene, 7, short_reach);
+    REQUIRE(whole.verification.complete);
+    REQUIRE(kept.verification.complete);
+    REQUIRE(cut.verification.complete);
+    CHECK(kept.dofs.n_dofs < whole.dofs.n_dofs * 3 / 4);
+    const size_t n = 10;
+    double kept_error = 0, cut_error = 0;
+    for (size_t i = 0; i < n; ++i) {
+        // A Ritz restriction of the whole: never below it.
+        CHECK(kept.eigenvalues[i] >= whole.eigenvalues[i] * (1 - 1e-10));
+        CHECK(cut.eigenvalues[i] >= kept.eigenvalues[i] * (1 - 1e-10));
+        kept_error = std::max(kept_error, kept.eigenvalues[i] / whole.eigenvalues[i] - 1);
+        cut_error = std::max(cut_error, cut.eigenvalues[i] / whole.eigenvalues[i] - 1);
+    }
+    const double kept_edge = zone_edge_amplitude(kept, section, *local, n);
+    const double cut_edge = zone_edge_amplitude(cut, section, short_reach, n);
+    INFO("default reach: eigenvalue error " << kept_error << ", zone edge " << kept_edge << "; short reach: error "
+                                            << cut_error << ", zone edge " << cut_edge);
+    // The default reach leaves the eigenvalues 100 times inside the N tolerance, and says so.
+    CHECK(kept_error < kCoupledTolerance / 100);
+    CHECK(kept_edge < kZoneEdgeTolerance);
+    // A reach too short shows at the zone's edge, and the error it causes is
+    // of the order of the edge amplitude squared (error / edge^2 measured
+    // 1 to 44 over reaches of 1/16 to 1 times the default: docs/harmonic.md).
+    CHECK(cut_edge > kZoneEdgeTolerance);
+    CHECK(cut_error > kept_error);
+    CHECK(cut_error < 100 * cut_edge * cut_edge);
 }
 
 TEST_CASE("Coupled level against the 3D solid on segmented chucks, mode by mode", "[coupled][long]") {

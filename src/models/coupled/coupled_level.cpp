@@ -142,9 +142,9 @@ void add_component(const CoupledComponent& component, const ComponentModes& mode
 }  // namespace
 
 CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
-                           int n_max, const SolveRequest& request) {
+                           int n_max, const SolveRequest& request, const std::optional<LocalHarmonics>& local) {
     CoupledModes all;
-    all.dofs = coupled_dofs(scene, section, n_max);
+    all.dofs = coupled_dofs(scene, section, n_max, local);
     all.verification.complete = true;
     all.verification.check_shift = 1e300;
     // Each independent problem for the modes asked of the whole: every one of
@@ -183,6 +183,25 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
         out.gamma.push_back(all.gamma[k]);
     }
     return out;
+}
+
+double zone_edge_amplitude(const CoupledModes& modes, const SectionMesh& section, const LocalHarmonics& local,
+                           size_t n_wanted) {
+    double worst = 0;
+    for (size_t k = 0; k < n_wanted && k < modes.vectors.size(); ++k) {
+        const std::vector<double>& x = modes.vectors[k];
+        double largest = 0, edge = 0;
+        for (double v : x) largest = std::max(largest, std::abs(v));
+        for (const CoupledBlock& block : modes.dofs.blocks) {
+            if (block.harmonic.n <= local.n_full) continue;
+            for (int node : zone_edge_nodes(section, local, block.harmonic.n))
+                for (int c = 0; c < 3; ++c)
+                    if (const int d = block.dofs.of_component[3 * node + c]; d >= 0)
+                        edge = std::max(edge, std::abs(x[block.offset + d]));
+        }
+        worst = std::max(worst, edge / largest);
+    }
+    return worst;
 }
 
 std::vector<double> coupled_revolved_shape(const RevolvedMesh& revolved, const CoupledModes& modes, size_t k,
@@ -300,6 +319,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     say(shift_scale_text(scene));
     steps_.clear();
     std::optional<CoupledModes> previous, current;
+    std::optional<LocalHarmonics> local = local_harmonics(attached, section);
     for (int n_max = reach + 1;; n_max += reach) {
         if (n_max > kMaxHarmonic)
             throw SolveError("the coupled harmonics have not converged to " + significant(kCoupledTolerance, 2) +
@@ -315,7 +335,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
             step_request.lambda_min = -request.lambda_scale;  // below any rigid mode
             step_request.lambda_max = wanted(*previous, scene, request).back() * (1 + kEdgeMargin);
         }
-        current = solve_coupled(scene, section, materials, n_max, step_request);
+        current = solve_coupled(scene, section, materials, n_max, step_request, local);
         out.timing.factor_and_solve += lap.seconds();
         CoupledStep step{n_max, current->dofs.n_dofs, {}, 0, lap.seconds()};
         const std::vector<double> w = wanted(*current, scene, request);
@@ -325,13 +345,22 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
             for (size_t k = 0; k < w.size(); ++k) n_top = std::max(n_top, current->dominant_n(k));
         MPI_Bcast(&n_top, 1, MPI_INT, 0, PETSC_COMM_WORLD);
         step.max_change = previous ? max_change(wanted(*previous, scene, request), w, request.lambda_scale) : 0;
+        if (local && mpi_rank() == 0) step.zone_edge = zone_edge_amplitude(*current, section, *local, w.size());
+        MPI_Bcast(&step.zone_edge, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
         say("      N = " + std::to_string(n_max) + ": " + std::to_string(step.n_dofs) + " DOFs, " +
             std::to_string(w.size()) + " modes from " +
             significant(step.frequencies_hz.empty() ? 0.0 : step.frequencies_hz.front(), 7) + " Hz" +
-            (previous ? ", largest change " + significant(step.max_change, 2) : std::string()) + ", " +
+            (previous ? ", largest change " + significant(step.max_change, 2) : std::string()) +
+            (local ? ", zone edge " + significant(step.zone_edge, 2) : std::string()) + ", " +
             significant(step.seconds, 2) + " s" + (current->verification.complete ? "" : " (INCOMPLETE)"));
         steps_.push_back(step);
-        if (previous && step.max_change <= kCoupledTolerance && n_max >= n_top + reach) break;
+        const bool zone_enough = step.zone_edge <= kZoneEdgeTolerance;
+        if (previous && step.max_change <= kCoupledTolerance && n_max >= n_top + reach && zone_enough) break;
+        if (local) {
+            // The spaces stay nested: the whole harmonics and the reach only grow.
+            local->n_full = std::max(local->n_full, n_top);
+            if (!zone_enough) local->reach_2 *= 2;
+        }
         previous = std::move(current);
     }
     out.verification = current->verification;
@@ -357,6 +386,13 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
         "harmonics n = 0 ... " + std::to_string(current->dofs.n_max) + ", N grown in steps of " +
         std::to_string(reach) + " until one step moved no wanted frequency by more than " +
         significant(kCoupledTolerance, 2) + " (last step: " + significant(steps_.back().max_change, 2) + ")");
+    if (local)
+        out.assumptions.push_back(
+            "coupled harmonics: n = 0 ... " + std::to_string(local->n_full) + " on the whole section, n >= " +
+            std::to_string(local->n_full + 1) + " only within " + significant(local->reach(2) * 1e3, 3) +
+            " mm x 2/n of the pads along z (what the pads stir there dies out with distance; held beyond): the "
+            "largest amplitude at that edge is " + significant(steps_.back().zone_edge, 2) + " of the mode's largest (at most " +
+            significant(kZoneEdgeTolerance, 2) + ", else the reach doubles)");
     stage.lap();
 
     // 6. Name every mode on the revolved mesh with the solid's classifier; effective masses from the rigid fields.

@@ -35,6 +35,11 @@ namespace coremodal {
 // the step (docs/harmonic.md). 1e-4 leaves ~1.5e-4, half the solid's
 // circumferential error at its default 32 elements around (3e-4 on case 10).
 inline constexpr double kCoupledTolerance = 1e-4;
+// The largest amplitude a local harmonic may have at its zone's edge,
+// relative to the mode's largest, before the reach is doubled. The
+// eigenvalue's error measured 1 to 44 times this squared (docs/harmonic.md,
+// "Local harmonics"): below 4e-6, 25 times inside kCoupledTolerance.
+inline constexpr double kZoneEdgeTolerance = 3e-4;
 
 // The verified modes of the coupled problem truncated at N (values on rank 0).
 struct CoupledModes {
@@ -53,7 +58,17 @@ struct CoupledModes {
 };
 
 CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
-                           int n_max, const SolveRequest& request);
+                           int n_max, const SolveRequest& request,
+                           const std::optional<LocalHarmonics>& local = std::nullopt);
+
+// The largest displacement of the first `n_wanted` modes on the edge of a
+// local harmonic's zone (zone_edge_nodes of every block n > n_full),
+// relative to the mode's largest anywhere. The restriction holds the nodes
+// beyond that edge at zero: the energy it misses, and so the eigenvalue's
+// error, is of the order of this amplitude squared (measured in
+// docs/harmonic.md, "Local harmonics").
+double zone_edge_amplitude(const CoupledModes& modes, const SectionMesh& section, const LocalHarmonics& local,
+                           size_t n_wanted);
 
 // Node-major (x, y, z) displacements of every revolved node (frame nodes
 // too) for mode k: the sum over the blocks of revolved_field.
@@ -67,6 +82,7 @@ struct CoupledStep {
     std::vector<double> frequencies_hz;  // the wanted modes'
     double max_change = 0;  // largest relative change of a wanted frequency from the step before (0 for the first)
     double seconds = 0;
+    double zone_edge = 0;  // zone_edge_amplitude of the local harmonics (0 without)
 };
 
 class CoupledLevel : public ModelLevel {

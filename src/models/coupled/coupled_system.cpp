@@ -96,12 +96,56 @@ int CoupledDofs::block_of(int n, Family family) const {
     return -1;
 }
 
-CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max) {
+std::optional<LocalHarmonics> local_harmonics(const Attachments& attached, const SectionMesh& mesh) {
+    if (attached.web || attached.pads.empty()) return std::nullopt;
+    double r_max = 0;
+    for (const auto& [r, z] : mesh.nodes) r_max = std::max(r_max, r);
+    LocalHarmonics local{1, {}, kLocalReach * 2 * r_max};
+    for (const PadLayer& pad : attached.pads) local.pads.push_back(pad.zone);
+    return local;
+}
+
+namespace {
+
+std::vector<bool> is_far(const SectionMesh& mesh, const LocalHarmonics& local, int n) {
+    std::vector<bool> far(mesh.n_nodes());
+    const double reach = local.reach(n);
+    for (int node = 0; node < mesh.n_nodes(); ++node) {
+        const double z = mesh.nodes[node][1];
+        far[node] = std::none_of(local.pads.begin(), local.pads.end(), [&](const ZRange& pad) { return pad.holds(z, reach); });
+    }
+    return far;
+}
+
+}  // namespace
+
+std::vector<int> far_nodes(const SectionMesh& mesh, const LocalHarmonics& local, int n) {
+    const std::vector<bool> far = is_far(mesh, local, n);
+    std::vector<int> out;
+    for (int node = 0; node < mesh.n_nodes(); ++node)
+        if (far[node]) out.push_back(node);
+    return out;
+}
+
+std::vector<int> zone_edge_nodes(const SectionMesh& mesh, const LocalHarmonics& local, int n) {
+    const std::vector<bool> far = is_far(mesh, local, n);
+    std::vector<bool> edge(mesh.n_nodes(), false);
+    for (const auto& cell : mesh.cells)
+        if (std::any_of(cell.begin(), cell.end(), [&](int node) { return far[node]; }))
+            for (int node : cell) edge[node] = edge[node] || !far[node];
+    std::vector<int> out;
+    for (int node = 0; node < mesh.n_nodes(); ++node)
+        if (edge[node]) out.push_back(node);
+    return out;
+}
+
+CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max,
+                         const std::optional<LocalHarmonics>& local) {
     const Scene band = with_full_bands(scene);
     CoupledDofs out;
     out.n_max = n_max;
     for (int n = 0; n <= n_max; ++n) {
-        const HarmonicDofs dofs = harmonic_dofs(band, mesh, n);
+        const HarmonicDofs dofs = harmonic_dofs(band, mesh, n, local && n > local->n_full ? far_nodes(mesh, *local, n) : std::vector<int>{});
         for (Family f : {Family::cos, Family::sin}) {
             if (n == 0 && f == Family::sin) continue;
             out.blocks.push_back({{n, f}, dofs, out.n_dofs});

@@ -90,7 +90,32 @@ struct CoupledDofs {
     int block_of(int n, Family family) const;
 };
 
-CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max);
+// Where the harmonics above `n_full` are kept: near the pads. A pad layer's
+// load on the bore is self-equilibrated in every n >= 2, so the harmonics it
+// stirs die out along z within about a diameter (Saint-Venant; faster the
+// higher n: a harmonic n of a solid of revolution decays like e^{-n z / r}).
+// Block n > n_full keeps the nodes within reach(n) of a pad layer along z
+// and holds the rest: a Ritz restriction, so every eigenvalue stays an upper
+// bound and growing n_full or the reach keeps the spaces nested. Whether
+// the reach sufficed is checked on each solution (zone_edge_amplitude).
+struct LocalHarmonics {
+    int n_full = 1;            // n = 0, 1 (the beam's modes) are whole
+    std::vector<ZRange> pads;  // z of every pad layer
+    double reach_2 = 0;        // m, the reach of n = 2; n keeps 2/n of it
+    double reach(int n) const { return reach_2 * 2.0 / n; }
+};
+// Local harmonics for pads alone (the web's line runs the roll's length:
+// none), reaching kLocalReach diameters of the section's largest radius at n = 2.
+inline constexpr double kLocalReach = 4;
+std::optional<LocalHarmonics> local_harmonics(const Attachments& attached, const SectionMesh& mesh);
+
+// The nodes block n holds beyond the reach, and the kept nodes of the cells
+// the reach cuts (where the restriction's error would show).
+std::vector<int> far_nodes(const SectionMesh& mesh, const LocalHarmonics& local, int n);
+std::vector<int> zone_edge_nodes(const SectionMesh& mesh, const LocalHarmonics& local, int n);
+
+CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max,
+                         const std::optional<LocalHarmonics>& local = std::nullopt);
 
 // The blocks split into the independent problems the attachments leave: the
 // connected components of Attachments::couple (three pads: {0, 3, 6, ...} of both
