@@ -5,6 +5,7 @@
 
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
+#include "common/blas_threads.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"
 #include "eigensolve/tolerances.hpp"
@@ -318,6 +319,10 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));
     steps_.clear();
+    // The coupled sets' factors have small fronts (the section is 2D): OpenBLAS's
+    // second thread costs more than it saves (case 10, 2026-11-26, load ~1:
+    // 16.8 s wall and 16.4 s CPU on one thread, 19.9 s and 32.1 s on two).
+    const SingleThreadBlas one_thread;
     std::optional<CoupledModes> previous, current;
     std::optional<LocalHarmonics> local = local_harmonics(attached, section);
     for (int n_max = reach + 1;; n_max += reach) {
