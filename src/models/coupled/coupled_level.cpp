@@ -207,14 +207,55 @@ double zone_edge_amplitude(const CoupledModes& modes, const SectionMesh& section
 
 std::vector<double> coupled_revolved_shape(const RevolvedMesh& revolved, const CoupledModes& modes, size_t k,
                                            const std::vector<int>& frame_nodes) {
-    std::vector<double> u(3 * static_cast<size_t>(revolved.mesh.n_nodes()), 0.0);
     const std::vector<double>& x = modes.vectors.at(k);
-    for (int n = 0; n <= modes.dofs.n_max; ++n) {
-        const int bc = modes.dofs.block_of(n, Family::cos), bs = modes.dofs.block_of(n, Family::sin);
-        const CoupledBlock& c = modes.dofs.blocks.at(bc);
-        const std::vector<double> sin_values = bs < 0 ? std::vector<double>{} : block_values(x, modes.dofs.blocks[bs]);
-        const std::vector<double> part = revolved_field(revolved, c.dofs, n, block_values(x, c), sin_values, frame_nodes);
-        for (size_t i = 0; i < u.size(); ++i) u[i] += part[i];
+    const CoupledDofs& dofs = modes.dofs;
+    const auto value = [&](int b, int component) {
+        if (b < 0) return 0.0;
+        const CoupledBlock& block = dofs.blocks[b];
+        const int d = block.dofs.of_component[component];
+        return d < 0 ? 0.0 : x[block.offset + d];
+    };
+    // Every node's sum over n in one pass, cos(n theta) and sin(n theta) by
+    // the angle-addition recurrence (revolved_field, block by block, took
+    // four cosines and sines per node and block: most of the classify stage).
+    std::vector<int> cos_block(dofs.n_max + 1), sin_block(dofs.n_max + 1);
+    for (int n = 0; n <= dofs.n_max; ++n) {
+        cos_block[n] = dofs.block_of(n, Family::cos);
+        sin_block[n] = dofs.block_of(n, Family::sin);
+    }
+    std::vector<double> u(3 * static_cast<size_t>(revolved.mesh.n_nodes()), 0.0);
+    for (size_t i = 0; i < revolved.section_node.size(); ++i) {
+        const int s = revolved.section_node[i];
+        const double c1 = std::cos(revolved.theta[i]), s1 = std::sin(revolved.theta[i]);
+        // n = 0: the torsion V turns with -1 (revolved_field's sign).
+        const int b0 = cos_block[0];
+        double ur = value(b0, 3 * s), ut = -value(b0, 3 * s + 1), uz = value(b0, 3 * s + 2);
+        double cn = 1, sn = 0;
+        for (int n = 1; n <= dofs.n_max; ++n) {
+            const double c = cn * c1 - sn * s1;
+            sn = sn * c1 + cn * s1;
+            cn = c;
+            const int bc = cos_block[n], bs = sin_block[n];
+            ur += value(bc, 3 * s) * cn + value(bs, 3 * s) * sn;
+            ut += -value(bc, 3 * s + 1) * sn + value(bs, 3 * s + 1) * cn;
+            uz += value(bc, 3 * s + 2) * cn + value(bs, 3 * s + 2) * sn;
+        }
+        u[3 * i] = ur * c1 - ut * s1;
+        u[3 * i + 1] = ur * s1 + ut * c1;
+        u[3 * i + 2] = uz;
+    }
+    // Frame masses: translations in n = 1 (x in cos, y in sin), axial in n = 0.
+    for (size_t f = 0; f < frame_nodes.size(); ++f) {
+        if (frame_nodes[f] < 0) continue;
+        const size_t i = 3 * static_cast<size_t>(frame_nodes[f]);
+        const auto frame_value = [&](int n, Family family) {
+            const int b = dofs.block_of(n, family);
+            if (b < 0 || dofs.blocks[b].dofs.frame[f] < 0) return 0.0;
+            return x[dofs.blocks[b].offset + dofs.blocks[b].dofs.frame[f]];
+        };
+        u[i] = frame_value(1, Family::cos);
+        u[i + 1] = frame_value(1, Family::sin);
+        u[i + 2] = frame_value(0, Family::cos);
     }
     return u;
 }
