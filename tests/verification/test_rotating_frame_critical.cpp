@@ -167,4 +167,10 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
                            [&](const std::string& n) { return n.find(words) != std::string::npos; });
     };
     CHECK(noted("critical speeds from the pencil (exact)"));
+
+    // One speed above the critical speed leaves nothing to sweep: an error
+    // that names the critical speed, before the modes at rest are solved.
+    rotation.speeds_hz = {1.3 * f1};
+    CHECK_THROWS_WITH(run_campbell(s, rotation), Catch::Contains("every [rotation] speed lies at or above") &&
+                                                     Catch::Contains("forward critical speed of order 1"));
 }
