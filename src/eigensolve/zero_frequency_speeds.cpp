@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "eigensolve/petsc_algebra.hpp"
+#include "eigensolve/projection_basis.hpp"  // norm_1
 
 #include <slepceps.h>
 
@@ -39,12 +40,6 @@ struct Pencil {
         norm_B = norm_1(B);
     }
     Mat K() const { return stiffness.get(); }
-
-    static double norm_1(Mat A) {
-        PetscReal n;
-        COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
-        return n;
-    }
 };
 
 // neg(K + s K_Omega) = neg(K - s B).
