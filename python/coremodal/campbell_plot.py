@@ -46,6 +46,9 @@ def draw(folder: Path) -> Path:
     FigureCanvasAgg(fig)
     ax = fig.add_subplot(1, 1, 1)
     speeds = sorted({s for points in tracks.values() for s, _, _ in points})
+    # A crossing of the pencil (co-rotating coordinates) may lie beyond the
+    # sweep's last speed, which stops below it: the axis reaches it.
+    speeds.append(max([speeds[-1]] + [float(c["speed_rpm"]) for c in critical]))
     # Up to where the highest excitation line ends, and at least the first
     # elastic mode: the crossings, not every mode of the sweep.
     highest = max(f for points in tracks.values() for _, f, _ in points)

@@ -54,3 +54,15 @@ def test_the_command_line_draws_and_reports_a_wrong_folder(tmp_path: Path) -> No
                          capture_output=True, text=True)
     assert bad.returncode == 1
     assert "coremodal: error:" in bad.stderr
+
+
+def test_a_pencil_crossing_beyond_the_sweep_is_drawn(tmp_path: Path) -> None:
+    """Co-rotating coordinates: the sweep stops below the first forward
+    critical speed, which the pencil reports beyond the sweep's last speed
+    (critical_speeds.csv with its source column)."""
+    folder = write_campbell(tmp_path / "c")
+    (folder / "critical_speeds.csv").write_text(
+        "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label,refined,interpolated_speed_rpm,source\n"
+        "2,1500,25,50,8.3,1,BW,bending n=1 m=0,true,1500,sweep\n"
+        "1,5200,86.7,86.7,28.9,0,FW,bending n=1 m=0,true,5200,pencil\n")
+    assert draw(folder).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

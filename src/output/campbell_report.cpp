@@ -38,12 +38,12 @@ std::string campbell_rows(const CampbellResult& r) {
 
 std::string critical_rows(const CampbellResult& r) {
     std::string out = "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label,refined,"
-                      "interpolated_speed_rpm\n";
+                      "interpolated_speed_rpm,source\n";
     for (const WhirlCrossing& c : r.critical)
         out += std::to_string(c.order) + "," + num(c.speed_hz * kRpmPerHz) + "," + num(c.speed_hz) + "," +
                num(c.frequency_hz) + "," + num(c.web_speed_m_s) + "," + std::to_string(c.track) + "," +
                whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "," + (c.refined ? "true" : "false") +
-               "," + num(c.interpolated_speed_hz * kRpmPerHz) + "\n";
+               "," + num(c.interpolated_speed_hz * kRpmPerHz) + "," + crossing_source_name(c.source) + "\n";
     return out;
 }
 
@@ -52,7 +52,8 @@ toml::table critical_json(const WhirlCrossing& c) {
                        {"speed_hz", c.speed_hz},    {"frequency_hz", c.frequency_hz},
                        {"web_speed_m_s", c.web_speed_m_s}, {"track", c.track},
                        {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)},
-                       {"refined", c.refined}, {"interpolated_speed_rpm", c.interpolated_speed_hz * kRpmPerHz}};
+                       {"refined", c.refined}, {"interpolated_speed_rpm", c.interpolated_speed_hz * kRpmPerHz},
+                       {"source", crossing_source_name(c.source)}};
 }
 
 toml::table safe_speed_json(const CampbellResult& r) {
@@ -78,7 +79,8 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
                   {"rotation", toml::table{{"speeds_rpm", speeds}, {"excitation_orders", orders},
                                            {"roll_outer_diameter_m", r.roll_outer_diameter},
                                            {"from_web_speed", r.from_web_speed},
-                                           {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening}}},
+                                           {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening},
+                                           {"sweep_end", r.sweep_end}}},
                   {"critical_speeds", critical},
                   {"safe_speed", safe_speed_json(r)},
                   {"verification", toml::table{{"max_relative_residual", r.max_relative_residual},
@@ -92,23 +94,31 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
 
 std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
 
+bool from_sweep(const WhirlCrossing& c) { return c.source == CrossingSource::sweep; }
+
 std::string refinement_sentence(const CampbellResult& r) {
-    if (r.critical.empty()) return "";
-    const long refined = std::count_if(r.critical.begin(), r.critical.end(), [](const WhirlCrossing& c) { return c.refined; });
-    std::string out = "Critical speeds: " + std::to_string(refined) + " of " + std::to_string(r.critical.size()) +
+    const long swept = std::count_if(r.critical.begin(), r.critical.end(), from_sweep);
+    const long exact = static_cast<long>(r.critical.size()) - swept;
+    const std::string pencil = exact == 0 ? "" : std::to_string(exact) + " critical speeds from the pencil of zero "
+                                                 "rotating-frame frequency (exact, counted by inertia; see the notes).\n\n";
+    if (swept == 0) return pencil;
+    const long refined = std::count_if(r.critical.begin(), r.critical.end(),
+                                       [](const WhirlCrossing& c) { return from_sweep(c) && c.refined; });
+    std::string out = pencil + "Critical speeds of the sweep: " + std::to_string(refined) + " of " + std::to_string(swept) +
                       " refined by solving inside the sweep's bracket until it is narrower than " +
                       significant(kCrossingSpeedTolerance, 1) + " of the speed";
-    if (refined < long(r.critical.size())) out += "; the others are linear interpolations (the track was lost inside the bracket)";
+    if (refined < swept) out += "; the others are linear interpolations (the track was lost inside the bracket)";
     return out + ".\n\n";
 }
 
 std::string critical_table(const CampbellResult& r) {
     if (r.critical.empty()) return "No excitation line crosses a natural frequency within the sweep.\n";
-    std::string out = "| order | speed | web speed at Dp | frequency | whirl | mode (at rest) |\n|---|---|---|---|---|---|\n";
+    std::string out = "| order | speed | web speed at Dp | frequency | whirl | mode (at rest) | from |\n"
+                      "|---|---|---|---|---|---|---|\n";
     for (const WhirlCrossing& c : r.critical)
         out += "| " + std::to_string(c.order) + " | " + rpm(c.speed_hz) + " | " + significant(c.web_speed_m_s, 4) +
                " m/s | " + significant(c.frequency_hz, 5) + " Hz | " + whirl_word(c.whirl) + " | " +
-               label_text(c.label) + " |\n";
+               label_text(c.label) + " | " + (from_sweep(c) ? "sweep" : "pencil (exact)") + " |\n";
     return out;
 }
 
@@ -158,7 +168,8 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     out << ".\n\n";
     for (const std::string& n : r.notes) out << "- " << n << "\n";
     out << "\n## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
-           "(linear between the sweep's speeds), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
+           "(between the sweep's speeds, refined by solving inside the bracket; in co-rotating coordinates also the exact "
+           "speeds of zero rotating-frame frequency, \"pencil\"), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
         << critical_table(r) << "\n" << safe_speed_lines(r) << "\n";
     out << "## Modes at " << rpm(r.points.back().speed_hz) << "\n\n" << last_speed_table(r) << "\n";
     out << "## Diagram\n\n";
@@ -180,7 +191,9 @@ std::string campbell_console_summary(const Scene& scene, const CampbellResult& r
         << " critical speeds, max residual " << significant(r.max_relative_residual, 2) << "\n";
     for (const WhirlCrossing& c : r.critical)
         out << "  order " << c.order << ": " << rpm(c.speed_hz) << " (" << significant(c.web_speed_m_s, 4) << " m/s)  "
-            << significant(c.frequency_hz, 5) << " Hz " << whirl_word(c.whirl) << " " << label_text(c.label) << "\n";
+            << significant(c.frequency_hz, 5) << " Hz " << whirl_word(c.whirl) << " " << label_text(c.label)
+            << (from_sweep(c) ? "" : " (pencil, exact)") << "\n";
+    if (!r.sweep_end.empty()) out << "  " << r.sweep_end << "\n";
     out << safe_speed_lines(r);
     return out.str();
 }

@@ -1,5 +1,7 @@
 #include "analyses/campbell/campbell.hpp"
 
+#include "analyses/campbell/zero_frequency_crossings.hpp"
+
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"
@@ -362,8 +364,16 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
                               {.centrifugal_stiffening = rotation.centrifugal_stiffening});
     out.notes = solid_notes(rotation, solid);
     out.n_dofs = solid.n_dofs();
-    sweep_from_rest(scene, rotation, reported, solid.modes_at(0.0), [&](double speed) { return solid.modes_at(speed); },
-                    out);
+    // Co-rotating coordinates: the exact critical speeds of the pencil first,
+    // and a sweep that ends below the lowest (zero_frequency_crossings.hpp).
+    ZeroFrequencyPlan plan{rotation, {}, {}, {}};
+    if (solid.rotating_frame()) plan = plan_zero_frequency_sweep(solid, rotation, out.roll_outer_diameter);
+    sweep_from_rest(scene, plan.swept, reported, solid.modes_at(0.0),
+                    [&](double speed) { return solid.modes_at(speed); }, out);
+    merge_pencil_crossings(out, plan.crossings);
+    out.notes.insert(out.notes.end(), plan.notes.begin(), plan.notes.end());
+    out.sweep_end = plan.sweep_end;
+    if (!plan.sweep_end.empty()) out.notes.push_back(plan.sweep_end);
     if (solid.rotating_frame())
         out.notes.push_back("the dominant harmonic's share of a mode's energy on the roll's surface, the smallest "
                             "over every mode reported at every speed above 0: " +

@@ -60,6 +60,11 @@ constexpr int kMaxRefinementSolves = 30;
 // regula falsi with the Illinois modification on g = f_track - order f_rot,
 // the track followed by MAC from the bracket's ends) until the bracket is
 // narrower than kCrossingSpeedTolerance relative to the speed.
+// Where a crossing comes from: the sweep (bracketed between two speeds,
+// then refined or interpolated), or, in co-rotating coordinates, the
+// pencil of the speeds of zero rotating-frame frequency (exact; no track).
+enum class CrossingSource { sweep, pencil };
+
 struct WhirlCrossing {
     int order = 1;
     int track = 0;
@@ -72,7 +77,11 @@ struct WhirlCrossing {
     double interpolated_speed_hz = 0;            // linear interpolation between the sweep's two speeds
     bool refined = false;     // false: the interpolation (the track was lost inside the bracket)
     int refinement_solves = 0;
+    CrossingSource source = CrossingSource::sweep;  // pencil: track 0, bracket and interpolation = speed_hz
 };
+
+// "sweep" or "pencil", as the tables write it.
+const char* crossing_source_name(CrossingSource s);
 
 struct CampbellResult {
     std::vector<CampbellPoint> points;       // the scene's speeds, ascending
@@ -90,6 +99,7 @@ struct CampbellResult {
     double solve_seconds = 0;
     std::vector<std::string> effects;        // the terms included
     std::vector<std::string> notes;          // what is included and what is not
+    std::string sweep_end;                   // where the sweep stopped short of the scene's speeds, and why; or empty
     // The first order-1 crossing, if any.
     const WhirlCrossing* first_order_one() const;
 };

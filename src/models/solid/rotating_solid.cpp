@@ -4,6 +4,7 @@
 #include "assembly/petsc_system.hpp"
 #include "common/error.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
+#include "eigensolve/zero_frequency_speeds.hpp"
 #include "models/choose.hpp"
 #include "models/part_materials.hpp"
 #include "models/solid/centrifugal_prestress.hpp"
@@ -54,6 +55,12 @@ double circularity(const std::vector<double>& re, const std::vector<double>& im,
     }
     return norm > 0 ? 2 * cross / norm : 0.0;
 }
+
+// Two speeds of zero rotating-frame frequency closer than this share of the
+// speed are one (the two members of a pair of a scene symmetric about z,
+// equal to the pencil solver's tolerance; split pairs of an unsymmetric
+// scene lie far further apart, and each is its own crossing).
+constexpr double kSameZeroFrequencySpeed = 1e-6;
 
 double squared_norm(const std::vector<double>& v) {
     double s = 0;
@@ -203,6 +210,41 @@ std::vector<RotatingMode> RotatingSolid::rotating_frame_modes(const GyroscopicMo
         modes.push_back(std::move(c.mode));
     }
     return modes;
+}
+
+// The null vectors of the pencil (eigensolve/zero_frequency_speeds.hpp),
+// named on the mesh. A null vector is real (K(Omega) is), so its harmonics
+// k and -k carry equal energy and only |k| is read: the mode stands still
+// in the rotating frame, and seen from the stationary one it moves at
+// 0 - k f_rot, forward for either sign (rotating_frame_modes: -k (0 - k
+// f_rot) = k^2 f_rot > 0), at |k| f_rot.
+ZeroFrequencyModes RotatingSolid::zero_frequency_modes(double max_speed_hz) const {
+    COREMODAL_ASSERT(frame_ == SpinFrame::rotating);
+    const SolveRequest request = solve_request(scene_);
+    const ZeroFrequencySpeeds pencil =
+        zero_frequency_speeds(operators_, 2 * M_PI * max_speed_hz, gyroscopic_rigid_omega(request), request);
+    ZeroFrequencyModes out;
+    out.counted = pencil.counted;
+    out.max_speed_hz = max_speed_hz;
+    for (const ZeroFrequencySpeed& z : pencil.speeds) {
+        const double speed_hz = z.spin / (2 * M_PI);
+        if (!out.modes.empty() && speed_hz - out.modes.back().speed_hz <= kSameZeroFrequencySpeed * speed_hz) {
+            ++out.modes.back().multiplicity;
+            out.modes.back().relative_residual = std::max(out.modes.back().relative_residual, z.relative_residual);
+            continue;
+        }
+        const std::vector<double> re = gather_node_displacements(z.x, mesh_, dofs_), im(re.size(), 0.0);
+        const WaveContent wave = dominant_harmonic(re, im, mesh_, surface_nodes_, max_wave_number_);
+        ZeroFrequencyMode m;
+        m.speed_hz = speed_hz;
+        m.wave_number = std::abs(wave.k);
+        m.share = std::min(1.0, wave.k == 0 ? wave.share : 2 * wave.share);
+        const double omega_stat = 2 * M_PI * m.wave_number * speed_hz;
+        m.label = classifier_->classify(re, omega_stat * omega_stat, lambda_scale_);
+        m.relative_residual = z.relative_residual;
+        out.modes.push_back(std::move(m));
+    }
+    return out;
 }
 
 }  // namespace coremodal

@@ -50,6 +50,28 @@ struct SolidSpinOptions {
     bool centrifugal_stiffening = false;
 };
 
+// A speed where a mode's rotating-frame frequency is zero (rotating frame
+// only; eigensolve/zero_frequency_speeds.hpp): there the mode stands still
+// on the spinning roll, and seen from the stationary frame it is a forward
+// wave of frequency |k| f_rot, k its dominant harmonic: a forward crossing
+// of the excitation line of order |k| (k = 0: a static divergence).
+struct ZeroFrequencyMode {
+    double speed_hz = 0;  // f_rot
+    int wave_number = 0;  // |k|
+    // The energy share of harmonics +k and -k together on the roll's
+    // surface (the null vector is real, so the two carry equal energy).
+    double share = 1;
+    ModeLabel label;
+    int multiplicity = 1;  // equal speeds (a pair of a scene symmetric about z) counted once
+    double relative_residual = 0;
+};
+
+struct ZeroFrequencyModes {
+    std::vector<ZeroFrequencyMode> modes;  // ascending speed
+    long counted = 0;                      // by inertia, multiplicity included
+    double max_speed_hz = 0;
+};
+
 class RotatingSolid {
 public:
     // Meshes and assembles the scene with its gyroscopic term (and the
@@ -64,6 +86,12 @@ public:
     // numbers per mode and speed, not the whole mesh's.
     std::vector<RotatingMode> modes_at(double speed_hz) const;
 
+    // Rotating frame: every speed below max_speed_hz where a mode's
+    // rotating-frame frequency is zero, exact (the pencil (K, M_P -
+    // K_sigma1)) and proven complete by the inertia of K(Omega_max).
+    ZeroFrequencyModes zero_frequency_modes(double max_speed_hz) const;
+
+    const OperatorSet& operators() const { return operators_; }
     long n_dofs() const { return dofs_.n_dofs; }
     double max_relative_residual() const { return max_residual_; }
     // The rigid motions the centrifugal static solve pinned (a free scene), for the run's notes.

@@ -1,0 +1,52 @@
+// Critical speeds of a Campbell sweep in co-rotating coordinates (the solid
+// level's rotating frame, models/solid/rotating_frame.hpp; docs/rotation.md
+// "Critical speeds in co-rotating coordinates").
+//
+// Above the lowest speed where a mode's rotating-frame frequency is zero,
+// K(Omega) = K + Omega^2 (K_sigma1 - M_P) is indefinite and the gyroscopic
+// solver cannot prove a speed's modes complete (it refuses). Those speeds
+// are themselves critical speeds, exactly: the eigenvalues Omega^2 of the
+// pencil (K, M_P - K_sigma1), each a forward crossing of the excitation
+// line of order |k| (k the null vector's dominant harmonic). So before the
+// sweep the pencil is solved up to the scene's last speed; the sweep is
+// ended below its lowest speed, and its crossings are reported beside the
+// sweep's own.
+#pragma once
+
+#include "analyses/campbell/campbell.hpp"
+#include "models/solid/rotating_solid.hpp"
+#include "scene/rotation_spec.hpp"
+
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// The sweep ends below this share of the lowest speed of zero rotating-frame
+// frequency: there a forward whirl's rotating-frame frequency is about
+// (1 - share) of its own, and nearer it would fall under the gyroscopic
+// solver's rigid line (1 % of the first frequency's scale), where a mode is
+// reported at 0 Hz.
+constexpr double kSweepEndBelowZeroFrequency = 0.98;
+// A sweep crossing of the same order, forward, within this share of a
+// pencil crossing's speed is the same crossing; the pencil's (exact) is kept.
+constexpr double kSameCrossingSpeed = 1e-3;
+
+struct ZeroFrequencyPlan {
+    RotationSpec swept;                  // the scene's speeds below the limit (all of them when none is below)
+    std::vector<WhirlCrossing> crossings; // source pencil, orders among rotation.excitation_orders
+    std::vector<std::string> notes;      // the pencil's count, and its speeds of other orders
+    std::string sweep_end;               // empty when the sweep keeps every speed
+};
+
+// The pencil up to the scene's last speed and the sweep that stays below its
+// lowest speed. SolveError when no speed of the scene above 0 is left to
+// sweep (naming the critical speed).
+ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const RotationSpec& rotation,
+                                            double roll_outer_diameter);
+
+// Adds the pencil's crossings to out.critical (the sweep's), dropping a
+// sweep crossing that is the same one, ascending by speed.
+void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil);
+
+}  // namespace coremodal
