@@ -29,11 +29,11 @@ CampbellResult pencil_and_sweep() {
     r.roll_outer_diameter = 0.106;
     r.points = {{0.0, {{1, 50.0, Whirl::none, {}, 1e-12}}}, {40.0, {{1, 50.1, Whirl::forward, {}, 1e-12}}}};
     r.speeds_at_rest.not_given = "a test";
-    WhirlCrossing sweep{2, 1, Whirl::backward};
+    WhirlCrossing sweep{2, 1, Whirl::backward, {}};
     sweep.speed_hz = sweep.interpolated_speed_hz = 25.0;
     sweep.frequency_hz = 50.0;
     sweep.refined = true;
-    WhirlCrossing pencil{1, 0, Whirl::forward};
+    WhirlCrossing pencil{1, 0, Whirl::forward, {}};
     pencil.speed_hz = pencil.interpolated_speed_hz = 50.5;
     pencil.frequency_hz = 50.5;
     pencil.source = CrossingSource::pencil;
