@@ -4,10 +4,13 @@
 #include <catch2/catch.hpp>
 #include <slepcsys.h>
 
+#include "common/mpi_start.hpp"
+
 int main(int argc, char** argv) {
     // PETSc must not see Catch's options; give it none.
     int petsc_argc = 1;
     char** petsc_argv = argv;
+    coremodal::prefer_isolated_mpi_singleton();  // common/mpi_start.hpp: why
     SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr);
     PetscPopSignalHandler();  // let Catch report crashes
     const int result = Catch::Session().run(argc, argv);

@@ -9,6 +9,7 @@
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
 #include "common/join.hpp"
+#include "common/mpi_start.hpp"
 #include "common/petsc_handle.hpp"
 #include "common/signals.hpp"
 #include "scene/case_schema.hpp"  // nearest: "did you mean"
@@ -141,6 +142,7 @@ int main(int argc, char** argv) {
     auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
+    coremodal::prefer_isolated_mpi_singleton();
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
