@@ -24,21 +24,6 @@ constexpr double kClearance = 0.5e-3;  // m, as with_chucks
 constexpr double kBore = 0.038;        // m, radius
 constexpr double kInserted = 0.11;     // m
 
-OrthotropicMaterial stiffened(OrthotropicMaterial m, double factor) {
-    for (double* E : {&m.E_r, &m.E_theta, &m.E_z, &m.G_rtheta, &m.G_rz, &m.G_thetaz}) *E *= factor;
-    return m;
-}
-
-// Both chucks not expanded: one-sided contact, k_n0 given (Pa/m).
-Scene not_expanded(Scene s, double k0) {
-    s = with_chucks(std::move(s), InterfaceKind::spring, k0);
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.interface.expanded = false;
-        c.interface.contact = ContactKind::one_sided;
-    }
-    return s;
-}
-
 struct StaticRun {
     GravityContact contact;
     double roll_weight = 0;
@@ -54,24 +39,8 @@ StaticRun static_contact(const Scene& s) {
             s.roll_mass() * kStandardGravity};
 }
 
-// Rigid core on a rigid chuck, dropped by delta: interpenetration
-// d(psi) = delta cos(psi) - c (psi from the top), the stack law's pressure,
-// and its upward force over the inserted length (N).
-double rigid_force(double delta, const StackContact& law) {
-    const int n = 20000;
-    double F = 0;
-    for (int i = 0; i < n; ++i) {
-        const double psi = -M_PI / 2 + M_PI * (i + 0.5) / n;
-        F += law.pressure(delta * std::cos(psi) - kClearance) * std::cos(psi) * M_PI / n;
-    }
-    return F * kBore * kInserted;
-}
-
-// The drop at which each chuck carries `load` (bisection: the force rises with the drop).
 double rigid_drop(double load, const StackContact& law) {
-    double lo = kClearance, hi = 2 * kClearance;
-    for (int i = 0; i < 200; ++i) (rigid_force((lo + hi) / 2, law) < load ? lo : hi) = (lo + hi) / 2;
-    return (lo + hi) / 2;
+    return rigid_contact_drop(load, kClearance, kBore, kInserted, law);
 }
 
 double f1_of(const Scene& s) {

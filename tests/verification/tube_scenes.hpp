@@ -7,10 +7,12 @@
 #include "effects/web.hpp"
 #include "geometry/tube_model.hpp"
 #include "mesh/gmsh_mesh.hpp"
+#include "scene/chuck_contact.hpp"
 #include "scene/scene.hpp"
 #include "support/test_materials.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -140,6 +142,44 @@ inline Scene clamped_over_bands(Scene s) {
     s.supports.kind = SupportKind::clamped;
     s.supports.clamps = {{"left", 0.05, 0.11}, {"right", s.core.length - 0.11, s.core.length - 0.05}};
     return s;
+}
+
+// Both chucks not expanded: one-sided contact, k_n0 given (Pa/m).
+inline Scene not_expanded(Scene s, double k0) {
+    s = with_chucks(std::move(s), InterfaceKind::spring, k0);
+    for (ChuckSpec& c : s.supports.chucks) {
+        c.interface.expanded = false;
+        c.interface.contact = ContactKind::one_sided;
+    }
+    return s;
+}
+
+// Every modulus of m times `factor` (a nearly rigid body).
+inline OrthotropicMaterial stiffened(OrthotropicMaterial m, double factor) {
+    for (double* E : {&m.E_r, &m.E_theta, &m.E_z, &m.G_rtheta, &m.G_rz, &m.G_thetaz}) *E *= factor;
+    return m;
+}
+
+// A rigid core of bore radius `bore` on a rigid chuck, dropped by delta
+// across the radial clearance c: interpenetration d(psi) = delta cos(psi) - c
+// (psi from the top), the stack law's pressure, and its upward force over
+// the inserted length (N).
+inline double rigid_contact_force(double delta, double c, double bore, double inserted, const StackContact& law) {
+    const int n = 20000;
+    double F = 0;
+    for (int i = 0; i < n; ++i) {
+        const double psi = -M_PI / 2 + M_PI * (i + 0.5) / n;
+        F += law.pressure(delta * std::cos(psi) - c) * std::cos(psi) * M_PI / n;
+    }
+    return F * bore * inserted;
+}
+
+// The drop at which the rigid contact carries `load` (bisection: the force rises with the drop).
+inline double rigid_contact_drop(double load, double c, double bore, double inserted, const StackContact& law) {
+    double lo = c, hi = 2 * c;
+    for (int i = 0; i < 200; ++i)
+        (rigid_contact_force((lo + hi) / 2, c, bore, inserted, law) < load ? lo : hi) = (lo + hi) / 2;
+    return (lo + hi) / 2;
 }
 
 }  // namespace coremodal::testing

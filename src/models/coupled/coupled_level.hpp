@@ -54,6 +54,10 @@ struct CoupledModes {
 
 CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
                            int n_max, const SolveRequest& request);
+// The same with the attachments given (a one-sided contact's with its layer
+// linearised about the static state: models/coupled/contact_static).
+CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                           int n_max, const SolveRequest& request, const Attachments& attached);
 
 // Node-major (x, y, z) displacements of every revolved node (frame nodes
 // too) for mode k: the sum over the blocks of revolved_field.

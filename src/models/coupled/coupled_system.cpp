@@ -26,11 +26,11 @@ std::vector<PadLayer> pad_layers(const Scene& scene) {
     const SupportEffects effects = support_effects(scene);
     for (const ChuckEffects& chuck : effects.chucks)
         for (const ExpandingElement& e : chuck.placement.expanding) {
-            if (e.segments == 0) continue;
+            if (e.segments == 0 || chuck.one_sided) continue;
             if (!chuck.spring_layer)
                 throw InputError(scene.source_file + ": model = \"coupled\": the " + chuck.placement.chuck +
                                  " chuck's segmented element at " + significant(e.center * 1e3) + " mm is " +
-                                 (chuck.bonded ? "bonded" : "in one-sided contact") +
+                                 "bonded" +
                                  "; the coupled level models segments as a spring layer; expected interface = "
                                  "\"spring\" and an expanded chuck, or model = \"solid\"");
             out.push_back({chuck.placement.chuck, chuck.placement.element_range(e), contact_arcs(e), e.segments,
@@ -71,18 +71,21 @@ bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFa
 
 bool Attachments::couple(HarmonicFamily a, HarmonicFamily b) const {
     if (pads_couple(pads, a, b)) return true;
+    // A contact not yet solved is assumed to couple everything (it will, but for symmetry).
+    if (one_sided && (!contact || contact_couples(*contact, a, b))) return true;
     return web && web_between(*web, a, b).cwiseAbs().maxCoeff() > kVanishingShare * web->stiffness.norm();
 }
 
 int Attachments::step() const {
     int reach = 0;
     for (const PadLayer& p : pads) reach = reach == 0 ? p.segments : std::min(reach, p.segments);
-    return reach > 0 ? reach : web ? 1 : 0;
+    return reach > 0 ? reach : web || one_sided ? 1 : 0;
 }
 
 Attachments attachments(const Scene& scene) {
     Attachments out;
     out.pads = pad_layers(scene);
+    for (const ChuckEffects& chuck : support_effects(scene).chucks) out.one_sided = out.one_sided || chuck.one_sided;
     if (scene.web) {
         const Eigen::Vector3d p = web_tangent_normal(*scene.web);
         out.web = WebLine{std::atan2(p.y(), p.x()), web_line_stiffness(*scene.web)};
@@ -124,7 +127,7 @@ double pad_coupling(const PadLayer& pad, HarmonicFamily a, HarmonicFamily b, int
 std::optional<std::vector<double>> partner_signs(const CoupledDofs& cos, const CoupledDofs& sin,
                                                  const Attachments& attached) {
     const size_t n = cos.blocks.size();
-    if (attached.web || n != sin.blocks.size()) return std::nullopt;
+    if (attached.web || attached.one_sided || n != sin.blocks.size()) return std::nullopt;
     for (size_t i = 0; i < n; ++i) {
         const HarmonicFamily a = cos.blocks[i].harmonic, b = sin.blocks[i].harmonic;
         if (a.n < 1 || a.n != b.n || a.family != Family::cos || b.family != Family::sin) return std::nullopt;
@@ -267,10 +270,41 @@ void add_web_coupling(const SectionMesh& mesh, const WebLine& web, const Section
         }
 }
 
+// The one-sided contact's layer on each interface edge pair of its chucks:
+// contact_edge_matrix between every pair of blocks it couples, on core minus chuck.
+void add_contact_coupling(const SectionMesh& mesh, const SupportEffects& effects, const ContactLayer& layer,
+                          const CoupledDofs& dofs, const CoupledInsert& insert) {
+    for (size_t first = 0, last = 0; first < layer.points.size(); first = last) {
+        const HarmonicContactPoint& p = layer.points[first];
+        for (last = first; last < layer.points.size() && layer.points[last].bore.chuck == p.bore.chuck &&
+                           layer.points[last].edge == p.edge;
+             ++last) {
+        }
+        const std::string& chuck = effects.chucks.at(p.bore.chuck).placement.chuck;
+        const SectionEdge& core = mesh.edge_groups.at("interface_" + chuck + "_core").at(p.edge);
+        const SectionEdge& body = mesh.edge_groups.at("interface_" + chuck + "_chuck").at(p.edge);
+        for (const CoupledBlock& a : dofs.blocks)
+            for (const CoupledBlock& b : dofs.blocks) {
+                const Eigen::Matrix<double, 9, 9> edge = contact_edge_matrix(layer, first, last, a.harmonic, b.harmonic);
+                if (edge.isZero(0)) continue;
+                std::vector<int> rows = edge_dofs(a, core), cols = edge_dofs(b, core);
+                const std::vector<int> rows_body = edge_dofs(a, body), cols_body = edge_dofs(b, body);
+                rows.insert(rows.end(), rows_body.begin(), rows_body.end());
+                cols.insert(cols.end(), cols_body.begin(), cols_body.end());
+                insert(OneSidedContact::kTerm, rows, cols, spring_between(edge));
+            }
+    }
+}
+
 }  // namespace
 
 double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                               const CoupledDofs& dofs, const CoupledInsert& insert) {
+    return assemble_coupled_terms(scene, mesh, materials, dofs, attachments(scene), insert);
+}
+
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const Attachments& attached, const CoupledInsert& insert) {
     const Scene band = with_full_bands(scene);
     double mass = 0;
     for (const CoupledBlock& block : dofs.blocks) {
@@ -282,7 +316,8 @@ double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const
             });
         if (block.harmonic.n == 0) mass = m;
     }
-    const Attachments attached = attachments(scene);
+    COREMODAL_ASSERT(!attached.one_sided || attached.contact);  // the level solves the static state first
+    if (attached.contact) add_contact_coupling(mesh, support_effects(scene), *attached.contact, dofs, insert);
     if (attached.web)
         for (const SectionEdge& e : mesh.edge_groups.at("roll_outer")) add_web_coupling(mesh, *attached.web, e, dofs, insert);
     for (const PadLayer& pad : attached.pads) {
@@ -298,6 +333,11 @@ double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const
 
 CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const CoupledDofs& dofs, MPI_Comm comm) {
+    return assemble_coupled(scene, mesh, materials, dofs, attachments(scene), comm);
+}
+
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, const Attachments& attached, MPI_Comm comm) {
     CoupledSystem system;
     system.dofs = dofs;
     // Coordinate entries for PETSc's COO assembly; every term gets the union
@@ -312,7 +352,7 @@ CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, cons
     const std::int64_t n = system.dofs.n_dofs;
     if (mpi_rank(comm) == 0) {
         system.operators.model_mass = assemble_coupled_terms(
-            scene, mesh, materials, system.dofs,
+            scene, mesh, materials, system.dofs, attached,
             [&](Term t, const std::vector<int>& rows, const std::vector<int>& cols, const Eigen::MatrixXd& A) {
                 for (size_t a = 0; a < rows.size(); ++a)
                     for (size_t b = 0; b < cols.size(); ++b) {

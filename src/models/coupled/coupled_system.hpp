@@ -22,6 +22,7 @@
 
 #include "assembly/harmonic_system.hpp"
 #include "effects/support_effects.hpp"
+#include "models/coupled/contact_layer.hpp"
 #include "models/coupled/pad_integrals.hpp"
 
 #include <functional>
@@ -44,8 +45,10 @@ struct PadLayer {
 };
 
 // Every segmented element of the scene's chucks. A chuck whose segmented
-// element is bonded or in one-sided contact throws InputError (the coupled
-// level models spring layers only; models/choose says which level can).
+// element is bonded throws InputError (the coupled level models spring
+// layers only; models/choose says which level can). A chuck not expanded
+// has none: its elements are retracted and the bore rests on its body
+// (the one-sided contact, Attachments::contact).
 std::vector<PadLayer> pad_layers(const Scene& scene);
 
 // The paper web's line on the roll's outer surface (effects/web.hpp): at the
@@ -61,15 +64,21 @@ struct WebLine {
 // in block h: (u_r, u_theta, u_z) = (t_r U, t_theta V, t_z W) turned by theta.
 Eigen::Matrix3d harmonic_to_cartesian(HarmonicFamily h, double theta);
 
-// What couples the harmonics: the segmented elements' pads and the web's line.
+// What couples the harmonics: the segmented elements' pads, the web's line
+// and a chuck not expanded's one-sided contact. The contact's layer depends
+// on the static state under gravity (models/coupled/contact_static), which
+// `attachments(scene)` does not solve: it only sets `one_sided`, and the
+// level fills `contact` before assembling.
 struct Attachments {
     std::vector<PadLayer> pads;
     std::optional<WebLine> web;
-    bool any() const { return !pads.empty() || web.has_value(); }
+    bool one_sided = false;                // some chuck is not expanded
+    std::optional<ContactLayer> contact;   // its layer linearised about the static state
+    bool any() const { return !pads.empty() || web.has_value() || one_sided; }
     // Whether they couple blocks a and b (some term of theirs nonzero between them).
     bool couple(HarmonicFamily a, HarmonicFamily b) const;
     // N grows in steps of this: the smallest N_s of the pads (they couple n to
-    // n +- j N_s), or 1 for a web alone (its line couples every n).
+    // n +- j N_s), or 1 for a web or a contact without pads (they couple every n).
     int step() const;
 };
 Attachments attachments(const Scene& scene);
@@ -125,6 +134,9 @@ using CoupledInsert = std::function<void(Term, const std::vector<int>& rows, con
 // a unit test (dense Eigen). Returns the model's mass (kg, once, not per block).
 double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                               const CoupledDofs& dofs, const CoupledInsert& insert);
+// The same with the attachments given (a one-sided contact's needs its layer).
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const Attachments& attached, const CoupledInsert& insert);
 
 struct CoupledSystem {
     CoupledDofs dofs;
@@ -135,5 +147,7 @@ struct CoupledSystem {
 // K and M on `dofs` (all blocks, or one component's).
 CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const CoupledDofs& dofs, MPI_Comm comm = PETSC_COMM_WORLD);
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, const Attachments& attached, MPI_Comm comm = PETSC_COMM_WORLD);
 
 }  // namespace coremodal
