@@ -154,6 +154,27 @@ TEST_CASE("Coupled contact: blocks of opposite parity about the vertical do not 
     CHECK(contact_integral(layer, {0, Family::cos}, {2, Family::cos}, 0) != 0);
     CHECK(contact_integral(layer, {0, Family::cos}, {2, Family::sin}, 1) != 0);
     CHECK(std::abs(contact_integral(layer, {0, Family::cos}, {2, Family::sin}, 0)) <= 1e-13 * total);
+    SECTION("so coupled_components finds two sets, n = 0's (U, W) with the even blocks and its V with the odd") {
+        const SectionMesh mesh = make_section_mesh(make_tube_section(s), s.supports.clamps);
+        const CoupledDofs all = coupled_dofs(s, mesh, 6);
+        Attachments attached = attachments(s);
+        attached.contact = layer;
+        const std::vector<CoupledComponent> sets = coupled_components(all, attached);
+        REQUIRE(sets.size() == 2);
+        int dofs = 0;
+        for (const CoupledComponent& set : sets) {
+            CHECK(set.partner_of < 0);  // not turned copies: the arc is not symmetric under a quarter turn
+            dofs += set.dofs.n_dofs;
+            const bool even = mirror_even(set.dofs.blocks.at(1).harmonic);
+            for (const CoupledBlock& b : set.dofs.blocks)
+                if (b.harmonic.n > 0) CHECK(mirror_even(b.harmonic) == even);
+            REQUIRE(set.dofs.blocks.front().harmonic.n == 0);
+            const std::vector<int>& of = set.dofs.blocks.front().dofs.of_component;
+            for (size_t i = 0; i < of.size(); ++i)  // the odd set holds n = 0's V only, the even its U, W
+                if (of[i] >= 0) CHECK((i % 3 == 1) != even);
+        }
+        CHECK(dofs == all.n_dofs);  // every DOF in exactly one set
+    }
 }
 
 TEST_CASE("Coupled contact: every mode verified, counted and falling with N", "[coupled][contact]") {

@@ -247,7 +247,7 @@ TEST_CASE("Coupled level: the sin set of three pads is a signed copy of the cos 
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
     const CoupledDofs all = coupled_dofs(scene, section, 7);
     const std::vector<CoupledComponent> sets = coupled_components(all, attachments(scene));
-    REQUIRE(sets.size() == 3);
+    REQUIRE(sets.size() == 4);  // n = 0 split: {0 (U, W), 3c, 6c}, {0 (V), 3s, 6s}, and the two partners
     int partners = 0;
     for (const CoupledComponent& partner : sets) {
         if (partner.partner_of < 0) continue;

@@ -63,12 +63,15 @@ double contact_integral(const ContactLayer& layer, HarmonicFamily a, HarmonicFam
     return sum;
 }
 
+bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b, int component) {
+    double total = 0;
+    for (const Eigen::Vector3d& k : layer.weight_around) total += k[component];
+    return std::abs(contact_integral(layer, a, b, component)) > kVanishingShare * total;
+}
+
 bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b) {
-    for (int c = 0; c < 3; ++c) {
-        double total = 0;
-        for (const Eigen::Vector3d& k : layer.weight_around) total += k[c];
-        if (std::abs(contact_integral(layer, a, b, c)) > kVanishingShare * total) return true;
-    }
+    for (int c = 0; c < 3; ++c)
+        if (contact_couples(layer, a, b, c)) return true;
     return false;
 }
 

@@ -71,6 +71,8 @@ double contact_integral(const ContactLayer& layer, HarmonicFamily a, HarmonicFam
 // Whether the layer couples blocks a and b: some component's integral
 // above round-off (1e-12 of the layer's total) of one that vanishes by symmetry.
 bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b);
+// The same for component c alone.
+bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b, int component);
 
 // The layer between blocks a and b on one edge pair, per pair of node
 // values: 9 x 9, node-major (U, V, W), on the relative displacement core

@@ -121,13 +121,14 @@ void add_component(const CoupledComponent& component, const ComponentModes& mode
         std::vector<double> x(out.dofs.n_dofs, 0.0), mx(out.dofs.n_dofs, 0.0), energy(out.dofs.blocks.size(), 0.0);
         for (size_t b = 0; b < component.dofs.blocks.size(); ++b) {
             const CoupledBlock& block = component.dofs.blocks[b];
-            const int to = component.offset_in[b];
+            const std::vector<int>& dof_in = component.dof_in[b];  // empty: the whole block from offset_in
             const double s = sign.empty() ? 1.0 : sign[b];
             double e = 0;
             for (int i = 0; i < block.dofs.n_dofs; ++i) {
-                x[to + i] = s * modes.x[k][block.offset + i];
-                mx[to + i] = s * modes.Mx[k][block.offset + i];
-                e += x[to + i] * mx[to + i];
+                const int to = dof_in.empty() ? component.offset_in[b] + i : dof_in[i];
+                x[to] = s * modes.x[k][block.offset + i];
+                mx[to] = s * modes.Mx[k][block.offset + i];
+                e += x[to] * mx[to];
             }
             energy[out.dofs.block_of(block.harmonic.n, block.harmonic.family)] = e;
         }

@@ -59,21 +59,28 @@ Eigen::Matrix3d web_between(const WebLine& web, HarmonicFamily a, HarmonicFamily
 // vanishes exactly (sin n theta at theta on a symmetry line).
 constexpr double kVanishingShare = 1e-12;
 
-bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b) {
+bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b, int c) {
     const std::vector<Arc> band = {{0, 2 * M_PI}};
     for (const PadLayer& pad : pads)
-        for (int c = 0; c < 3; ++c)
-            if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
+        if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
     return false;
 }
 
 }  // namespace
 
-bool Attachments::couple(HarmonicFamily a, HarmonicFamily b) const {
-    if (pads_couple(pads, a, b)) return true;
+bool Attachments::couple(HarmonicFamily a, int ca, HarmonicFamily b, int cb) const {
+    // The pads and the contact act on (r, theta, z) componentwise; the web's line in x, y, z mixes them.
+    if (ca == cb && pads_couple(pads, a, b, ca)) return true;
     // A contact not yet solved is assumed to couple everything (it will, but for symmetry).
-    if (one_sided && (!contact || contact_couples(*contact, a, b))) return true;
-    return web && web_between(*web, a, b).cwiseAbs().maxCoeff() > kVanishingShare * web->stiffness.norm();
+    if (ca == cb && one_sided && (!contact || contact_couples(*contact, a, b, ca))) return true;
+    return web && std::abs(web_between(*web, a, b)(ca, cb)) > kVanishingShare * web->stiffness.norm();
+}
+
+bool Attachments::couple(HarmonicFamily a, HarmonicFamily b) const {
+    for (int ca = 0; ca < 3; ++ca)
+        for (int cb = 0; cb < 3; ++cb)
+            if (couple(a, ca, b, cb)) return true;
+    return false;
 }
 
 int Attachments::step() const {
@@ -163,32 +170,82 @@ std::optional<std::vector<double>> partner_signs(const CoupledDofs& cos, const C
 
 }  // namespace
 
+namespace {
+
+// The part of block n = 0 with only the components `keep` (U, W or V; the
+// frame's axial DOF goes with W), renumbered; `dof_in` gets each DOF's place in `all`.
+CoupledBlock part_of_block(const CoupledBlock& whole, bool torsion, std::vector<int>& dof_in) {
+    CoupledBlock part = whole;
+    std::vector<int> renumbered(whole.dofs.n_dofs, -1);
+    const auto keep = [&](int& d) {
+        if (d < 0) return;
+        if (renumbered[d] < 0) {
+            renumbered[d] = static_cast<int>(dof_in.size());
+            dof_in.push_back(whole.offset + d);
+        }
+        d = renumbered[d];
+    };
+    for (size_t i = 0; i < part.dofs.of_component.size(); ++i) {
+        int& d = part.dofs.of_component[i];
+        if ((i % 3 == 1) == torsion)
+            keep(d);
+        else
+            d = -1;
+    }
+    for (int& d : part.dofs.frame)
+        if (torsion)
+            d = -1;
+        else
+            keep(d);
+    part.dofs.n_dofs = static_cast<int>(dof_in.size());
+    return part;
+}
+
+}  // namespace
+
 std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached) {
+    // Graph nodes: one per block, and one more (index n) for n = 0's torsion V.
     const int n = static_cast<int>(all.blocks.size());
-    std::vector<int> root(n);
-    for (int b = 0; b < n; ++b) root[b] = b;
+    const auto node = [&](int b, int c) { return all.blocks[b].harmonic.n == 0 && c == 1 ? n : b; };
+    std::vector<int> root(n + 1);
+    for (int b = 0; b <= n; ++b) root[b] = b;
     const auto find = [&](int b) {
         while (root[b] != b) b = root[b] = root[root[b]];
         return b;
     };
     for (int a = 0; a < n; ++a)
-        for (int b = a + 1; b < n; ++b)
-            if (attached.couple(all.blocks[a].harmonic, all.blocks[b].harmonic)) root[find(a)] = find(b);
+        for (int b = a; b < n; ++b)
+            for (int ca = 0; ca < 3; ++ca)
+                for (int cb = 0; cb < 3; ++cb)
+                    if (node(a, ca) != node(b, cb) && find(node(a, ca)) != find(node(b, cb)) &&
+                        attached.couple(all.blocks[a].harmonic, ca, all.blocks[b].harmonic, cb))
+                        root[find(node(a, ca))] = find(node(b, cb));
     std::vector<CoupledComponent> out;
-    std::vector<int> component_of_root(n, -1);
-    for (int b = 0; b < n; ++b) {
-        int& c = component_of_root[find(b)];
+    std::vector<int> component_of_root(n + 1, -1);
+    const auto add = [&](int graph_node, CoupledBlock block, std::vector<int> dof_in) {
+        int& c = component_of_root[find(graph_node)];
         if (c < 0) {
             c = static_cast<int>(out.size());
             out.emplace_back();
             out.back().dofs.n_max = all.n_max;
         }
         CoupledComponent& comp = out[c];
-        CoupledBlock block = all.blocks[b];
         comp.offset_in.push_back(block.offset);
+        comp.dof_in.push_back(std::move(dof_in));
         block.offset = comp.dofs.n_dofs;
         comp.dofs.n_dofs += block.dofs.n_dofs;
         comp.dofs.blocks.push_back(std::move(block));
+    };
+    for (int b = 0; b < n; ++b) {
+        if (all.blocks[b].harmonic.n != 0 || find(b) == find(n)) {
+            add(b, all.blocks[b], {});
+            continue;
+        }
+        for (bool torsion : {false, true}) {  // two independent parts of n = 0
+            std::vector<int> dof_in;
+            CoupledBlock part = part_of_block(all.blocks[b], torsion, dof_in);
+            add(torsion ? n : b, std::move(part), std::move(dof_in));
+        }
     }
     for (size_t c = 0; c < out.size(); ++c)
         for (size_t p = 0; p < c && out[c].partner_of < 0; ++p)

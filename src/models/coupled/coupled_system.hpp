@@ -77,6 +77,8 @@ struct Attachments {
     bool any() const { return !pads.empty() || web.has_value() || one_sided; }
     // Whether they couple blocks a and b (some term of theirs nonzero between them).
     bool couple(HarmonicFamily a, HarmonicFamily b) const;
+    // Whether they couple component ca (0: U, 1: V, 2: W) of block a with component cb of block b.
+    bool couple(HarmonicFamily a, int ca, HarmonicFamily b, int cb) const;
     // N grows in steps of this: the smallest N_s of the pads (they couple n to
     // n +- j N_s), or 1 for a web or a contact without pads (they couple every n).
     int step() const;
@@ -102,11 +104,19 @@ struct CoupledDofs {
 CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max);
 
 // The blocks split into the independent problems the attachments leave: the
-// connected components of Attachments::couple (three pads: {0, 3, 6, ...} of both
-// families, {1, 2, 4, 5, ...} cos and the same sin; the last two are
-// degenerate partners, a turned copy of each other). Each component's
-// blocks are renumbered from offset 0; `offset_in` keeps where each block
-// sits in `all`.
+// connected components of Attachments::couple, component by component. The
+// block n = 0 is two nodes of that graph: its (U, W) (radial and axial, even
+// under a mirror through theta = 0) and its V (torsion, odd), which K_0 and
+// M_0 never couple (an orthotropic C couples no cos row with a sin row);
+// every block n >= 1 is one node. Three pads: {0 (U, W), 3c, 6c, ...},
+// {0 (V), 3s, 6s, ...}, {1, 2, 4, 5, ...} cos and the same sin; the last two are
+// degenerate partners, a turned copy of each other. A one-sided contact's
+// arc, symmetric about the vertical: {0 (U, W), 2c, 4c, ..., 1s, 3s, ...}
+// and {0 (V), 1c, 3c, ..., 2s, 4s, ...} (models/coupled/contact_static.hpp).
+// Each component's blocks are renumbered from offset 0; `offset_in` keeps
+// where each block sits in `all`, and `dof_in`, for the part of block n = 0
+// that holds only some of its components (the others held at zero in
+// `dofs`), where each of its DOFs sits in `all` (empty for a whole block).
 //
 // A set of sin families whose every coupling equals that of the set of the
 // same wave numbers' cos families up to a sign per wave number is that set's
@@ -119,6 +129,7 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max)
 struct CoupledComponent {
     CoupledDofs dofs;
     std::vector<int> offset_in;  // per block of dofs: its offset in `all`
+    std::vector<std::vector<int>> dof_in;  // per block of dofs: its DOFs in `all`, or empty (offset_in + i)
     int partner_of = -1;             // index of the component this one mirrors, or -1
     std::vector<double> block_sign;  // s per block (partners only)
 };
