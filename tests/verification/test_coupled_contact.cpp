@@ -14,11 +14,16 @@
 #include "models/part_materials.hpp"
 #include "models/solid/gravity_contact.hpp"
 #include "models/solve_steps.hpp"
+#include "scene/case_file.hpp"
+#include "scene/mesh_levels.hpp"
+#include "support/program_run.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 using namespace coremodal;
 using namespace coremodal::testing;
@@ -251,5 +256,41 @@ TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by 
         CHECK(a.label.type == b.label.type);
         const double solid_error = std::abs(b16.frequency_hz - b.frequency_hz);
         CHECK(std::abs(a.frequency_hz - b.frequency_hz) <= solid_error + 2e-4 * b.frequency_hz);
+    }
+}
+
+TEST_CASE("Coupled contact: convergence in N on case 09 (a measurement for docs/harmonic.md, not a check)",
+          "[.][coupled][contact][convergence]") {
+    // build/tests/coremodal_tests "[convergence]" -- prints the static state's
+    // arc and peak for N = 8, 16, 32, then, for N = 2 ... 24 (the static state
+    // at kContactStaticHarmonics), the frequencies of case 09's 12 wanted
+    // modes and the largest relative change per step. COREMODAL_MESH =
+    // coarse | default picks the section (default: coarse), COREMODAL_N_MAX the last N.
+    const char* level = std::getenv("COREMODAL_MESH");
+    const std::string path = std::string(COREMODAL_SOURCE_DIR) + "/cases/09-news-chucks-not-expanded-76x15-2200.toml";
+    Scene s = parse_case_text(slurp(path), path);
+    apply_mesh_level(s, level ? level : "coarse");
+    const Section sec = section_of(s);
+    for (int n_static : {8, 16, 32}) {  // the static state's own convergence
+        const GravityContact g = solve_coupled_contact(s, sec.mesh, sec.materials, n_static, Printer{false}).contact;
+        std::printf("static N = %2d: arc %.2f deg, z %.1f to %.1f mm, peak pressure %.1f kPa, peak d %.3f um\n", n_static,
+                    g.chucks[0].arc_deg, g.chucks[0].z_from_m * 1e3, g.chucks[0].z_to_m * 1e3,
+                    g.chucks[0].max_pressure_pa / 1e3, peak_interpenetration(g) * 1e6);
+    }
+    Attachments attached = attachments(s);
+    attached.contact = solve_coupled_contact(s, sec.mesh, sec.materials, kContactStaticHarmonics, Printer{false}).layer;
+    std::vector<double> last;
+    const char* top = std::getenv("COREMODAL_N_MAX");
+    for (int n_max = 2; n_max <= (top ? std::atoi(top) : 24); ++n_max) {
+        const CoupledModes c = coupled_at_n(s, sec, n_max, attached);
+        REQUIRE(c.verification.complete);
+        std::vector<double> f;
+        for (size_t i = 0; i < 12; ++i) f.push_back(std::sqrt(c.eigenvalues.at(i)) / (2 * M_PI));
+        double change = 0;
+        for (size_t i = 0; i < last.size(); ++i) change = std::max(change, std::abs(last[i] - f[i]) / f[i]);
+        std::printf("N = %2d: %7d DOFs, f = ", n_max, c.dofs.n_dofs);
+        for (double x : f) std::printf("%.5f ", x);
+        std::printf(" max change %.2e\n", change);
+        last = f;
     }
 }
