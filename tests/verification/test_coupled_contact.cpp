@@ -5,14 +5,9 @@
 // the modes verified and falling with N, and against the solid mode by mode.
 #include "tube_scenes.hpp"
 
-#include "assembly/petsc_system.hpp"
-#include "geometry/section_mesh.hpp"
-#include "geometry/tube_section.hpp"
 #include "models/choose.hpp"
 #include "models/coupled/contact_static.hpp"
 #include "models/coupled/coupled_level.hpp"
-#include "models/part_materials.hpp"
-#include "models/solid/gravity_contact.hpp"
 #include "models/solve_steps.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
@@ -30,33 +25,9 @@ using namespace coremodal::testing;
 
 namespace {
 
-constexpr double kClearance = 0.5e-3;  // m, as with_chucks
-constexpr double kBore = 0.038;        // m, radius
-constexpr double kInserted = 0.11;     // m
-
-struct Section {
-    SectionMesh mesh;
-    std::vector<PartMaterial> materials;
-};
-
-Section section_of(const Scene& s) {
-    Section out{make_section_mesh(make_tube_section(s), s.supports.clamps), {}};
-    out.materials = part_materials(s, out.mesh.part_names, "generated section");
-    return out;
-}
-
 CoupledContactState coupled_static(const Scene& s, int n_max = kContactStaticHarmonics) {
     const Section sec = section_of(s);
     return solve_coupled_contact(s, sec.mesh, sec.materials, n_max, Printer{false});
-}
-
-GravityContact solid_static(const Scene& s) {
-    const Mesh mesh = generated_mesh(s);
-    const ChuckSupports supports = chuck_supports(s, mesh);
-    const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);
-    const OperatorSet system =
-        assemble_petsc(mesh, part_materials(s, mesh.part_names, "test mesh"), dofs, supports.couplings);
-    return solve_gravity_contact(system, dofs, supports, support_effects(s), Printer{false});
 }
 
 double peak_interpenetration(const GravityContact& c) {
@@ -69,29 +40,20 @@ CoupledModes coupled_at_n(const Scene& s, const Section& sec, int n_max, const A
     return solve_coupled(s, sec.mesh, sec.materials, n_max, solve_request(s), attached);
 }
 
-Scene at_level(Scene s, const std::string& level) {
-    s.model = level;
-    return s;
-}
-
 }  // namespace
 
 TEST_CASE("Coupled contact: a rigid core on rigid chucks carries its weight over the rigid-body closed form's arc",
           "[coupled][contact]") {
-    // Core and chucks 1000 x stiffer: only the contact layer deforms (as the
-    // solid's test of the same name). k_n0 = 1e8 Pa/m (u0 = 200 um) closes
-    // an arc of tens of degrees at pressures where the law's exponential matters.
-    Scene s = not_expanded(paper_core(0.5, 16, 16), 1e8);
-    s.core.material = stiffened(s.core.material, 1e3);
-    for (ChuckSpec& c : s.supports.chucks) c.material = stiffened(c.material, 1e3);
+    // The solid's test of the same name, at the coupled level.
+    const Scene s = rigid_core_not_expanded(16);
     const CoupledContactState state = coupled_static(s);
     const GravityContact& run = state.contact;
     const double weight = s.roll_mass() * kStandardGravity;
     const StackContact law{1e8, contact_law().residual_pressure};
-    const double delta = rigid_contact_drop(weight / 2, kClearance, kBore, kInserted, law);
-    const double half_arc_deg = std::acos(kClearance / delta) * 180 / M_PI;
+    const double delta = rigid_contact_drop(weight / 2, kChuckClearance, kChuckBore, kChuckInserted, law);
+    const double half_arc_deg = std::acos(kChuckClearance / delta) * 180 / M_PI;
     REQUIRE(run.chucks.size() == 2);
-    INFO("closed form: drop " << delta << " m, top interpenetration " << delta - kClearance << " m, arc "
+    INFO("closed form: drop " << delta << " m, top interpenetration " << delta - kChuckClearance << " m, arc "
                               << 2 * half_arc_deg << " deg; coupled: peak " << peak_interpenetration(run) << " m, arc "
                               << run.chucks[0].arc_deg << " deg, " << run.iterations << " iterations");
     // Equilibrium of the y translation at any N (its block (1, sin) holds the whole load), up to
@@ -99,7 +61,7 @@ TEST_CASE("Coupled contact: a rigid core on rigid chucks carries its weight over
     CHECK(run.chucks[0].vertical_force_n + run.chucks[1].vertical_force_n == Approx(weight).epsilon(1e-5));
     CHECK(run.chucks[0].vertical_force_n == Approx(run.chucks[1].vertical_force_n).epsilon(1e-6));
     // A rigid core drops as a whole: the top's interpenetration and the arc of the closed form.
-    CHECK(peak_interpenetration(run) == Approx(delta - kClearance).epsilon(0.01));
+    CHECK(peak_interpenetration(run) == Approx(delta - kChuckClearance).epsilon(0.01));
     const double spacing = 360.0 / kContactPointsAround;
     CHECK(run.chucks[0].arc_deg <= 2 * half_arc_deg + 1e-9);
     CHECK(run.chucks[0].arc_deg >= 2 * half_arc_deg - 2 * spacing);
@@ -110,7 +72,7 @@ TEST_CASE("Coupled contact: the static state of a paper core agrees with the 3D 
     // The solid test's scene (0.9 m paper core, k_n0 = 1e9 Pa/m); the solid
     // at 16 around has 64 points around (5.6 deg apart), the coupled level 128.
     const Scene s = not_expanded(paper_core(0.9, 16, 24), 1e9);
-    const GravityContact coupled = coupled_static(s).contact, solid = solid_static(s);
+    const GravityContact coupled = coupled_static(s).contact, solid = solid_static_contact(s);
     const double weight = s.roll_mass() * kStandardGravity;
     REQUIRE(coupled.chucks.size() == 2);
     REQUIRE(solid.chucks.size() == 2);
@@ -220,20 +182,16 @@ TEST_CASE("Coupled contact: auto runs a chuck not expanded at the coupled level 
     CHECK(std::count(effects.begin(), effects.end(), "one_sided_contact") == 1);
     CHECK(std::count(effects.begin(), effects.end(), "gravity_preload") == 1);
     SECTION("and model = \"coupled\" no longer refuses it") {
-        const RunReport c = solve_without_chuck_factor(at_level(s, "coupled"));
-        REQUIRE(c.modes.modes.size() == r.modes.modes.size());
-        for (size_t i = 0; i < c.modes.modes.size(); ++i)
-            CHECK(c.modes.modes[i].eigenvalue == Approx(r.modes.modes[i].eigenvalue).epsilon(1e-12));
+        check_same_eigenvalues(solve_without_chuck_factor(at_level(s, "coupled")), r, 1e-12);
     }
 }
 
 TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by mode", "[coupled][contact][long]") {
     // A 0.6 m paper core on both chucks not expanded (k_n0 = 1e9 Pa/m),
     // 6 modes: the roll rocking on its arcs, then the split bending pair.
-    // The solid at 16 and 32 around: its change from 16 to 32 around bounds
-    // its own error at 32 around whenever it converges at least at first
-    // order in theta (the contact arc's edge cuts its faces: first order at
-    // worst); 2e-4 more covers the coupled truncation (kCoupledTolerance).
+    // The solid at 16 and 32 around (check_within_solid_error); the contact
+    // arc's edge cuts its faces, so it converges at first order at worst.
+    // Measured (docs/harmonic.md): the gap is the contact quadrature's.
     const auto scene_at = [](int around, const std::string& level) {
         Scene s = not_expanded(paper_core(0.6, around, 12), 1e9);
         s.analysis.n_modes = 6;
@@ -247,16 +205,7 @@ TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by 
     CHECK(c.modes.verification.max_orthonormality_error < 1e-8);
     const RunReport coarse = solve_without_chuck_factor(scene_at(16, "solid"));
     const RunReport fine = solve_without_chuck_factor(scene_at(32, "solid"));
-    REQUIRE(fine.modes.modes.size() == c.modes.modes.size());
-    for (size_t i = 0; i < c.modes.modes.size(); ++i) {
-        const Mode &a = c.modes.modes[i], &b = fine.modes.modes[i], &b16 = coarse.modes.modes[i];
-        INFO("mode " << i + 1 << ": coupled " << a.frequency_hz << " Hz " << a.label.type << " n=" << a.label.n
-                     << ", solid 32 around " << b.frequency_hz << " Hz " << b.label.type << " n=" << b.label.n
-                     << ", 16 around " << b16.frequency_hz << " Hz");
-        CHECK(a.label.type == b.label.type);
-        const double solid_error = std::abs(b16.frequency_hz - b.frequency_hz);
-        CHECK(std::abs(a.frequency_hz - b.frequency_hz) <= solid_error + 2e-4 * b.frequency_hz);
-    }
+    check_within_solid_error(c, coarse, fine, false);
 }
 
 TEST_CASE("Coupled contact: convergence in N on case 09 (a measurement for docs/harmonic.md, not a check)",
