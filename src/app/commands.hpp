@@ -24,8 +24,8 @@ inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const st
     return cmd->add_option("--model", model,
                            "model level" + what + ", overriding the case's model key: solid (3D), harmonic "
                            "(axisymmetric scenes, one 2D problem per wave number n), coupled (harmonics coupled by "
-                           "segmented chucks, one 2D-cost problem), auto (harmonic where the scene allows it, else "
-                           "solid), beam")
+                           "segmented chucks, a chuck not expanded or the web, one 2D-cost problem), auto (harmonic "
+                           "where the scene allows it, else coupled where it allows that, else solid), beam")
         ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
 }
 // -o/--output and --force of a command that writes one results folder

@@ -172,8 +172,9 @@ void add_chuck(BeamNetwork& net, const Scene& scene, const ChuckSpec& spec, cons
     const double tol = kStationTolerance * scene.core.length;
     if (chuck.one_sided)  // a beam has no circumference on which a contact could open
         throw InputError(scene.source_file + ": model = \"beam\": the " + spec.name +
-                         " chuck is not expanded, with a one-sided contact under gravity, which only the 3D solid "
-                         "models; expected model = \"solid\" or \"auto\", or contact = \"uniform\" for a "
+                         " chuck is not expanded, with a one-sided contact under gravity, which the 3D solid and "
+                         "the coupled harmonics model; expected model = \"auto\", \"coupled\" or \"solid\", or "
+                         "contact = \"uniform\" for a "
                          "uniform soft layer");
     const ChuckPlacement& place = chuck.placement;
     const ZRange body = place.body_range();

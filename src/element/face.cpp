@@ -11,6 +11,8 @@ namespace {
 constexpr double kNodeXi[9] = {-1, 1, 1, -1, 0, 1, 0, -1, 0};
 constexpr double kNodeEta[9] = {-1, -1, 1, 1, -1, 0, 1, 0, 0};
 
+}  // namespace
+
 void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
     x.resize(n);
     w.resize(n);
@@ -32,8 +34,6 @@ void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
         w[i] = 2 / ((1 - t * t) * dp * dp);
     }
 }
-
-}  // namespace
 
 void face_shape(int nodes, double xi, double eta, Eigen::VectorXd& N, Eigen::VectorXd& dN_dxi,
                 Eigen::VectorXd& dN_deta) {

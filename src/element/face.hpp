@@ -15,6 +15,9 @@ struct FacePoint {
     double area_weight{};  // quadrature weight x |dx/dxi x dx/deta|
 };
 
+// The n-point Gauss-Legendre rule on [-1, 1]: points x, weights w.
+void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w);
+
 // n-point Gauss-Legendre in each direction over the face with the given
 // node coordinates (rows, metres). nodes: 8 or 9.
 std::vector<FacePoint> face_quadrature(const Eigen::Matrix<double, Eigen::Dynamic, 3>& coords, int n_gauss);

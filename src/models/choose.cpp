@@ -13,7 +13,7 @@ std::optional<std::string> one_sided_contact_reason(const Scene& scene) {
     for (const ChuckSpec& chuck : scene.supports.chucks)
         if (chuck.interface.kind == InterfaceKind::spring && chuck.interface.contact == ContactKind::one_sided)
             return "the " + chuck.name + " chuck is not expanded: its contact closes under gravity on one side "
-                   "of the bore only (contact = \"one-sided\"), which the 3D solid models";
+                   "of the bore only (contact = \"one-sided\")";
     return std::nullopt;
 }
 
@@ -31,18 +31,26 @@ std::optional<std::string> why_not_axisymmetric(const Scene& scene) {
 }
 
 std::optional<std::string> why_coupled(const Scene& scene) {
-    if (scene.mesh.file || one_sided_contact_reason(scene)) return std::nullopt;
+    if (scene.mesh.file) return std::nullopt;
     std::optional<std::string> why;
+    std::vector<std::string> varies;  // what varies around
     for (const ChuckSpec& chuck : scene.supports.chucks)
         for (const ExpandingElement& e : chuck.expanding) {
-            if (e.segments == 0) continue;
+            if (e.segments == 0 || chuck.interface.contact == ContactKind::one_sided) continue;
             if (chuck.interface.kind != InterfaceKind::spring) return std::nullopt;  // ties over arcs: the solid
             if (!why) why = why_not_axisymmetric(scene);
+            if (varies.empty()) varies.push_back("the pads' spring layer");
         }
-    if (scene.web) why = why ? *why + "; the paper web pulls on one line of the roll's surface" : why_not_axisymmetric(scene);
+    const auto add = [&](const std::string& reason, const std::string& what) {
+        why = why ? *why + "; " + reason : reason;
+        varies.push_back(what);
+    };
+    if (const auto contact = one_sided_contact_reason(scene)) add(*contact, "the contact's arc");
+    if (scene.web) add("the paper web pulls on one line of the roll's surface", "the web's line");
     if (!why) return std::nullopt;
-    return *why + "; the roll and chucks are bodies of revolution and only " +
-           (scene.web ? "what is attached to them" : "the pads' spring layer") +
+    std::string list;
+    for (const std::string& v : varies) list += (list.empty() ? "" : v == varies.back() ? " and " : ", ") + v;
+    return *why + "; the roll and chucks are bodies of revolution and only " + list +
            " varies around, so the coupled harmonics solve it exactly in theta at 2D cost";
 }
 
@@ -68,7 +76,7 @@ std::string level_choice_text(const Scene& scene, const std::string& given) {
         return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
     if (scene.model == "coupled")
         return "coupled (" + given + "): the r-z section, harmonics n = 0 ... N coupled by segmented expanding "
-               "elements or the paper web in one 2D-cost eigenproblem per independent set";
+               "elements, the paper web or a one-sided contact in one 2D-cost eigenproblem per independent set";
     const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
     if (scene.model == "auto" && not_axisymmetric)
         if (const auto coupled = why_coupled(scene)) return "coupled (" + given + "; " + *coupled + ")";

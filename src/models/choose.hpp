@@ -10,8 +10,9 @@
 
 namespace coremodal {
 
-// Why only the 3D solid can solve the scene's contact: a chuck with a
-// one-sided contact (not expanded), or nothing.
+// Why the harmonic level cannot solve the scene's contact: a chuck with a
+// one-sided contact (not expanded), or nothing. The 3D solid and the
+// coupled harmonics can.
 std::optional<std::string> one_sided_contact_reason(const Scene& scene);
 
 // Why the harmonic level cannot solve the scene (a user [mesh] file, a
@@ -20,9 +21,10 @@ std::optional<std::string> one_sided_contact_reason(const Scene& scene);
 std::optional<std::string> why_not_axisymmetric(const Scene& scene);
 
 // Why the coupled-harmonic level (models/coupled) fits a scene the harmonic
-// level cannot solve: its only departure from a body of revolution is
-// segmented expanding elements held by a spring layer; or nothing (a body of
-// revolution, a [mesh] file, a one-sided contact, a bonded segment).
+// level cannot solve: its only departures from a body of revolution are
+// segmented expanding elements held by a spring layer, a one-sided contact
+// (a chuck not expanded) and the paper web's line; or nothing (a body of
+// revolution, a [mesh] file, a bonded segment).
 std::optional<std::string> why_coupled(const Scene& scene);
 
 // An InputError naming the case file and why_not_axisymmetric's reason,
@@ -32,7 +34,8 @@ void require_axisymmetric(const Scene& scene);
 // The level a run of the scene uses: its `model`, with "auto" resolved to
 // the cheapest level that represents the whole scene (DESIGN.md): harmonic
 // when the scene is a body of revolution, coupled when only segmented
-// expanding elements on a spring layer break the symmetry, else the solid.
+// expanding elements on a spring layer, a one-sided contact or the web
+// break the symmetry, else the solid.
 std::string chosen_level(const Scene& scene);
 
 // The level chosen_level picks and why, in words (`coremodal check`);

@@ -91,7 +91,8 @@ void model_section(std::ostream& out, const RunReport& r) {
     if (m.level != "beam" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
     out << "\n";
     if (!m.harmonics.empty() && m.level == "coupled")
-        out << "- harmonics coupled by segmented chucks, one problem per independent set of wave numbers "
+        out << "- coupled harmonics (segmented chucks, a chuck not expanded, the web), one problem per independent set "
+               "of wave numbers "
                "(docs/harmonic.md): " << m.harmonics << "\n";
     else if (!m.harmonics.empty())
         out << "- one 2D problem per wave number n (modes with n >= 1 come in pairs turned by 90°/n): " << m.harmonics

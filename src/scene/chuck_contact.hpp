@@ -95,7 +95,7 @@ inline std::string one_sided_contact_assumption(const std::string& chuck, const 
            "under gravity (" + std::string(kGravityText) + "; the roll's, chucks' and frames' weight), over the whole "
            "inserted length; compression only, p = K1 (exp(d/u0) - 1) with K1 = " +
            std::to_string(static_cast<int>(law.residual_pressure / 1e3)) +
-           " kPa; static state frictionless (found by an active-set Newton iteration, 3D solid); the modes "
+           " kPa; static state frictionless (found by an active-set Newton iteration, 3D solid or coupled harmonics); the modes "
            "linearised about it: normal stiffness k_n0 (1 + p/K1) and tangential (Mindlin ratio) where the "
            "contact is closed (stuck: vibration below friction), nothing where open (docs/chucks.md)";
 }

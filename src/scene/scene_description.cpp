@@ -313,7 +313,7 @@ std::string effect_detail(const Scene& s, const std::string& effect) {
         return "the bore resting on the body across the clearance, compression only, closed where gravity closes it, "
                "at the " +
                chuck_names(s, [](const ChuckSpec& c) { return c.interface.contact == ContactKind::one_sided; }) +
-               " chuck(s) (not expanded; 3D solid)";
+               " chuck(s) (not expanded; 3D solid or coupled harmonics)";
     if (effect == "gravity_preload")
         return "the static state under the weight of every part (" + std::string(kGravityText) +
                "), the modes linearised about it";

@@ -24,21 +24,12 @@
 #include <cmath>
 
 using namespace coremodal;
+using coremodal::testing::Section;
+using coremodal::testing::section_of;
 
 namespace {
 
 constexpr double kGauss[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
-
-struct Section {
-    SectionMesh mesh;
-    std::vector<PartMaterial> materials;
-};
-
-Section section_of(const Scene& s) {
-    Section out{make_section_mesh(make_tube_section(s), s.supports.clamps), {}};
-    out.materials = part_materials(s, out.mesh.part_names, "test section");
-    return out;
-}
 
 Quad8Coords coords(const SectionMesh& mesh, int c) {
     Quad8Coords x;

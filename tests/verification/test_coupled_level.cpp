@@ -37,15 +37,10 @@ Scene segmented_chucks(int segments, double angle_deg, int around = 16, int alon
     return s;
 }
 
-Scene at_level(Scene s, const std::string& level) {
-    s.model = level;
-    return s;
-}
-
 CoupledModes coupled_at(const Scene& scene, int n_max, const std::optional<LocalHarmonics>& local = std::nullopt) {
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
-    return solve_coupled(scene, section, materials, n_max, solve_request(scene), local);
+    return solve_coupled(scene, section, materials, n_max, solve_request(scene), attachments(scene), local);
 }
 
 }  // namespace
@@ -65,10 +60,7 @@ TEST_CASE("Coupled level with full bands: block diagonal, the harmonic level's e
     }
     CHECK(c.mass_kg == Approx(h.model.mass_kg).epsilon(1e-12));
     SECTION("and a level asked for coupled harmonics of a scene nothing couples hands it to the harmonic level") {
-        const RunReport r = solve_without_chuck_factor(at_level(scene, "coupled"));
-        REQUIRE(r.modes.modes.size() == h.modes.modes.size());
-        for (size_t i = 0; i < r.modes.modes.size(); ++i)
-            CHECK(r.modes.modes[i].eigenvalue == Approx(h.modes.modes[i].eigenvalue).epsilon(1e-12));
+        check_same_eigenvalues(solve_without_chuck_factor(at_level(scene, "coupled")), h, 1e-12);
     }
 }
 
@@ -154,21 +146,7 @@ TEST_CASE("Coupled level against the 3D solid on segmented chucks, mode by mode"
     CHECK(c.model.mass_kg == Approx(c.model.expected_mass_kg).epsilon(1e-9));
     const RunReport coarse = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 16), "solid"));
     const RunReport fine = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 32), "solid"));
-    REQUIRE(fine.modes.modes.size() == c.modes.modes.size());
-    for (size_t i = 0; i < c.modes.modes.size(); ++i) {
-        const Mode &a = c.modes.modes[i], &b = fine.modes.modes[i], &b16 = coarse.modes.modes[i];
-        INFO("mode " << i + 1 << ": coupled " << a.frequency_hz << " Hz " << a.label.type << " n=" << a.label.n
-                     << ", solid 32 around " << b.frequency_hz << " Hz " << b.label.type << " n=" << b.label.n
-                     << ", 16 around " << b16.frequency_hz << " Hz");
-        CHECK(a.label.type == b.label.type);
-        CHECK(a.label.n == b.label.n);
-        // The solid at 32 around is off the converged value by less than its
-        // change from 16 to 32 around whenever it converges at least at first
-        // order in theta; 2e-4 more covers its quadratic arcs (mass 1e-5 low)
-        // and the coupled truncation (kCoupledTolerance).
-        const double solid_error = std::abs(b16.frequency_hz - b.frequency_hz);
-        CHECK(std::abs(a.frequency_hz - b.frequency_hz) <= solid_error + 2e-4 * b.frequency_hz);
-    }
+    check_within_solid_error(c, coarse, fine, true);
 }
 
 TEST_CASE("Coupled level: the web's line holds a rigid roll with its three springs, exactly", "[coupled][web]") {
@@ -255,16 +233,7 @@ TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the
         s.web.reset();
         return s;
     }());
-    REQUIRE(fine.modes.modes.size() == c.modes.modes.size());
-    for (size_t i = 0; i < c.modes.modes.size(); ++i) {
-        const Mode &a = c.modes.modes[i], &b = fine.modes.modes[i], &b16 = coarse.modes.modes[i];
-        INFO("mode " << i + 1 << ": coupled " << a.frequency_hz << " Hz " << a.label.type << " n=" << a.label.n
-                     << ", solid 32 around " << b.frequency_hz << " Hz " << b.label.type << ", 16 around "
-                     << b16.frequency_hz << " Hz");
-        CHECK(a.label.type == b.label.type);
-        const double solid_error = std::abs(b16.frequency_hz - b.frequency_hz);
-        CHECK(std::abs(a.frequency_hz - b.frequency_hz) <= solid_error + 2e-4 * b.frequency_hz);
-    }
+    check_within_solid_error(c, coarse, fine, false);
     // The pair splits: across the web (y) it barely moves from the bare core,
     // along it (x) it rises by more than the solid's discretisation error.
     const double f_bare = nth_of_type(bare, "bending").frequency_hz;
@@ -287,7 +256,7 @@ TEST_CASE("Coupled level: the sin set of three pads is a signed copy of the cos 
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
     const CoupledDofs all = coupled_dofs(scene, section, 7);
     const std::vector<CoupledComponent> sets = coupled_components(all, attachments(scene));
-    REQUIRE(sets.size() == 3);
+    REQUIRE(sets.size() == 4);  // n = 0 split: {0 (U, W), 3c, 6c}, {0 (V), 3s, 6s}, and the two partners
     int partners = 0;
     for (const CoupledComponent& partner : sets) {
         if (partner.partner_of < 0) continue;

@@ -20,58 +20,15 @@ using namespace coremodal::testing;
 
 namespace {
 
-constexpr double kClearance = 0.5e-3;  // m, as with_chucks
-constexpr double kBore = 0.038;        // m, radius
-constexpr double kInserted = 0.11;     // m
-
-OrthotropicMaterial stiffened(OrthotropicMaterial m, double factor) {
-    for (double* E : {&m.E_r, &m.E_theta, &m.E_z, &m.G_rtheta, &m.G_rz, &m.G_thetaz}) *E *= factor;
-    return m;
-}
-
-// Both chucks not expanded: one-sided contact, k_n0 given (Pa/m).
-Scene not_expanded(Scene s, double k0) {
-    s = with_chucks(std::move(s), InterfaceKind::spring, k0);
-    for (ChuckSpec& c : s.supports.chucks) {
-        c.interface.expanded = false;
-        c.interface.contact = ContactKind::one_sided;
-    }
-    return s;
-}
-
 struct StaticRun {
     GravityContact contact;
     double roll_weight = 0;
 };
 
-StaticRun static_contact(const Scene& s) {
-    const Mesh mesh = generated_mesh(s);
-    const ChuckSupports supports = chuck_supports(s, mesh);
-    const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);
-    const OperatorSet system =
-        assemble_petsc(mesh, part_materials(s, mesh.part_names, "test mesh"), dofs, supports.couplings);
-    return {solve_gravity_contact(system, dofs, supports, support_effects(s), Printer{false}),
-            s.roll_mass() * kStandardGravity};
-}
+StaticRun static_contact(const Scene& s) { return {solid_static_contact(s), s.roll_mass() * kStandardGravity}; }
 
-// Rigid core on a rigid chuck, dropped by delta: interpenetration
-// d(psi) = delta cos(psi) - c (psi from the top), the stack law's pressure,
-// and its upward force over the inserted length (N).
-double rigid_force(double delta, const StackContact& law) {
-    const int n = 20000;
-    double F = 0;
-    for (int i = 0; i < n; ++i) {
-        const double psi = -M_PI / 2 + M_PI * (i + 0.5) / n;
-        F += law.pressure(delta * std::cos(psi) - kClearance) * std::cos(psi) * M_PI / n;
-    }
-    return F * kBore * kInserted;
-}
-
-// The drop at which each chuck carries `load` (bisection: the force rises with the drop).
 double rigid_drop(double load, const StackContact& law) {
-    double lo = kClearance, hi = 2 * kClearance;
-    for (int i = 0; i < 200; ++i) (rigid_force((lo + hi) / 2, law) < load ? lo : hi) = (lo + hi) / 2;
-    return (lo + hi) / 2;
+    return rigid_contact_drop(load, kChuckClearance, kChuckBore, kChuckInserted, law);
 }
 
 double f1_of(const Scene& s) {
@@ -85,21 +42,17 @@ double f1_of(const Scene& s) {
 
 TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body closed form",
           "[verification][chucks][contact][long]") {
-    // Core and chucks 1000 x stiffer: only the contact layer deforms. k_n0 =
-    // 1e8 Pa/m (u0 = 200 um) gives an arc wide enough for 32 elements around
-    // (2.8 deg between points) and pressures of p ~ 0.2 K1: the law's
-    // exponential matters.
-    Scene s = not_expanded(paper_core(0.5, 32, 16), 1e8);
-    s.core.material = stiffened(s.core.material, 1e3);
-    for (ChuckSpec& c : s.supports.chucks) c.material = stiffened(c.material, 1e3);
+    // Only the contact layer deforms; its arc is wide enough for 32 elements
+    // around (2.8 deg between points) and its pressures of p ~ 0.2 K1.
+    const Scene s = rigid_core_not_expanded(32);
     const StaticRun run = static_contact(s);
     const StackContact law{1e8, contact_law().residual_pressure};
     const double delta = rigid_drop(run.roll_weight / 2, law);
-    const double half_arc_deg = std::acos(kClearance / delta) * 180 / M_PI;
+    const double half_arc_deg = std::acos(kChuckClearance / delta) * 180 / M_PI;
     REQUIRE(run.contact.chucks.size() == 2);
     double peak = 0;
     for (const ContactPointState& p : run.contact.state) peak = std::max(peak, p.d);
-    INFO("closed form: drop " << delta << " m, top interpenetration " << delta - kClearance << " m, arc "
+    INFO("closed form: drop " << delta << " m, top interpenetration " << delta - kChuckClearance << " m, arc "
                               << 2 * half_arc_deg << " deg; FE: peak " << peak << " m, arc "
                               << run.contact.chucks[0].arc_deg << " deg");
     SECTION("The contact carries exactly the roll's weight, half on each chuck") {
@@ -110,13 +63,13 @@ TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body
     SECTION("The top's interpenetration and the closed arc follow the rigid-body closed form") {
         // The closed edge cuts faces: the kinked pressure integrated by 4 x 4
         // Gauss points costs about 1 % in the force balance.
-        CHECK(peak == Approx(delta - kClearance).epsilon(0.03));
+        CHECK(peak == Approx(delta - kChuckClearance).epsilon(0.03));
         // The closed points' extent lies within one point spacing inside the true arc.
         const double spacing = 360.0 / (32 * 4);
         CHECK(run.contact.chucks[0].arc_deg <= 2 * half_arc_deg + 1e-9);
         CHECK(run.contact.chucks[0].arc_deg >= 2 * half_arc_deg - 2 * spacing);
         // Along the whole inserted length: the rigid core does not tilt.
-        CHECK(run.contact.chucks[0].z_to_m - run.contact.chucks[0].z_from_m == Approx(kInserted).epsilon(0.1));
+        CHECK(run.contact.chucks[0].z_to_m - run.contact.chucks[0].z_from_m == Approx(kChuckInserted).epsilon(0.1));
     }
     SECTION("The active set settles, and stays settled") {
         const std::vector<int>& h = run.contact.closed_history;
@@ -170,7 +123,7 @@ TEST_CASE("An expanded chuck, and a uniform soft layer, are held exactly as befo
         const ChuckSupports supports = chuck_supports(s, generated_mesh(s));
         CHECK(supports.contact_faces.empty());
         // Over the bands only (2 x 2 pi R w), as before the one-sided contact.
-        CHECK(supports.coupled_area_m2 == Approx(2 * 2 * M_PI * kBore * 0.06).epsilon(1e-4));
+        CHECK(supports.coupled_area_m2 == Approx(2 * 2 * M_PI * kChuckBore * 0.06).epsilon(1e-4));
     }
 }
 

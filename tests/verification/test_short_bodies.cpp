@@ -24,11 +24,6 @@ namespace {
 
 constexpr double kE = 210e9, kNu = 0.3, kRho = 7850;  // steel_tube's material
 
-Scene at_level(Scene s, const std::string& level) {
-    s.model = level;
-    return s;
-}
-
 // Steel ring, 200 mm bore, 5 mm wall (t/R = 0.05: thin), 10.5 mm long (L/D =
 // 0.05). 64 cells around: a curved quadratic cell 4 times as long as the
 // wall is thick locks in membrane (32 around put the solid's n = 2 mode 3 %

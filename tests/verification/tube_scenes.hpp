@@ -5,12 +5,21 @@
 #include "analyses/run/run.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "effects/web.hpp"
+#include "assembly/petsc_system.hpp"
+#include "geometry/section_mesh.hpp"
 #include "geometry/tube_model.hpp"
+#include "geometry/tube_section.hpp"
+#include "models/part_materials.hpp"
+#include "models/solid/gravity_contact.hpp"
 #include "mesh/gmsh_mesh.hpp"
+#include "scene/chuck_contact.hpp"
 #include "scene/scene.hpp"
 #include "support/test_materials.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -140,6 +149,115 @@ inline Scene clamped_over_bands(Scene s) {
     s.supports.kind = SupportKind::clamped;
     s.supports.clamps = {{"left", 0.05, 0.11}, {"right", s.core.length - 0.11, s.core.length - 0.05}};
     return s;
+}
+
+// Both chucks not expanded: one-sided contact, k_n0 given (Pa/m).
+inline Scene not_expanded(Scene s, double k0) {
+    s = with_chucks(std::move(s), InterfaceKind::spring, k0);
+    for (ChuckSpec& c : s.supports.chucks) {
+        c.interface.expanded = false;
+        c.interface.contact = ContactKind::one_sided;
+    }
+    return s;
+}
+
+// Every modulus of m times `factor` (a nearly rigid body).
+inline OrthotropicMaterial stiffened(OrthotropicMaterial m, double factor) {
+    for (double* E : {&m.E_r, &m.E_theta, &m.E_z, &m.G_rtheta, &m.G_rz, &m.G_thetaz}) *E *= factor;
+    return m;
+}
+
+// A rigid core of bore radius `bore` on a rigid chuck, dropped by delta
+// across the radial clearance c: interpenetration d(psi) = delta cos(psi) - c
+// (psi from the top), the stack law's pressure, and its upward force over
+// the inserted length (N).
+inline double rigid_contact_force(double delta, double c, double bore, double inserted, const StackContact& law) {
+    const int n = 20000;
+    double F = 0;
+    for (int i = 0; i < n; ++i) {
+        const double psi = -M_PI / 2 + M_PI * (i + 0.5) / n;
+        F += law.pressure(delta * std::cos(psi) - c) * std::cos(psi) * M_PI / n;
+    }
+    return F * bore * inserted;
+}
+
+// The drop at which the rigid contact carries `load` (bisection: the force rises with the drop).
+inline double rigid_contact_drop(double load, double c, double bore, double inserted, const StackContact& law) {
+    double lo = c, hi = 2 * c;
+    for (int i = 0; i < 200; ++i)
+        (rigid_contact_force((lo + hi) / 2, c, bore, inserted, law) < load ? lo : hi) = (lo + hi) / 2;
+    return (lo + hi) / 2;
+}
+
+// The scene at another model level.
+inline Scene at_level(Scene s, const std::string& level) {
+    s.model = level;
+    return s;
+}
+
+// The r-z section a harmonic or coupled run meshes, with its materials.
+struct Section {
+    SectionMesh mesh;
+    std::vector<PartMaterial> materials;
+};
+inline Section section_of(const Scene& s) {
+    Section out{make_section_mesh(make_tube_section(s), s.supports.clamps), {}};
+    out.materials = part_materials(s, out.mesh.part_names, "generated section");
+    return out;
+}
+
+// with_chucks' geometry, for closed forms of its one-sided contact.
+constexpr double kChuckClearance = 0.5e-3;  // m, radial
+constexpr double kChuckBore = 0.038;        // m, the core's bore radius
+constexpr double kChuckInserted = 0.11;     // m
+
+// The 3D solid's static contact under gravity (models/solid/gravity_contact).
+inline GravityContact solid_static_contact(const Scene& s) {
+    const Mesh mesh = generated_mesh(s);
+    const ChuckSupports supports = chuck_supports(s, mesh);
+    const DofMap dofs = make_dof_map(mesh.n_nodes(), supports.eliminated, supports.ties);
+    const OperatorSet system =
+        assemble_petsc(mesh, part_materials(s, mesh.part_names, "test mesh"), dofs, supports.couplings);
+    return solve_gravity_contact(system, dofs, supports, support_effects(s), Printer{false});
+}
+
+// A rigid core on rigid chucks not expanded: core and chucks 1000 x stiffer,
+// so that only the contact layer (k_n0 = 1e8 Pa/m, u0 = 200 um) deforms; it
+// closes an arc of tens of degrees at pressures where the law's exponential matters.
+inline Scene rigid_core_not_expanded(int around) {
+    Scene s = not_expanded(paper_core(0.5, around, 16), 1e8);
+    s.core.material = stiffened(s.core.material, 1e3);
+    for (ChuckSpec& c : s.supports.chucks) c.material = stiffened(c.material, 1e3);
+    return s;
+}
+
+// Two runs of one scene give the same modes (eigenvalues to `epsilon`).
+inline void check_same_eigenvalues(const RunReport& a, const RunReport& b, double epsilon) {
+    REQUIRE(a.modes.modes.size() == b.modes.modes.size());
+    for (size_t i = 0; i < a.modes.modes.size(); ++i)
+        CHECK(a.modes.modes[i].eigenvalue == Approx(b.modes.modes[i].eigenvalue).epsilon(epsilon));
+}
+
+// A coupled run against the solid at 16 and 32 around, mode by mode: the
+// same type (and n when `same_n`), and the frequency within the solid's own
+// circumferential error. The solid at 32 around is off the converged value
+// by less than its change from 16 to 32 around whenever it converges at
+// least at first order in theta; 2e-4 more covers its quadratic arcs (mass
+// 1e-5 low) and the coupled truncation (kCoupledTolerance).
+inline void check_within_solid_error(const RunReport& coupled, const RunReport& solid16, const RunReport& solid32,
+                                     bool same_n) {
+    REQUIRE(solid32.modes.modes.size() == coupled.modes.modes.size());
+    REQUIRE(solid16.modes.modes.size() == coupled.modes.modes.size());
+    for (size_t i = 0; i < coupled.modes.modes.size(); ++i) {
+        const Mode &a = coupled.modes.modes[i], &b = solid32.modes.modes[i], &b16 = solid16.modes.modes[i];
+        INFO("mode " << i + 1 << ": coupled " << a.frequency_hz << " Hz " << a.label.type << " n=" << a.label.n
+                     << ", solid 32 around " << b.frequency_hz << " Hz " << b.label.type << " n=" << b.label.n
+                     << ", 16 around " << b16.frequency_hz << " Hz");
+        CHECK(a.label.type == b.label.type);
+        if (same_n) CHECK(a.label.n == b.label.n);
+        const double solid_error = std::abs(b16.frequency_hz - b.frequency_hz);
+        CHECK(std::abs(a.frequency_hz - b.frequency_hz) <= solid_error + 2e-4 * b.frequency_hz);
+    }
 }
 
 }  // namespace coremodal::testing

@@ -387,6 +387,9 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
 
 void require_spinning_level(const Scene& scene) {
     const std::string level = chosen_level(scene);
+    // A chuck not expanded (auto picks the coupled level at rest): only the
+    // solid could spin the scene, and it refuses why (time-periodic).
+    if (level == "coupled" && scene.model == "auto") require_spinnable_by_solid(scene);
     if (level != "beam" && level != "harmonic" && level != "solid")
         throw InputError(scene.source_file + ": [rotation] at model = \"" + level +
                          "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");

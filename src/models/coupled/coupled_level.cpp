@@ -11,6 +11,7 @@
 #include "eigensolve/tolerances.hpp"
 #include "geometry/tube_model.hpp"
 #include "models/choose.hpp"
+#include "models/coupled/contact_static.hpp"
 #include "models/harmonic/harmonic_level.hpp"
 #include "models/harmonic/harmonic_shapes.hpp"
 #include "models/part_materials.hpp"
@@ -72,8 +73,8 @@ struct ComponentModes {
 
 ComponentModes solve_component(const Scene& scene, const SectionMesh& section,
                                const std::vector<PartMaterial>& materials, const CoupledComponent& component,
-                               const SolveRequest& request) {
-    CoupledSystem system = assemble_coupled(scene, section, materials, component.dofs);
+                               const SolveRequest& request, const Attachments& attached) {
+    CoupledSystem system = assemble_coupled(scene, section, materials, component.dofs, attached);
     ComponentModes out;
     out.mass_kg = system.operators.model_mass;
     out.n_coupling_entries = system.n_coupling_entries;
@@ -121,13 +122,14 @@ void add_component(const CoupledComponent& component, const ComponentModes& mode
         std::vector<double> x(out.dofs.n_dofs, 0.0), mx(out.dofs.n_dofs, 0.0), energy(out.dofs.blocks.size(), 0.0);
         for (size_t b = 0; b < component.dofs.blocks.size(); ++b) {
             const CoupledBlock& block = component.dofs.blocks[b];
-            const int to = component.offset_in[b];
+            const std::vector<int>& dof_in = component.dof_in[b];  // empty: the whole block from offset_in
             const double s = sign.empty() ? 1.0 : sign[b];
             double e = 0;
             for (int i = 0; i < block.dofs.n_dofs; ++i) {
-                x[to + i] = s * modes.x[k][block.offset + i];
-                mx[to + i] = s * modes.Mx[k][block.offset + i];
-                e += x[to + i] * mx[to + i];
+                const int to = dof_in.empty() ? component.offset_in[b] + i : dof_in[i];
+                x[to] = s * modes.x[k][block.offset + i];
+                mx[to] = s * modes.Mx[k][block.offset + i];
+                e += x[to] * mx[to];
             }
             energy[out.dofs.block_of(block.harmonic.n, block.harmonic.family)] = e;
         }
@@ -143,7 +145,13 @@ void add_component(const CoupledComponent& component, const ComponentModes& mode
 }  // namespace
 
 CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
-                           int n_max, const SolveRequest& request, const std::optional<LocalHarmonics>& local) {
+                           int n_max, const SolveRequest& request) {
+    return solve_coupled(scene, section, materials, n_max, request, attachments(scene));
+}
+
+CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                           int n_max, const SolveRequest& request, const Attachments& attached,
+                           const std::optional<LocalHarmonics>& local) {
     CoupledModes all;
     all.dofs = coupled_dofs(scene, section, n_max, local);
     all.verification.complete = true;
@@ -151,7 +159,7 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
     // Each independent problem for the modes asked of the whole: every one of
     // its eigenvalues below the merged band edge is among them (it cannot hold
     // more of the merged lowest than were asked).
-    const std::vector<CoupledComponent> components = coupled_components(all.dofs, attachments(scene));
+    const std::vector<CoupledComponent> components = coupled_components(all.dofs, attached);
     const std::array<std::vector<double>, 4> rigid = mpi_rank() == 0 ? rigid_fields(section, all.dofs)
                                                                        : std::array<std::vector<double>, 4>{};
     std::vector<ComponentModes> solved(components.size());
@@ -162,7 +170,7 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
             add_component(component, solved[component.partner_of], component.block_sign, rigid, all);
             continue;
         }
-        solved[c] = solve_component(scene, section, materials, component, request);
+        solved[c] = solve_component(scene, section, materials, component, request, attached);
         add_component(component, solved[c], {}, rigid, all);
     }
     // Frequency order over the components.
@@ -316,20 +324,34 @@ std::string coupling_text(const Attachments& attached) {
     if (attached.web)
         text += std::string(text.empty() ? "" : "; ") + "the web's line at theta = " +
                 significant(attached.web->theta * 180 / M_PI, 4) + " deg couples every n to every m";
+    if (attached.one_sided)
+        text += std::string(text.empty() ? "" : "; ") + "the one-sided contact's arc couples every n to every m";
     return text;
+}
+
+// A chuck not expanded: the static state under gravity with the harmonics
+// n = 0 ... kContactStaticHarmonics (models/coupled/contact_static), and its
+// closed points' linearised layer for the modes at every N.
+ContactLayer linearised_contact_layer(const Scene& scene, const SectionMesh& section,
+                                      const std::vector<PartMaterial>& materials, const Printer& say, LevelModes& out) {
+    say("      static state under gravity (-y): one-sided contact by an active-set iteration, harmonics n = 0 ... " +
+        std::to_string(kContactStaticHarmonics) + " (those even about the vertical)");
+    CoupledContactState state = solve_coupled_contact(scene, section, materials, kContactStaticHarmonics, say);
+    for (const std::string& line : contact_state_lines(state.contact, scene.roll_mass() * kStandardGravity)) {
+        say("      " + line);
+        out.assumptions.push_back(line);
+    }
+    return std::move(state.layer);
 }
 
 }  // namespace
 
 LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     Stopwatch stage;
-    if (const auto why = one_sided_contact_reason(scene))
-        throw InputError(scene.source_file + ": model = \"coupled\": " + *why +
-                         "; expected model = \"solid\" or \"auto\"");
     if (scene.mesh.file)
         throw InputError(scene.source_file + ": model = \"coupled\": a [mesh] file; the coupled level meshes the "
                                              "scene's own r-z section; expected model = \"solid\"");
-    const Attachments attached = attachments(scene);
+    Attachments attached = attachments(scene);
     const int reach = attached.step();
     if (reach == 0) {
         // Nothing couples: the harmonics are independent, which the harmonic level solves one at a time.
@@ -349,6 +371,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
     add_frame_nodes(scene, revolved_->mesh);
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
+    if (attached.one_sided) attached.contact = linearised_contact_layer(scene, section, materials, say, out);
     out.timing.mesh = stage.lap();
 
     // 3-5. The coupled problem for N = N_s + 1, 2 N_s + 1, ...: solved, verified,
@@ -381,7 +404,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
             step_request.lambda_min = -request.lambda_scale;  // below any rigid mode
             step_request.lambda_max = wanted(*previous, scene, request).back() * (1 + kEdgeMargin);
         }
-        current = solve_coupled(scene, section, materials, n_max, step_request, local);
+        current = solve_coupled(scene, section, materials, n_max, step_request, attached, local);
         out.timing.factor_and_solve += lap.seconds();
         CoupledStep step{n_max, current->dofs.n_dofs, {}, 0, lap.seconds()};
         const std::vector<double> w = wanted(*current, scene, request);
@@ -429,6 +452,10 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
         (attached.pads.empty() ? "" : "each segmented element's spring layer acts on its pads only (k(theta) = k on "
                                       "the pads, 0 between), integrated exactly in theta; ") +
         (attached.web ? "the web's springs act on one line of the roll's surface, exactly at its angle; " : "") +
+        (attached.one_sided ? "the one-sided contact's linearised layer acts at its closed points (" +
+                                  std::to_string(kContactPointsAround) + " angles around x " +
+                                  std::to_string(kContactGaussAlong) + " Gauss points along each edge); "
+                            : "") +
         "harmonics n = 0 ... " + std::to_string(current->dofs.n_max) + ", N grown in steps of " +
         std::to_string(reach) + " until one step moved no wanted frequency by more than " +
         significant(kCoupledTolerance, 2) + " (last step: " + significant(steps_.back().max_change, 2) + ")");

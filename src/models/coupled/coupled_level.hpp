@@ -1,16 +1,18 @@
 // The coupled-harmonic model level (model = "coupled", docs/harmonic.md,
 // "Coupled harmonics"): a scene whose bodies are bodies of revolution but
-// whose chucks hold the bore with segmented expanding elements. The
-// harmonics n = 0 ... N (both families) of the r–z section are the unknowns,
-// coupled by the pads (models/coupled/coupled_system) into a few independent
+// whose chucks hold the bore with segmented expanding elements, or rest on
+// it where gravity closes a chuck not expanded (the static state first:
+// models/coupled/contact_static), or whose roll the web pulls on one line.
+// The harmonics n = 0 ... N (both families) of the r–z section are the unknowns,
+// coupled by these attachments (models/coupled/coupled_system) into a few independent
 // sets, each one sparse symmetric generalized problem solved with
 // shift-and-invert and proven complete by its inertia; N grows in steps of the coupling reach
 // N_s until the wanted frequencies stop moving (kCoupledTolerance). Modes
 // are summed over the harmonics onto the revolved section and named there
 // as at the harmonic level.
 //
-// A scene nothing couples (no segmented element: the chuck factor's free
-// span, a scene of full bands) is left to the harmonic level, which solves
+// A scene nothing couples (no segmented element, contact or web: the chuck
+// factor's free span, a scene of full bands) is left to the harmonic level, which solves
 // the same independent harmonics one at a time.
 #pragma once
 
@@ -58,7 +60,12 @@ struct CoupledModes {
 };
 
 CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
-                           int n_max, const SolveRequest& request,
+                           int n_max, const SolveRequest& request);
+// The same with the attachments given (a one-sided contact's with its layer
+// linearised about the static state: models/coupled/contact_static), and the
+// harmonics above n_full kept near the pads only when `local` is given.
+CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const std::vector<PartMaterial>& materials,
+                           int n_max, const SolveRequest& request, const Attachments& attached,
                            const std::optional<LocalHarmonics>& local = std::nullopt);
 
 // The largest displacement of the first `n_wanted` modes on the edge of a

@@ -26,11 +26,11 @@ std::vector<PadLayer> pad_layers(const Scene& scene) {
     const SupportEffects effects = support_effects(scene);
     for (const ChuckEffects& chuck : effects.chucks)
         for (const ExpandingElement& e : chuck.placement.expanding) {
-            if (e.segments == 0) continue;
+            if (e.segments == 0 || chuck.one_sided) continue;
             if (!chuck.spring_layer)
                 throw InputError(scene.source_file + ": model = \"coupled\": the " + chuck.placement.chuck +
                                  " chuck's segmented element at " + significant(e.center * 1e3) + " mm is " +
-                                 (chuck.bonded ? "bonded" : "in one-sided contact") +
+                                 "bonded" +
                                  "; the coupled level models segments as a spring layer; expected interface = "
                                  "\"spring\" and an expanded chuck, or model = \"solid\"");
             out.push_back({chuck.placement.chuck, chuck.placement.element_range(e), contact_arcs(e), e.segments,
@@ -59,30 +59,40 @@ Eigen::Matrix3d web_between(const WebLine& web, HarmonicFamily a, HarmonicFamily
 // vanishes exactly (sin n theta at theta on a symmetry line).
 constexpr double kVanishingShare = 1e-12;
 
-bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b) {
+bool pads_couple(const std::vector<PadLayer>& pads, HarmonicFamily a, HarmonicFamily b, int c) {
     const std::vector<Arc> band = {{0, 2 * M_PI}};
     for (const PadLayer& pad : pads)
-        for (int c = 0; c < 3; ++c)
-            if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
+        if (pad_integral(pad.arcs, a, b, c) != pad_integral(band, a, b, c)) return true;
     return false;
 }
 
 }  // namespace
 
+bool Attachments::couple(HarmonicFamily a, int ca, HarmonicFamily b, int cb) const {
+    // The pads and the contact act on (r, theta, z) componentwise; the web's line in x, y, z mixes them.
+    if (ca == cb && pads_couple(pads, a, b, ca)) return true;
+    // A contact not yet solved is assumed to couple everything (it will, but for symmetry).
+    if (ca == cb && one_sided && (!contact || contact_couples(*contact, a, b, ca))) return true;
+    return web && std::abs(web_between(*web, a, b)(ca, cb)) > kVanishingShare * web->stiffness.norm();
+}
+
 bool Attachments::couple(HarmonicFamily a, HarmonicFamily b) const {
-    if (pads_couple(pads, a, b)) return true;
-    return web && web_between(*web, a, b).cwiseAbs().maxCoeff() > kVanishingShare * web->stiffness.norm();
+    for (int ca = 0; ca < 3; ++ca)
+        for (int cb = 0; cb < 3; ++cb)
+            if (couple(a, ca, b, cb)) return true;
+    return false;
 }
 
 int Attachments::step() const {
     int reach = 0;
     for (const PadLayer& p : pads) reach = reach == 0 ? p.segments : std::min(reach, p.segments);
-    return reach > 0 ? reach : web ? 1 : 0;
+    return reach > 0 ? reach : web || one_sided ? 1 : 0;
 }
 
 Attachments attachments(const Scene& scene) {
     Attachments out;
     out.pads = pad_layers(scene);
+    for (const ChuckEffects& chuck : support_effects(scene).chucks) out.one_sided = out.one_sided || chuck.one_sided;
     if (scene.web) {
         const Eigen::Vector3d p = web_tangent_normal(*scene.web);
         out.web = WebLine{std::atan2(p.y(), p.x()), web_line_stiffness(*scene.web)};
@@ -168,7 +178,7 @@ double pad_coupling(const PadLayer& pad, HarmonicFamily a, HarmonicFamily b, int
 std::optional<std::vector<double>> partner_signs(const CoupledDofs& cos, const CoupledDofs& sin,
                                                  const Attachments& attached) {
     const size_t n = cos.blocks.size();
-    if (attached.web || n != sin.blocks.size()) return std::nullopt;
+    if (attached.web || attached.one_sided || n != sin.blocks.size()) return std::nullopt;
     for (size_t i = 0; i < n; ++i) {
         const HarmonicFamily a = cos.blocks[i].harmonic, b = sin.blocks[i].harmonic;
         if (a.n < 1 || a.n != b.n || a.family != Family::cos || b.family != Family::sin) return std::nullopt;
@@ -204,32 +214,82 @@ std::optional<std::vector<double>> partner_signs(const CoupledDofs& cos, const C
 
 }  // namespace
 
+namespace {
+
+// The part of block n = 0 with only the components `keep` (U, W or V; the
+// frame's axial DOF goes with W), renumbered; `dof_in` gets each DOF's place in `all`.
+CoupledBlock part_of_block(const CoupledBlock& whole, bool torsion, std::vector<int>& dof_in) {
+    CoupledBlock part = whole;
+    std::vector<int> renumbered(whole.dofs.n_dofs, -1);
+    const auto keep = [&](int& d) {
+        if (d < 0) return;
+        if (renumbered[d] < 0) {
+            renumbered[d] = static_cast<int>(dof_in.size());
+            dof_in.push_back(whole.offset + d);
+        }
+        d = renumbered[d];
+    };
+    for (size_t i = 0; i < part.dofs.of_component.size(); ++i) {
+        int& d = part.dofs.of_component[i];
+        if ((i % 3 == 1) == torsion)
+            keep(d);
+        else
+            d = -1;
+    }
+    for (int& d : part.dofs.frame)
+        if (torsion)
+            d = -1;
+        else
+            keep(d);
+    part.dofs.n_dofs = static_cast<int>(dof_in.size());
+    return part;
+}
+
+}  // namespace
+
 std::vector<CoupledComponent> coupled_components(const CoupledDofs& all, const Attachments& attached) {
+    // Graph nodes: one per block, and one more (index n) for n = 0's torsion V.
     const int n = static_cast<int>(all.blocks.size());
-    std::vector<int> root(n);
-    for (int b = 0; b < n; ++b) root[b] = b;
+    const auto node = [&](int b, int c) { return all.blocks[b].harmonic.n == 0 && c == 1 ? n : b; };
+    std::vector<int> root(n + 1);
+    for (int b = 0; b <= n; ++b) root[b] = b;
     const auto find = [&](int b) {
         while (root[b] != b) b = root[b] = root[root[b]];
         return b;
     };
     for (int a = 0; a < n; ++a)
-        for (int b = a + 1; b < n; ++b)
-            if (attached.couple(all.blocks[a].harmonic, all.blocks[b].harmonic)) root[find(a)] = find(b);
+        for (int b = a; b < n; ++b)
+            for (int ca = 0; ca < 3; ++ca)
+                for (int cb = 0; cb < 3; ++cb)
+                    if (node(a, ca) != node(b, cb) && find(node(a, ca)) != find(node(b, cb)) &&
+                        attached.couple(all.blocks[a].harmonic, ca, all.blocks[b].harmonic, cb))
+                        root[find(node(a, ca))] = find(node(b, cb));
     std::vector<CoupledComponent> out;
-    std::vector<int> component_of_root(n, -1);
-    for (int b = 0; b < n; ++b) {
-        int& c = component_of_root[find(b)];
+    std::vector<int> component_of_root(n + 1, -1);
+    const auto add = [&](int graph_node, CoupledBlock block, std::vector<int> dof_in) {
+        int& c = component_of_root[find(graph_node)];
         if (c < 0) {
             c = static_cast<int>(out.size());
             out.emplace_back();
             out.back().dofs.n_max = all.n_max;
         }
         CoupledComponent& comp = out[c];
-        CoupledBlock block = all.blocks[b];
         comp.offset_in.push_back(block.offset);
+        comp.dof_in.push_back(std::move(dof_in));
         block.offset = comp.dofs.n_dofs;
         comp.dofs.n_dofs += block.dofs.n_dofs;
         comp.dofs.blocks.push_back(std::move(block));
+    };
+    for (int b = 0; b < n; ++b) {
+        if (all.blocks[b].harmonic.n != 0 || find(b) == find(n)) {
+            add(b, all.blocks[b], {});
+            continue;
+        }
+        for (bool torsion : {false, true}) {  // two independent parts of n = 0
+            std::vector<int> dof_in;
+            CoupledBlock part = part_of_block(all.blocks[b], torsion, dof_in);
+            add(torsion ? n : b, std::move(part), std::move(dof_in));
+        }
     }
     for (size_t c = 0; c < out.size(); ++c)
         for (size_t p = 0; p < c && out[c].partner_of < 0; ++p)
@@ -311,10 +371,41 @@ void add_web_coupling(const SectionMesh& mesh, const WebLine& web, const Section
         }
 }
 
+// The one-sided contact's layer on each interface edge pair of its chucks:
+// contact_edge_matrix between every pair of blocks it couples, on core minus chuck.
+void add_contact_coupling(const SectionMesh& mesh, const SupportEffects& effects, const ContactLayer& layer,
+                          const CoupledDofs& dofs, const CoupledInsert& insert) {
+    for (size_t first = 0, last = 0; first < layer.points.size(); first = last) {
+        const HarmonicContactPoint& p = layer.points[first];
+        for (last = first; last < layer.points.size() && layer.points[last].bore.chuck == p.bore.chuck &&
+                           layer.points[last].edge == p.edge;
+             ++last) {
+        }
+        const std::string& chuck = effects.chucks.at(p.bore.chuck).placement.chuck;
+        const SectionEdge& core = mesh.edge_groups.at("interface_" + chuck + "_core").at(p.edge);
+        const SectionEdge& body = mesh.edge_groups.at("interface_" + chuck + "_chuck").at(p.edge);
+        for (const CoupledBlock& a : dofs.blocks)
+            for (const CoupledBlock& b : dofs.blocks) {
+                const Eigen::Matrix<double, 9, 9> edge = contact_edge_matrix(layer, first, last, a.harmonic, b.harmonic);
+                if (edge.isZero(0)) continue;
+                std::vector<int> rows = edge_dofs(a, core), cols = edge_dofs(b, core);
+                const std::vector<int> rows_body = edge_dofs(a, body), cols_body = edge_dofs(b, body);
+                rows.insert(rows.end(), rows_body.begin(), rows_body.end());
+                cols.insert(cols.end(), cols_body.begin(), cols_body.end());
+                insert(OneSidedContact::kTerm, rows, cols, spring_between(edge));
+            }
+    }
+}
+
 }  // namespace
 
 double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                               const CoupledDofs& dofs, const CoupledInsert& insert) {
+    return assemble_coupled_terms(scene, mesh, materials, dofs, attachments(scene), insert);
+}
+
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const Attachments& attached, const CoupledInsert& insert) {
     const Scene band = with_full_bands(scene);
     double mass = 0;
     for (const CoupledBlock& block : dofs.blocks) {
@@ -326,7 +417,8 @@ double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const
             });
         if (block.harmonic.n == 0) mass = m;
     }
-    const Attachments attached = attachments(scene);
+    COREMODAL_ASSERT(!attached.one_sided || attached.contact);  // the level solves the static state first
+    if (attached.contact) add_contact_coupling(mesh, support_effects(scene), *attached.contact, dofs, insert);
     if (attached.web)
         for (const SectionEdge& e : mesh.edge_groups.at("roll_outer")) add_web_coupling(mesh, *attached.web, e, dofs, insert);
     for (const PadLayer& pad : attached.pads) {
@@ -342,6 +434,11 @@ double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const
 
 CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const CoupledDofs& dofs, MPI_Comm comm) {
+    return assemble_coupled(scene, mesh, materials, dofs, attachments(scene), comm);
+}
+
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, const Attachments& attached, MPI_Comm comm) {
     CoupledSystem system;
     system.dofs = dofs;
     // Coordinate entries for PETSc's COO assembly; every term gets the union
@@ -356,7 +453,7 @@ CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, cons
     const std::int64_t n = system.dofs.n_dofs;
     if (mpi_rank(comm) == 0) {
         system.operators.model_mass = assemble_coupled_terms(
-            scene, mesh, materials, system.dofs,
+            scene, mesh, materials, system.dofs, attached,
             [&](Term t, const std::vector<int>& rows, const std::vector<int>& cols, const Eigen::MatrixXd& A) {
                 for (size_t a = 0; a < rows.size(); ++a)
                     for (size_t b = 0; b < cols.size(); ++b) {

@@ -22,6 +22,7 @@
 
 #include "assembly/harmonic_system.hpp"
 #include "effects/support_effects.hpp"
+#include "models/coupled/contact_layer.hpp"
 #include "models/coupled/pad_integrals.hpp"
 
 #include <functional>
@@ -44,8 +45,10 @@ struct PadLayer {
 };
 
 // Every segmented element of the scene's chucks. A chuck whose segmented
-// element is bonded or in one-sided contact throws InputError (the coupled
-// level models spring layers only; models/choose says which level can).
+// element is bonded throws InputError (the coupled level models spring
+// layers only; models/choose says which level can). A chuck not expanded
+// has none: its elements are retracted and the bore rests on its body
+// (the one-sided contact, Attachments::contact).
 std::vector<PadLayer> pad_layers(const Scene& scene);
 
 // The paper web's line on the roll's outer surface (effects/web.hpp): at the
@@ -61,15 +64,23 @@ struct WebLine {
 // in block h: (u_r, u_theta, u_z) = (t_r U, t_theta V, t_z W) turned by theta.
 Eigen::Matrix3d harmonic_to_cartesian(HarmonicFamily h, double theta);
 
-// What couples the harmonics: the segmented elements' pads and the web's line.
+// What couples the harmonics: the segmented elements' pads, the web's line
+// and a chuck not expanded's one-sided contact. The contact's layer depends
+// on the static state under gravity (models/coupled/contact_static), which
+// `attachments(scene)` does not solve: it only sets `one_sided`, and the
+// level fills `contact` before assembling.
 struct Attachments {
     std::vector<PadLayer> pads;
     std::optional<WebLine> web;
-    bool any() const { return !pads.empty() || web.has_value(); }
+    bool one_sided = false;                // some chuck is not expanded
+    std::optional<ContactLayer> contact;   // its layer linearised about the static state
+    bool any() const { return !pads.empty() || web.has_value() || one_sided; }
     // Whether they couple blocks a and b (some term of theirs nonzero between them).
     bool couple(HarmonicFamily a, HarmonicFamily b) const;
+    // Whether they couple component ca (0: U, 1: V, 2: W) of block a with component cb of block b.
+    bool couple(HarmonicFamily a, int ca, HarmonicFamily b, int cb) const;
     // N grows in steps of this: the smallest N_s of the pads (they couple n to
-    // n +- j N_s), or 1 for a web alone (its line couples every n).
+    // n +- j N_s), or 1 for a web or a contact without pads (they couple every n).
     int step() const;
 };
 Attachments attachments(const Scene& scene);
@@ -118,11 +129,19 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max,
                          const std::optional<LocalHarmonics>& local = std::nullopt);
 
 // The blocks split into the independent problems the attachments leave: the
-// connected components of Attachments::couple (three pads: {0, 3, 6, ...} of both
-// families, {1, 2, 4, 5, ...} cos and the same sin; the last two are
-// degenerate partners, a turned copy of each other). Each component's
-// blocks are renumbered from offset 0; `offset_in` keeps where each block
-// sits in `all`.
+// connected components of Attachments::couple, component by component. The
+// block n = 0 is two nodes of that graph: its (U, W) (radial and axial, even
+// under a mirror through theta = 0) and its V (torsion, odd), which K_0 and
+// M_0 never couple (an orthotropic C couples no cos row with a sin row);
+// every block n >= 1 is one node. Three pads: {0 (U, W), 3c, 6c, ...},
+// {0 (V), 3s, 6s, ...}, {1, 2, 4, 5, ...} cos and the same sin; the last two are
+// degenerate partners, a turned copy of each other. A one-sided contact's
+// arc, symmetric about the vertical: {0 (U, W), 2c, 4c, ..., 1s, 3s, ...}
+// and {0 (V), 1c, 3c, ..., 2s, 4s, ...} (models/coupled/contact_static.hpp).
+// Each component's blocks are renumbered from offset 0; `offset_in` keeps
+// where each block sits in `all`, and `dof_in`, for the part of block n = 0
+// that holds only some of its components (the others held at zero in
+// `dofs`), where each of its DOFs sits in `all` (empty for a whole block).
 //
 // A set of sin families whose every coupling equals that of the set of the
 // same wave numbers' cos families up to a sign per wave number is that set's
@@ -135,6 +154,7 @@ CoupledDofs coupled_dofs(const Scene& scene, const SectionMesh& mesh, int n_max,
 struct CoupledComponent {
     CoupledDofs dofs;
     std::vector<int> offset_in;  // per block of dofs: its offset in `all`
+    std::vector<std::vector<int>> dof_in;  // per block of dofs: its DOFs in `all`, or empty (offset_in + i)
     int partner_of = -1;             // index of the component this one mirrors, or -1
     std::vector<double> block_sign;  // s per block (partners only)
 };
@@ -150,6 +170,9 @@ using CoupledInsert = std::function<void(Term, const std::vector<int>& rows, con
 // a unit test (dense Eigen). Returns the model's mass (kg, once, not per block).
 double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                               const CoupledDofs& dofs, const CoupledInsert& insert);
+// The same with the attachments given (a one-sided contact's needs its layer).
+double assemble_coupled_terms(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                              const CoupledDofs& dofs, const Attachments& attached, const CoupledInsert& insert);
 
 struct CoupledSystem {
     CoupledDofs dofs;
@@ -160,5 +183,7 @@ struct CoupledSystem {
 // K and M on `dofs` (all blocks, or one component's).
 CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const CoupledDofs& dofs, MPI_Comm comm = PETSC_COMM_WORLD);
+CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                               const CoupledDofs& dofs, const Attachments& attached, MPI_Comm comm = PETSC_COMM_WORLD);
 
 }  // namespace coremodal

@@ -27,7 +27,8 @@ TEST_CASE("The harness solves every shipped case at the beam level", "[fuzz]") {
     // The seeds of the fuzzer's corpus: all valid, all solvable; a harness
     // that called them invalid would fuzz nothing past the reader. Case 09's
     // chuck is not expanded: its one-sided contact under gravity exists at
-    // the solid level only, and the beam level refuses it with a message.
+    // the solid and coupled-harmonic levels only, and the beam level refuses
+    // it with a message.
     const std::string solid_only = "09-news-chucks-not-expanded-76x15-2200.toml";
     for (const char* folder : {"cases", "cases/hard"})
         for (const auto& entry : fs::directory_iterator(fs::path(COREMODAL_SOURCE_DIR) / folder)) {

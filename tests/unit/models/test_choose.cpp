@@ -44,7 +44,7 @@ TEST_CASE("auto picks the harmonic level for a body of revolution, else the coup
     CHECK_THAT(*why_not_axisymmetric(segmented), Catch::Contains("3 segments"));
 }
 
-TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chucks break the symmetry",
+TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chucks or a one-sided contact break the symmetry",
           "[model][choose][coupled]") {
     Scene segmented = with_model("auto");
     ChuckSpec chuck;
@@ -58,13 +58,28 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
     CHECK_THAT(*why_coupled(segmented), Catch::Contains("3 segments") && Catch::Contains("coupled harmonics"));
     CHECK_THAT(level_choice_text(segmented, "the case file"), Catch::StartsWith("coupled (the case file; "));
 
-    SECTION("but not bonded segments (ties over arcs), a one-sided contact or a [mesh] file: the solid") {
+    SECTION("and a chuck not expanded (one-sided contact), saying why") {
+        Scene one_sided = with_model("auto");
+        ChuckSpec loose;
+        loose.name = "left";
+        loose.interface.contact = ContactKind::one_sided;
+        loose.expanding.push_back(element);  // retracted: its segments do not matter
+        one_sided.supports.chucks.push_back(loose);
+        CHECK(chosen_level(one_sided) == "coupled");
+        CHECK_THAT(*why_coupled(one_sided), Catch::Contains("not expanded") && Catch::Contains("the contact's arc") &&
+                                                Catch::Contains("coupled harmonics"));
+        CHECK_THAT(level_choice_text(one_sided, "the case file"), Catch::StartsWith("coupled (the case file; "));
+    }
+    SECTION("but not bonded segments (ties over arcs) or a [mesh] file: the solid") {
         Scene bonded = segmented;
         bonded.supports.chucks[0].interface.kind = InterfaceKind::bonded;
         CHECK(chosen_level(bonded) == "solid");
-        Scene one_sided = segmented;
-        one_sided.supports.chucks[0].interface.contact = ContactKind::one_sided;
-        CHECK(chosen_level(one_sided) == "solid");
+        Scene one_sided_bonded = bonded;  // a bonded segment beside a one-sided contact: still the solid
+        one_sided_bonded.supports.chucks.push_back(bonded.supports.chucks[0]);
+        one_sided_bonded.supports.chucks[1].name = "right";
+        one_sided_bonded.supports.chucks[1].interface = {};
+        one_sided_bonded.supports.chucks[1].interface.contact = ContactKind::one_sided;
+        CHECK(chosen_level(one_sided_bonded) == "solid");
         Scene user_mesh = segmented;
         user_mesh.mesh.file = "tube.msh";
         CHECK(chosen_level(user_mesh) == "solid");

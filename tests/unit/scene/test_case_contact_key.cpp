@@ -70,15 +70,15 @@ TEST_CASE("The effects list names exactly the one-sided contact and the gravity 
     CHECK(e.chucks[0].one_sided->linearised(20e3).normal == Approx(2e9));  // k_n0 (1 + p/K1)
 }
 
-TEST_CASE("Only the 3D solid models a one-sided contact: auto chooses it, harmonic and beam refuse",
+TEST_CASE("The coupled harmonics and the 3D solid model a one-sided contact: auto chooses the first, harmonic and beam refuse",
           "[model][choose][contact]") {
     const Scene loose = scene_of("expanded = false\n");
-    CHECK(chosen_level(loose) == "solid");
+    CHECK(chosen_level(loose) == "coupled");
     CHECK_THAT(*why_not_axisymmetric(loose), Catch::Contains("not expanded"));
     CHECK_THROWS_WITH(require_axisymmetric(scene_of("expanded = false\n", "harmonic")),
                       Catch::Contains("model = \"harmonic\"") && Catch::Contains("contact = \"uniform\""));
     CHECK_THROWS_WITH(solve_beam_model(scene_of("expanded = false\n", "beam")),
-                      Catch::Contains("model = \"beam\"") && Catch::Contains("only the 3D solid"));
+                      Catch::Contains("model = \"beam\"") && Catch::Contains("the coupled harmonics model"));
     CHECK(chosen_level(scene_of("expanded = false\ncontact = \"uniform\"\n")) == "harmonic");
 }
 
