@@ -34,9 +34,6 @@ int CoupledModes::dominant_n(size_t k) const {
 
 namespace {
 
-std::vector<double> block_values(const std::vector<double>& x, const CoupledBlock& block) {
-    return {x.begin() + block.offset, x.begin() + block.offset + block.dofs.n_dofs};
-}
 
 // The rigid motions (x, y, z, about z) on the coupled DOFs: x lives in
 // (1, cos), y in (1, sin) (the same field turned by 90 deg), z and about z in n = 0.

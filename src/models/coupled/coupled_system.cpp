@@ -6,6 +6,7 @@
 #include "effects/web.hpp"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdint>
 
@@ -107,11 +108,22 @@ int CoupledDofs::block_of(int n, Family family) const {
 }
 
 std::optional<LocalHarmonics> local_harmonics(const Attachments& attached, const SectionMesh& mesh) {
-    if (attached.web || attached.pads.empty()) return std::nullopt;
+    if (attached.web || (attached.pads.empty() && !attached.contact)) return std::nullopt;
     double r_max = 0;
     for (const auto& [r, z] : mesh.nodes) r_max = std::max(r_max, r);
     LocalHarmonics local{1, {}, kLocalReach * 2 * r_max};
     for (const PadLayer& pad : attached.pads) local.pads.push_back(pad.zone);
+    if (attached.contact) {
+        // Each one-sided chuck's points span its interface along z.
+        std::map<int, ZRange> zones;
+        for (const HarmonicContactPoint& p : attached.contact->points) {
+            const double z = p.bore.x[2];
+            const auto [it, fresh] = zones.try_emplace(p.bore.chuck, ZRange{z, z});
+            it->second.lo = std::min(it->second.lo, z);
+            it->second.hi = std::max(it->second.hi, z);
+        }
+        for (const auto& [chuck, zone] : zones) local.pads.push_back(zone);
+    }
     return local;
 }
 

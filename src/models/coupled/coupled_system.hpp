@@ -111,12 +111,13 @@ struct CoupledDofs {
 // the reach sufficed is checked on each solution (zone_edge_amplitude).
 struct LocalHarmonics {
     int n_full = 1;            // n = 0, 1 (the beam's modes) are whole
-    std::vector<ZRange> pads;  // z of every pad layer
+    std::vector<ZRange> pads;  // z of every pad layer and one-sided contact
     double reach_2 = 0;        // m, the reach of n = 2; n keeps 2/n of it
     double reach(int n) const { return reach_2 * 2.0 / n; }
 };
-// Local harmonics for pads alone (the web's line runs the roll's length:
-// none), reaching kLocalReach diameters of the section's largest radius at n = 2.
+// Local harmonics for pads and one-sided contacts (the web's line runs the
+// roll's length: none), reaching kLocalReach diameters of the section's
+// largest radius at n = 2.
 inline constexpr double kLocalReach = 4;
 std::optional<LocalHarmonics> local_harmonics(const Attachments& attached, const SectionMesh& mesh);
 
