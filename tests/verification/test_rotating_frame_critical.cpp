@@ -5,7 +5,9 @@
 // stationary frame's forward whirl, which must meet the line f = f_rot at
 // exactly that speed on a body of revolution; a dense solve of the same
 // pencil (its eigenvalues and its count below Omega_max^2); Rayleigh's bound
-// without the centrifugal term.
+// without the centrifugal term. The pencils (K, B_r) of a rotating-frame
+// frequency r f_rot likewise: the stationary frame's backward whirl and its
+// order-2 crossings, and a dense solve of the complex Hermitian pencil.
 #include "analyses/campbell/campbell.hpp"
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 #include "common/error.hpp"
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 using namespace coremodal;
 
@@ -46,6 +49,34 @@ std::vector<double> dense_pencil(const OperatorSet& ops) {
         if (c > 0) out.push_back(1 / c);
     std::sort(out.begin(), out.end());
     return out;
+}
+
+// The complex pencil K x = mu B_r x, B_r = -K_Omega + r^2 M - i r G_c, by a
+// dense Hermitian solve (Eigen, complex: not the real form the code
+// solves): its eigenvalues mu > 0, ascending.
+std::vector<double> dense_ratio_pencil(const OperatorSet& ops, double r) {
+    PetscInt rows = 0;
+    MatGetSize(ops.K(), &rows, nullptr);
+    const Eigen::Index n = static_cast<Eigen::Index>(rows);
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+    const Eigen::MatrixXd K = apply_columns(ops.K(), I), M = apply_columns(ops.M(), I);
+    const Eigen::MatrixXd A = r * r * M - apply_columns(ops[Term::centrifugal], I);
+    const Eigen::MatrixXd G = apply_columns(ops[Term::gyroscopic], I);
+    const Eigen::MatrixXcd B = A.cast<std::complex<double>>() - std::complex<double>(0, r) * G.cast<std::complex<double>>();
+    const Eigen::MatrixXcd Kc = (0.5 * (K + K.transpose())).cast<std::complex<double>>();
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> solver(0.5 * (B + B.adjoint()), Kc);
+    std::vector<double> out;
+    for (double c : solver.eigenvalues())
+        if (c > 0) out.push_back(1 / c);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// The pencil r's mode of signed harmonic k (the lowest), or nullptr.
+const ZeroFrequencyMode* with_harmonic(const ZeroFrequencyModes& z, int k) {
+    for (const ZeroFrequencyMode& m : z.modes)
+        if (m.harmonic == k && m.label.type == "bending") return &m;
+    return nullptr;
 }
 
 }  // namespace
@@ -125,6 +156,78 @@ TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, w
     CHECK(critical_on > critical_off);
 }
 
+TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 give the backward order-1 and the "
+          "order-2 crossings where the stationary frame's whirls meet the lines",
+          "[rotation][solid][rotating_frame][critical]") {
+    // As the first test: the stationary frame (another G and Omega^2 term,
+    // no pencil) must have, at the pencil's speed, the whirl of the
+    // predicted direction on the line j f_rot, to the frames' 1e-4.
+    constexpr double kFrameTolerance = 1e-4;
+    const Scene tube = clamped_tube(16, 8);
+    const RotatingSolid stationary(tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true});
+    const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
+    const double f1 = stationary.modes_at(0.0).front().frequency_hz;
+    const double forward_1 = rotating.zero_frequency_modes(1.3 * f1).modes.front().speed_hz;
+    struct Expected {
+        int ratio, harmonic, order;
+        Whirl whirl;
+        const char* name;
+    };
+    // k = +1 at r = 2: (2 - 1) f_rot backward; k = -1 at r = 1: (1 + 1) f_rot
+    // forward; k = +1 at r = 3: (3 - 1) f_rot backward (rotating_frame.hpp).
+    for (const Expected e : {Expected{2, 1, 1, Whirl::backward, "BW order 1"},
+                             Expected{1, -1, 2, Whirl::forward, "FW order 2"},
+                             Expected{3, 1, 2, Whirl::backward, "BW order 2"}}) {
+        INFO(e.name);
+        const ZeroFrequencyModes z = rotating.frequency_ratio_modes(1.3 * f1, e.ratio);
+        const ZeroFrequencyMode* m = with_harmonic(z, e.harmonic);
+        REQUIRE(m != nullptr);
+        CHECK(m->order == e.order);
+        CHECK(m->whirl == e.whirl);
+        CHECK(m->multiplicity == 1);  // k and -k are different modes once r > 0
+        CHECK(m->share > 0.99);
+        CHECK(m->relative_residual < 1e-8);
+        long found = 0;
+        for (const ZeroFrequencyMode& x : z.modes) found += x.multiplicity;
+        CHECK(found == z.counted);
+        const double fc = m->speed_hz;
+        double closest = 1e300;
+        for (const RotatingMode& s : stationary.modes_at(fc))
+            if (s.whirl == e.whirl && s.label.type == "bending" && s.label.n == 1)
+                closest = std::min(closest, std::abs(s.frequency_hz - e.order * fc) / (e.order * fc));
+        INFO("pencil r = " << e.ratio << ": " << fc * 60 << " rpm (f1 " << f1 << " Hz, FW order 1 at " << forward_1
+                           << " Hz); stationary whirl off the line by " << closest);
+        CHECK(closest < kFrameTolerance);
+        if (e.order == 1) CHECK(fc < forward_1);  // the backward crossing lies below the forward one
+    }
+}
+
+TEST_CASE("The pencils r > 0: their count by the real form's inertia and their speeds against a dense complex "
+          "solve",
+          "[rotation][solid][rotating_frame][critical]") {
+    // The code solves the real symmetric form of size 2n and halves the
+    // count; the truth is the complex Hermitian pencil of size n.
+    const Scene tube = clamped_tube(8, 4);
+    const RotatingSolid solid(tube, 4, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
+    const double f1 = solid.modes_at(0.0).front().frequency_hz;
+    for (int r : {1, 2, 3}) {
+        const std::vector<double> dense = dense_ratio_pencil(solid.operators(), r);
+        for (double factor : {0.4, 1.3}) {
+            const double max_hz = factor * f1, max_mu = std::pow(2 * M_PI * max_hz, 2);
+            const ZeroFrequencyModes z = solid.frequency_ratio_modes(max_hz, r);
+            const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
+            INFO("r = " << r << ", Omega_max = " << factor << " f1: counted " << z.counted << ", dense " << dense_count);
+            CHECK(z.counted == dense_count);
+            size_t i = 0;
+            for (const ZeroFrequencyMode& m : z.modes) {
+                CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
+                i += static_cast<size_t>(m.multiplicity);
+            }
+            CHECK(i == static_cast<size_t>(dense_count));
+        }
+    }
+}
+
 TEST_CASE("The pencil refuses a free structure with the reason", "[rotation][solid][rotating_frame][critical]") {
     Scene tube = testing::steel_tube(0.106, 0.076, 0.6, 1, 8, 4, 6);
     tube.model = "solid";
@@ -152,10 +255,23 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
     INFO("f1 " << f1 << " Hz; sweep end: " << r.sweep_end);
     CHECK(r.points.size() == 2);  // 0 and 0.5 f1: 1.3 f1 lies above the first critical speed
     CHECK(r.sweep_end.find("the sweep stopped at") != std::string::npos);
-    const WhirlCrossing* c = r.first_order_one();
+    const auto pencil_crossing = [&](Whirl whirl) -> const WhirlCrossing* {
+        for (const WhirlCrossing& x : r.critical)
+            if (x.order == 1 && x.whirl == whirl && x.source == CrossingSource::pencil) return &x;
+        return nullptr;
+    };
+    const WhirlCrossing* c = pencil_crossing(Whirl::forward);
+    const WhirlCrossing* bw = pencil_crossing(Whirl::backward);
     REQUIRE(c != nullptr);
-    CHECK(c->source == CrossingSource::pencil);
-    CHECK(c->whirl == Whirl::forward);
+    REQUIRE(bw != nullptr);
+    // The backward crossing (the pencil r = 2) lies the whirl split below the
+    // forward one, inside the band the sweep leaves out, and is the first.
+    INFO("order 1: BW " << bw->speed_hz << " Hz, FW " << c->speed_hz << " Hz");
+    CHECK(bw->speed_hz < c->speed_hz);
+    CHECK(bw->speed_hz > kSweepEndBelowZeroFrequency * c->speed_hz);
+    CHECK(bw->label.type == "bending");
+    CHECK(bw->label.n == 1);
+    CHECK(r.first_order_one() == bw);
     CHECK(c->label.type == "bending");
     CHECK(c->speed_hz > 0.5 * f1);
     CHECK(c->speed_hz < 1.3 * f1);
@@ -167,6 +283,7 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
                            [&](const std::string& n) { return n.find(words) != std::string::npos; });
     };
     CHECK(noted("critical speeds from the pencil (exact)"));
+    CHECK(noted("the pencil r = 2"));
 
     // One speed above the critical speed leaves nothing to sweep: an error
     // that names the critical speed, before the modes at rest are solved.
