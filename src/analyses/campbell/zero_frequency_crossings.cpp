@@ -99,8 +99,9 @@ std::string ratio_note(const ZeroFrequencyModes& z, size_t n_crossings, double w
     return "the pencil r = " + std::to_string(z.ratio) + " (a mode at rotating-frame frequency " +
            std::to_string(z.ratio) + " f_rot, K x = Omega^2 (M_P - K_sigma1 + r^2 M - i r G_c) x, in its real form of "
            "twice the size): the inertia at " + rpm_text(z.max_speed_hz) + " counts " + std::to_string(z.counted) +
-           ", all found (" + significant(wall, 3) + " s wall, " + significant(cpu, 3) + " s CPU); " +
-           std::to_string(n_crossings) + " of them cross an excitation line asked for (order |r - k|)";
+           ", all found (" + significant(wall, 3) + " s wall, " + significant(cpu, 3) + " s CPU); crossings of an "
+           "excitation line asked for (order |r - k|, k the dominant signed harmonic) among them: " +
+           std::to_string(n_crossings);
 }
 
 // Adds the crossings of the pencils r > 0 to the plan.
