@@ -34,23 +34,6 @@ Scene clamped_tube(int around, int along) {
     return tube;
 }
 
-// The pencil's eigenvalues Omega^2 > 0 by a dense solve of B x = c K x
-// (Eigen; K positive definite), ascending.
-std::vector<double> dense_pencil(const OperatorSet& ops) {
-    PetscInt rows = 0;
-    MatGetSize(ops.K(), &rows, nullptr);
-    const Eigen::Index n = static_cast<Eigen::Index>(rows);
-    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
-    const Eigen::MatrixXd K = apply_columns(ops.K(), I), B = -apply_columns(ops[Term::centrifugal], I);
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (B + B.transpose()),
-                                                                            0.5 * (K + K.transpose()));
-    std::vector<double> out;
-    for (double c : solver.eigenvalues())
-        if (c > 0) out.push_back(1 / c);
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 // The complex pencil K x = mu B_r x, B_r = -K_Omega + r^2 M - i r G_c, by a
 // dense Hermitian solve (Eigen, complex: not the real form the code
 // solves): its eigenvalues mu > 0, ascending.
@@ -72,6 +55,48 @@ std::vector<double> dense_ratio_pencil(const OperatorSet& ops, double r) {
     return out;
 }
 
+// r = 0: the real pencil (K, M_P - K_sigma1), by the same dense solve.
+std::vector<double> dense_pencil(const OperatorSet& ops) { return dense_ratio_pencil(ops, 0.0); }
+
+// The frames differ on the 16 x 8 tube by 4.6e-5 of the shift n f_rot
+// (test_rotating_frame.cpp); near a crossing the whirl hardly moves with
+// speed, so a crossing's speed differs by as much: 1e-4, as there.
+constexpr double kFrameTolerance = 1e-4;
+
+// The clamped tube in both frames with the centrifugal term, and f1 at rest.
+struct BothFrames {
+    Scene tube = clamped_tube(16, 8);
+    RotatingSolid stationary{tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true}};
+    RotatingSolid rotating{tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true}};
+    double f1 = stationary.modes_at(0.0).front().frequency_hz;
+};
+
+// How far the stationary frame's bending n = 1 whirl of direction `whirl`
+// at f_rot = fc lies from the line order * fc, relative to it (the nearest).
+double off_the_line(const RotatingSolid& stationary, double fc, int order, Whirl whirl) {
+    double closest = 1e300;
+    for (const RotatingMode& m : stationary.modes_at(fc))
+        if (m.whirl == whirl && m.label.type == "bending" && m.label.n == 1)
+            closest = std::min(closest, std::abs(m.frequency_hz - order * fc) / (order * fc));
+    return closest;
+}
+
+// A pencil's speeds below max_hz against the dense eigenvalues mu = Omega^2:
+// the count and every speed (1e-7: both solvers' tolerances, squared back).
+void check_against_dense(const ZeroFrequencyModes& z, const std::vector<double>& dense, double max_hz) {
+    const double max_mu = std::pow(2 * M_PI * max_hz, 2);
+    const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
+    INFO("Omega_max = " << max_hz << " Hz: counted " << z.counted << ", dense " << dense_count);
+    CHECK(z.counted == dense_count);
+    size_t i = 0;
+    for (const ZeroFrequencyMode& m : z.modes) {
+        REQUIRE(i < dense.size());
+        CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
+        i += static_cast<size_t>(m.multiplicity);
+    }
+    CHECK(i == static_cast<size_t>(dense_count));
+}
+
 // The pencil r's mode of signed harmonic k (the lowest), or nullptr.
 const ZeroFrequencyMode* with_harmonic(const ZeroFrequencyModes& z, int k) {
     for (const ZeroFrequencyMode& m : z.modes)
@@ -87,16 +112,9 @@ TEST_CASE("A body of revolution in the rotating frame: the pencil's critical spe
     // The first test of test_rotating_frame.cpp's tube, both frames, with
     // the centrifugal term. At the pencil's speed the stationary frame
     // (another G, another Omega^2 term, no pencil) must have its forward
-    // bending whirl exactly on the order-1 line. The frames differ on the
-    // mesh by 4.6e-5 of the shift n f_rot (that test); near the crossing
-    // f_FW hardly moves with speed, so the speed differs by as much:
-    // tolerance 1e-4, as there.
-    constexpr double kFrameTolerance = 1e-4;
-    const Scene tube = clamped_tube(16, 8);
-    const RotatingSolid stationary(tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true});
-    const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
-    const double f1 = stationary.modes_at(0.0).front().frequency_hz;
-    const ZeroFrequencyModes z = rotating.zero_frequency_modes(1.3 * f1);
+    // bending whirl exactly on the order-1 line, to kFrameTolerance.
+    const BothFrames t;
+    const ZeroFrequencyModes z = t.rotating.zero_frequency_modes(1.3 * t.f1);
     REQUIRE_FALSE(z.modes.empty());
     const ZeroFrequencyMode& first = z.modes.front();
     CHECK(first.wave_number == 1);
@@ -109,13 +127,10 @@ TEST_CASE("A body of revolution in the rotating frame: the pencil's critical spe
     CHECK(found == z.counted);
 
     const double fc = first.speed_hz;
-    double closest = 1e300;
-    for (const RotatingMode& m : stationary.modes_at(fc))
-        if (m.whirl == Whirl::forward && m.label.type == "bending" && m.label.n == 1)
-            closest = std::min(closest, std::abs(m.frequency_hz - fc) / fc);
-    INFO("pencil: " << fc * 60 << " rpm (f1 at rest " << f1 << " Hz); stationary FW off the line by " << closest);
+    const double closest = off_the_line(t.stationary, fc, 1, Whirl::forward);
+    INFO("pencil: " << fc * 60 << " rpm (f1 at rest " << t.f1 << " Hz); stationary FW off the line by " << closest);
     CHECK(closest < kFrameTolerance);
-    CHECK(fc > f1);  // the clamped tube's forward whirl and its stiffening rise with speed
+    CHECK(fc > t.f1);  // the clamped tube's forward whirl and its stiffening rise with speed
 }
 
 TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, with the centrifugal term and "
@@ -133,19 +148,7 @@ TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, w
         f1 = solid.modes_at(0.0).front().frequency_hz;
         const std::vector<double> dense = dense_pencil(solid.operators());
         REQUIRE_FALSE(dense.empty());
-        for (double factor : {0.9, 1.3, 4.0}) {
-            const double max_hz = factor * f1, max_mu = std::pow(2 * M_PI * max_hz, 2);
-            const ZeroFrequencyModes z = solid.zero_frequency_modes(max_hz);
-            const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
-            INFO("Omega_max = " << factor << " f1: counted " << z.counted << ", dense " << dense_count);
-            CHECK(z.counted == dense_count);
-            size_t i = 0;
-            for (const ZeroFrequencyMode& m : z.modes) {
-                CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
-                i += static_cast<size_t>(m.multiplicity);
-            }
-            CHECK(i == static_cast<size_t>(dense_count));
-        }
+        for (double factor : {0.9, 1.3, 4.0}) check_against_dense(solid.zero_frequency_modes(factor * f1), dense, factor * f1);
         (stiffening ? critical_on : critical_off) = std::sqrt(dense.front()) / (2 * M_PI);
     }
     // Without K_sigma1 the pencil is (K, M_P): x^T K x / x^T M_P x >= x^T K x /
@@ -162,12 +165,8 @@ TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 gi
     // As the first test: the stationary frame (another G and Omega^2 term,
     // no pencil) must have, at the pencil's speed, the whirl of the
     // predicted direction on the line j f_rot, to the frames' 1e-4.
-    constexpr double kFrameTolerance = 1e-4;
-    const Scene tube = clamped_tube(16, 8);
-    const RotatingSolid stationary(tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true});
-    const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
-    const double f1 = stationary.modes_at(0.0).front().frequency_hz;
-    const double forward_1 = rotating.zero_frequency_modes(1.3 * f1).modes.front().speed_hz;
+    const BothFrames t;
+    const double forward_1 = t.rotating.zero_frequency_modes(1.3 * t.f1).modes.front().speed_hz;
     struct Expected {
         int ratio, harmonic, order;
         Whirl whirl;
@@ -179,7 +178,7 @@ TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 gi
                              Expected{1, -1, 2, Whirl::forward, "FW order 2"},
                              Expected{3, 1, 2, Whirl::backward, "BW order 2"}}) {
         INFO(e.name);
-        const ZeroFrequencyModes z = rotating.frequency_ratio_modes(1.3 * f1, e.ratio);
+        const ZeroFrequencyModes z = t.rotating.frequency_ratio_modes(1.3 * t.f1, e.ratio);
         const ZeroFrequencyMode* m = with_harmonic(z, e.harmonic);
         REQUIRE(m != nullptr);
         CHECK(m->order == e.order);
@@ -191,11 +190,8 @@ TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 gi
         for (const ZeroFrequencyMode& x : z.modes) found += x.multiplicity;
         CHECK(found == z.counted);
         const double fc = m->speed_hz;
-        double closest = 1e300;
-        for (const RotatingMode& s : stationary.modes_at(fc))
-            if (s.whirl == e.whirl && s.label.type == "bending" && s.label.n == 1)
-                closest = std::min(closest, std::abs(s.frequency_hz - e.order * fc) / (e.order * fc));
-        INFO("pencil r = " << e.ratio << ": " << fc * 60 << " rpm (f1 " << f1 << " Hz, FW order 1 at " << forward_1
+        const double closest = off_the_line(t.stationary, fc, e.order, e.whirl);
+        INFO("pencil r = " << e.ratio << ": " << fc * 60 << " rpm (f1 " << t.f1 << " Hz, FW order 1 at " << forward_1
                            << " Hz); stationary whirl off the line by " << closest);
         CHECK(closest < kFrameTolerance);
         if (e.order == 1) CHECK(fc < forward_1);  // the backward crossing lies below the forward one
@@ -212,19 +208,8 @@ TEST_CASE("The pencils r > 0: their count by the real form's inertia and their s
     const double f1 = solid.modes_at(0.0).front().frequency_hz;
     for (int r : {1, 2, 3}) {
         const std::vector<double> dense = dense_ratio_pencil(solid.operators(), r);
-        for (double factor : {0.4, 1.3}) {
-            const double max_hz = factor * f1, max_mu = std::pow(2 * M_PI * max_hz, 2);
-            const ZeroFrequencyModes z = solid.frequency_ratio_modes(max_hz, r);
-            const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
-            INFO("r = " << r << ", Omega_max = " << factor << " f1: counted " << z.counted << ", dense " << dense_count);
-            CHECK(z.counted == dense_count);
-            size_t i = 0;
-            for (const ZeroFrequencyMode& m : z.modes) {
-                CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
-                i += static_cast<size_t>(m.multiplicity);
-            }
-            CHECK(i == static_cast<size_t>(dense_count));
-        }
+        INFO("r = " << r);
+        for (double factor : {0.4, 1.3}) check_against_dense(solid.frequency_ratio_modes(factor * f1, r), dense, factor * f1);
     }
 }
 
