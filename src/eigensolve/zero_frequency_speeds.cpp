@@ -27,6 +27,49 @@ constexpr int kMaxTries = 3;
 
 using Eps = PetscHandle<EPS, EPSDestroy>;
 
+// The rows' nonzero counts of the real form below (its columns 2j and 2j+1
+// are owned where j is): each entry of P or Q in row i lands once in row
+// 2i and once in row 2i+1.
+struct Preallocation {
+    std::vector<PetscInt> diagonal, off_diagonal;
+};
+Preallocation real_form_preallocation(Mat P, Mat Q, PetscInt lo, PetscInt hi) {
+    Preallocation out{std::vector<PetscInt>(static_cast<size_t>(2 * (hi - lo)), 0), {}};
+    out.off_diagonal = out.diagonal;
+    for (Mat part : {P, Q}) {
+        if (!part) continue;
+        for (PetscInt i = lo; i < hi; ++i) {
+            PetscInt nc = 0;
+            const PetscInt* cols = nullptr;
+            COREMODAL_PETSC(MatGetRow(part, i, &nc, &cols, nullptr));
+            for (PetscInt c = 0; c < nc; ++c)
+                for (int half = 0; half < 2; ++half)
+                    ++(cols[c] >= lo && cols[c] < hi ? out.diagonal
+                                                     : out.off_diagonal)[static_cast<size_t>(2 * (i - lo) + half)];
+            COREMODAL_PETSC(MatRestoreRow(part, i, &nc, &cols, nullptr));
+        }
+    }
+    return out;
+}
+
+// sign * part's local rows i into the rows 2i + row_half, columns 2j + col_half.
+void put_block(Mat out, Mat part, double sign, int row_half, int col_half) {
+    PetscInt lo = 0, hi = 0;
+    COREMODAL_PETSC(MatGetOwnershipRange(part, &lo, &hi));
+    for (PetscInt i = lo; i < hi; ++i) {
+        PetscInt nc = 0;
+        const PetscInt* cols = nullptr;
+        const PetscScalar* vals = nullptr;
+        COREMODAL_PETSC(MatGetRow(part, i, &nc, &cols, &vals));
+        std::vector<PetscInt> c2(static_cast<size_t>(nc));
+        std::vector<PetscScalar> v2(static_cast<size_t>(nc));
+        for (PetscInt c = 0; c < nc; ++c) c2[c] = 2 * cols[c] + col_half, v2[c] = sign * vals[c];
+        const PetscInt row = 2 * i + row_half;
+        COREMODAL_PETSC(MatSetValues(out, 1, &row, nc, c2.data(), v2.data(), INSERT_VALUES));
+        COREMODAL_PETSC(MatRestoreRow(part, i, &nc, &cols, &vals));
+    }
+}
+
 // The real symmetric form of the Hermitian H = P + i Q (P symmetric, Q
 // real skew, or none) on x = a + i b interleaved: H x = (P a - Q b) +
 // i (Q a + P b), so the rows 2i and 2i+1 hold [P_ij, -Q_ij; Q_ij, P_ij] at
@@ -36,39 +79,16 @@ PetscMatrix real_form(Mat P, Mat Q) {
     PetscInt n = 0, lo = 0, hi = 0;
     COREMODAL_PETSC(MatGetSize(P, &n, nullptr));
     COREMODAL_PETSC(MatGetOwnershipRange(P, &lo, &hi));
-    std::vector<PetscInt> d_nnz(static_cast<size_t>(2 * (hi - lo)), 0), o_nnz(d_nnz);
-    for (Mat part : {P, Q}) {
-        if (!part) continue;
-        for (PetscInt i = lo; i < hi; ++i) {
-            PetscInt nc = 0;
-            const PetscInt* cols = nullptr;
-            COREMODAL_PETSC(MatGetRow(part, i, &nc, &cols, nullptr));
-            for (PetscInt c = 0; c < nc; ++c)
-                for (int half = 0; half < 2; ++half)
-                    ++(cols[c] >= lo && cols[c] < hi ? d_nnz : o_nnz)[static_cast<size_t>(2 * (i - lo) + half)];
-            COREMODAL_PETSC(MatRestoreRow(part, i, &nc, &cols, nullptr));
-        }
-    }
+    const Preallocation nnz = real_form_preallocation(P, Q, lo, hi);
     PetscMatrix out;
     COREMODAL_PETSC(MatCreateAIJ(PetscObjectComm((PetscObject)P), 2 * (hi - lo), 2 * (hi - lo), 2 * n, 2 * n, 0,
-                                 d_nnz.data(), 0, o_nnz.data(), out.out()));
-    // (part, sign, row offset, column offset): P on both diagonal places, -Q above, Q below.
-    const auto put = [&](Mat part, double sign, int row_half, int col_half) {
-        if (!part) return;
-        for (PetscInt i = lo; i < hi; ++i) {
-            PetscInt nc = 0;
-            const PetscInt* cols = nullptr;
-            const PetscScalar* vals = nullptr;
-            COREMODAL_PETSC(MatGetRow(part, i, &nc, &cols, &vals));
-            std::vector<PetscInt> c2(static_cast<size_t>(nc));
-            std::vector<PetscScalar> v2(static_cast<size_t>(nc));
-            for (PetscInt c = 0; c < nc; ++c) c2[c] = 2 * cols[c] + col_half, v2[c] = sign * vals[c];
-            const PetscInt row = 2 * i + row_half;
-            COREMODAL_PETSC(MatSetValues(out, 1, &row, nc, c2.data(), v2.data(), INSERT_VALUES));
-            COREMODAL_PETSC(MatRestoreRow(part, i, &nc, &cols, &vals));
-        }
-    };
-    put(P, 1, 0, 0), put(P, 1, 1, 1), put(Q, -1, 0, 1), put(Q, 1, 1, 0);
+                                 nnz.diagonal.data(), 0, nnz.off_diagonal.data(), out.out()));
+    put_block(out, P, 1, 0, 0);
+    put_block(out, P, 1, 1, 1);
+    if (Q) {
+        put_block(out, Q, -1, 0, 1);
+        put_block(out, Q, 1, 1, 0);
+    }
     COREMODAL_PETSC(MatAssemblyBegin(out, MAT_FINAL_ASSEMBLY));
     COREMODAL_PETSC(MatAssemblyEnd(out, MAT_FINAL_ASSEMBLY));
     COREMODAL_PETSC(MatSetOption(out, MAT_SYMMETRIC, PETSC_TRUE));
