@@ -74,21 +74,6 @@ std::string sweep_end_text(const RotationSpec& rotation, const RotationSpec& swe
            " (and forward ones of order |k| for every k); other modes' crossings are not reported there";
 }
 
-// The ratios r > 0 at which a mode of harmonic |k| <= kMaxCrossingHarmonic
-// meets an excitation line of order j: |r - k| = j with r >= 0, i.e.
-// r = j - n (k = -n, forward), n - j (k = +n, forward) or n + j (k = +n,
-// backward), ascending; r = 0 is the zero-frequency pencil, solved first.
-std::vector<int> crossing_ratios(const std::vector<int>& orders) {
-    std::vector<int> out;
-    for (int j : orders)
-        for (int n = 0; n <= kMaxCrossingHarmonic; ++n)
-            for (int r : {j - n, n - j, n + j})
-                if (r > 0) out.push_back(r);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
-}
-
 bool wanted(const RotationSpec& rotation, int order) {
     const auto& orders = rotation.excitation_orders;
     return order > 0 && std::find(orders.begin(), orders.end(), order) != orders.end();
@@ -153,6 +138,19 @@ ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const Ro
     if (!z.modes.empty()) end_sweep_below(rotation, z.modes.front(), plan);
     add_ratio_crossings(solid, rotation, dp, plan);
     return plan;
+}
+
+// |r - k| = j with r >= 0 and |k| = n: r = j - n (k = -n, forward),
+// n - j (k = +n, forward) or n + j (k = +n, backward).
+std::vector<int> crossing_ratios(const std::vector<int>& orders) {
+    std::vector<int> out;
+    for (int j : orders)
+        for (int n = 0; n <= kMaxCrossingHarmonic; ++n)
+            for (int r : {j - n, n - j, n + j})
+                if (r > 0) out.push_back(r);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil) {

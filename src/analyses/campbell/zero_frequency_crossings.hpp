@@ -53,8 +53,14 @@ struct ZeroFrequencyPlan {
 ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const RotationSpec& rotation,
                                             double roll_outer_diameter);
 
-// Adds the pencil's crossings to out.critical (the sweep's), dropping a
-// sweep crossing that is the same one, ascending by speed.
+// The ratios r > 0 at which a mode of harmonic |k| <= kMaxCrossingHarmonic
+// meets an excitation line of one of `orders` (|r - k| = j), ascending:
+// one pencil each; r = 0, the zero-frequency pencil, is solved first anyway.
+std::vector<int> crossing_ratios(const std::vector<int>& orders);
+
+// Adds the pencils' crossings to out.critical (the sweep's), dropping a
+// sweep crossing that is the same one (order and whirl, kSameCrossingSpeed),
+// ascending by speed.
 void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil);
 
 }  // namespace coremodal
