@@ -5,7 +5,9 @@
 // stationary frame's forward whirl, which must meet the line f = f_rot at
 // exactly that speed on a body of revolution; a dense solve of the same
 // pencil (its eigenvalues and its count below Omega_max^2); Rayleigh's bound
-// without the centrifugal term.
+// without the centrifugal term. The pencils (K, B_r) of a rotating-frame
+// frequency r f_rot likewise: the stationary frame's backward whirl and its
+// order-2 crossings, and a dense solve of the complex Hermitian pencil.
 #include "analyses/campbell/campbell.hpp"
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 #include "common/error.hpp"
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 using namespace coremodal;
 
@@ -31,21 +34,74 @@ Scene clamped_tube(int around, int along) {
     return tube;
 }
 
-// The pencil's eigenvalues Omega^2 > 0 by a dense solve of B x = c K x
-// (Eigen; K positive definite), ascending.
-std::vector<double> dense_pencil(const OperatorSet& ops) {
+// The complex pencil K x = mu B_r x, B_r = -K_Omega + r^2 M - i r G_c, by a
+// dense Hermitian solve (Eigen, complex: not the real form the code
+// solves): its eigenvalues mu > 0, ascending.
+std::vector<double> dense_ratio_pencil(const OperatorSet& ops, double r) {
     PetscInt rows = 0;
     MatGetSize(ops.K(), &rows, nullptr);
     const Eigen::Index n = static_cast<Eigen::Index>(rows);
     const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
-    const Eigen::MatrixXd K = apply_columns(ops.K(), I), B = -apply_columns(ops[Term::centrifugal], I);
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (B + B.transpose()),
-                                                                            0.5 * (K + K.transpose()));
+    const Eigen::MatrixXd K = apply_columns(ops.K(), I), M = apply_columns(ops.M(), I);
+    const Eigen::MatrixXd A = r * r * M - apply_columns(ops[Term::centrifugal], I);
+    const Eigen::MatrixXd G = apply_columns(ops[Term::gyroscopic], I);
+    const Eigen::MatrixXcd B = A.cast<std::complex<double>>() - std::complex<double>(0, r) * G.cast<std::complex<double>>();
+    const Eigen::MatrixXcd Kc = (0.5 * (K + K.transpose())).cast<std::complex<double>>();
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXcd> solver(0.5 * (B + B.adjoint()), Kc);
     std::vector<double> out;
     for (double c : solver.eigenvalues())
         if (c > 0) out.push_back(1 / c);
     std::sort(out.begin(), out.end());
     return out;
+}
+
+// r = 0: the real pencil (K, M_P - K_sigma1), by the same dense solve.
+std::vector<double> dense_pencil(const OperatorSet& ops) { return dense_ratio_pencil(ops, 0.0); }
+
+// The frames differ on the 16 x 8 tube by 4.6e-5 of the shift n f_rot
+// (test_rotating_frame.cpp); near a crossing the whirl hardly moves with
+// speed, so a crossing's speed differs by as much: 1e-4, as there.
+constexpr double kFrameTolerance = 1e-4;
+
+// The clamped tube in both frames with the centrifugal term, and f1 at rest.
+struct BothFrames {
+    Scene tube = clamped_tube(16, 8);
+    RotatingSolid stationary{tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true}};
+    RotatingSolid rotating{tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true}};
+    double f1 = stationary.modes_at(0.0).front().frequency_hz;
+};
+
+// How far the stationary frame's bending n = 1 whirl of direction `whirl`
+// at f_rot = fc lies from the line order * fc, relative to it (the nearest).
+double off_the_line(const RotatingSolid& stationary, double fc, int order, Whirl whirl) {
+    double closest = 1e300;
+    for (const RotatingMode& m : stationary.modes_at(fc))
+        if (m.whirl == whirl && m.label.type == "bending" && m.label.n == 1)
+            closest = std::min(closest, std::abs(m.frequency_hz - order * fc) / (order * fc));
+    return closest;
+}
+
+// A pencil's speeds below max_hz against the dense eigenvalues mu = Omega^2:
+// the count and every speed (1e-7: both solvers' tolerances, squared back).
+void check_against_dense(const ZeroFrequencyModes& z, const std::vector<double>& dense, double max_hz) {
+    const double max_mu = std::pow(2 * M_PI * max_hz, 2);
+    const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
+    INFO("Omega_max = " << max_hz << " Hz: counted " << z.counted << ", dense " << dense_count);
+    CHECK(z.counted == dense_count);
+    size_t i = 0;
+    for (const ZeroFrequencyMode& m : z.modes) {
+        REQUIRE(i < dense.size());
+        CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
+        i += static_cast<size_t>(m.multiplicity);
+    }
+    CHECK(i == static_cast<size_t>(dense_count));
+}
+
+// The pencil r's mode of signed harmonic k (the lowest), or nullptr.
+const ZeroFrequencyMode* with_harmonic(const ZeroFrequencyModes& z, int k) {
+    for (const ZeroFrequencyMode& m : z.modes)
+        if (m.harmonic == k && m.label.type == "bending") return &m;
+    return nullptr;
 }
 
 }  // namespace
@@ -56,16 +112,9 @@ TEST_CASE("A body of revolution in the rotating frame: the pencil's critical spe
     // The first test of test_rotating_frame.cpp's tube, both frames, with
     // the centrifugal term. At the pencil's speed the stationary frame
     // (another G, another Omega^2 term, no pencil) must have its forward
-    // bending whirl exactly on the order-1 line. The frames differ on the
-    // mesh by 4.6e-5 of the shift n f_rot (that test); near the crossing
-    // f_FW hardly moves with speed, so the speed differs by as much:
-    // tolerance 1e-4, as there.
-    constexpr double kFrameTolerance = 1e-4;
-    const Scene tube = clamped_tube(16, 8);
-    const RotatingSolid stationary(tube, 6, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true});
-    const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
-    const double f1 = stationary.modes_at(0.0).front().frequency_hz;
-    const ZeroFrequencyModes z = rotating.zero_frequency_modes(1.3 * f1);
+    // bending whirl exactly on the order-1 line, to kFrameTolerance.
+    const BothFrames t;
+    const ZeroFrequencyModes z = t.rotating.zero_frequency_modes(1.3 * t.f1);
     REQUIRE_FALSE(z.modes.empty());
     const ZeroFrequencyMode& first = z.modes.front();
     CHECK(first.wave_number == 1);
@@ -78,13 +127,10 @@ TEST_CASE("A body of revolution in the rotating frame: the pencil's critical spe
     CHECK(found == z.counted);
 
     const double fc = first.speed_hz;
-    double closest = 1e300;
-    for (const RotatingMode& m : stationary.modes_at(fc))
-        if (m.whirl == Whirl::forward && m.label.type == "bending" && m.label.n == 1)
-            closest = std::min(closest, std::abs(m.frequency_hz - fc) / fc);
-    INFO("pencil: " << fc * 60 << " rpm (f1 at rest " << f1 << " Hz); stationary FW off the line by " << closest);
+    const double closest = off_the_line(t.stationary, fc, 1, Whirl::forward);
+    INFO("pencil: " << fc * 60 << " rpm (f1 at rest " << t.f1 << " Hz); stationary FW off the line by " << closest);
     CHECK(closest < kFrameTolerance);
-    CHECK(fc > f1);  // the clamped tube's forward whirl and its stiffening rise with speed
+    CHECK(fc > t.f1);  // the clamped tube's forward whirl and its stiffening rise with speed
 }
 
 TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, with the centrifugal term and "
@@ -102,19 +148,7 @@ TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, w
         f1 = solid.modes_at(0.0).front().frequency_hz;
         const std::vector<double> dense = dense_pencil(solid.operators());
         REQUIRE_FALSE(dense.empty());
-        for (double factor : {0.9, 1.3, 4.0}) {
-            const double max_hz = factor * f1, max_mu = std::pow(2 * M_PI * max_hz, 2);
-            const ZeroFrequencyModes z = solid.zero_frequency_modes(max_hz);
-            const long dense_count = std::count_if(dense.begin(), dense.end(), [&](double mu) { return mu < max_mu; });
-            INFO("Omega_max = " << factor << " f1: counted " << z.counted << ", dense " << dense_count);
-            CHECK(z.counted == dense_count);
-            size_t i = 0;
-            for (const ZeroFrequencyMode& m : z.modes) {
-                CHECK(m.speed_hz == Approx(std::sqrt(dense[i]) / (2 * M_PI)).epsilon(1e-7));
-                i += static_cast<size_t>(m.multiplicity);
-            }
-            CHECK(i == static_cast<size_t>(dense_count));
-        }
+        for (double factor : {0.9, 1.3, 4.0}) check_against_dense(solid.zero_frequency_modes(factor * f1), dense, factor * f1);
         (stiffening ? critical_on : critical_off) = std::sqrt(dense.front()) / (2 * M_PI);
     }
     // Without K_sigma1 the pencil is (K, M_P): x^T K x / x^T M_P x >= x^T K x /
@@ -123,6 +157,60 @@ TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, w
     INFO("f1 " << f1 << " Hz; critical without the term " << critical_off << " Hz, with it " << critical_on);
     CHECK(critical_off >= f1 * (1 - 1e-9));
     CHECK(critical_on > critical_off);
+}
+
+TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 give the backward order-1 and the "
+          "order-2 crossings where the stationary frame's whirls meet the lines",
+          "[rotation][solid][rotating_frame][critical]") {
+    // As the first test: the stationary frame (another G and Omega^2 term,
+    // no pencil) must have, at the pencil's speed, the whirl of the
+    // predicted direction on the line j f_rot, to the frames' 1e-4.
+    const BothFrames t;
+    const double forward_1 = t.rotating.zero_frequency_modes(1.3 * t.f1).modes.front().speed_hz;
+    struct Expected {
+        int ratio, harmonic, order;
+        Whirl whirl;
+        const char* name;
+    };
+    // k = +1 at r = 2: (2 - 1) f_rot backward; k = -1 at r = 1: (1 + 1) f_rot
+    // forward; k = +1 at r = 3: (3 - 1) f_rot backward (rotating_frame.hpp).
+    for (const Expected e : {Expected{2, 1, 1, Whirl::backward, "BW order 1"},
+                             Expected{1, -1, 2, Whirl::forward, "FW order 2"},
+                             Expected{3, 1, 2, Whirl::backward, "BW order 2"}}) {
+        INFO(e.name);
+        const ZeroFrequencyModes z = t.rotating.frequency_ratio_modes(1.3 * t.f1, e.ratio);
+        const ZeroFrequencyMode* m = with_harmonic(z, e.harmonic);
+        REQUIRE(m != nullptr);
+        CHECK(m->order == e.order);
+        CHECK(m->whirl == e.whirl);
+        CHECK(m->multiplicity == 1);  // k and -k are different modes once r > 0
+        CHECK(m->share > 0.99);
+        CHECK(m->relative_residual < 1e-8);
+        long found = 0;
+        for (const ZeroFrequencyMode& x : z.modes) found += x.multiplicity;
+        CHECK(found == z.counted);
+        const double fc = m->speed_hz;
+        const double closest = off_the_line(t.stationary, fc, e.order, e.whirl);
+        INFO("pencil r = " << e.ratio << ": " << fc * 60 << " rpm (f1 " << t.f1 << " Hz, FW order 1 at " << forward_1
+                           << " Hz); stationary whirl off the line by " << closest);
+        CHECK(closest < kFrameTolerance);
+        if (e.order == 1) CHECK(fc < forward_1);  // the backward crossing lies below the forward one
+    }
+}
+
+TEST_CASE("The pencils r > 0: their count by the real form's inertia and their speeds against a dense complex "
+          "solve",
+          "[rotation][solid][rotating_frame][critical]") {
+    // The code solves the real symmetric form of size 2n and halves the
+    // count; the truth is the complex Hermitian pencil of size n.
+    const Scene tube = clamped_tube(8, 4);
+    const RotatingSolid solid(tube, 4, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
+    const double f1 = solid.modes_at(0.0).front().frequency_hz;
+    for (int r : {1, 2, 3}) {
+        const std::vector<double> dense = dense_ratio_pencil(solid.operators(), r);
+        INFO("r = " << r);
+        for (double factor : {0.4, 1.3}) check_against_dense(solid.frequency_ratio_modes(factor * f1, r), dense, factor * f1);
+    }
 }
 
 TEST_CASE("The pencil refuses a free structure with the reason", "[rotation][solid][rotating_frame][critical]") {
@@ -152,10 +240,24 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
     INFO("f1 " << f1 << " Hz; sweep end: " << r.sweep_end);
     CHECK(r.points.size() == 2);  // 0 and 0.5 f1: 1.3 f1 lies above the first critical speed
     CHECK(r.sweep_end.find("the sweep stopped at") != std::string::npos);
-    const WhirlCrossing* c = r.first_order_one();
+    const auto pencil_crossing = [&](Whirl whirl) -> const WhirlCrossing* {
+        for (const WhirlCrossing& x : r.critical)
+            if (x.order == 1 && x.whirl == whirl && x.source == CrossingSource::pencil) return &x;
+        return nullptr;
+    };
+    const WhirlCrossing* c = pencil_crossing(Whirl::forward);
+    const WhirlCrossing* bw = pencil_crossing(Whirl::backward);
     REQUIRE(c != nullptr);
-    CHECK(c->source == CrossingSource::pencil);
-    CHECK(c->whirl == Whirl::forward);
+    REQUIRE(bw != nullptr);
+    // The backward crossing (the pencil r = 2, above the sweep's last speed)
+    // lies the whirl split below the forward one (2.5 % on this short core;
+    // the backward whirl falls with speed, so below f1), and is the first.
+    INFO("order 1: BW " << bw->speed_hz << " Hz, FW " << c->speed_hz << " Hz");
+    CHECK(bw->speed_hz < c->speed_hz);
+    CHECK(bw->speed_hz == Approx(f1).epsilon(0.05));
+    CHECK(bw->label.type == "bending");
+    CHECK(bw->label.n == 1);
+    CHECK(r.first_order_one() == bw);
     CHECK(c->label.type == "bending");
     CHECK(c->speed_hz > 0.5 * f1);
     CHECK(c->speed_hz < 1.3 * f1);
@@ -167,6 +269,7 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
                            [&](const std::string& n) { return n.find(words) != std::string::npos; });
     };
     CHECK(noted("critical speeds from the pencil (exact)"));
+    CHECK(noted("the pencil r = 2"));
 
     // One speed above the critical speed leaves nothing to sweep: an error
     // that names the critical speed, before the modes at rest are solved.

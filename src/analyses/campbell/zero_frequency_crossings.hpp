@@ -10,7 +10,10 @@
 // line of order |k| (k the null vector's dominant harmonic). So before the
 // sweep the pencil is solved up to the scene's last speed; the sweep is
 // ended below its lowest speed, and its crossings are reported beside the
-// sweep's own.
+// sweep's own. The other crossings (backward, and orders other than |k|)
+// come from the pencils (K, B_r) of a rotating-frame frequency r f_rot, one
+// per r that a wanted order j and a harmonic |k| <= kMaxCrossingHarmonic
+// need (|r - k| = j): exact, and in place of the sweep's where both have one.
 #pragma once
 
 #include "analyses/campbell/campbell.hpp"
@@ -28,7 +31,12 @@ namespace coremodal {
 // solver's rigid line (1 % of the first frequency's scale), where a mode is
 // reported at 0 Hz.
 constexpr double kSweepEndBelowZeroFrequency = 0.98;
-// A sweep crossing of the same order, forward, within this share of a
+// The largest |k| whose crossings of every wanted order the pencils r > 0
+// cover: the bending pair (k = +-1) and harmonic 0. Each r costs one
+// pencil of twice the size (docs/performance.md); ovalling (|k| = 2) lies
+// far above a core's operating speeds.
+constexpr int kMaxCrossingHarmonic = 1;
+// A sweep crossing of the same order and whirl within this share of a
 // pencil crossing's speed is the same crossing; the pencil's (exact) is kept.
 constexpr double kSameCrossingSpeed = 1e-3;
 
@@ -45,8 +53,14 @@ struct ZeroFrequencyPlan {
 ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const RotationSpec& rotation,
                                             double roll_outer_diameter);
 
-// Adds the pencil's crossings to out.critical (the sweep's), dropping a
-// sweep crossing that is the same one, ascending by speed.
+// The ratios r > 0 at which a mode of harmonic |k| <= kMaxCrossingHarmonic
+// meets an excitation line of one of `orders` (|r - k| = j), ascending:
+// one pencil each; r = 0, the zero-frequency pencil, is solved first anyway.
+std::vector<int> crossing_ratios(const std::vector<int>& orders);
+
+// Adds the pencils' crossings to out.critical (the sweep's), dropping a
+// sweep crossing that is the same one (order and whirl, kSameCrossingSpeed),
+// ascending by speed.
 void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil);
 
 }  // namespace coremodal

@@ -212,37 +212,69 @@ std::vector<RotatingMode> RotatingSolid::rotating_frame_modes(const GyroscopicMo
     return modes;
 }
 
-// The null vectors of the pencil (eigensolve/zero_frequency_speeds.hpp),
-// named on the mesh. A null vector is real (K(Omega) is), so its harmonics
-// k and -k carry equal energy and only |k| is read: the mode stands still
-// in the rotating frame, and seen from the stationary one it moves at
-// 0 - k f_rot, forward for either sign (rotating_frame_modes: -k (0 - k
-// f_rot) = k^2 f_rot > 0), at |k| f_rot.
+// One eigenvector of the pencil (K, B_r) (eigensolve/zero_frequency_speeds.hpp),
+// named on the mesh. r = 0: the null vector is real (K(Omega) is), so its
+// harmonics k and -k carry equal energy and only |k| is read: the mode
+// stands still in the rotating frame, and seen from the stationary one it
+// moves at 0 - k f_rot, forward for either sign (rotating_frame_modes:
+// -k (0 - k f_rot) = k^2 f_rot > 0), at |k| f_rot. r > 0: x = a + i b is a
+// mode at +r f_rot, its signed k read from the complex field, seen at
+// (r - k) f_rot (a negative one is the conjugate mode, as in
+// rotating_frame_modes).
+ZeroFrequencyMode RotatingSolid::pencil_mode(const ZeroFrequencySpeed& z, int ratio) const {
+    const std::vector<double> re = gather_node_displacements(z.x, mesh_, dofs_);
+    const std::vector<double> im = ratio == 0 ? std::vector<double>(re.size(), 0.0)
+                                              : gather_node_displacements(z.y, mesh_, dofs_);
+    const WaveContent wave = dominant_harmonic(re, im, mesh_, surface_nodes_, max_wave_number_);
+    ZeroFrequencyMode m;
+    m.speed_hz = z.spin / (2 * M_PI);
+    m.wave_number = std::abs(wave.k);
+    m.harmonic = ratio == 0 ? m.wave_number : wave.k;
+    m.order = std::abs(ratio - m.harmonic);
+    m.share = ratio == 0 && wave.k != 0 ? std::min(1.0, 2 * wave.share) : wave.share;
+    if (m.harmonic != 0 && m.order != 0)
+        m.whirl = -m.harmonic * (ratio - m.harmonic) > 0 ? Whirl::forward : Whirl::backward;
+    const double omega_stat = 2 * M_PI * m.order * m.speed_hz;
+    m.label = classifier_->classify(squared_norm(re) >= squared_norm(im) ? re : im, omega_stat * omega_stat,
+                                    lambda_scale_);
+    m.relative_residual = z.relative_residual;
+    return m;
+}
+
 ZeroFrequencyModes RotatingSolid::zero_frequency_modes(double max_speed_hz) const {
-    COREMODAL_ASSERT(frame_ == SpinFrame::rotating);
+    return frequency_ratio_modes(max_speed_hz, 0);
+}
+
+// Eigenvalues closer than kSameZeroFrequencySpeed are one mode counted
+// `multiplicity` times; the real form's two copies of each (x and i x, r > 0)
+// are one complex vector, so a group's size is divided by the copies.
+ZeroFrequencyModes RotatingSolid::frequency_ratio_modes(double max_speed_hz, int ratio) const {
+    COREMODAL_ASSERT(frame_ == SpinFrame::rotating && ratio >= 0);
     const SolveRequest request = solve_request(scene_);
-    const ZeroFrequencySpeeds pencil =
-        zero_frequency_speeds(operators_, 2 * M_PI * max_speed_hz, gyroscopic_rigid_omega(request), request);
+    const ZeroFrequencySpeeds pencil = frequency_ratio_speeds(operators_, ratio, 2 * M_PI * max_speed_hz,
+                                                              gyroscopic_rigid_omega(request), request);
     ZeroFrequencyModes out;
-    out.counted = pencil.counted;
+    out.counted = pencil.counted / pencil.copies;
     out.max_speed_hz = max_speed_hz;
+    out.ratio = ratio;
+    std::vector<int> group_size;
     for (const ZeroFrequencySpeed& z : pencil.speeds) {
         const double speed_hz = z.spin / (2 * M_PI);
         if (!out.modes.empty() && speed_hz - out.modes.back().speed_hz <= kSameZeroFrequencySpeed * speed_hz) {
-            ++out.modes.back().multiplicity;
+            ++group_size.back();
             out.modes.back().relative_residual = std::max(out.modes.back().relative_residual, z.relative_residual);
             continue;
         }
-        const std::vector<double> re = gather_node_displacements(z.x, mesh_, dofs_), im(re.size(), 0.0);
-        const WaveContent wave = dominant_harmonic(re, im, mesh_, surface_nodes_, max_wave_number_);
-        ZeroFrequencyMode m;
-        m.speed_hz = speed_hz;
-        m.wave_number = std::abs(wave.k);
-        m.share = std::min(1.0, wave.k == 0 ? wave.share : 2 * wave.share);
-        const double omega_stat = 2 * M_PI * m.wave_number * speed_hz;
-        m.label = classifier_->classify(re, omega_stat * omega_stat, lambda_scale_);
-        m.relative_residual = z.relative_residual;
-        out.modes.push_back(std::move(m));
+        out.modes.push_back(pencil_mode(z, ratio));
+        group_size.push_back(1);
+    }
+    for (size_t i = 0; i < out.modes.size(); ++i) {
+        if (group_size[i] % pencil.copies != 0)
+            throw SolveError("the real form of the pencil (K, B_r), r = " + std::to_string(ratio) + ", has " +
+                             std::to_string(group_size[i]) + " vectors at " +
+                             std::to_string(out.modes[i].speed_hz * 60) + " rpm, not a multiple of 2 (x and i x): "
+                             "raise [analysis] max_iterations");
+        out.modes[i].multiplicity = group_size[i] / pencil.copies;
     }
     return out;
 }

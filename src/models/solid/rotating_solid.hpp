@@ -25,6 +25,7 @@
 #include "assembly/chuck_supports.hpp"
 #include "beam/rotating_modes.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
+#include "eigensolve/zero_frequency_speeds.hpp"
 #include "mesh/mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
@@ -50,16 +51,21 @@ struct SolidSpinOptions {
     bool centrifugal_stiffening = false;
 };
 
-// A speed where a mode's rotating-frame frequency is zero (rotating frame
-// only; eigensolve/zero_frequency_speeds.hpp): there the mode stands still
-// on the spinning roll, and seen from the stationary frame it is a forward
-// wave of frequency |k| f_rot, k its dominant harmonic: a forward crossing
-// of the excitation line of order |k| (k = 0: a static divergence).
+// A speed where a mode's rotating-frame frequency is r f_rot (rotating
+// frame only; eigensolve/zero_frequency_speeds.hpp). Seen from the
+// stationary frame the mode, of dominant signed harmonic k, has the
+// frequency |r - k| f_rot (rotating_frame.hpp): a crossing of the
+// excitation line of order |r - k|, forward when -k (r - k) > 0.
+// r = 0: the mode stands still on the spinning roll, a forward crossing of
+// order |k| (k = 0: a static divergence).
 struct ZeroFrequencyMode {
     double speed_hz = 0;  // f_rot
     int wave_number = 0;  // |k|
-    // The energy share of harmonics +k and -k together on the roll's
-    // surface (the null vector is real, so the two carry equal energy).
+    int harmonic = 0;     // k, signed (r = 0: |k|, the null vector being real)
+    int order = 0;        // |r - k|: f_stat / f_rot
+    Whirl whirl = Whirl::none;
+    // The dominant harmonic's energy share on the roll's surface (r = 0:
+    // of +k and -k together, which carry equal energy in a real vector).
     double share = 1;
     ModeLabel label;
     int multiplicity = 1;  // equal speeds (a pair of a scene symmetric about z) counted once
@@ -68,8 +74,9 @@ struct ZeroFrequencyMode {
 
 struct ZeroFrequencyModes {
     std::vector<ZeroFrequencyMode> modes;  // ascending speed
-    long counted = 0;                      // by inertia, multiplicity included
+    long counted = 0;                      // by inertia, multiplicity included (complex count for r > 0)
     double max_speed_hz = 0;
+    int ratio = 0;                         // r
 };
 
 class RotatingSolid {
@@ -90,6 +97,10 @@ public:
     // rotating-frame frequency is zero, exact (the pencil (K, M_P -
     // K_sigma1)) and proven complete by the inertia of K(Omega_max).
     ZeroFrequencyModes zero_frequency_modes(double max_speed_hz) const;
+    // The same for a rotating-frame frequency of r f_rot, r = ratio >= 0
+    // (the pencil (K, B_r); r = 0 is zero_frequency_modes): each mode with
+    // its signed harmonic, its crossing's order and whirl.
+    ZeroFrequencyModes frequency_ratio_modes(double max_speed_hz, int ratio) const;
 
     const OperatorSet& operators() const { return operators_; }
     long n_dofs() const { return dofs_.n_dofs; }
@@ -107,6 +118,7 @@ private:
     void assemble(const Scene& scene, const ChuckSupports& chucks, bool centrifugal_stiffening);
     std::vector<RotatingMode> stationary_frame_modes(const GyroscopicModes& solved, double speed_hz) const;
     std::vector<RotatingMode> rotating_frame_modes(const GyroscopicModes& solved, double speed_hz) const;
+    ZeroFrequencyMode pencil_mode(const ZeroFrequencySpeed& z, int ratio) const;
 
     const Scene& scene_;
     int window_;
