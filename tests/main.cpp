@@ -10,8 +10,9 @@ int main(int argc, char** argv) {
     // PETSc must not see Catch's options; give it none.
     int petsc_argc = 1;
     char** petsc_argv = argv;
-    coremodal::prefer_isolated_mpi_singleton();  // common/mpi_start.hpp: why
+    coremodal::IsolatedMpiSingleton isolated;  // common/mpi_start.hpp: why
     SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr);
+    isolated.started();
     PetscPopSignalHandler();  // let Catch report crashes
     const int result = Catch::Session().run(argc, argv);
     SlepcFinalize();

@@ -142,8 +142,9 @@ int main(int argc, char** argv) {
     auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
-    coremodal::prefer_isolated_mpi_singleton();
+    coremodal::IsolatedMpiSingleton isolated;  // common/mpi_start.hpp: why
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
+    isolated.started();
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
     coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
