@@ -193,18 +193,20 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
 
 double zone_edge_amplitude(const CoupledModes& modes, const SectionMesh& section, const LocalHarmonics& local,
                            size_t n_wanted) {
+    // The edge's DOFs once (each block's zone depends on its n only), then every mode read on them.
+    std::vector<int> edge_dofs;
+    for (const CoupledBlock& block : modes.dofs.blocks) {
+        if (block.harmonic.n <= local.n_full) continue;
+        for (int node : zone_edge_nodes(section, local, block.harmonic.n))
+            for (int c = 0; c < 3; ++c)
+                if (const int d = block.dofs.of_component[3 * node + c]; d >= 0) edge_dofs.push_back(block.offset + d);
+    }
     double worst = 0;
     for (size_t k = 0; k < n_wanted && k < modes.vectors.size(); ++k) {
         const std::vector<double>& x = modes.vectors[k];
         double largest = 0, edge = 0;
         for (double v : x) largest = std::max(largest, std::abs(v));
-        for (const CoupledBlock& block : modes.dofs.blocks) {
-            if (block.harmonic.n <= local.n_full) continue;
-            for (int node : zone_edge_nodes(section, local, block.harmonic.n))
-                for (int c = 0; c < 3; ++c)
-                    if (const int d = block.dofs.of_component[3 * node + c]; d >= 0)
-                        edge = std::max(edge, std::abs(x[block.offset + d]));
-        }
+        for (int d : edge_dofs) edge = std::max(edge, std::abs(x[d]));
         worst = std::max(worst, edge / largest);
     }
     return worst;
