@@ -1,6 +1,7 @@
 #include "eigensolve/modal_solver.hpp"
 
 #include "eigensolve/band_edge.hpp"
+#include "eigensolve/block_lanczos.hpp"
 
 #include "common/error.hpp"
 #include "common/heartbeat.hpp"
@@ -134,6 +135,67 @@ Attempt run_eps(Mat K, Mat M, double sigma, int nev, const SolveRequest& request
     if (solved == PETSC_ERR_MAT_CH_ZRPVT || solved == PETSC_ERR_MAT_LU_ZRPVT) throw SolveError(zero_pivot_text(sigma));
     COREMODAL_PETSC(solved);
     return converged_pairs(eps, K);
+}
+
+// Below this many unknowns a triangular solve is cheap next to a block's
+// dense algebra, and SLEPc's one-vector Krylov-Schur stays (the harmonic
+// and beam levels, coarse solid meshes).
+constexpr PetscInt kBlockLanczosMinDofs = 20000;
+
+// The block method on the factor's multi-right-hand-side solves
+// (block_lanczos.hpp: why): in one process, on a model large enough for the
+// pairs wanted (block_lanczos_fits), unless
+// the user turned it off (-block_lanczos false) or chose SLEPc's method or
+// its factor on the command line (-eps_type, -st_pc_factor_mat_solver_type).
+bool block_lanczos_applies(Mat K, PetscInt n_dofs, int wanted) {
+    if (mpi_size(PetscObjectComm((PetscObject)K)) != 1 || n_dofs < kBlockLanczosMinDofs ||
+        !block_lanczos_fits(n_dofs, wanted))
+        return false;
+    PetscBool on = PETSC_TRUE, eps_type = PETSC_FALSE, st_factor = PETSC_FALSE;
+    COREMODAL_PETSC(PetscOptionsGetBool(nullptr, nullptr, "-block_lanczos", &on, nullptr));
+    COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-eps_type", &eps_type));
+    COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-st_pc_factor_mat_solver_type", &st_factor));
+    return on && !eps_type && !st_factor;
+}
+
+// The Cholesky factor of K - sigma M (sigma < 0: definite) by the package
+// shift_invert_factor_package names.
+PetscMatrix definite_factor(Mat K, Mat M, double sigma) {
+    PetscMatrix A, F;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatGetFactor(A, shift_invert_factor_package(PetscObjectComm((PetscObject)K)), MAT_FACTOR_CHOLESKY,
+                                 F.out()));
+    PetscIndexSet row_perm, col_perm;
+    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
+    MatFactorInfo info;
+    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
+    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
+    const PetscErrorCode factored = MatCholeskyFactorNumeric(F, A, &info);
+    if (factored == PETSC_ERR_MAT_CH_ZRPVT || factored == PETSC_ERR_MAT_LU_ZRPVT) throw SolveError(zero_pivot_text(sigma));
+    COREMODAL_PETSC(factored);
+    MatFactorError factor_error;
+    COREMODAL_PETSC(MatFactorGetError(F, &factor_error));
+    if (factor_error != MAT_FACTOR_NOERROR) throw SolveError(zero_pivot_text(sigma));
+    return F;
+}
+
+// The lowest nev pairs at the negative shift: block Lanczos where it
+// applies, else SLEPc's Krylov-Schur.
+Attempt solve_below(Mat K, Mat M, double sigma, int nev, const SolveRequest& request, const Progress& progress) {
+    PetscInt n_dofs;
+    COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
+    if (!block_lanczos_applies(K, n_dofs, nev)) return run_eps(K, M, sigma, nev, request);
+    const PetscMatrix F = definite_factor(K, M, sigma);
+    BlockLanczosResult r = block_lanczos_lowest(F, M, sigma, {nev, request.tolerance, request.max_iterations});
+    progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
+             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
+    Attempt a;
+    a.n_converged = static_cast<int>(r.eigenvalues.size());
+    a.lambdas = std::move(r.eigenvalues);
+    a.vectors = std::move(r.vectors);
+    return a;
 }
 
 // Retries after a failed completeness check before giving up.
@@ -507,6 +569,57 @@ std::optional<SolvedModes> solve_at_predicted_edge(Mat K, Mat M, const SolveRequ
     return std::nullopt;
 }
 
+// The one-factor path with block Lanczos on MUMPS's multi-right-hand-side
+// solves (block_lanczos.hpp): one LDL^T factor of K - sigma M at the
+// predicted edge counts the eigenvalues below sigma and is the operator
+// whose negative Ritz values are those eigenvalues. The modes are proven
+// complete when exactly that many are found below sigma. None, said
+// through `progress`, when the factor fails, the shift lies below too few
+// or above too many modes, or the solve finds another number below it: the
+// caller then takes the negative shift and a separate count.
+std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma,
+                                                   const Progress& progress) {
+    progress("factorising K - sigma M (MUMPS LDL^T) at the predicted band edge, " + shift_text(sigma) +
+             ": one factor for the solve (block Lanczos) and the count");
+    const Heartbeat beat("factorising K - sigma M and solving", progress);
+    PetscMatrix A, F;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    try {
+        F = ldlt_factor(A, "K - sigma M at the predicted band edge");
+    } catch (const SolveError& e) {
+        progress(std::string("the LDL^T factor at the predicted edge failed (") + e.what() +
+                 "): solving with a negative shift");
+        return std::nullopt;
+    }
+    A.reset();
+    const long below = negative_pivots(F);
+    if (below < wanted || below > most_below_one_shift(wanted)) {
+        progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +
+                 std::to_string(wanted) + " wanted; solving with a negative shift");
+        return std::nullopt;
+    }
+    BlockLanczosResult r = block_lanczos_lowest(F, M, sigma, {int(below), request.tolerance, request.max_iterations});
+    progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
+             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
+    Attempt a;
+    a.n_converged = static_cast<int>(r.eigenvalues.size());
+    std::vector<std::pair<double, PetscVector>> pairs;
+    for (size_t i = 0; i < r.eigenvalues.size(); ++i) pairs.emplace_back(r.eigenvalues[i], std::move(r.vectors[i]));
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (auto& [lambda, x] : pairs) {
+        a.lambdas.push_back(lambda);
+        a.vectors.push_back(std::move(x));
+    }
+    const long found_below = count_below_shift(a, sigma);
+    const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
+    if (found_below == below && n_report >= wanted && n_report <= below)
+        return verified_modes(K, M, a, n_report, sigma, below, found_below);
+    progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
+             std::to_string(below) + ": solving with a negative shift");
+    return std::nullopt;
+}
+
 SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const Progress& progress) {
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
@@ -514,19 +627,23 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     const Wanted w = wanted_modes(K, M, request, n_dofs, progress);
     if (w.empty_band) return SolvedModes{{}, {}, {}, *w.empty_band};
     const int wanted = w.n_modes;
-    if (const std::optional<double> edge = predicted_shift(request, wanted))
-        if (std::optional<SolvedModes> solved = solve_at_predicted_edge(K, M, request, wanted, *edge, n_dofs, progress))
-            return std::move(*solved);
+    if (const std::optional<double> edge = predicted_shift(request, wanted)) {
+        std::optional<SolvedModes> solved =
+            block_lanczos_applies(K, n_dofs, most_below_one_shift(wanted)) ? solve_at_edge_in_blocks(K, M, request, wanted, *edge, progress)
+                                             : solve_at_predicted_edge(K, M, request, wanted, *edge, n_dofs, progress);
+        if (solved) return std::move(*solved);
+    }
 
     double sigma = -kShiftFraction * scale;
     int nev = std::min<int>(n_dofs, wanted + std::max(kMinExtraModes, wanted / 4));
     for (int attempt = 0;; ++attempt) {
         progress("factorising K - sigma M (" + std::string(shift_invert_factor_package(PetscObjectComm((PetscObject)K))) +
                  " Cholesky, sigma = " + std::to_string(sigma) + ") and solving for " + std::to_string(nev) +
-                 " modes; MUMPS LDL^T at the band edge for the count");
+                 " modes (" + (block_lanczos_applies(K, n_dofs, nev) ? "block Lanczos" : "SLEPc Krylov-Schur") +
+                 "); MUMPS LDL^T at the band edge for the count");
         Attempt a = [&] {
             const Heartbeat beat("factorising K - sigma M and solving", progress);
-            return run_eps(K, M, sigma, nev, request);
+            return solve_below(K, M, sigma, nev, request, progress);
         }();
         const int n_report = reported_count(a.lambdas, wanted, scale);
         if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));

@@ -23,12 +23,13 @@ double bilinear_form(Mat A, Vec y, Vec x) {
     return PetscRealPart(v);
 }
 
-long negative_eigenvalue_count(Mat A, const char* what) {
+PetscMatrix ldlt_factor(Mat A, const char* what) {
     PetscMatrix F;
     COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
     COREMODAL_PETSC(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
     // ICNTL(13) = 1 keeps the root front off ScaLAPACK, so MUMPS can count
-    // negative pivots in parallel too.
+    // negative pivots in parallel too; in one process it measured faster
+    // as well (docs/performance.md, issue 19).
     COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
     PetscIndexSet row_perm, col_perm;
     COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
@@ -41,12 +42,18 @@ long negative_eigenvalue_count(Mat A, const char* what) {
     if (factor_error != MAT_FACTOR_NOERROR)
         throw SolveError(std::string("the LDL^T factorisation of ") + what +
                          " failed (MUMPS error); the model may have a part that is not held");
+    return F;
+}
+
+long negative_pivots(Mat F) {
     // Zero and positive counts would need MUMPS null-pivot detection
     // (ICNTL(24)); the negative count is all the checks need.
     PetscInt n_negative;
     COREMODAL_PETSC(MatGetInertia(F, &n_negative, nullptr, nullptr));
     return n_negative;
 }
+
+long negative_eigenvalue_count(Mat A, const char* what) { return negative_pivots(ldlt_factor(A, what)); }
 
 PC direct_shift_and_invert(ST st) {
     KSP ksp;

@@ -20,6 +20,10 @@ inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
 // law of inertia: the negative pivots of its MUMPS LDL^T factor). `what`
 // names A in the error raised when the factorisation fails.
 long negative_eigenvalue_count(Mat A, const char* what);
+// Its two steps: MUMPS's LDL^T factor of the symmetric A (SolveError when
+// it fails), which also solves, and that factor's negative pivots.
+PetscMatrix ldlt_factor(Mat A, const char* what);
+long negative_pivots(Mat F);
 
 // A direct Cholesky solver (KSP "preonly") with the shift-and-invert's
 // factor package (modal_solver.hpp), its options under `prefix` (e.g.

@@ -140,7 +140,7 @@ constexpr int kPredictedExtraModes = 6;
 // (0.22 s against 0.13 s each): 55.4 s against 53.5 s wall. The solver's
 // one-factor path stays (tested, eigensolve/modal_solver.hpp) for when its
 // solves get cheaper (block solves); turn this on to use it.
-constexpr bool kPredictBandEdge = false;
+constexpr bool kPredictBandEdge = true;
 
 // The lowest eigenvalues of the same scene at the harmonic level, when the
 // scene is a held body of revolution: the same section, exact in theta, one 2D
@@ -240,7 +240,7 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     SolveRequest request = solve_request(scene);
     // Which factors: the solver's progress lines say (one LDL^T at a
     // predicted band edge, or a negative shift and a second factor to count).
-    say("[4/7] solving the eigenproblem (SLEPc Krylov-Schur, shift-and-invert)");
+    say("[4/7] solving the eigenproblem (shift-and-invert)");
     request.predicted_eigenvalues = predicted_eigenvalues(scene, request, say);
     say(shift_scale_text(scene));
     const SolvedModes solved = solve_for_case(scene, system, request, say, "");
