@@ -77,7 +77,9 @@ def compare(case, args, work):
     runs = {"coremodal": [], "ccx": []}
     for r in range(args.repeats):
         folder = pathlib.Path(work) / f"run{r}"
-        runs["coremodal"].append(timed([str(CORE), "run", str(path), "-o", str(folder), "--no-plots"], work))
+        # --model solid: under auto a body of revolution runs at the harmonic level.
+        runs["coremodal"].append(timed([str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model", "solid"],
+                                       work))
         runs["ccx"].append(timed(["ccx", "-i", "deck"], work, env))
     ours, summary = coremodal_frequencies(pathlib.Path(work) / "run0")
     theirs = ccx_frequencies(pathlib.Path(work) / "deck.dat")

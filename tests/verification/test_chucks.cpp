@@ -122,7 +122,7 @@ TEST_CASE("f1 rises monotonically with bearing stiffness, up to the rigid bearin
     for (size_t i = 1; i < f.size(); ++i) CHECK(f[i] > f[i - 1]);
 }
 
-TEST_CASE("f1 rises monotonically with the chuck's modulus", "[verification][chucks]") {
+TEST_CASE("f1 rises monotonically with the chuck's modulus", "[verification][chucks][long]") {
     std::vector<double> f;
     for (double E : {2e9, 21e9, 210e9}) {
         Scene s = spring_chucks();
@@ -132,7 +132,7 @@ TEST_CASE("f1 rises monotonically with the chuck's modulus", "[verification][chu
     for (size_t i = 1; i < f.size(); ++i) CHECK(f[i] > f[i - 1]);
 }
 
-TEST_CASE("A scene symmetric end to end has symmetric and antisymmetric bending modes", "[verification][chucks]") {
+TEST_CASE("A scene symmetric end to end has symmetric and antisymmetric bending modes", "[verification][chucks][long]") {
     const Scene scene = spring_chucks();
     RunOptions options;
     options.quiet = true;

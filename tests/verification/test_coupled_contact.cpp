@@ -68,7 +68,7 @@ TEST_CASE("Coupled contact: a rigid core on rigid chucks carries its weight over
     CHECK(run.iterations <= 15);
 }
 
-TEST_CASE("Coupled contact: the static state of a paper core agrees with the 3D solid's", "[coupled][contact]") {
+TEST_CASE("Coupled contact: the static state of a paper core agrees with the 3D solid's", "[coupled][contact][long]") {
     // The solid test's scene (0.9 m paper core, k_n0 = 1e9 Pa/m); the solid
     // at 16 around has 64 points around (5.6 deg apart), the coupled level 128.
     const Scene s = not_expanded(paper_core(0.9, 16, 24), 1e9);
@@ -144,7 +144,7 @@ TEST_CASE("Coupled contact: blocks of opposite parity about the vertical do not 
     }
 }
 
-TEST_CASE("Coupled contact: every mode verified, counted and falling with N", "[coupled][contact]") {
+TEST_CASE("Coupled contact: every mode verified, counted and falling with N", "[coupled][contact][long]") {
     Scene s = not_expanded(paper_core(0.6, 16, 12), 1e9);
     s.analysis.n_modes = 6;
     const Section sec = section_of(s);
@@ -169,7 +169,7 @@ TEST_CASE("Coupled contact: every mode verified, counted and falling with N", "[
 }
 
 TEST_CASE("Coupled contact: auto runs a chuck not expanded at the coupled level and lists the contact as simulated",
-          "[coupled][contact]") {
+          "[coupled][contact][long]") {
     Scene s = not_expanded(paper_core(0.6, 16, 12), 1e9);
     s.analysis.n_modes = 4;
     CHECK(chosen_level(at_level(s, "auto")) == "coupled");

@@ -208,7 +208,7 @@ TEST_CASE("Coupled level: the web's line holds a rigid roll with its three sprin
     }
 }
 
-TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the 3D solid does", "[coupled][web]") {
+TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the 3D solid does", "[coupled][web][long]") {
     // A paper core 1 m long clamped over 70 mm at each end, a strong web
     // (2 kN/m, 20 GPa: k_d = 1.3e6, k_n = 1.7e3 N/m^2) leaving along +x: it
     // stiffens the bending along the web (x) far more than across it (y).

@@ -34,7 +34,7 @@ Scene harmonic(Scene s) {
 }  // namespace
 
 TEST_CASE("Harmonic level against the solid: same modes, same names, the same frequencies to 0.002 %",
-          "[verification][harmonic]") {
+          "[verification][harmonic][long]") {
     const Scene scene = chucks_in_elastic_stand(32);
     const RunReport solid = solve_quietly(scene);
     const RunReport h = solve_quietly(harmonic(scene));
@@ -67,7 +67,7 @@ TEST_CASE("Harmonic level against the solid: same modes, same names, the same fr
 }
 
 TEST_CASE("Harmonic level: refining the solid around the circumference closes the gap",
-          "[verification][harmonic]") {
+          "[verification][harmonic][long]") {
     Scene scene = paper_core(0.6, 16, 16);
     scene.analysis.n_modes = 24;
     const RunReport h = solve_quietly(harmonic(scene));

@@ -70,7 +70,7 @@ double relative_difference(const Eigen::VectorXcd& a, const Eigen::VectorXcd& b)
 
 }  // namespace
 
-TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 is the direct solve", "[response][harmonic]") {
+TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 is the direct solve", "[response][harmonic][long]") {
     const Scene scene = clamped_roll("harmonic");
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
     REQUIRE(plane.dofs.n_dofs < 1500);  // a dense basis in well under a second

@@ -129,7 +129,7 @@ TEST_CASE("A long thin free tube's first ovalling modes match the thin-ring form
 }
 
 TEST_CASE("Refining the mesh reduces the first-bending error at the rate of quadratic elements",
-          "[verification][convergence]") {
+          "[verification][convergence][long]") {
     // Uniform refinement of every direction at once halves h; quadratic
     // elements converge eigenvalues as h^(2p) = h^4. The observed rate from
     // three levels must be at least 3 (pre-asymptotic levels lose a little).

@@ -80,7 +80,7 @@ TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body
 }
 
 TEST_CASE("A paper core on chucks not expanded: equilibrium, a contact that opens, monotonic in the clearance",
-          "[verification][chucks][contact]") {
+          "[verification][chucks][contact][long]") {
     const Scene s = not_expanded(paper_core(0.9, 16, 24), 1e9);
     const StaticRun run = static_contact(s);
     REQUIRE(run.contact.chucks.size() == 2);
@@ -128,7 +128,7 @@ TEST_CASE("An expanded chuck, and a uniform soft layer, are held exactly as befo
 }
 
 TEST_CASE("An expanded chuck's modes are those of coremodal before the one-sided contact, to 1e-10",
-          "[verification][chucks][contact]") {
+          "[verification][chucks][contact][long]") {
     // A 0.9 m news core on expanded chucks (6 bar) in elastic bearings with
     // frame masses, solid level: every coupling the chucks make. The
     // reference frequencies are main's binary (commit 2e97d2b) on this text,

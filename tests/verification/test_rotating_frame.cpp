@@ -59,7 +59,7 @@ TEST_CASE("A body of revolution spun in the rotating frame has the stationary fr
 }
 
 TEST_CASE("Three expanding segments per chuck spin in the rotating frame; at rest the solid run's modes",
-          "[rotation][solid][rotating_frame]") {
+          "[rotation][solid][rotating_frame][long]") {
     Scene s = testing::with_chucks(testing::paper_core(0.8, 12, 8), InterfaceKind::spring);
     for (ChuckSpec& c : s.supports.chucks) c.expanding[0].segments = 3, c.expanding[0].segment_angle = M_PI / 3;
     s.model = "solid";

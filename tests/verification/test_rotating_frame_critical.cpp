@@ -135,7 +135,7 @@ TEST_CASE("A body of revolution in the rotating frame: the pencil's critical spe
 
 TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, with the centrifugal term and "
           "without",
-          "[rotation][solid][rotating_frame][critical]") {
+          "[rotation][solid][rotating_frame][critical][long]") {
     // 1 x 8 x 4 hex20: a few hundred DOFs, so that Eigen solves the same
     // pencil whole. The count below Omega_max^2 must equal the dense
     // solve's number of eigenvalues there, at three Omega_max, and every
@@ -161,7 +161,7 @@ TEST_CASE("The pencil's speeds and its count by inertia against a dense solve, w
 
 TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 give the backward order-1 and the "
           "order-2 crossings where the stationary frame's whirls meet the lines",
-          "[rotation][solid][rotating_frame][critical]") {
+          "[rotation][solid][rotating_frame][critical][long]") {
     // As the first test: the stationary frame (another G and Omega^2 term,
     // no pencil) must have, at the pencil's speed, the whirl of the
     // predicted direction on the line j f_rot, to the frames' 1e-4.
@@ -200,7 +200,7 @@ TEST_CASE("A body of revolution in the rotating frame: the pencils r = 1 to 3 gi
 
 TEST_CASE("The pencils r > 0: their count by the real form's inertia and their speeds against a dense complex "
           "solve",
-          "[rotation][solid][rotating_frame][critical]") {
+          "[rotation][solid][rotating_frame][critical][long]") {
     // The code solves the real symmetric form of size 2n and halves the
     // count; the truth is the complex Hermitian pencil of size n.
     const Scene tube = clamped_tube(8, 4);
@@ -223,7 +223,7 @@ TEST_CASE("The pencil refuses a free structure with the reason", "[rotation][sol
 
 TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critical speed from the pencil though "
           "the sweep stops below it",
-          "[rotation][solid][rotating_frame][critical]") {
+          "[rotation][solid][rotating_frame][critical][long]") {
     // A coarse mesh and two modes keep it short: the rest solve, one speed,
     // the pencil. f1 = 344.2 Hz at rest on 12 x 8 cells (measured; this
     // mesh is a little stiffer, its pencil speed 351.8 Hz): the speeds are

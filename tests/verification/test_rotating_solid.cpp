@@ -32,7 +32,7 @@ double split_ratio(const RotatingMode& fw, const RotatingMode& bw) {
 }  // namespace
 
 TEST_CASE("A thin spinning ring at the solid level: the n = 2 waves split as Bryan and the harmonic level say",
-          "[rotation][solid]") {
+          "[rotation][solid][long]") {
     // The harmonic level's ring (steel, R ~ 0.5 m, t/R = 0.01, 20 mm long,
     // free) on 128 hex20 cells around, 2 through the wall and 2 along. At
     // f_rot = 0.1 Hz Bryan's inextensible ring splits the n = 2 waves by
@@ -122,7 +122,7 @@ TEST_CASE("A spinning clamped tube whirls at the solid level as at the harmonic 
     CHECK(fw.relative_residual < 1e-9);
 }
 
-TEST_CASE("At rest the spinning solid level gives the solid run's modes", "[rotation][solid]") {
+TEST_CASE("At rest the spinning solid level gives the solid run's modes", "[rotation][solid][long]") {
     // A paper core on chucks with spring layers and elastic bearings with
     // frames: every coupling of the solid level beside the spinning cells.
     Scene s = testing::on_elastic_bearings(

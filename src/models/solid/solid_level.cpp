@@ -134,12 +134,12 @@ void linearise_about_gravity(const Scene& scene, const DofMap& dofs, const Chuck
 // above them, where the solve's one factorization is placed.
 constexpr int kPredictedExtraModes = 6;
 
-// Off: measured on case 03 at load ~2 (docs/performance.md, issue 19), the
-// one MUMPS LDL^T saves ~6.5 s of factorization against CHOLMOD + a MUMPS
-// count, but its 103 triangular solves cost 7.5 s more than CHOLMOD's 115
-// (0.22 s against 0.13 s each): 55.4 s against 53.5 s wall. The solver's
-// one-factor path stays (tested, eigensolve/modal_solver.hpp) for when its
-// solves get cheaper (block solves); turn this on to use it.
+// On since the solves come in blocks (eigensolve/block_lanczos.hpp): one
+// MUMPS LDL^T at the predicted edge is the operator and the count, in place
+// of a CHOLMOD factor and a second (MUMPS) factor for the count. Case 03:
+// 58 -> 39 s wall (docs/performance.md, issue 19). With one-vector solves it
+// did not pay (MUMPS's single solves are 1.7x CHOLMOD's); false returns to
+// the negative shift and the separate count.
 constexpr bool kPredictBandEdge = true;
 
 // The lowest eigenvalues of the same scene at the harmonic level, when the
