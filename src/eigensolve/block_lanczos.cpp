@@ -63,6 +63,26 @@ void solve(Mat F, PetscInt n, int cols, double* in, double* out) {
     COREMODAL_PETSC(MatMatSolve(F, B, X));
 }
 
+// The dense algebra's time in -log_view and in `coremodal converge`'s
+// breakdown (analyses/converge/model_ladder.cpp), beside the solves'
+// MatMatSolve and the products' MatMatMult.
+PetscLogEvent orthogonalization_event() {
+    static const PetscLogEvent event = [] {
+        PetscClassId id;
+        PetscLogEvent e;
+        PetscClassIdRegister("Block Lanczos", &id);
+        PetscLogEventRegister("BlockOrthogonal", id, &e);
+        return e;
+    }();
+    return event;
+}
+
+// Logs the enclosing scope as orthogonalization.
+struct OrthogonalizationScope {
+    OrthogonalizationScope() { PetscLogEventBegin(orthogonalization_event(), 0, 0, 0, 0); }
+    ~OrthogonalizationScope() { PetscLogEventEnd(orthogonalization_event(), 0, 0, 0, 0); }
+};
+
 class BlockLanczos {
 public:
     BlockLanczos(Mat F, Mat M, PetscInt n, int block, int capacity)
@@ -166,6 +186,7 @@ private:
     Eigen::MatrixXd orthogonalise_against_basis(int first, int count, bool update_images = false) {
         Eigen::MatrixXd C = Eigen::MatrixXd::Zero(first, count);
         if (first == 0) return C;
+        const OrthogonalizationScope logged;
         gemm("T", "N", first, count, int(n_), 1.0, MV_.col(0), n_, V_.col(first), n_, 0.0, C.data(), first);
         gemm("N", "N", int(n_), count, first, -1.0, V_.col(0), n_, C.data(), first, 1.0, V_.col(first), n_);
         if (update_images)
@@ -182,6 +203,7 @@ private:
     Eigen::MatrixXd normalise_new_block(int first, int count, const Eigen::MatrixXd* projected,
                                         bool images_known = false) {
         if (!images_known) multiply(M_, n_, count, V_.col(first), MV_.col(first));
+        const OrthogonalizationScope logged;
         Eigen::MatrixXd G(count, count);
         gemm("T", "N", count, count, int(n_), 1.0, V_.col(first), n_, MV_.col(first), n_, 0.0, G.data(), count);
         G = 0.5 * (G + G.transpose()).eval();

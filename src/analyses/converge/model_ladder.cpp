@@ -46,7 +46,7 @@ double event_seconds(std::initializer_list<const char*> names) {
 
 SolverBreakdown solver_event_seconds() {
     return {event_seconds({"MatCholFctrSym", "MatCholFctrNum", "MatLUFactorSym", "MatLUFactorNum"}),
-            event_seconds({"MatSolve"}), event_seconds({"BVOrthogonalizeV"})};
+            event_seconds({"MatSolve", "MatMatSolve"}), event_seconds({"BVOrthogonalizeV", "BlockOrthogonal"})};
 }
 
 // The peak memory of this run, summed over ranks: since `reset` if

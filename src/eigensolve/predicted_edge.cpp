@@ -1,0 +1,284 @@
+#include "eigensolve/predicted_edge.hpp"
+
+#include "common/error.hpp"
+#include "common/heartbeat.hpp"
+#include "eigensolve/band_edge.hpp"
+#include "eigensolve/block_lanczos.hpp"
+#include "eigensolve/petsc_algebra.hpp"
+#include "eigensolve/shift_invert_steps.hpp"
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace coremodal::shift_invert {
+namespace {
+
+// The prediction may place sigma above this many modes (more than wanted)
+// before the pass solves for the wanted ones only and re-shifts to their
+// edge (a second factorization): each mode below sigma costs solves.
+int most_below_one_shift(int wanted) { return wanted + std::max(kMinExtraModes, wanted / 2); }
+
+
+double hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
+
+// SLEPc's order of eigenvalues: a before b (res < 0) when lower.
+PetscErrorCode lowest_first(PetscScalar ar, PetscScalar, PetscScalar br, PetscScalar, PetscInt* res, void*) {
+    const double a = PetscRealPart(ar), b = PetscRealPart(br);
+    *res = a < b ? -1 : (a > b ? 1 : 0);
+    return 0;
+}
+
+// Krylov-Schur with shift-and-invert at sigma on a MUMPS LDL^T factor that
+// reports its inertia; the lowest eigenvalues wanted (sigma lies above them).
+PetscHandle<EPS, EPSDestroy> configure_ldlt(Mat K, Mat M, double sigma, const SolveRequest& request) {
+    PetscHandle<EPS, EPSDestroy> eps = krylov_schur_at(K, M, sigma);
+    // The lowest eigenvalues, not those nearest sigma: every one below sigma
+    // is wanted, however far below. Shift-and-invert takes only a target or
+    // a user's order; SLEPc applies it to the back-transformed values.
+    COREMODAL_PETSC(EPSSetEigenvalueComparison(eps, lowest_first, nullptr));
+    COREMODAL_PETSC(EPSSetWhichEigenpairs(eps, EPS_WHICH_USER));
+    COREMODAL_PETSC(EPSSetTolerances(eps, request.tolerance, request.max_iterations));
+    ST st;
+    COREMODAL_PETSC(EPSGetST(eps, &st));
+    const PC pc = direct_shift_and_invert(st);
+    COREMODAL_PETSC(PCSetType(pc, PCCHOLESKY));
+    // K - sigma M is indefinite: MUMPS's LDL^T with pivoting, whose inertia
+    // is the count. ICNTL(13) = 1 treats the root front like the others: in
+    // parallel it keeps it off ScaLAPACK, which would not report the
+    // inertia (petsc_algebra.cpp); in one process it measured faster too
+    // (case 03: numeric factor 33.9 -> 20.4 s, 103 solves 44.7 -> 32.8 s;
+    // docs/performance.md, issue 19). Set through the options database, as
+    // the factor is made inside SLEPc's setup; a user's value is kept.
+    COREMODAL_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    PetscBool set = PETSC_FALSE;
+    COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-st_mat_mumps_icntl_13", &set));
+    if (!set) COREMODAL_PETSC(PetscOptionsSetValue(nullptr, "-st_mat_mumps_icntl_13", "1"));
+    COREMODAL_PETSC(EPSSetFromOptions(eps));
+    return eps;
+}
+
+// PETSc's words for an error code.
+std::string petsc_error_text(PetscErrorCode code) {
+    const char* text = nullptr;
+    PetscErrorMessage(code, &text, nullptr);
+    return text ? text : "PETSc error " + std::to_string(code);
+}
+
+// Sets the solver up (SLEPc factors K - sigma M there) and returns the
+// factor's negative pivots: the eigenvalues below sigma. None, with the
+// reason said through `progress`, when the factorization failed (sigma on
+// an eigenvalue) or the factor gives no inertia (another package chosen
+// on the command line).
+std::optional<long> factor_and_count(EPS eps, const Progress& progress) {
+    const auto failed = [&](const std::string& why) {
+        progress("the LDL^T factor at the predicted edge gave no count (" + why + "): solving with a negative shift");
+        return std::nullopt;
+    };
+    if (const PetscErrorCode e = EPSSetUp(eps)) return failed(petsc_error_text(e));
+    ST st;
+    KSP ksp;
+    PC pc;
+    Mat F;
+    COREMODAL_PETSC(EPSGetST(eps, &st));
+    COREMODAL_PETSC(STGetKSP(st, &ksp));
+    if (const PetscErrorCode e = KSPSetUp(ksp)) return failed(petsc_error_text(e));
+    COREMODAL_PETSC(KSPGetPC(ksp, &pc));
+    COREMODAL_PETSC(PCFactorGetMatrix(pc, &F));
+    MatFactorError factor_error;
+    COREMODAL_PETSC(MatFactorGetError(F, &factor_error));
+    if (factor_error != MAT_FACTOR_NOERROR) return failed("a zero pivot: sigma on an eigenvalue");
+    PetscInt n_negative = 0;
+    if (const PetscErrorCode e = MatGetInertia(F, &n_negative, nullptr, nullptr)) return failed(petsc_error_text(e));
+    return n_negative;
+}
+
+std::string shift_text(double sigma) {
+    std::ostringstream s;
+    s << "sigma = " << sigma << " rad^2/s^2, " << hz(sigma) << " Hz";
+    return s.str();
+}
+
+long count_below_shift(const Attempt& a, double sigma) {
+    return std::count_if(a.lambdas.begin(), a.lambdas.end(), [&](double l) { return l < sigma; });
+}
+
+// A Krylov space built from one vector holds one direction of each
+// eigenspace; the other members of a multiple eigenvalue (the six rigid
+// modes of a free body, exact pairs) enter only through round-off, and with
+// the shift far above them they may not converge among the lowest. The
+// missing ones are the lowest eigenvalues M-orthogonal to those found below
+// sigma: SLEPc's deflation space, on the factor already made. Adds those found
+// below sigma to `a`, in ascending order.
+void add_missed_partners(EPS eps, Mat K, double sigma, long missing, Attempt& a) {
+    std::vector<Vec> found;
+    for (size_t i = 0; i < a.lambdas.size(); ++i)
+        if (a.lambdas[i] < sigma) found.push_back(a.vectors[i]);
+    COREMODAL_PETSC(EPSSetDeflationSpace(eps, static_cast<PetscInt>(found.size()), found.data()));
+    COREMODAL_PETSC(EPSSetDimensions(eps, static_cast<PetscInt>(missing) + 1, PETSC_DEFAULT, PETSC_DEFAULT));
+    COREMODAL_PETSC(EPSSolve(eps));
+    Attempt more = converged_pairs(eps, K);
+    std::vector<std::pair<double, PetscVector>> all;
+    for (size_t i = 0; i < a.lambdas.size(); ++i) all.emplace_back(a.lambdas[i], std::move(a.vectors[i]));
+    for (size_t i = 0; i < more.lambdas.size(); ++i)
+        if (more.lambdas[i] < sigma) all.emplace_back(more.lambdas[i], std::move(more.vectors[i]));
+    std::stable_sort(all.begin(), all.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    a.lambdas.clear();
+    a.vectors.clear();
+    for (auto& [lambda, x] : all) {
+        a.lambdas.push_back(lambda);
+        a.vectors.push_back(std::move(x));
+    }
+    a.n_converged += more.n_converged;
+}
+
+// What one pass at a shift gave: the modes, proven complete by its own
+// factor's count; or where the next pass should factor (the edge of the
+// wanted modes found); or neither (the factor failed).
+struct ShiftPass {
+    std::optional<SolvedModes> modes;
+    std::optional<double> next_shift;
+};
+
+// Factors K - sigma M once (LDL^T), solves for the lowest modes on that
+// factor, and proves them complete by its inertia when sigma lies above
+// them and not too far (most_below_one_shift).
+ShiftPass solve_at_shift(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma, long n_dofs,
+                         const std::string& where, const Progress& progress) {
+    progress("factorising K - sigma M (LDL^T) at " + where + ", " + shift_text(sigma) +
+             ": one factor for the solve and the count");
+    const Heartbeat beat("factorising K - sigma M and solving", progress);
+    auto eps = configure_ldlt(K, M, sigma, request);
+    const std::optional<long> below = factor_and_count(eps, progress);
+    if (!below) return {};
+    const bool one_factor = *below >= wanted && *below <= most_below_one_shift(wanted);
+    if (!one_factor)
+        progress("the shift missed: " + std::to_string(*below) + " eigenvalues below sigma for " +
+                 std::to_string(wanted) + " wanted; solving for the lowest modes at this shift to find their edge");
+    const int nev = static_cast<int>(std::min<long>(
+        n_dofs, one_factor ? *below + 1 : wanted + std::max(kMinExtraModes, wanted / 4)));
+    progress("solving for " + std::to_string(nev) + " modes (" + std::to_string(*below) + " below sigma)");
+    COREMODAL_PETSC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+    COREMODAL_PETSC(EPSSolve(eps));
+    Attempt a = converged_pairs(eps, K);
+    long found_below = count_below_shift(a, sigma);
+    // Each round finds at least one member of every eigenspace still missed
+    // (one more of the rigid modes, say); a round that finds none ends it.
+    for (long before = -1; found_below < *below && found_below > before;) {
+        progress("found " + std::to_string(found_below) + " of the " + std::to_string(*below) +
+                 " modes below sigma (a multiple eigenvalue's partner, such as a rigid mode): solving again, on the "
+                 "same factor, M-orthogonally to those found");
+        before = found_below;
+        add_missed_partners(eps, K, sigma, *below - found_below, a);
+        found_below = count_below_shift(a, sigma);
+    }
+    const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
+    if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));
+    if (one_factor && found_below == *below && n_report <= *below)
+        return {verified_modes(K, M, a, n_report, sigma, *below, found_below), std::nullopt};
+    if (one_factor)
+        progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
+                 std::to_string(*below));
+    return {std::nullopt, check_point(a.lambdas, n_report, request.lambda_scale)};
+}
+
+// The predicted shift, then once the edge the first pass found; none when
+// neither proves the modes complete (the caller then takes the negative
+// shift and a separate count). Every step is said through `progress`.
+constexpr int kShiftPasses = 2;
+
+std::optional<SolvedModes> solve_at_edge_one_vector(Mat K, Mat M, const SolveRequest& request, int wanted,
+                                                    double sigma, long n_dofs, const Progress& progress) {
+    std::string where = "the predicted band edge";
+    for (int pass = 0; pass < kShiftPasses; ++pass) {
+        ShiftPass p = solve_at_shift(K, M, request, wanted, sigma, n_dofs, where, progress);
+        if (p.modes) return std::move(p.modes);
+        if (!p.next_shift) return std::nullopt;
+        sigma = *p.next_shift;
+        where = "the band edge found (re-shifted: a second factorization)";
+    }
+    progress("no shift near the band edge proved the modes complete: solving with a negative shift");
+    return std::nullopt;
+}
+
+// The one-factor path with block Lanczos on MUMPS's multi-right-hand-side
+// solves (block_lanczos.hpp): one LDL^T factor of K - sigma M at the
+// predicted edge counts the eigenvalues below sigma and is the operator
+// whose negative Ritz values are those eigenvalues. The modes are proven
+// complete when exactly that many are found below sigma. None, said
+// through `progress`, when the factor fails, the shift lies below too few
+// or above too many modes, or the solve finds another number below it: the
+// caller then takes the negative shift and a separate count.
+std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma,
+                                                   const Progress& progress) {
+    progress("factorising K - sigma M (MUMPS LDL^T) at the predicted band edge, " + shift_text(sigma) +
+             ": one factor for the solve (block Lanczos) and the count");
+    const Heartbeat beat("factorising K - sigma M and solving", progress);
+    PetscMatrix A, F;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    try {
+        F = ldlt_factor(A, "K - sigma M at the predicted band edge");
+    } catch (const SolveError& e) {
+        progress(std::string("the LDL^T factor at the predicted edge failed (") + e.what() +
+                 "): solving with a negative shift");
+        return std::nullopt;
+    }
+    A.reset();
+    const long below = negative_pivots(F);
+    if (below < wanted || below > most_below_one_shift(wanted)) {
+        progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +
+                 std::to_string(wanted) + " wanted; solving with a negative shift");
+        return std::nullopt;
+    }
+    BlockLanczosResult r = block_lanczos_lowest(F, M, sigma, {int(below), request.tolerance, request.max_iterations});
+    progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
+             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
+    Attempt a;
+    a.n_converged = static_cast<int>(r.eigenvalues.size());
+    std::vector<std::pair<double, PetscVector>> pairs;
+    for (size_t i = 0; i < r.eigenvalues.size(); ++i) pairs.emplace_back(r.eigenvalues[i], std::move(r.vectors[i]));
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (auto& [lambda, x] : pairs) {
+        a.lambdas.push_back(lambda);
+        a.vectors.push_back(std::move(x));
+    }
+    const long found_below = count_below_shift(a, sigma);
+    const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
+    if (found_below == below && n_report >= wanted && n_report <= below)
+        return verified_modes(K, M, a, n_report, sigma, below, found_below);
+    progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
+             std::to_string(below) + ": solving with a negative shift");
+    return std::nullopt;
+}
+
+}  // namespace
+
+// Halfway into the predicted gap after the wanted modes' cluster; none when the
+// prediction does not reach past them or the shift would sit among the
+// rigid modes (K - sigma M nearly singular there). None either for a free
+// body: its rigid modes are one eigenvalue six times over, which a Krylov
+// space at a shift far above finds one member at a time (case 01: 198
+// solves against 116 with the negative shift, where they come first), so
+// the one factor saved no time there.
+std::optional<double> predicted_shift(const SolveRequest& r, int wanted) {
+    const std::vector<double>& p = r.predicted_eigenvalues;
+    if (r.lambda_max || int(p.size()) <= wanted) return std::nullopt;
+    if (std::abs(p.front()) < rigid_line(r)) return std::nullopt;
+    const int n = reported_count(p, wanted, r.lambda_scale);
+    if (n >= int(p.size())) return std::nullopt;
+    const double sigma = 0.5 * (p[n - 1] + p[n]);
+    if (sigma < kShiftFraction * r.lambda_scale) return std::nullopt;
+    return sigma;
+}
+
+std::optional<SolvedModes> solve_at_predicted_edge(Mat K, Mat M, const SolveRequest& request, int wanted,
+                                                   double sigma, long n_dofs, const Progress& progress) {
+    return block_lanczos_applies(K, n_dofs, most_below_one_shift(wanted))
+               ? solve_at_edge_in_blocks(K, M, request, wanted, sigma, progress)
+               : solve_at_edge_one_vector(K, M, request, wanted, sigma, n_dofs, progress);
+}
+
+}  // namespace coremodal::shift_invert

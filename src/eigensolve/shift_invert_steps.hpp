@@ -1,0 +1,52 @@
+// The steps of a shift-and-invert solve that the solver's two paths share
+// (eigensolve/modal_solver.cpp: a negative shift and a separate count;
+// eigensolve/predicted_edge.cpp: one LDL^T factor at a predicted band edge
+// that is operator and count). Internal to eigensolve/.
+#pragma once
+
+#include "eigensolve/modal_solver.hpp"
+
+#include <slepceps.h>
+
+#include <string>
+#include <vector>
+
+namespace coremodal::shift_invert {
+
+// The shift sits this far below zero, in units of the first elastic
+// eigenvalue: rigid-body modes (lambda = 0) then make K - sigma M definite
+// instead of singular, and the wanted low modes stay well separated in the
+// shift-and-invert spectrum 1 / (lambda - sigma).
+constexpr double kShiftFraction = 0.5;
+
+// Extra modes computed beyond those reported: they locate the gap where the
+// inertia check is placed and catch a degenerate partner of the last mode.
+constexpr int kMinExtraModes = 4;
+
+// What one solve gave: every converged pair, ascending.
+struct Attempt {
+    std::vector<double> lambdas;
+    std::vector<PetscVector> vectors;
+    int n_converged = 0;
+};
+
+// Krylov-Schur on the symmetric-definite pencil (K, M), aimed at sigma.
+PetscHandle<EPS, EPSDestroy> krylov_schur_at(Mat K, Mat M, double sigma);
+
+// Every converged pair of a solved EPS, in ascending order of eigenvalue.
+Attempt converged_pairs(EPS eps, Mat K);
+
+// |lambda| below this is a rigid-body mode (tolerances.hpp).
+double rigid_line(const SolveRequest& r);
+
+// Whether block Lanczos (block_lanczos.hpp) solves for `wanted` pairs of
+// this model rather than SLEPc's Krylov-Schur.
+bool block_lanczos_applies(Mat K, PetscInt n_dofs, int wanted);
+
+// The first n_report modes of a proven-complete attempt, M-normalised, with
+// their residuals and the verification.
+SolvedModes verified_modes(Mat K, Mat M, Attempt& a, int n_report, double check, long pivots, long found_below);
+
+std::string unconverged_text(int n_converged, int wanted, const SolveRequest& request);
+
+}  // namespace coremodal::shift_invert
