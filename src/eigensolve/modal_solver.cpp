@@ -99,15 +99,8 @@ PetscMatrix definite_factor(Mat K, Mat M, double sigma) {
     PetscMatrix A, F;
     COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
     COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
-    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatGetFactor(A, shift_invert_factor_package(PetscObjectComm((PetscObject)K)), MAT_FACTOR_CHOLESKY,
-                                 F.out()));
-    PetscIndexSet row_perm, col_perm;
-    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
-    MatFactorInfo info;
-    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
-    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
-    const PetscErrorCode factored = MatCholeskyFactorNumeric(F, A, &info);
+    const PetscErrorCode factored =
+        factor_symmetric(A, shift_invert_factor_package(PetscObjectComm((PetscObject)K)), F);
     if (factored == PETSC_ERR_MAT_CH_ZRPVT || factored == PETSC_ERR_MAT_LU_ZRPVT) throw SolveError(zero_pivot_text(sigma));
     COREMODAL_PETSC(factored);
     MatFactorError factor_error;

@@ -23,20 +23,24 @@ double bilinear_form(Mat A, Vec y, Vec x) {
     return PetscRealPart(v);
 }
 
-PetscMatrix ldlt_factor(Mat A, const char* what) {
-    PetscMatrix F;
+PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F) {
     COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, F.out()));
-    // ICNTL(13) = 1 keeps the root front off ScaLAPACK, so MUMPS can count
-    // negative pivots in parallel too; in one process it measured faster
-    // as well (docs/performance.md, issue 19).
-    COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
+    COREMODAL_PETSC(MatGetFactor(A, package, MAT_FACTOR_CHOLESKY, F.out()));
+    // ICNTL(13) = 1 keeps MUMPS's root front off ScaLAPACK, so MUMPS can
+    // count negative pivots in parallel too; in one process it measured
+    // faster as well (docs/performance.md, issue 19).
+    if (std::string(package) == MATSOLVERMUMPS) COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
     PetscIndexSet row_perm, col_perm;
     COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));
     MatFactorInfo info;
     COREMODAL_PETSC(MatFactorInfoInitialize(&info));
     COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
-    COREMODAL_PETSC(MatCholeskyFactorNumeric(F, A, &info));
+    return MatCholeskyFactorNumeric(F, A, &info);
+}
+
+PetscMatrix ldlt_factor(Mat A, const char* what) {
+    PetscMatrix F;
+    COREMODAL_PETSC(factor_symmetric(A, MATSOLVERMUMPS, F));
     MatFactorError factor_error;
     COREMODAL_PETSC(MatFactorGetError(F, &factor_error));
     if (factor_error != MAT_FACTOR_NOERROR)

@@ -20,6 +20,11 @@ inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
 // law of inertia: the negative pivots of its MUMPS LDL^T factor). `what`
 // names A in the error raised when the factorisation fails.
 long negative_eigenvalue_count(Mat A, const char* what);
+// The factor of the symmetric A by `package` (MATSOLVERCHOLMOD: Cholesky;
+// MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and
+// numeric steps, the package's own ordering. The numeric step's error code
+// is returned (a zero pivot, PETSC_ERR_MAT_CH_ZRPVT), not thrown.
+PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F);
 // Its two steps: MUMPS's LDL^T factor of the symmetric A (SolveError when
 // it fails), which also solves, and that factor's negative pivots.
 PetscMatrix ldlt_factor(Mat A, const char* what);

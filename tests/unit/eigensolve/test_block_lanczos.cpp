@@ -6,6 +6,7 @@
 // Krylov space that becomes invariant handled, not divided by zero.
 #include "eigensolve/block_lanczos.hpp"
 #include "eigensolve/modal_solver.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -102,6 +103,13 @@ PetscMatrix membrane_matrix(bool mass) {
     return A;
 }
 
+OperatorSet membrane() {
+    OperatorSet ops;
+    ops.matrices.emplace(Term::stiffness, membrane_matrix(false));
+    ops.matrices.emplace(Term::mass, membrane_matrix(true));
+    return ops;
+}
+
 std::vector<double> membrane_eigenvalues(int count) {
     std::vector<double> all;
     for (int p = 1; p <= 20; ++p)
@@ -116,9 +124,7 @@ std::vector<double> membrane_eigenvalues(int count) {
 
 TEST_CASE("Block Lanczos finds a membrane's lowest modes, proven complete", "[eigensolve][block_lanczos]") {
     constexpr int kModes = 12;
-    OperatorSet ops;
-    ops.matrices.emplace(Term::stiffness, membrane_matrix(false));
-    ops.matrices.emplace(Term::mass, membrane_matrix(true));
+    const OperatorSet ops = membrane();
     const std::vector<double> exact = membrane_eigenvalues(kModes + 4);
     SolveRequest request;
     request.n_modes = kModes;
@@ -176,14 +182,7 @@ TEST_CASE("Block Lanczos carries on when its Krylov space becomes invariant", "[
         COREMODAL_PETSC(MatAssemblyBegin(X, MAT_FINAL_ASSEMBLY));
         COREMODAL_PETSC(MatAssemblyEnd(X, MAT_FINAL_ASSEMBLY));
     }
-    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-    COREMODAL_PETSC(MatGetFactor(A, MATSOLVERCHOLMOD, MAT_FACTOR_CHOLESKY, F.out()));
-    PetscIndexSet rows, cols;
-    COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, rows.out(), cols.out()));
-    MatFactorInfo info;
-    COREMODAL_PETSC(MatFactorInfoInitialize(&info));
-    COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, rows, &info));
-    COREMODAL_PETSC(MatCholeskyFactorNumeric(F, A, &info));
+    COREMODAL_PETSC(factor_symmetric(A, MATSOLVERCHOLMOD, F));
 
     const BlockLanczosResult r = block_lanczos_lowest(F, M, kSigma, {10, 1e-10, 50});
     REQUIRE(r.eigenvalues.size() >= 10);
@@ -215,9 +214,7 @@ TEST_CASE("Block Lanczos carries on when its Krylov space becomes invariant", "[
 // falls back to the negative shift and a second count, with the same modes.
 TEST_CASE("Block Lanczos on one LDL^T factor at the predicted edge solves and counts", "[eigensolve][block_lanczos]") {
     constexpr int kModes = 12;
-    OperatorSet ops;
-    ops.matrices.emplace(Term::stiffness, membrane_matrix(false));
-    ops.matrices.emplace(Term::mass, membrane_matrix(true));
+    const OperatorSet ops = membrane();
     const std::vector<double> exact = membrane_eigenvalues(kModes + 6);
     for (double factor : {1.0, 0.5}) {
         SECTION("prediction " + std::to_string(factor) + " x the truth") {
