@@ -13,6 +13,9 @@
 namespace coremodal {
 namespace {
 
+// Rows of the basis multiplied at a time in the in-place products.
+constexpr PetscInt kPanelRows = 4096;
+
 // A block's direction whose part M-orthogonal to the basis is below this
 // fraction of its length lies in the basis to round-off (the Krylov space
 // has become invariant, as on a model with few modes): it is replaced by a
@@ -20,7 +23,7 @@ namespace {
 constexpr double kDeflation = 1e-12;
 
 // Columns of length n stored one after another (column-major, leading
-// dimension n): the basis V, its M-images, and scratch blocks.
+// dimension n): the basis V and its M-images.
 class Columns {
 public:
     Columns(PetscInt n, int count) : n_(n), data_(size_t(n) * size_t(count)) {}
@@ -87,7 +90,8 @@ class BlockLanczos {
 public:
     BlockLanczos(Mat F, Mat M, PetscInt n, int block, int capacity)
         : F_(F), M_(M), n_(n), b_(block), cap_(capacity), V_(n, capacity + block), MV_(n, capacity + block),
-          scratch_(n, capacity + block), H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
+          panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
+          H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
 
     // The first block: random, fixed seed (runs repeat bit for bit).
     void start() {
@@ -139,11 +143,11 @@ public:
     // Thick restart: the basis becomes the first `keep` Ritz vectors and
     // the block not yet applied.
     void restart(const Ritz& r, int keep) {
-        const int a = applied_;
-        gemm("N", "N", int(n_), keep, a, 1.0, V_.col(0), n_, r.S.data(), a, 0.0, scratch_.col(0), n_);
-        keep_first(V_, keep);
-        gemm("N", "N", int(n_), keep, a, 1.0, MV_.col(0), n_, r.S.data(), a, 0.0, scratch_.col(0), n_);
-        keep_first(MV_, keep);
+        const int a = applied_;  // keep <= a - b: the unapplied block lies past the Ritz vectors
+        for (Columns* cols : {&V_, &MV_}) {
+            right_multiply_in_place(*cols, 0, a, r.S.data(), a, keep);
+            std::memmove(cols->col(keep), cols->col(a), sizeof(double) * size_t(n_) * size_t(b_));
+        }
         const Eigen::MatrixXd E = H_.block(a, 0, b_, a) * r.S.leftCols(keep);
         H_.setZero();
         H_.topLeftCorner(keep, keep) = r.theta.head(keep).asDiagonal();
@@ -155,15 +159,20 @@ public:
 
     // The first `count` Ritz vectors, as PETSc vectors.
     std::vector<PetscVector> ritz_vectors(const Ritz& r, int count) {
-        gemm("N", "N", int(n_), count, applied_, 1.0, V_.col(0), n_, r.S.data(), applied_, 0.0, scratch_.col(0), n_);
         std::vector<PetscVector> out(count);
+        std::vector<double*> x(count);
         for (int j = 0; j < count; ++j) {
             COREMODAL_PETSC(MatCreateVecs(M_, out[j].out(), nullptr));
-            double* x = nullptr;
-            COREMODAL_PETSC(VecGetArray(out[j], &x));
-            std::memcpy(x, scratch_.col(j), sizeof(double) * size_t(n_));
-            COREMODAL_PETSC(VecRestoreArray(out[j], &x));
+            COREMODAL_PETSC(VecGetArray(out[j], &x[j]));
         }
+        for (PetscInt r0 = 0; r0 < n_; r0 += kPanelRows) {
+            const PetscInt rows = std::min(kPanelRows, n_ - r0);
+            gemm("N", "N", int(rows), count, applied_, 1.0, V_.col(0) + r0, n_, r.S.data(), applied_, 0.0, panel_.data(),
+                 rows);
+            for (int j = 0; j < count; ++j)
+                std::memcpy(x[j] + r0, panel_.data() + size_t(j) * size_t(rows), sizeof(double) * size_t(rows));
+        }
+        for (int j = 0; j < count; ++j) COREMODAL_PETSC(VecRestoreArray(out[j], &x[j]));
         return out;
     }
 
@@ -172,11 +181,19 @@ public:
     int applied() const { return applied_; }
 
 private:
-    // Moves scratch's first `keep` columns to the front of `cols`, the
-    // unapplied block (columns applied_ ... m_) right after them.
-    void keep_first(Columns& cols, int keep) {
-        std::memmove(cols.col(keep), cols.col(applied_), sizeof(double) * size_t(n_) * size_t(b_));
-        std::memcpy(cols.col(0), scratch_.col(0), sizeof(double) * size_t(n_) * size_t(keep));
+    // cols[first, first + out_width) = cols[first, first + width) * S (S:
+    // width x out_width, leading dimension lds), in place, a panel of rows
+    // at a time: each panel's rows are read whole before they are written.
+    // A scratch copy of the product would cost a third of the basis's memory
+    // (1 GB on a 540k-DOF model).
+    void right_multiply_in_place(Columns& cols, int first, int width, const double* S, int lds, int out_width) {
+        for (PetscInt r0 = 0; r0 < n_; r0 += kPanelRows) {
+            const PetscInt rows = std::min(kPanelRows, n_ - r0);
+            gemm("N", "N", int(rows), out_width, width, 1.0, cols.col(first) + r0, n_, S, lds, 0.0, panel_.data(), rows);
+            for (int j = 0; j < out_width; ++j)
+                std::memcpy(cols.col(first + j) + r0, panel_.data() + size_t(j) * size_t(rows),
+                            sizeof(double) * size_t(rows));
+        }
     }
 
     // Columns [first, first + count) less their M-projection on the basis
@@ -231,8 +248,7 @@ private:
 
     // cols[first, first + count) = cols[first, first + count) * A.
     void transform(Columns& cols, int first, int count, const Eigen::MatrixXd& A) {
-        gemm("N", "N", int(n_), count, count, 1.0, cols.col(first), n_, A.data(), count, 0.0, scratch_.col(0), n_);
-        std::memcpy(cols.col(first), scratch_.col(0), sizeof(double) * size_t(n_) * size_t(count));
+        right_multiply_in_place(cols, first, count, A.data(), count, count);
     }
 
     // Column j: random, M-orthonormal to the basis and to the block's
@@ -265,7 +281,8 @@ private:
     Mat F_, M_;
     PetscInt n_;
     int b_, cap_;
-    Columns V_, MV_, scratch_;
+    Columns V_, MV_;
+    std::vector<double> panel_;  // kPanelRows x the widest product
     Eigen::MatrixXd H_;  // H[:, c] = coefficients of T V[:, c] in the basis
     int m_ = 0, applied_ = 0, blocks_solved_ = 0, restarts_ = 0;
 };
