@@ -28,7 +28,6 @@ class Columns {
 public:
     Columns(PetscInt n, int count) : n_(n), data_(size_t(n) * size_t(count)) {}
     double* col(int j) { return data_.data() + size_t(n_) * size_t(j); }
-    PetscInt rows() const { return n_; }
 
 private:
     PetscInt n_;
@@ -111,9 +110,9 @@ public:
     void expand() {
         solve(F_, n_, b_, MV_.col(applied_), V_.col(m_));
         ++blocks_solved_;
-        Eigen::MatrixXd C1 = orthogonalise_against_basis(m_, b_);
+        const Eigen::MatrixXd C1 = orthogonalise_against_basis(m_, b_);
         const Eigen::MatrixXd R1 = normalise_new_block(m_, b_, &C1);
-        Eigen::MatrixXd C2 = orthogonalise_against_basis(m_, b_, /*update_images=*/true);
+        const Eigen::MatrixXd C2 = orthogonalise_against_basis(m_, b_, /*update_images=*/true);
         const Eigen::MatrixXd R2 = normalise_new_block(m_, b_, nullptr, /*images_known=*/true);
         // T V_applied = V_basis (C1 + C2 R1) + V_new (R2 R1).
         H_.block(0, applied_, m_, b_) += C1 + C2 * R1;
@@ -240,15 +239,10 @@ private:
             scale.col(i) = Q.col(i) / std::sqrt(d(i));
             R.row(i) = std::sqrt(d(i)) * Q.col(i).transpose();
         }
-        transform(V_, first, count, scale);
-        transform(MV_, first, count, scale);
+        right_multiply_in_place(V_, first, count, scale.data(), count, count);
+        right_multiply_in_place(MV_, first, count, scale.data(), count, count);
         for (int i : vanished) random_direction(first + i, first, count);
         return R;
-    }
-
-    // cols[first, first + count) = cols[first, first + count) * A.
-    void transform(Columns& cols, int first, int count, const Eigen::MatrixXd& A) {
-        right_multiply_in_place(cols, first, count, A.data(), count, count);
     }
 
     // Column j: random, M-orthonormal to the basis and to the block's
@@ -338,8 +332,14 @@ BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockL
     COREMODAL_PETSC(PetscOptionsGetInt(nullptr, nullptr, "-block_lanczos_bs", &opt_bs, nullptr));
     const int block = int(opt_bs);
     COREMODAL_PETSC(PetscOptionsGetInt(nullptr, nullptr, "-block_lanczos_ncv", &opt_ncv, nullptr));
-    const int capacity = opt_ncv ? int(opt_ncv) : capacity_for(request.wanted, block);
-    COREMODAL_ASSERT(capacity + block <= n);
+    const int capacity = opt_ncv ? int(opt_ncv) : capacity_for(request.wanted, std::max(block, 1));
+    // The experts' values: a restart keeps the wanted pairs and needs room
+    // for two blocks beside them.
+    if (block < 1 || capacity < request.wanted + 4 * block || capacity + block > n)
+        throw InputError("-block_lanczos_bs " + std::to_string(block) + " -block_lanczos_ncv " +
+                         std::to_string(capacity) + " for " + std::to_string(request.wanted) + " pairs of a model with " +
+                         std::to_string(n) + " unknowns: expected a block of at least 1 and a basis of at least " +
+                         "the pairs + 4 blocks and at most the unknowns - 1 block");
     BlockLanczos lanczos(F, M, n, block, capacity);
     lanczos.start();
     BlockLanczosResult out;

@@ -44,8 +44,10 @@ struct BlockLanczosRequest {
 };
 
 struct BlockLanczosResult {
-    // Converged pairs in the order above, as many as converged in order (at
-    // least `wanted` unless the restarts ran out); M-orthonormal vectors.
+    // Converged pairs in the order above — lambda ascending, since every
+    // eigenvalue below sigma lies below every one above it — as many as
+    // converged in order (at least `wanted` unless the restarts ran out);
+    // M-orthonormal vectors.
     std::vector<double> eigenvalues;
     std::vector<PetscVector> vectors;
     int block_size = 0;

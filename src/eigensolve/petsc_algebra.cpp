@@ -23,6 +23,13 @@ double bilinear_form(Mat A, Vec y, Vec x) {
     return PetscRealPart(v);
 }
 
+PetscMatrix shifted(Mat K, Mat M, double sigma) {
+    PetscMatrix A;
+    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
+    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    return A;
+}
+
 PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F) {
     COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
     COREMODAL_PETSC(MatGetFactor(A, package, MAT_FACTOR_CHOLESKY, F.out()));

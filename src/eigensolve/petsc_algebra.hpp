@@ -20,6 +20,10 @@ inline double quadratic_form(Mat A, Vec x) { return bilinear_form(A, x, x); }
 // law of inertia: the negative pivots of its MUMPS LDL^T factor). `what`
 // names A in the error raised when the factorisation fails.
 long negative_eigenvalue_count(Mat A, const char* what);
+// K - sigma M, on the one sparsity pattern K and M share (the assembly
+// makes them so).
+PetscMatrix shifted(Mat K, Mat M, double sigma);
+
 // The factor of the symmetric A by `package` (MATSOLVERCHOLMOD: Cholesky;
 // MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and
 // numeric steps, the package's own ordering. The numeric step's error code

@@ -216,35 +216,21 @@ std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequ
     progress("factorising K - sigma M (MUMPS LDL^T) at the predicted band edge, " + shift_text(sigma) +
              ": one factor for the solve (block Lanczos) and the count");
     const Heartbeat beat("factorising K - sigma M and solving", progress);
-    PetscMatrix A, F;
-    COREMODAL_PETSC(MatDuplicate(K, MAT_COPY_VALUES, A.out()));
-    COREMODAL_PETSC(MatAXPY(A, -sigma, M, SAME_NONZERO_PATTERN));
+    PetscMatrix F;
     try {
-        F = ldlt_factor(A, "K - sigma M at the predicted band edge");
+        F = ldlt_factor(shifted(K, M, sigma), "K - sigma M at the predicted band edge");
     } catch (const SolveError& e) {
         progress(std::string("the LDL^T factor at the predicted edge failed (") + e.what() +
                  "): solving with a negative shift");
         return std::nullopt;
     }
-    A.reset();
     const long below = negative_pivots(F);
     if (below < wanted || below > most_below_one_shift(wanted)) {
         progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +
                  std::to_string(wanted) + " wanted; solving with a negative shift");
         return std::nullopt;
     }
-    BlockLanczosResult r = block_lanczos_lowest(F, M, sigma, {int(below), request.tolerance, request.max_iterations});
-    progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
-             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
-    Attempt a;
-    a.n_converged = static_cast<int>(r.eigenvalues.size());
-    std::vector<std::pair<double, PetscVector>> pairs;
-    for (size_t i = 0; i < r.eigenvalues.size(); ++i) pairs.emplace_back(r.eigenvalues[i], std::move(r.vectors[i]));
-    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (auto& [lambda, x] : pairs) {
-        a.lambdas.push_back(lambda);
-        a.vectors.push_back(std::move(x));
-    }
+    Attempt a = block_lanczos_attempt(F, M, sigma, int(below), request, progress);
     const long found_below = count_below_shift(a, sigma);
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (found_below == below && n_report >= wanted && n_report <= below)

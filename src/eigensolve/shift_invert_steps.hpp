@@ -43,6 +43,12 @@ double rigid_line(const SolveRequest& r);
 // this model rather than SLEPc's Krylov-Schur.
 bool block_lanczos_applies(Mat K, PetscInt n_dofs, int wanted);
 
+// Block Lanczos on the factor F of K - sigma M for `wanted` pairs (the
+// lowest; with sigma inside the spectrum, those below it), the passes said
+// through `progress`; the pairs come lambda-ascending.
+Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
+                              const Progress& progress);
+
 // The first n_report modes of a proven-complete attempt, M-normalised, with
 // their residuals and the verification.
 SolvedModes verified_modes(Mat K, Mat M, Attempt& a, int n_report, double check, long pivots, long found_below);
