@@ -43,15 +43,25 @@ void gemm(const char* ta, const char* tb, int m, int n, int k, double alpha, con
     BLASgemm_(ta, tb, &bm, &bn, &bk, &alpha, A, &blda, B, &bldb, &beta, C, &bldc);
 }
 
-PetscMatrix dense_view(PetscInt n, int cols, double* data) {
+// The sum over the processes of each one's part of an inner product (the
+// basis's rows are split like M's): every process then holds the same small
+// matrix and takes the same steps on it.
+void sum_over_processes(MPI_Comm comm, double* values, int count) {
+    if (mpi_size(comm) > 1 && count > 0)
+        MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, comm);
+}
+
+// `cols` columns of this process's n rows, as a dense matrix distributed
+// like M's rows.
+PetscMatrix dense_view(Mat M, PetscInt n, int cols, double* data) {
     PetscMatrix A;
-    COREMODAL_PETSC(MatCreateSeqDense(PETSC_COMM_SELF, n, cols, data, A.out()));
+    COREMODAL_PETSC(MatCreateDense(PetscObjectComm((PetscObject)M), n, PETSC_DECIDE, PETSC_DETERMINE, cols, data, A.out()));
     return A;
 }
 
 // out = M in, for `cols` columns (one pass over M for the block).
 void multiply(Mat M, PetscInt n, int cols, double* in, double* out) {
-    PetscMatrix X = dense_view(n, cols, in), Y;
+    PetscMatrix X = dense_view(M, n, cols, in), Y;
     COREMODAL_PETSC(MatMatMult(M, X, MAT_INITIAL_MATRIX, PETSC_DEFAULT, Y.out()));
     const double* y = nullptr;
     COREMODAL_PETSC(MatDenseGetArrayRead(Y, &y));
@@ -60,8 +70,8 @@ void multiply(Mat M, PetscInt n, int cols, double* in, double* out) {
 }
 
 // out = (K - sigma M)^-1 in, for `cols` columns: one pass over the factor.
-void solve(Mat F, PetscInt n, int cols, double* in, double* out) {
-    PetscMatrix B = dense_view(n, cols, in), X = dense_view(n, cols, out);
+void solve(Mat F, Mat M, PetscInt n, int cols, double* in, double* out) {
+    PetscMatrix B = dense_view(M, n, cols, in), X = dense_view(M, n, cols, out);
     COREMODAL_PETSC(MatMatSolve(F, B, X));
 }
 
@@ -87,14 +97,15 @@ struct OrthogonalizationScope {
 
 class BlockLanczos {
 public:
+    // n: the rows of the basis this process holds (M's local rows).
     BlockLanczos(Mat F, Mat M, PetscInt n, int block, int capacity)
-        : F_(F), M_(M), n_(n), b_(block), cap_(capacity), V_(n, capacity + block), MV_(n, capacity + block),
+        : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity), V_(n, capacity + block), MV_(n, capacity + block),
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
           H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
 
-    // The first block: random, fixed seed (runs repeat bit for bit).
+    // The first block: random, fixed seed per process (runs repeat bit for bit).
     void start() {
-        std::mt19937_64 random(20261126);
+        std::mt19937_64 random(20261126u + unsigned(mpi_rank(comm_)));
         std::uniform_real_distribution<double> uniform(-1.0, 1.0);
         for (int j = 0; j < b_; ++j)
             for (PetscInt i = 0; i < n_; ++i) V_.col(j)[i] = uniform(random);
@@ -108,7 +119,7 @@ public:
     // T applied to the oldest block not yet applied; the result, made
     // M-orthonormal to the basis, is the basis's next block.
     void expand() {
-        solve(F_, n_, b_, MV_.col(applied_), V_.col(m_));
+        solve(F_, M_, n_, b_, MV_.col(applied_), V_.col(m_));
         ++blocks_solved_;
         const Eigen::MatrixXd C1 = orthogonalise_against_basis(m_, b_);
         const Eigen::MatrixXd R1 = normalise_new_block(m_, b_, &C1);
@@ -204,6 +215,7 @@ private:
         if (first == 0) return C;
         const OrthogonalizationScope logged;
         gemm("T", "N", first, count, int(n_), 1.0, MV_.col(0), n_, V_.col(first), n_, 0.0, C.data(), first);
+        sum_over_processes(comm_, C.data(), int(C.size()));
         gemm("N", "N", int(n_), count, first, -1.0, V_.col(0), n_, C.data(), first, 1.0, V_.col(first), n_);
         if (update_images)
             gemm("N", "N", int(n_), count, first, -1.0, MV_.col(0), n_, C.data(), first, 1.0, MV_.col(first), n_);
@@ -222,6 +234,7 @@ private:
         const OrthogonalizationScope logged;
         Eigen::MatrixXd G(count, count);
         gemm("T", "N", count, count, int(n_), 1.0, V_.col(first), n_, MV_.col(first), n_, 0.0, G.data(), count);
+        sum_over_processes(comm_, G.data(), int(G.size()));
         G = 0.5 * (G + G.transpose()).eval();
         double length2 = G.diagonal().maxCoeff();
         if (projected) length2 = std::max(length2, (projected->colwise().squaredNorm().transpose() + G.diagonal()).maxCoeff());
@@ -248,7 +261,7 @@ private:
     // Column j: random, M-orthonormal to the basis and to the block's
     // columns other than j (those kept, and random ones made before it).
     void random_direction(int j, int first, int count) {
-        std::mt19937_64 random(7919u * unsigned(j + 1) + unsigned(restarts_));
+        std::mt19937_64 random(7919u * unsigned(j + 1) + unsigned(restarts_) + 104729u * unsigned(mpi_rank(comm_)));
         std::uniform_real_distribution<double> uniform(-1.0, 1.0);
         for (PetscInt i = 0; i < n_; ++i) V_.col(j)[i] = uniform(random);
         std::vector<int> others;
@@ -259,12 +272,14 @@ private:
             for (int c : others) {
                 double dot = 0;
                 for (PetscInt i = 0; i < n_; ++i) dot += MV_.col(c)[i] * V_.col(j)[i];
+                sum_over_processes(comm_, &dot, 1);
                 for (PetscInt i = 0; i < n_; ++i) V_.col(j)[i] -= dot * V_.col(c)[i];
             }
         }
         multiply(M_, n_, 1, V_.col(j), MV_.col(j));
         double norm2 = 0;
         for (PetscInt i = 0; i < n_; ++i) norm2 += V_.col(j)[i] * MV_.col(j)[i];
+        sum_over_processes(comm_, &norm2, 1);
         const double inv = 1.0 / std::sqrt(norm2);
         for (PetscInt i = 0; i < n_; ++i) {
             V_.col(j)[i] *= inv;
@@ -273,6 +288,7 @@ private:
     }
 
     Mat F_, M_;
+    MPI_Comm comm_;
     PetscInt n_;
     int b_, cap_;
     Columns V_, MV_;
@@ -326,8 +342,9 @@ bool block_lanczos_fits(PetscInt n, int wanted) {
 }
 
 BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockLanczosRequest& request) {
-    PetscInt n;
+    PetscInt n, n_local;
     COREMODAL_PETSC(MatGetSize(M, &n, nullptr));
+    COREMODAL_PETSC(MatGetLocalSize(M, &n_local, nullptr));
     PetscInt opt_bs = block_size_for(request.wanted), opt_ncv = 0;
     COREMODAL_PETSC(PetscOptionsGetInt(nullptr, nullptr, "-block_lanczos_bs", &opt_bs, nullptr));
     const int block = int(opt_bs);
@@ -340,7 +357,7 @@ BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockL
                          std::to_string(capacity) + " for " + std::to_string(request.wanted) + " pairs of a model with " +
                          std::to_string(n) + " unknowns: expected a block of at least 1 and a basis of at least " +
                          "the pairs + 4 blocks and at most the unknowns - 1 block");
-    BlockLanczos lanczos(F, M, n, block, capacity);
+    BlockLanczos lanczos(F, M, n_local, block, capacity);
     lanczos.start();
     BlockLanczosResult out;
     out.block_size = block;

@@ -111,7 +111,7 @@ PetscMatrix definite_factor(Mat K, Mat M, double sigma) {
 Attempt solve_below(Mat K, Mat M, double sigma, int nev, const SolveRequest& request, const Progress& progress) {
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
-    if (!block_lanczos_applies(K, n_dofs, nev)) return run_eps(K, M, sigma, nev, request);
+    if (!block_lanczos_applies(n_dofs, nev)) return run_eps(K, M, sigma, nev, request);
     return block_lanczos_attempt(definite_factor(K, M, sigma), M, sigma, nev, request, progress);
 }
 
@@ -234,14 +234,13 @@ double rigid_line(const SolveRequest& r) { return kRigidEigenvalueFraction * r.l
 constexpr PetscInt kBlockLanczosMinDofs = 20000;
 
 // The block method on the factor's multi-right-hand-side solves
-// (block_lanczos.hpp: why): in one process, on a model large enough for the
-// pairs wanted (block_lanczos_fits), unless
-// the user turned it off (-block_lanczos false) or chose SLEPc's method or
-// its factor on the command line (-eps_type, -st_pc_factor_mat_solver_type).
-bool block_lanczos_applies(Mat K, PetscInt n_dofs, int wanted) {
-    if (mpi_size(PetscObjectComm((PetscObject)K)) != 1 || n_dofs < kBlockLanczosMinDofs ||
-        !block_lanczos_fits(n_dofs, wanted))
-        return false;
+// (block_lanczos.hpp: why), in one process or several (MUMPS's distributed
+// factor), on a model large enough for the pairs wanted
+// (block_lanczos_fits), unless the user turned it off (-block_lanczos false)
+// or chose SLEPc's method or its factor on the command line (-eps_type,
+// -st_pc_factor_mat_solver_type).
+bool block_lanczos_applies(PetscInt n_dofs, int wanted) {
+    if (n_dofs < kBlockLanczosMinDofs || !block_lanczos_fits(n_dofs, wanted)) return false;
     PetscBool on = PETSC_TRUE, eps_type = PETSC_FALSE, st_factor = PETSC_FALSE;
     COREMODAL_PETSC(PetscOptionsGetBool(nullptr, nullptr, "-block_lanczos", &on, nullptr));
     COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-eps_type", &eps_type));
@@ -356,7 +355,7 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     for (int attempt = 0;; ++attempt) {
         progress("factorising K - sigma M (" + std::string(shift_invert_factor_package(PetscObjectComm((PetscObject)K))) +
                  " Cholesky, sigma = " + std::to_string(sigma) + ") and solving for " + std::to_string(nev) +
-                 " modes (" + (block_lanczos_applies(K, n_dofs, nev) ? "block Lanczos" : "SLEPc Krylov-Schur") +
+                 " modes (" + (block_lanczos_applies(n_dofs, nev) ? "block Lanczos" : "SLEPc Krylov-Schur") +
                  "); MUMPS LDL^T at the band edge for the count");
         Attempt a = [&] {
             const Heartbeat beat("factorising K - sigma M and solving", progress);

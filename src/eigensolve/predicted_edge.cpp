@@ -262,7 +262,7 @@ std::optional<double> predicted_shift(const SolveRequest& r, int wanted) {
 
 std::optional<SolvedModes> solve_at_predicted_edge(Mat K, Mat M, const SolveRequest& request, int wanted,
                                                    double sigma, long n_dofs, const Progress& progress) {
-    return block_lanczos_applies(K, n_dofs, most_below_one_shift(wanted))
+    return block_lanczos_applies(n_dofs, most_below_one_shift(wanted))
                ? solve_at_edge_in_blocks(K, M, request, wanted, sigma, progress)
                : solve_at_edge_one_vector(K, M, request, wanted, sigma, n_dofs, progress);
 }

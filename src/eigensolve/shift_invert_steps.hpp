@@ -41,7 +41,7 @@ double rigid_line(const SolveRequest& r);
 
 // Whether block Lanczos (block_lanczos.hpp) solves for `wanted` pairs of
 // this model rather than SLEPc's Krylov-Schur.
-bool block_lanczos_applies(Mat K, PetscInt n_dofs, int wanted);
+bool block_lanczos_applies(PetscInt n_dofs, int wanted);
 
 // Block Lanczos on the factor F of K - sigma M for `wanted` pairs (the
 // lowest; with sigma inside the spectrum, those below it), the passes said

@@ -246,6 +246,41 @@ TEST_CASE("Two MPI ranks give the serial frequencies, at the solid and the harmo
     }
 }
 
+TEST_CASE("Two MPI ranks solve in blocks on MUMPS's distributed factor and give the serial frequencies",
+          "[app][cli][mpi]") {
+    // Case 03's coarse solid mesh: 24,960 unknowns, above the block method's
+    // floor (20,000), so both runs take the one LDL^T factor at the
+    // predicted edge and block Lanczos, the parallel one with its inner
+    // products summed over the ranks and the slab numbering of the nodes.
+    const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/03-rest-roll-150x15.8-4320.toml'";
+    TempDir dir;
+    const std::string args = " --no-plots --model solid --mesh coarse";
+    const Run serial = run_coremodal(dir, "run " + case_file + " -o serial" + args);
+    INFO("serial stdout: " << serial.out << "\nstderr: " << serial.err);
+    REQUIRE(serial.exit_code == 0);
+    const Run parallel = run_coremodal(dir, "run " + case_file + " -o parallel" + args,
+                                       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 "
+                                       "--oversubscribe ");
+    INFO("mpirun stdout: " << parallel.out << "\nstderr: " << parallel.err);
+    REQUIRE(parallel.exit_code == 0);
+    for (const Run* r : {&serial, &parallel}) {
+        CHECK(r->out.find("block Lanczos:") != std::string::npos);
+        CHECK(r->out.find("13 negative pivots below") != std::string::npos);
+        CHECK(r->out.find(": complete") != std::string::npos);
+    }
+    const auto f1 = elastic_frequencies(dir.path / "serial" / "modes.csv");
+    const auto f2 = elastic_frequencies(dir.path / "parallel" / "modes.csv");
+    REQUIRE(f1.size() == 13u);
+    REQUIRE(f2.size() == f1.size());
+    // Another partition and random start: the pairs agree to the solver's
+    // tolerance (1e-10 relative in lambda), 1e-8 in f leaves room.
+    for (size_t i = 0; i < f1.size(); ++i) CHECK(f2[i] == Approx(f1[i]).epsilon(1e-8));
+    CHECK(mode_types(dir.path / "parallel" / "modes.csv") == mode_types(dir.path / "serial" / "modes.csv"));
+    const std::string summary = slurp(dir.path / "parallel" / "summary.json");
+    CHECK(coremodal::json_number(summary, "verification.max_relative_residual").value_or(1) <= 1e-8);
+    CHECK(coremodal::json_number(summary, "verification.max_orthonormality_error").value_or(1) <= 1e-8);
+}
+
 TEST_CASE("run --model harmonic overrides the case's level; an unknown level is refused", "[app][cli][harmonic]") {
     TempDir dir;
     const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/02-clamped-76x15.toml'";

@@ -73,7 +73,10 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
     const std::string source = scene.mesh.file ? *scene.mesh.file : "generated mesh";
     std::vector<int> eliminated = clamped_nodes(scene, mesh);
     eliminated.insert(eliminated.end(), chucks.eliminated.begin(), chucks.eliminated.end());
-    DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties);
+    // In parallel, slabs (slab_node_order: why); in one process the mesh's
+    // order, which the measured factor times were taken on.
+    DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties,
+                               mpi_size() > 1 ? slab_node_order(mesh) : std::vector<int>{});
     out.info = {.level = "solid3d",
                 .element = cell_type_name(mesh.cell_type),
                 .n_dofs = dofs.n_dofs,

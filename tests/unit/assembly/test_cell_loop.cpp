@@ -231,3 +231,55 @@ TEST_CASE("Cell loop, harmonic: a dense sink gets the run's K_n and M_n; free ri
         }
     }
 }
+
+TEST_CASE("DOF numbering in slabs: the same matrices permuted, and two processes' blocks cut one layer of cells",
+          "[assembly][cell_loop][mpi]") {
+    const Scene s = testing::paper_core(0.3, 8, 6);  // along z, 0.3 m: the longest side
+    const Mesh mesh = testing::generated_mesh(s);
+    const DofMap plain = make_dof_map(mesh.n_nodes(), {});
+    const DofMap slabs = make_dof_map(mesh.n_nodes(), {}, {}, slab_node_order(mesh));
+    REQUIRE(slabs.n_dofs == plain.n_dofs);
+    // Free nodes numbered in order of z: a permutation, monotone along the axis.
+    std::vector<int> node_of_block(slabs.n_free_nodes, -1);
+    for (int n = 0; n < mesh.n_nodes(); ++n) node_of_block.at(slabs.node_first_dof[n] / 3) = n;
+    for (int b = 1; b < slabs.n_free_nodes; ++b) CHECK(mesh.nodes[node_of_block[b]][2] >= mesh.nodes[node_of_block[b - 1]][2]);
+
+    SECTION("K and M are those of the mesh order, rows and columns permuted") {
+        const auto materials = part_materials(s, mesh.part_names, "test");
+        DenseSink a{plain.n_dofs, {}}, b{slabs.n_dofs, {}};
+        assemble_cells(mesh, materials, plain, [](int) { return true; }, a.insert());
+        assemble_cells(mesh, materials, slabs, [](int) { return true; }, b.insert());
+        Eigen::VectorXi p(plain.n_dofs);  // plain dof -> slab dof
+        for (int n = 0; n < mesh.n_nodes(); ++n)
+            for (int c = 0; c < 3; ++c) p[plain.dof(n, c)] = slabs.dof(n, c);
+        const Eigen::PermutationMatrix<Eigen::Dynamic> P(p);
+        for (Term t : {Term::stiffness, Term::mass}) {
+            const Eigen::MatrixXd permuted = P * a.A.at(t) * P.transpose();
+            CHECK((permuted - b.A.at(t)).norm() <= 1e-14 * b.A.at(t).norm());
+        }
+    }
+    SECTION("Two processes' blocks: the cells with nodes on both sides are one layer, not most of them") {
+        const auto cut_cells = [&](const DofMap& dofs) {
+            const int half = owned_free_nodes(dofs.n_free_nodes, 0, 2).second;
+            int cut = 0;
+            for (int c = 0; c < mesh.n_cells(); ++c) {
+                bool low = false, high = false;
+                for (int a = 0; a < mesh.nodes_per_cell(); ++a) (dofs.node_first_dof[mesh.cell(c)[a]] / 3 < half ? low : high) = true;
+                cut += low && high;
+            }
+            return cut;
+        };
+        // hex20 nodes stand on 2 L + 1 planes of z for L layers of cells.
+        std::vector<double> z;
+        for (const auto& x : mesh.nodes) z.push_back(x[2]);
+        std::sort(z.begin(), z.end());
+        const long planes = std::unique(z.begin(), z.end(), [](double x, double y) { return std::abs(x - y) < 1e-9; }) - z.begin();
+        const int per_layer = int(mesh.n_cells() / ((planes - 1) / 2));
+        INFO("cells " << mesh.n_cells() << " in " << (planes - 1) / 2 << " layers; cut in mesh order " << cut_cells(plain)
+                      << ", in slabs " << cut_cells(slabs));
+        // The cut runs through a plane of nodes: the layers on its two sides.
+        CHECK(cut_cells(slabs) <= 2 * per_layer);
+        CHECK(cut_cells(slabs) < cut_cells(plain));
+        CHECK(cut_cells(plain) > mesh.n_cells() / 2);  // why the slabs: gmsh numbers mid-side nodes last
+    }
+}
