@@ -10,11 +10,13 @@ clock and peak resident memory of the child, os.wait4). Prints the medians,
 their ratio and the largest relative frequency difference (CalculiX prints 7
 significant digits, so agreement shows as ~1e-7 at best).
 
-    /usr/bin/python3 bench/calculix_compare.py [--repeats 3] [--threads 2] [--mesh coarse] CASE.toml...
+    /usr/bin/python3 bench/calculix_compare.py [--repeats 3] [--threads 2] [--ranks 2] [--mesh coarse] CASE.toml...
 
 --mesh replaces the case's [mesh] by a level (coarse, default, fine); the
 default keeps the case's own. ccx runs with OMP_NUM_THREADS = --threads
-(its SPOOLES solver's threads); coremodal as a user runs it.
+(its SPOOLES solver's threads); coremodal as a user runs it, in one process
+or under `mpirun -n RANKS` (then its memory is the sum over the ranks, from
+its summary.json).
 """
 import argparse
 import json
@@ -75,11 +77,17 @@ def compare(case, args, work):
                          capture_output=True, text=True).stdout.strip()
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
     runs = {"coremodal": [], "ccx": []}
+    # --ranks N: coremodal under mpirun (MUMPS's distributed factor).
+    launcher = [] if args.ranks == 1 else ["mpirun", "-n", str(args.ranks)]
+    mpi_env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     for r in range(args.repeats):
         folder = pathlib.Path(work) / f"run{r}"
         # --model solid: under auto a body of revolution runs at the harmonic level.
-        runs["coremodal"].append(timed([str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model", "solid"],
-                                       work))
+        wall, gib = timed(launcher + [str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model", "solid"],
+                          work, mpi_env)
+        if launcher:  # mpirun's peak is one rank's: the summary sums them
+            gib = json.loads((folder / "summary.json").read_text())["peak_memory_mb"] / 1024
+        runs["coremodal"].append((wall, gib))
         runs["ccx"].append(timed(["ccx", "-i", "deck"], work, env))
     ours, summary = coremodal_frequencies(pathlib.Path(work) / "run0")
     theirs = ccx_frequencies(pathlib.Path(work) / "deck.dat")
@@ -99,13 +107,15 @@ def main():
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--mesh", default="")
+    ap.add_argument("--ranks", type=int, default=1, help="coremodal under mpirun -n RANKS")
     args = ap.parse_args()
     for tool in (CORE, DECK):
         if not tool.exists():
             sys.exit(f"{tool} is missing: bash scripts/build.sh")
     if shutil.which("ccx") is None:
         sys.exit("ccx is missing: apt-get install calculix-ccx")
-    print(f"machine: {platform.node()}, {os.cpu_count()} cores; load before: {os.getloadavg()[0]:.2f}")
+    print(f"machine: {platform.node()}, {os.cpu_count()} cores; load before: {os.getloadavg()[0]:.2f}; "
+          f"coremodal on {args.ranks} MPI rank(s); OPENBLAS_CORETYPE={os.environ.get('OPENBLAS_CORETYPE', '(unset)')}")
     print("| case | mesh | DOFs | modes | coremodal s | GiB | CalculiX s | GiB | CalculiX / coremodal | max rel. freq. diff |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for case in args.cases:

@@ -4,6 +4,7 @@ several mesh sizes: DOFs, mesh, assembly, factor-and-solve and total time
 (median of repeated runs) and peak memory, from each run's summary.json.
 
     /usr/bin/python3 bench/solid_scaling.py [--sizes A,B,C] [--repeats 3] [--out bench/results/solid_scaling.json]
+        [--ranks 2] [--options '-mat_mumps_icntl_22 1']
 
 Prints a markdown table to paste into docs/performance.md. Runs serially, one
 case at a time, so that timings are not disturbed by each other.
@@ -42,9 +43,10 @@ def case_with_mesh(wall, paper, around, along):
                    f"around = {around}\nalong = {along}\n")
 
 
-def run_once(case_path, out_dir):
+def run_once(case_path, out_dir, ranks, options):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    subprocess.run([str(BINARY), "run", str(case_path), "--output", str(out_dir), "--quiet"],
+    launcher = [] if ranks == 1 else ["mpirun", "-n", str(ranks)]
+    subprocess.run(launcher + [str(BINARY), "run", str(case_path), "--output", str(out_dir), "--quiet"] + options,
                    check=True, env=env)
     return json.loads((out_dir / "summary.json").read_text())
 
@@ -66,6 +68,9 @@ def main():
     p.add_argument("--max-repeat-dofs", type=int, default=300_000,
                    help="larger models run once (a single run is minutes long)")
     p.add_argument("--out", default=str(ROOT / "bench" / "results" / "solid_scaling.json"))
+    p.add_argument("--ranks", type=int, default=1, help="run under mpirun -n RANKS")
+    p.add_argument("--options", default="",
+                   help="PETSc options for every run, e.g. '-mat_mumps_icntl_22 1' (MUMPS's factor out of core)")
     args = p.parse_args()
     if not BINARY.exists():
         sys.exit(f"{BINARY} not found: build first (bash scripts/build.sh)")
@@ -78,7 +83,7 @@ def main():
             case.write_text(case_with_mesh(*SIZES[name]))
             runs = []
             for k in range(args.repeats):
-                s = run_once(case, tmp / f"out_{name}_{k}")
+                s = run_once(case, tmp / f"out_{name}_{k}", args.ranks, args.options.split())
                 runs.append(s)
                 print(f"size {name}: {s['model']['n_dofs']} DOFs, run {k + 1}: {s['timing_s']['total']:.1f} s",
                       file=sys.stderr, flush=True)
@@ -92,12 +97,13 @@ def main():
                 "peak_memory_mb": max(r["peak_memory_mb"] for r in runs),
                 "f1_hz": runs[0]["beam"]["fe_first_bending_hz"],
             })
-    result = {"machine": machine(), "case": str(CASE.relative_to(ROOT)), "rows": rows}
+    result = {"machine": machine(), "case": str(CASE.relative_to(ROOT)), "ranks": args.ranks,
+              "options": args.options, "rows": rows}
     out = pathlib.Path(args.out)
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(json.dumps(result, indent=2) + "\n")
 
-    print(f"Machine: {result['machine']}\n")
+    print(f"Machine: {result['machine']}; {args.ranks} MPI rank(s); options: {args.options or '(none)'}\n")
     print("| size | wall/paper/around/along | DOFs | runs | mesh [s] | assemble [s] | factor+solve [s] | total [s] | peak memory [MiB] | f1 [Hz] |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:

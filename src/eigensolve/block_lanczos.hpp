@@ -21,6 +21,12 @@
 // operator. When the basis is full it restarts thick: the best Ritz vectors
 // and the last block are kept (Krylov-Schur's restart, in blocks).
 //
+// In parallel each process holds its rows of the basis (the rows of M it
+// owns) and the factor is MUMPS's distributed one; the inner products are
+// local dgemms summed over the processes, so every process holds the same
+// small matrices and takes the same steps (case 03 on two processes: 0.75x
+// the time of one, docs/performance.md "Two processes").
+//
 // Two uses (eigensolve/modal_solver.cpp). Sigma below every eigenvalue
 // (K - sigma M definite, a Cholesky factor): all theta are positive and
 // the lowest lambda are the largest theta. Sigma inside the spectrum (an

@@ -112,7 +112,9 @@ Attempt solve_below(Mat K, Mat M, double sigma, int nev, const SolveRequest& req
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
     if (!block_lanczos_applies(n_dofs, nev)) return run_eps(K, M, sigma, nev, request);
-    return block_lanczos_attempt(definite_factor(K, M, sigma), M, sigma, nev, request, progress);
+    const PetscMatrix F = definite_factor(K, M, sigma);
+    say_if_out_of_core(F, progress);
+    return block_lanczos_attempt(F, M, sigma, nev, request, progress);
 }
 
 // Retries after a failed completeness check before giving up.
@@ -258,6 +260,12 @@ Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const Solv
     a.lambdas = std::move(r.eigenvalues);
     a.vectors = std::move(r.vectors);
     return a;
+}
+
+void say_if_out_of_core(Mat F, const Progress& progress) {
+    if (factor_out_of_core(F))
+        progress("the factor is kept on disk (MUMPS out of core: its analysis estimated more memory than the machine "
+                 "has free, or -mat_mumps_icntl_22 1 was given); each pass over it reads the disk");
 }
 
 // The first n_report modes of a proven-complete attempt, M-normalised, with

@@ -4,6 +4,8 @@
 
 #include "common/error.hpp"
 
+#include <fstream>
+#include <limits>
 #include <string>
 
 namespace coremodal {
@@ -30,6 +32,52 @@ PetscMatrix shifted(Mat K, Mat M, double sigma) {
     return A;
 }
 
+namespace {
+
+// The memory the machine has free now (/proc/meminfo's MemAvailable), in MB;
+// 0 when unknown.
+double available_memory_mb() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    double kb = 0;
+    while (meminfo >> key >> kb)
+        if (key == "MemAvailable:") return kb / 1024;
+        else meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    return 0;
+}
+
+// MUMPS keeps its factor on disk (ICNTL(22) = 1, out of core) when the
+// in-core estimate of its analysis (INFOG(17): every process's data, MB)
+// exceeds this share of the memory the machine has free: the run then
+// finishes, slower, where in core it would swap or be killed. Measured on
+// case 03 at 540,288 unknowns, two processes: 6.9 GB and 204 s out of core
+// against 14.6 GB and 182 s in core (docs/performance.md). A user's
+// -mat_mumps_icntl_22 decides instead. The estimate is compared with the
+// first process's machine: on several machines a conservative choice.
+constexpr double kInCoreShare = 0.8;
+
+void out_of_core_if_too_large(Mat F) {
+    PetscBool users_choice = PETSC_FALSE;
+    COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_22", &users_choice));
+    if (users_choice) return;
+    PetscInt estimate_mb = 0;
+    COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
+    double available_mb = available_memory_mb();
+    MPI_Bcast(&available_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
+    if (available_mb > 0 && double(estimate_mb) > kInCoreShare * available_mb) COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+}
+
+}  // namespace
+
+bool factor_out_of_core(Mat F) {
+    MatSolverType package;
+    COREMODAL_PETSC(MatFactorGetSolverType(F, &package));
+    if (std::string(package) != MATSOLVERMUMPS) return false;
+    PetscInt ooc = 0;
+    COREMODAL_PETSC(MatMumpsGetIcntl(F, 22, &ooc));
+    return ooc == 1;
+}
+
 PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F) {
     COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
     COREMODAL_PETSC(MatGetFactor(A, package, MAT_FACTOR_CHOLESKY, F.out()));
@@ -42,6 +90,7 @@ PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F) {
     MatFactorInfo info;
     COREMODAL_PETSC(MatFactorInfoInitialize(&info));
     COREMODAL_PETSC(MatCholeskyFactorSymbolic(F, A, row_perm, &info));
+    if (std::string(package) == MATSOLVERMUMPS) out_of_core_if_too_large(F);
     return MatCholeskyFactorNumeric(F, A, &info);
 }
 

@@ -28,7 +28,12 @@ PetscMatrix shifted(Mat K, Mat M, double sigma);
 // MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and
 // numeric steps, the package's own ordering. The numeric step's error code
 // is returned (a zero pivot, PETSC_ERR_MAT_CH_ZRPVT), not thrown.
+// MUMPS keeps the factor on disk when its analysis estimates more memory
+// than the machine has free (petsc_algebra.cpp: the rule).
 PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F);
+// Whether the factor F lives on disk (MUMPS out of core: chosen above, or
+// by the user's -mat_mumps_icntl_22 1).
+bool factor_out_of_core(Mat F);
 // Its two steps: MUMPS's LDL^T factor of the symmetric A (SolveError when
 // it fails), which also solves, and that factor's negative pivots.
 PetscMatrix ldlt_factor(Mat A, const char* what);

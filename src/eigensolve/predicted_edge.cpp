@@ -224,6 +224,7 @@ std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequ
                  "): solving with a negative shift");
         return std::nullopt;
     }
+    say_if_out_of_core(F, progress);
     const long below = negative_pivots(F);
     if (below < wanted || below > most_below_one_shift(wanted)) {
         progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +

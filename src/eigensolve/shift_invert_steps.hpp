@@ -49,6 +49,10 @@ bool block_lanczos_applies(PetscInt n_dofs, int wanted);
 Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
                               const Progress& progress);
 
+// Says through `progress` when the factor F lives on disk (MUMPS out of
+// core, petsc_algebra.hpp), which makes every pass over it slower.
+void say_if_out_of_core(Mat F, const Progress& progress);
+
 // The first n_report modes of a proven-complete attempt, M-normalised, with
 // their residuals and the verification.
 SolvedModes verified_modes(Mat K, Mat M, Attempt& a, int n_report, double check, long pivots, long found_below);

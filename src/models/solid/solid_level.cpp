@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <set>
+#include <thread>
 
 namespace coremodal {
 namespace {
@@ -94,6 +95,20 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
 }
 
 namespace {
+
+// A model this large factors faster in as many processes as the machine has
+// cores (MUMPS's distributed factor and block Lanczos, docs/performance.md
+// "Two processes"): case 03, 181,152 unknowns, 32.8 s under mpirun -n 2
+// against 43.7 s in one process on 2 cores; case 02, 101,760, 16.2 against
+// 19.1 s.
+constexpr int kProcessesHintDofs = 100000;
+
+std::string processes_hint(int n_dofs) {
+    const unsigned cores = std::thread::hardware_concurrency();
+    if (mpi_size() > 1 || cores < 2 || n_dofs < kProcessesHintDofs) return "";
+    return "      one process of this machine's " + std::to_string(cores) + " cores: `mpirun -n " + std::to_string(cores) +
+           " coremodal run ...` factors in parallel, about a quarter faster at this size (docs/performance.md)";
+}
 
 // Step 6: every eigenvector in the request's band expanded to the mesh's
 // nodes, named, with its effective masses and signature.
@@ -226,6 +241,7 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     say("      " + std::to_string(mesh.n_cells()) + " " + out.info.element + " cells, " +
         std::to_string(mesh.n_nodes()) + " nodes, " + std::to_string(dofs.n_dofs) + " DOFs (" +
         std::to_string(out.info.n_eliminated_nodes) + " clamped nodes eliminated)");
+    if (const std::string hint = processes_hint(dofs.n_dofs); !hint.empty()) say(hint);
 
     // 4. The one problem: the OperatorSet of the whole solid.
     say("[3/7] assembling stiffness and mass");
