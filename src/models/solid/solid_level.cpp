@@ -106,8 +106,9 @@ constexpr int kProcessesHintDofs = 100000;
 std::string processes_hint(int n_dofs) {
     const unsigned cores = std::thread::hardware_concurrency();
     if (mpi_size() > 1 || cores < 2 || n_dofs < kProcessesHintDofs) return "";
-    return "      one process of this machine's " + std::to_string(cores) + " cores: `mpirun -n " + std::to_string(cores) +
-           " coremodal run ...` factors in parallel, about a quarter faster at this size (docs/performance.md)";
+    return "      running in one process on " + std::to_string(cores) + " cores: `mpirun -n " + std::to_string(cores) +
+           " coremodal run ...` splits the factorization (case 03's 181,152 unknowns on 2 cores: a quarter "
+           "less time; docs/performance.md, \"Two processes\")";
 }
 
 // Step 6: every eigenvector in the request's band expanded to the mesh's
