@@ -246,24 +246,33 @@ TEST_CASE("Two MPI ranks give the serial frequencies, at the solid and the harmo
     }
 }
 
+namespace {
+
+// Case 03's coarse solid mesh (24,960 unknowns: above the block method's
+// floor of 20,000, so the one LDL^T factor at the predicted edge and block
+// Lanczos), run into `folder`; stops the test with the output if it fails.
+Run case03_coarse_solid(const TempDir& dir, const std::string& folder, const std::string& extra = "",
+                        const std::string& launcher = "") {
+    const Run r = run_coremodal(dir,
+                                "run '" COREMODAL_SOURCE_DIR "/cases/03-rest-roll-150x15.8-4320.toml' -o " + folder +
+                                    " --no-plots --model solid --mesh coarse" + extra,
+                                launcher);
+    if (r.exit_code != 0) FAIL(folder << " failed; stdout: " << r.out << "\nstderr: " << r.err);
+    return r;
+}
+
+}  // namespace
+
 TEST_CASE("Two MPI ranks solve in blocks on MUMPS's distributed factor and give the serial frequencies",
           "[app][cli][mpi]") {
-    // Case 03's coarse solid mesh: 24,960 unknowns, above the block method's
-    // floor (20,000), so both runs take the one LDL^T factor at the
-    // predicted edge and block Lanczos, the parallel one with its inner
-    // products summed over the ranks and the slab numbering of the nodes.
-    const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/03-rest-roll-150x15.8-4320.toml'";
+    // The parallel run sums its inner products over the ranks and numbers
+    // the nodes in slabs.
     TempDir dir;
-    const std::string args = " --no-plots --model solid --mesh coarse";
-    const Run serial = run_coremodal(dir, "run " + case_file + " -o serial" + args);
-    INFO("serial stdout: " << serial.out << "\nstderr: " << serial.err);
-    REQUIRE(serial.exit_code == 0);
-    const Run parallel = run_coremodal(dir, "run " + case_file + " -o parallel" + args,
-                                       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 "
-                                       "--oversubscribe ");
-    INFO("mpirun stdout: " << parallel.out << "\nstderr: " << parallel.err);
-    REQUIRE(parallel.exit_code == 0);
+    const Run serial = case03_coarse_solid(dir, "serial");
+    const Run parallel = case03_coarse_solid(
+        dir, "parallel", "", "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe ");
     for (const Run* r : {&serial, &parallel}) {
+        INFO(r->out);
         CHECK(r->out.find("block Lanczos:") != std::string::npos);
         CHECK(r->out.find("13 negative pivots below") != std::string::npos);
         CHECK(r->out.find(": complete") != std::string::npos);
@@ -282,18 +291,13 @@ TEST_CASE("Two MPI ranks solve in blocks on MUMPS's distributed factor and give 
 }
 
 TEST_CASE("A factor kept on disk (MUMPS out of core) gives the frequencies of one in memory", "[app][cli]") {
-    // Case 03's coarse solid mesh on the block path: the one LDL^T factor at
-    // the predicted edge, written out of core by -mat_mumps_icntl_22 1 (what
-    // coremodal chooses itself when MUMPS's estimate exceeds the memory free).
-    const std::string case_file = "'" COREMODAL_SOURCE_DIR "/cases/03-rest-roll-150x15.8-4320.toml'";
+    // The one LDL^T factor written out of core by -mat_mumps_icntl_22 1
+    // (what coremodal chooses itself when MUMPS's estimate exceeds the
+    // memory free).
     TempDir dir;
-    const std::string args = " --no-plots --model solid --mesh coarse";
-    const Run in_core = run_coremodal(dir, "run " + case_file + " -o in_core" + args);
-    INFO("in core: " << in_core.out << "\nstderr: " << in_core.err);
-    REQUIRE(in_core.exit_code == 0);
-    const Run on_disk = run_coremodal(dir, "run " + case_file + " -o on_disk" + args + " -mat_mumps_icntl_22 1");
-    INFO("out of core: " << on_disk.out << "\nstderr: " << on_disk.err);
-    REQUIRE(on_disk.exit_code == 0);
+    const Run in_core = case03_coarse_solid(dir, "in_core");
+    const Run on_disk = case03_coarse_solid(dir, "on_disk", " -mat_mumps_icntl_22 1");
+    INFO("out of core: " << on_disk.out);
     CHECK(in_core.out.find("kept on disk") == std::string::npos);
     CHECK(on_disk.out.find("the factor is kept on disk") != std::string::npos);
     CHECK(on_disk.out.find("block Lanczos:") != std::string::npos);
