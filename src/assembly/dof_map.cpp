@@ -17,8 +17,10 @@ DofMap make_dof_map(int n_nodes, const std::vector<int>& eliminated_nodes, const
     for (const NodeTie& t : ties) numbered.at(t.node) = 0;
     DofMap map;
     map.node_first_dof.assign(n_nodes, -1);
-    for (int k = 0; k < n_nodes; ++k)
-        if (const int n = node_order.empty() ? k : node_order[k]; numbered[n]) map.node_first_dof[n] = 3 * map.n_free_nodes++;
+    for (int k = 0; k < n_nodes; ++k) {
+        const int n = node_order.empty() ? k : node_order[k];
+        if (numbered[n]) map.node_first_dof[n] = 3 * map.n_free_nodes++;
+    }
     // A tied node follows its master, eliminated with it if the master is held.
     for (const NodeTie& t : ties) {
         COREMODAL_ASSERT(numbered[t.master] || map.node_first_dof[t.master] < 0);
@@ -42,7 +44,8 @@ std::vector<int> slab_node_order(const Mesh& mesh) {
         if (high[d] - low[d] > high[axis] - low[axis]) axis = d;
     std::vector<int> order(mesh.n_nodes());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return mesh.nodes[a][axis] < mesh.nodes[b][axis]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return mesh.nodes[a][axis] < mesh.nodes[b][axis]; });
     return order;
 }
 

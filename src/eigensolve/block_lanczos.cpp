@@ -55,7 +55,8 @@ void sum_over_processes(MPI_Comm comm, double* values, int count) {
 // like M's rows.
 PetscMatrix dense_view(Mat M, PetscInt n, int cols, double* data) {
     PetscMatrix A;
-    COREMODAL_PETSC(MatCreateDense(PetscObjectComm((PetscObject)M), n, PETSC_DECIDE, PETSC_DETERMINE, cols, data, A.out()));
+    COREMODAL_PETSC(
+        MatCreateDense(PetscObjectComm((PetscObject)M), n, PETSC_DECIDE, PETSC_DETERMINE, cols, data, A.out()));
     return A;
 }
 
@@ -99,7 +100,8 @@ class BlockLanczos {
 public:
     // n: the rows of the basis this process holds (M's local rows).
     BlockLanczos(Mat F, Mat M, PetscInt n, int block, int capacity)
-        : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity), V_(n, capacity + block), MV_(n, capacity + block),
+        : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity),
+          V_(n, capacity + block), MV_(n, capacity + block),
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
           H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
 

@@ -46,16 +46,9 @@ double available_memory_mb() {
     return 0;
 }
 
-// MUMPS keeps its factor on disk (ICNTL(22) = 1, out of core) when the
-// in-core estimate of its analysis (INFOG(17): every process's data, MB)
-// exceeds this share of the memory the machine has free: the run then
-// finishes, slower, where in core it would swap or be killed. Measured on
-// case 03 at 540,288 unknowns, two processes: 6.9 GB and 204 s out of core
-// against 14.6 GB and 182 s in core (docs/performance.md). A user's
-// -mat_mumps_icntl_22 decides instead. The estimate is compared with the
-// first process's machine: on several machines a conservative choice.
-constexpr double kInCoreShare = 0.8;
 
+// MUMPS out of core when its estimate exceeds kInCoreShare of the memory
+// free (petsc_algebra.hpp: why that share).
 void out_of_core_if_too_large(Mat F) {
     PetscBool users_choice = PETSC_FALSE;
     COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_22", &users_choice));
@@ -64,7 +57,8 @@ void out_of_core_if_too_large(Mat F) {
     COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
     double available_mb = available_memory_mb();
     MPI_Bcast(&available_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
-    if (available_mb > 0 && double(estimate_mb) > kInCoreShare * available_mb) COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+    if (available_mb > 0 && double(estimate_mb) > kInCoreShare * available_mb)
+        COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
 }
 
 }  // namespace

@@ -24,12 +24,24 @@ long negative_eigenvalue_count(Mat A, const char* what);
 // makes them so).
 PetscMatrix shifted(Mat K, Mat M, double sigma);
 
+// MUMPS keeps its factor on disk (ICNTL(22) = 1, out of core) when the
+// in-core estimate of its analysis (INFOG(17): every process's data, MB)
+// exceeds this share of the memory the machine has free: the run then
+// finishes, slower, where in core it would swap or be killed. Measured on
+// case 03 at 540,288 unknowns, two processes: 6.9 GB and 204 s out of core
+// against 14.6 GB and 182 s in core (docs/performance.md). A user's
+// -mat_mumps_icntl_22 decides instead. The estimate is compared with the
+// first process's machine: on several machines a conservative choice. The
+// share: on case 03 INFOG(17) is 2,116 MB of the run's 3.27 GB peak (K, M
+// and the block basis beside the factor), about two thirds; with the
+// estimate at 0.6 of the free memory the whole run stays near 0.9 of it.
+inline constexpr double kInCoreShare = 0.6;
+
 // The factor of the symmetric A by `package` (MATSOLVERCHOLMOD: Cholesky;
 // MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and
 // numeric steps, the package's own ordering. The numeric step's error code
-// is returned (a zero pivot, PETSC_ERR_MAT_CH_ZRPVT), not thrown.
-// MUMPS keeps the factor on disk when its analysis estimates more memory
-// than the machine has free (petsc_algebra.cpp: the rule).
+// is returned (a zero pivot, PETSC_ERR_MAT_CH_ZRPVT), not thrown. MUMPS's
+// factor goes out of core when too large (kInCoreShare).
 PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F);
 // Whether the factor F lives on disk (MUMPS out of core: chosen above, or
 // by the user's -mat_mumps_icntl_22 1).

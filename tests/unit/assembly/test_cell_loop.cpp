@@ -242,7 +242,8 @@ TEST_CASE("DOF numbering in slabs: the same matrices permuted, and two processes
     // Free nodes numbered in order of z: a permutation, monotone along the axis.
     std::vector<int> node_of_block(slabs.n_free_nodes, -1);
     for (int n = 0; n < mesh.n_nodes(); ++n) node_of_block.at(slabs.node_first_dof[n] / 3) = n;
-    for (int b = 1; b < slabs.n_free_nodes; ++b) CHECK(mesh.nodes[node_of_block[b]][2] >= mesh.nodes[node_of_block[b - 1]][2]);
+    for (int b = 1; b < slabs.n_free_nodes; ++b)
+        CHECK(mesh.nodes[node_of_block[b]][2] >= mesh.nodes[node_of_block[b - 1]][2]);
 
     SECTION("K and M are those of the mesh order, rows and columns permuted") {
         const auto materials = part_materials(s, mesh.part_names, "test");
@@ -263,9 +264,9 @@ TEST_CASE("DOF numbering in slabs: the same matrices permuted, and two processes
             const int half = owned_free_nodes(dofs.n_free_nodes, 0, 2).second;
             int cut = 0;
             for (int c = 0; c < mesh.n_cells(); ++c) {
-                bool low = false, high = false;
-                for (int a = 0; a < mesh.nodes_per_cell(); ++a) (dofs.node_first_dof[mesh.cell(c)[a]] / 3 < half ? low : high) = true;
-                cut += low && high;
+                int below_half = 0;
+                for (int a = 0; a < mesh.nodes_per_cell(); ++a) below_half += dofs.node_first_dof[mesh.cell(c)[a]] / 3 < half;
+                cut += below_half > 0 && below_half < mesh.nodes_per_cell();
             }
             return cut;
         };
@@ -273,7 +274,8 @@ TEST_CASE("DOF numbering in slabs: the same matrices permuted, and two processes
         std::vector<double> z;
         for (const auto& x : mesh.nodes) z.push_back(x[2]);
         std::sort(z.begin(), z.end());
-        const long planes = std::unique(z.begin(), z.end(), [](double x, double y) { return std::abs(x - y) < 1e-9; }) - z.begin();
+        const auto same_plane = [](double x, double y) { return std::abs(x - y) < 1e-9; };
+        const long planes = std::unique(z.begin(), z.end(), same_plane) - z.begin();
         const int per_layer = int(mesh.n_cells() / ((planes - 1) / 2));
         INFO("cells " << mesh.n_cells() << " in " << (planes - 1) / 2 << " layers; cut in mesh order " << cut_cells(plain)
                       << ", in slabs " << cut_cells(slabs));
