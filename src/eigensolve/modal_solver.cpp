@@ -263,11 +263,13 @@ Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const Solv
 }
 
 void say_if_out_of_core(Mat F, const Progress& progress) {
-    if (factor_out_of_core(F))
-        progress("the factor is kept on disk (MUMPS out of core: its analysis estimated more than " +
-                 std::to_string(int(100 * kInCoreShare)) +
-                 " % of the memory the machine has free, or -mat_mumps_icntl_22 1 was given); each pass over it "
-                 "reads the disk");
+    if (!factor_out_of_core(F)) return;
+    PetscInt estimate_mb = 0;
+    COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
+    progress("the factor is kept on disk (MUMPS out of core: its analysis estimated " + std::to_string(estimate_mb) +
+             " MB, more than " + std::to_string(int(100 * kInCoreShare)) +
+             " % of the memory the run may take (the machine's free memory, its control group's limit or "
+             "-max_memory_mb), or -mat_mumps_icntl_22 1 was given); each pass over it reads the disk");
 }
 
 // The first n_report modes of a proven-complete attempt, M-normalised, with

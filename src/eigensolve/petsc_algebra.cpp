@@ -3,9 +3,9 @@
 #include "eigensolve/modal_solver.hpp"  // shift_invert_factor_package
 
 #include "common/error.hpp"
+#include "common/free_memory.hpp"
 
-#include <fstream>
-#include <limits>
+#include <algorithm>
 #include <string>
 
 namespace coremodal {
@@ -34,34 +34,35 @@ PetscMatrix shifted(Mat K, Mat M, double sigma) {
 
 namespace {
 
-// The memory the machine has free now (/proc/meminfo's MemAvailable), in MB;
-// 0 when unknown.
-double available_memory_mb() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    double kb = 0;
-    while (meminfo >> key >> kb)
-        if (key == "MemAvailable:") return kb / 1024;
-        else meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    return 0;
+// The memory the run may still take, MB: free_memory_mb (the machine's and
+// its control group's), or the user's -max_memory_mb when smaller (a
+// machine shared with other jobs).
+double memory_allowed_mb() {
+    double allowed = free_memory_mb();
+    PetscReal users_cap = 0;
+    PetscBool given = PETSC_FALSE;
+    COREMODAL_PETSC(PetscOptionsGetReal(nullptr, nullptr, "-max_memory_mb", &users_cap, &given));
+    if (given && users_cap > 0) allowed = allowed > 0 ? std::min(allowed, double(users_cap)) : double(users_cap);
+    return allowed;
 }
 
-
-// MUMPS out of core when its estimate exceeds kInCoreShare of the memory
-// free (petsc_algebra.hpp: why that share).
+// MUMPS out of core when its estimate does not fit (factor_fits_in_memory).
 void out_of_core_if_too_large(Mat F) {
     PetscBool users_choice = PETSC_FALSE;
     COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_22", &users_choice));
     if (users_choice) return;
     PetscInt estimate_mb = 0;
     COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
-    double available_mb = available_memory_mb();
-    MPI_Bcast(&available_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
-    if (available_mb > 0 && double(estimate_mb) > kInCoreShare * available_mb)
-        COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+    double allowed_mb = memory_allowed_mb();
+    MPI_Bcast(&allowed_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
+    if (!factor_fits_in_memory(double(estimate_mb), allowed_mb)) COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
 }
 
 }  // namespace
+
+bool factor_fits_in_memory(double estimate_mb, double allowed_mb) {
+    return allowed_mb <= 0 || estimate_mb <= kInCoreShare * allowed_mb;
+}
 
 bool factor_out_of_core(Mat F) {
     MatSolverType package;

@@ -26,7 +26,9 @@ PetscMatrix shifted(Mat K, Mat M, double sigma);
 
 // MUMPS keeps its factor on disk (ICNTL(22) = 1, out of core) when the
 // in-core estimate of its analysis (INFOG(17): every process's data, MB)
-// exceeds this share of the memory the machine has free: the run then
+// exceeds this share of the memory the run may take (the machine's
+// MemAvailable, its control group's limit, a user's -max_memory_mb: the
+// least of them; common/free_memory.hpp): the run then
 // finishes, slower, where in core it would swap or be killed. Measured on
 // case 03 at 540,288 unknowns, two processes: 6.9 GB and 204 s out of core
 // against 14.6 GB and 182 s in core (docs/performance.md). A user's
@@ -36,6 +38,9 @@ PetscMatrix shifted(Mat K, Mat M, double sigma);
 // and the block basis beside the factor), about two thirds; with the
 // estimate at 0.6 of the free memory the whole run stays near 0.9 of it.
 inline constexpr double kInCoreShare = 0.6;
+// Whether a factor MUMPS estimates at estimate_mb stays in memory when the
+// run may take allowed_mb (0: unknown, it stays).
+bool factor_fits_in_memory(double estimate_mb, double allowed_mb);
 
 // The factor of the symmetric A by `package` (MATSOLVERCHOLMOD: Cholesky;
 // MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and
