@@ -1,5 +1,7 @@
 #include "eigensolve/block_lanczos.hpp"
 
+#include "eigensolve/sparse_block_product.hpp"
+
 #include "common/error.hpp"
 
 #include <Eigen/Dense>
@@ -60,7 +62,8 @@ PetscMatrix dense_view(Mat M, PetscInt n, int cols, double* data) {
     return A;
 }
 
-// out = M in, for `cols` columns (one pass over M for the block).
+// out = M in, for `cols` columns (one pass over M for the block), by
+// PETSc's product (in parallel).
 void multiply(Mat M, PetscInt n, int cols, double* in, double* out) {
     PetscMatrix X = dense_view(M, n, cols, in), Y;
     COREMODAL_PETSC(MatMatMult(M, X, MAT_INITIAL_MATRIX, PETSC_DEFAULT, Y.out()));
@@ -103,7 +106,8 @@ public:
         : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity),
           V_(n, capacity + block), MV_(n, capacity + block),
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
-          H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
+          H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)),
+          own_product_(SparseBlockProduct::handles(M)) {}
 
     // The first block: random, fixed seed per process (runs repeat bit for bit).
     void start() {
@@ -232,7 +236,7 @@ private:
     // raw block.
     Eigen::MatrixXd normalise_new_block(int first, int count, const Eigen::MatrixXd* projected,
                                         bool images_known = false) {
-        if (!images_known) multiply(M_, n_, count, V_.col(first), MV_.col(first));
+        if (!images_known) times_M(count, V_.col(first), MV_.col(first));
         const OrthogonalizationScope logged;
         Eigen::MatrixXd G(count, count);
         gemm("T", "N", count, count, int(n_), 1.0, V_.col(first), n_, MV_.col(first), n_, 0.0, G.data(), count);
@@ -270,7 +274,7 @@ private:
         for (int c = 0; c < first + count; ++c)
             if (c != j) others.push_back(c);
         for (int pass = 0; pass < 2; ++pass) {
-            multiply(M_, n_, 1, V_.col(j), MV_.col(j));
+            times_M(1, V_.col(j), MV_.col(j));
             for (int c : others) {
                 double dot = 0;
                 for (PetscInt i = 0; i < n_; ++i) dot += MV_.col(c)[i] * V_.col(j)[i];
@@ -278,7 +282,7 @@ private:
                 for (PetscInt i = 0; i < n_; ++i) V_.col(j)[i] -= dot * V_.col(c)[i];
             }
         }
-        multiply(M_, n_, 1, V_.col(j), MV_.col(j));
+        times_M(1, V_.col(j), MV_.col(j));
         double norm2 = 0;
         for (PetscInt i = 0; i < n_; ++i) norm2 += V_.col(j)[i] * MV_.col(j)[i];
         sum_over_processes(comm_, &norm2, 1);
@@ -289,6 +293,13 @@ private:
         }
     }
 
+    // out = M in for `cols` columns: sparse_block_product.hpp in one
+    // process, PETSc's product in parallel.
+    void times_M(int cols, double* in, double* out) {
+        if (own_product_) product_(M_, cols, in, out);
+        else multiply(M_, n_, cols, in, out);
+    }
+
     Mat F_, M_;
     MPI_Comm comm_;
     PetscInt n_;
@@ -297,6 +308,8 @@ private:
     std::vector<double> panel_;  // kPanelRows x the widest product
     Eigen::MatrixXd H_;  // H[:, c] = coefficients of T V[:, c] in the basis
     int m_ = 0, applied_ = 0, blocks_solved_ = 0, restarts_ = 0;
+    bool own_product_;
+    SparseBlockProduct product_;
 };
 
 // The Ritz pairs in the order wanted: lambda = sigma + 1 / theta ascending
