@@ -335,9 +335,11 @@ SolvedModes verified_modes(Mat K, Mat M, Attempt& a, int n_report, double check,
     v.max_relative_residual = *std::max_element(out.relative_residuals.begin(), out.relative_residuals.end());
     v.max_orthonormality_error = 0;
     for (size_t j = 0; j < k; ++j)
-        for (size_t l = 0; l <= j; ++l)
-            v.max_orthonormality_error = std::max(
-                v.max_orthonormality_error, std::abs(scale[j] * scale[l] * checks.gram[j * k + l] - (l == j ? 1.0 : 0.0)));
+        for (size_t l = 0; l <= j; ++l) {
+            const double normalised = scale[j] * scale[l] * checks.gram[j * k + l];
+            v.max_orthonormality_error =
+                std::max(v.max_orthonormality_error, std::abs(normalised - (l == j ? 1.0 : 0.0)));
+        }
     v.check_shift = check;
     v.negative_pivots_at_shift = pivots;
     v.modes_below_shift = found_below;

@@ -9,12 +9,11 @@ namespace coremodal {
 namespace {
 
 // W columns at a time: the accumulator is a fixed-size array the compiler
-// keeps in vector registers (AVX2 where the CPU has it: target_clones).
+// keeps in vector registers.
 template <int W>
-__attribute__((target_clones("avx2", "default"))) void rows_times_block(PetscInt n, const PetscInt* ia,
-                                                                         const PetscInt* ja, const double* a,
-                                                                         const double* x, int ldx, double* y,
-                                                                         int ldy) {
+inline __attribute__((always_inline)) void rows_times_columns(PetscInt n, const PetscInt* ia, const PetscInt* ja,
+                                                              const double* a, const double* x, int ldx, double* y,
+                                                              int ldy) {
     for (PetscInt i = 0; i < n; ++i) {
         double acc[W] = {};
         for (PetscInt p = ia[i]; p < ia[i + 1]; ++p) {
@@ -23,6 +22,20 @@ __attribute__((target_clones("avx2", "default"))) void rows_times_block(PetscInt
             for (int c = 0; c < W; ++c) acc[c] += value * row[c];
         }
         std::memcpy(y + size_t(i) * size_t(ldy), acc, sizeof acc);
+    }
+}
+
+// `width` (16, 8, 4 or 1) columns; AVX2 where the CPU has it (target_clones
+// on a plain function: clang does not clone templates).
+__attribute__((target_clones("avx2", "default"))) void rows_times_block(int width, PetscInt n, const PetscInt* ia,
+                                                                         const PetscInt* ja, const double* a,
+                                                                         const double* x, int ldx, double* y,
+                                                                         int ldy) {
+    switch (width) {
+        case 16: rows_times_columns<16>(n, ia, ja, a, x, ldx, y, ldy); break;
+        case 8: rows_times_columns<8>(n, ia, ja, a, x, ldx, y, ldy); break;
+        case 4: rows_times_columns<4>(n, ia, ja, a, x, ldx, y, ldy); break;
+        default: rows_times_columns<1>(n, ia, ja, a, x, ldx, y, ldy); break;
     }
 }
 
@@ -64,10 +77,9 @@ void SparseBlockProduct::operator()(Mat A, int cols, const double* in, double* o
         const double* x = rows_in_.data() + c;
         double* y = rows_out_.data() + c;
         const int left = cols - c;
-        if (left >= 16) rows_times_block<16>(n, ia, ja, a, x, cols, y, cols), c += 16;
-        else if (left >= 8) rows_times_block<8>(n, ia, ja, a, x, cols, y, cols), c += 8;
-        else if (left >= 4) rows_times_block<4>(n, ia, ja, a, x, cols, y, cols), c += 4;
-        else rows_times_block<1>(n, ia, ja, a, x, cols, y, cols), c += 1;
+        const int width = left >= 16 ? 16 : left >= 8 ? 8 : left >= 4 ? 4 : 1;
+        rows_times_block(width, n, ia, ja, a, x, cols, y, cols);
+        c += width;
     }
     COREMODAL_PETSC(MatSeqAIJRestoreArrayRead(A, &a));
     COREMODAL_PETSC(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &rows, &ia, &ja, &done));

@@ -99,16 +99,16 @@ namespace {
 // A model this large factors faster in as many processes as the machine has
 // cores (MUMPS's distributed factor and block Lanczos, docs/performance.md
 // "Two processes"): case 03, 181,152 unknowns, 32.8 s under mpirun -n 2
-// against 43.7 s in one process on 2 cores; case 02, 101,760, 16.2 against
-// 19.1 s.
+// against 43.7 s in one process on 2 cores (AVX-512 machine; 40.4 against
+// 44.7 s on a Zen 3 one); case 02, 101,760, 16.2 against 19.1 s.
 constexpr int kProcessesHintDofs = 100000;
 
 std::string processes_hint(int n_dofs) {
     const unsigned cores = std::thread::hardware_concurrency();
     if (mpi_size() > 1 || cores < 2 || n_dofs < kProcessesHintDofs) return "";
     return "      running in one process on " + std::to_string(cores) + " cores: `mpirun -n " + std::to_string(cores) +
-           " coremodal run ...` splits the factorization (case 03's 181,152 unknowns on 2 cores: a quarter "
-           "less time; docs/performance.md, \"Two processes\")";
+           " coremodal run ...` splits the factorization (case 03's 181,152 unknowns on 2 cores: 10-25 % "
+           "less time, by machine; docs/performance.md, \"Two processes\")";
 }
 
 // Step 6: every eigenvector in the request's band expanded to the mesh's
