@@ -3,6 +3,7 @@
 #include "eigensolve/modal_solver.hpp"  // shift_invert_factor_package
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/free_memory.hpp"
 
 #include <algorithm>
@@ -42,8 +43,11 @@ double memory_allowed_mb() {
     PetscReal users_cap = 0;
     PetscBool given = PETSC_FALSE;
     COREMODAL_PETSC(PetscOptionsGetReal(nullptr, nullptr, "-max_memory_mb", &users_cap, &given));
-    if (given && users_cap > 0) allowed = allowed > 0 ? std::min(allowed, double(users_cap)) : double(users_cap);
-    return allowed;
+    if (!given) return allowed;
+    if (!(users_cap > 0))
+        throw InputError("-max_memory_mb " + significant(users_cap) +
+                         ": expected the memory this run may take, a positive number of MB (e.g. -max_memory_mb 6000)");
+    return allowed > 0 ? std::min(allowed, double(users_cap)) : double(users_cap);
 }
 
 // MUMPS out of core when its estimate does not fit (factor_fits_in_memory).

@@ -314,6 +314,14 @@ TEST_CASE("A factor larger than the memory allowed goes to disk on its own and g
     // The same factor, read back from disk: the same pairs to the solver's
     // tolerance (the solve's order of operations may differ).
     for (size_t i = 0; i < f1.size(); ++i) CHECK(f2[i] == Approx(f1[i]).epsilon(1e-8));
+    // A cap that is not a positive size is refused, with what is expected,
+    // and no results folder.
+    const Run zero = run_coremodal(dir, "run '" COREMODAL_SOURCE_DIR "/cases/03-rest-roll-150x15.8-4320.toml' -o zero"
+                                        " --no-plots --model solid --mesh coarse -max_memory_mb 0");
+    CHECK(zero.exit_code != 0);
+    CHECK(zero.err.find("-max_memory_mb") != std::string::npos);
+    CHECK(zero.err.find("a positive number of MB") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path / "zero"));
 }
 
 TEST_CASE("run --model harmonic overrides the case's level; an unknown level is refused", "[app][cli][harmonic]") {
