@@ -106,8 +106,7 @@ public:
         : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity),
           V_(n, capacity + block), MV_(n, capacity + block),
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
-          H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)),
-          own_product_(SparseBlockProduct::handles(M)) {}
+          H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
 
     // The first block: random, fixed seed per process (runs repeat bit for bit).
     void start() {
@@ -296,7 +295,7 @@ private:
     // out = M in for `cols` columns: sparse_block_product.hpp in one
     // process, PETSc's product in parallel.
     void times_M(int cols, double* in, double* out) {
-        if (own_product_) product_(M_, cols, in, out);
+        if (SparseBlockProduct::handles(M_)) product_(M_, cols, in, out);
         else multiply(M_, n_, cols, in, out);
     }
 
@@ -308,7 +307,6 @@ private:
     std::vector<double> panel_;  // kPanelRows x the widest product
     Eigen::MatrixXd H_;  // H[:, c] = coefficients of T V[:, c] in the basis
     int m_ = 0, applied_ = 0, blocks_solved_ = 0, restarts_ = 0;
-    bool own_product_;
     SparseBlockProduct product_;
 };
 
