@@ -1,5 +1,5 @@
 // `coremodal beam [CASE.toml] [--li 250mm] [--k 0.85] [--f-free 52Hz] ... [--json]`:
-// the quick formulas of DOMAIN.md section 3 for one core or rest roll, and
+// the quick formulas of Ilomäki and König & Müller for one core or rest roll, and
 // Euler–Bernoulli and Timoshenko beam frequencies. No mesh, no PETSc:
 // it answers in milliseconds. The command line only: the analysis is
 // analyses/formulas/beam_formulas.hpp, the output output/beam_formulas_report.hpp.

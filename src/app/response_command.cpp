@@ -43,7 +43,7 @@ Command add_response_command(CLI::App& app) {
         "response", "A spinning roll's forced response ([damping], [excitation], [response]): mid-span amplitude "
                     "against web speed, resonance peaks, the safe web speed from the amplitude limit beside I-5; "
                     "response.csv, response.png, report.md (beam, harmonic or solid level)");
-    add_folder_case_options(cmd, *o, "case file (TOML) with a [response] table, e.g. cases/13-rest-roll-response.toml",
+    add_folder_case_options(cmd, *o, "case file (TOML) with a [response] table, e.g. cases/13-rest-roll-response-150x15.8-4320.toml",
                             "-response", "response.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The tables: docs/response.md.");

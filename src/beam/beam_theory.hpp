@@ -1,5 +1,5 @@
 // Beam theory of a core with rest paper: the comparison every FE result is
-// set against (DOMAIN.md section 3, formula I-7 with k = 1).
+// set against (Ilomäki I-7 with k = 1).
 #pragma once
 
 #include "beam/formulas.hpp"

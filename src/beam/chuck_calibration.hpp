@@ -3,7 +3,7 @@
 //
 // k = f1 / f_I-7(k = 1): the first bending frequency of the roll in the stand
 // over the Euler–Bernoulli clamped–clamped (= free–free) frequency of formula
-// I-7 over the free span L = Lc − 2 Li (DOMAIN.md sections 2, 3; Ilomäki's
+// I-7 over the free span L = Lc − 2 Li (Ilomäki I-6, I-7: his
 // k = f1/f2 with f2 from beam theory).
 //
 // The fitted law (Dunkerley's summation: flexibilities in series add their

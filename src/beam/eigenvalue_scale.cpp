@@ -49,7 +49,7 @@ void add_beam_families(const Scene& scene, std::vector<EigenvalueEstimate>& out)
     out.push_back({"torsion", k * k * s.GJ / s.rho_J});
 }
 
-// The wall as a thin ring of the core's length (DOMAIN.md section 5):
+// The wall as a thin ring of the core's length (docs/theory.md, "The eigenvalue scale"):
 //   in its plane, n waves:  omega^2 = D / (m R^4) n^2 (n^2 - 1)^2 / (n^2 + 1),
 //     D the wall's bending stiffness per unit length (layers about their
 //     common neutral radius, E_theta), m its mass per unit area;
@@ -58,8 +58,8 @@ void add_beam_families(const Scene& scene, std::vector<EigenvalueEstimate>& out)
 //     B = E_theta t L^3 / 12, C = G J of the t x L section, mu = rho t L;
 //   breathing (n = 0): omega^2 = E_theta / (rho R^2).
 // R is the wall's middle radius. A thick or shear-soft wall lies below the
-// thin-ring values (by up to a factor of two in frequency, DOMAIN.md
-// section 6): the right order of magnitude, which is all the scale needs.
+// thin-ring values (by up to a factor of two in frequency: shear and
+// rotary inertia): the right order of magnitude, which is all the scale needs.
 void add_section_families(const Scene& scene, std::vector<EigenvalueEstimate>& out) {
     const std::vector<WallLayer> layers = wall_layers(scene);
     const double r_in = layers.front().r_in, r_out = layers.back().r_out, t = r_out - r_in;

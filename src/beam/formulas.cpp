@@ -75,7 +75,7 @@ double mass_per_length(const RestRollSection& s) {
     return m;
 }
 
-// DOMAIN.md section 2: L = Lc - 2 Li.
+// Ilomäki I-6, I-7: L = Lc - 2 Li.
 double free_span(double Lc, double Li) {
     require_positive(Lc, "core length Lc", "m");
     if (!(Li >= 0) || !std::isfinite(Li))
@@ -106,7 +106,7 @@ double chuck_factor(double f1_hz, double f2_hz) {
     return f1_hz / f2_hz;
 }
 
-// f2 = f_free Lc^2 / (Lc - 2 Li)^2 (DOMAIN.md section 3, under I-6).
+// f2 = f_free Lc^2 / (Lc - 2 Li)^2 (Ilomäki I-6).
 double free_free_at_free_span_hz(double f_free_hz, double Lc, double Li) {
     require_positive(f_free_hz, "free-hanging frequency f_free", "Hz");
     const double L = free_span(Lc, Li);

@@ -1,6 +1,6 @@
-// The quick formulas of the two source studies (DOMAIN.md section 3), as plain
+// The quick formulas of the two source studies (docs/references.md), as plain
 // functions: SI units in and out (m, Pa, kg/m^3, kg/m, Hz, m/s). Each names its
-// formula by the DOMAIN.md number: I-n from Ilomäki ("On the durability of
+// formula by its number: I-n from Ilomäki ("On the durability of
 // cores and rest roll dynamics"), K-n from König & Müller (1988).
 // Arguments outside a formula's domain throw InputError with a sentence naming
 // the quantity and its value.
@@ -8,7 +8,7 @@
 
 namespace coremodal {
 
-// Section of a tube (DOMAIN.md section 2): A = pi/4 (Do^2 - Di^2),
+// Section of a tube (docs/beam.md, "Symbols"): A = pi/4 (Do^2 - Di^2),
 // I = pi/64 (Do^4 - Di^4). Requires 0 <= d_in < d_out.
 double tube_area(double d_out, double d_in);
 double tube_inertia(double d_out, double d_in);
@@ -24,7 +24,7 @@ struct RestRollSection {
 double bending_stiffness(const RestRollSection& s);
 double mass_per_length(const RestRollSection& s);
 
-// Free span between the chucks, L = Lc - 2 Li (DOMAIN.md section 2).
+// Free span between the chucks, L = Lc - 2 Li (Ilomäki I-6, I-7).
 // Requires Lc > 0 and 0 <= Li < Lc / 2.
 double free_span(double Lc, double Li);
 

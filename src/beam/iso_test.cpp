@@ -9,7 +9,7 @@ namespace coremodal {
 namespace {
 
 // ISO 11093-8's sample: length at least 8 inner diameters, wall at least
-// 2 % of the inner diameter and not under 2 mm (DOMAIN.md section 3).
+// 2 % of the inner diameter and not under 2 mm (ISO 11093-8).
 constexpr double kMinLengthPerDi = 8, kMinWallPerDi = 0.02, kMinWall = 2e-3;
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The virtual ISO 11093-8 test (DOMAIN.md section 3, I-13 and I-14): what the
+// The virtual ISO 11093-8 test (Ilomäki I-13 and I-14): what the
 // standard's free-hanging test would report as the core's flexural modulus
 // from the first bending frequency of a free–free run, beside the E_z put in.
 // The standard reads a beam (Euler–Bernoulli times its shear and rotary

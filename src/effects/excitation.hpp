@@ -22,7 +22,7 @@
 // point force at mid-core [Den Hartog, Mechanical Vibrations, §3.4]. An
 // eccentric rest roll, its mass centre e off the axis along its whole
 // length, is the same per unit length: rho_p A_p e Omega^2 (the rest paper's
-// mass per length, DOMAIN.md §2), distributed with the elements' shape
+// mass per length, Ilomäki I-7), distributed with the elements' shape
 // functions. Unbalance and bow are taken at the same angle (in phase): the
 // assumption that adds their amplitudes where both drive the same mode.
 //

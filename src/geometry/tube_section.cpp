@@ -18,7 +18,7 @@ constexpr double kBreakpointMergeTolerance = 1e-9;
 
 // Axial zones where the core is held: rigid clamp zones, or the expanding
 // elements of elastic chucks (global z). Their edges are where the wall's
-// strain concentrates (DOMAIN.md section 6), so the mesh grades towards them.
+// strain concentrates (docs/validation.md, "Example cases"), so the mesh grades towards them.
 std::vector<std::pair<double, double>> held_zones(const Scene& scene) {
     std::vector<std::pair<double, double>> zones;
     for (const auto& c : scene.supports.clamps) zones.push_back({c.z_start, c.z_end});

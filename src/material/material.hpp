@@ -5,7 +5,7 @@
 //   (rr, tt, zz, tz, rz, rt) with engineering shear strains,
 // and in the global frame (xx, yy, zz, yz, xz, xy).
 // Poisson convention: nu_ij = -eps_j / eps_i under uniaxial sigma_i, so
-// nu_ij / E_i = nu_ji / E_j (DOMAIN.md, section 6).
+// nu_ij / E_i = nu_ji / E_j (Jones 1999, ch. 2).
 #pragma once
 
 #include <Eigen/Dense>

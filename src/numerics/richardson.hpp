@@ -26,7 +26,7 @@ struct Richardson {
 
 // Plausible observed orders: quadratic elements give eigenvalue errors ~ h^4
 // on smooth problems; stress singularities at clamp edges lower that towards 1
-// or below (DOMAIN.md section 6). Outside this range the levels are not in
+// or below (docs/accuracy-vs-cost.md). Outside this range the levels are not in
 // the asymptotic range and the report says so.
 inline constexpr double kMinPlausibleOrder = 0.5;
 inline constexpr double kMaxPlausibleOrder = 8.0;

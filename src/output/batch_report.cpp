@@ -51,7 +51,7 @@ std::string footnote() {
                   "f1: first bending mode (summary.json beam.fe_first_bending_hz); FE/Timoshenko: f1 over the "
                   "Timoshenko beam formula; k: the chuck factor f1/f2 (summary.json chuck.chuck_factor; scenes on "
                   "elastic chucks).\n"
-                  "v_safe = %.1f * pi * D * f1 (safe web speed, DOMAIN.md I-5, with the factor %.1f; summary.json "
+                  "v_safe = %.1f * pi * D * f1 (safe web speed, Ilomäki I-5, with the factor %.1f; summary.json "
                   "speeds); D = rest roll outer diameter, or the core's without rest paper; not given for free-free "
                   "cases.\n",
                   kBatchSafeFactor, kBatchSafeFactor);

@@ -40,7 +40,7 @@ struct BeamComparison {
     bool fe_found() const { return fe_mode_index > 0; }
 };
 
-// Ilomäki's chuck factor k = f1 / f2 (DOMAIN.md section 3): f1 the first
+// Ilomäki's chuck factor k = f1 / f2 (Ilomäki I-6): f1 the first
 // bending frequency of the scene, f2 the free-free first bending frequency
 // of the same core (and rest paper) cut to the free span L = Lc - Li_left -
 // Li_right (= Lc - 2 Li for equal ends).

@@ -30,9 +30,9 @@ constexpr int kMaxRotationPoints = 1000;
 // [response]: a dense reduced solve per speed is cheap, but 10 000 points is
 // already a 1 mm/s step over a press's whole range.
 constexpr int kMaxResponsePoints = 10000;
-// Relative damping of cores and rest rolls: 0.005-0.02 (DOMAIN.md section 3,
+// Relative damping of cores and rest rolls: 0.005-0.02 (Ilomäki,
 // I-1...4); 1 is critical damping, above which nothing oscillates.
-constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (DOMAIN.md section 3)"};
+constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (Ilomäki I-1...I-4; docs/references.md)"};
 // The same as a logarithmic decrement, delta = 2 pi zeta (I-1).
 constexpr PlausibleRange kPlausibleLogDecrement{6e-3, 1.3, 0.06, "2 pi times 0.001-0.2 (cores and rest rolls: 0.03-0.13)"};
 // Straightness deviations of cores (ISO 11093-5) are tenths of a millimetre
@@ -53,26 +53,26 @@ constexpr PlausibleRange kPlausibleWebTension{5.0, 20e3, 300.0, "running web ten
 constexpr PlausibleRange kPlausibleWebSpan{0.02, 20.0, 1.0, "roll surface to the first guide roller: ~0.1-5 m"};
 constexpr PlausibleRange kPlausibleWebThickness{10e-6, 3e-3, 80e-6, "papers and boards are ~30 um to ~1 mm thick"};
 constexpr PlausibleRange kPlausibleWebModulus{0.2e9, 30e9, 5e9, "paper's in-plane moduli are ~2-10 GPa (Niskanen, Paper Physics)"};
-constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (DOMAIN.md section 7)"};
+constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (Ilomäki, with I-5; docs/references.md)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
 // catch unit slips, which are factors of 1e3 to 1e9, so they are wide.
 //
 // Moduli: the softest solid in a roll, wound paper across its layers, is of
-// order 10 MPa (DOMAIN.md section 4) and loose layers a few times softer; the
+// order 10 MPa (Jorkama & von Hertzen, Fig. 4) and loose layers a few times softer; the
 // stiffest engineering solids (tungsten carbide, diamond) are near 1 TPa.
 constexpr std::string_view kModulusWhy =
-    "from a loosely wound paper layer (~1 MPa; wound paper ~10 MPa, DOMAIN.md section 4) to diamond (~1.1 TPa)";
+    "from a loosely wound paper layer (~1 MPa; wound paper ~10 MPa, Jorkama & von Hertzen) to diamond (~1.1 TPa)";
 constexpr double kMinPlausibleModulus = 0.1e6, kMaxPlausibleModulus = 1.2e12;  // Pa
 // Typical moduli, the aim of a suggestion: paperboard in its plane (E_theta,
 // E_z, G_thetaz), across it (E_r; G_rtheta, G_rz), and isotropic E (steel and
-// aluminium tubes, steel chucks): DOMAIN.md section 4, the materials library.
+// aluminium tubes, steel chucks): docs/material-sources.md, the materials library.
 constexpr double kTypicalInPlane = 5e9, kTypicalAcross = 30e6, kTypicalShearAcross = 100e6;
 constexpr double kTypicalShearInPlane = 2e9, kTypicalIsotropic = 70e9;  // Pa
 // Density: the lightest foams (~10 kg/m^3) to the densest metals (osmium 22 600).
 constexpr PlausibleRange kPlausibleDensity{10.0, 25e3, 1000.0,
                                            "from foams (~10 kg/m^3) to the densest metals (osmium, 22 600 kg/m^3)"};
-// Cores: 1 inch (25 mm) to 600 mm inside (ISO 11093 sizes, DOMAIN.md section 1),
+// Cores: 1 inch (25 mm) to 600 mm inside (ISO 11093 sizes; docs/references.md),
 // rolls up to ~4 m across; walls from under a millimetre; a test ring cut from
 // a core is a few millimetres long, the widest machines ~10 m.
 constexpr PlausibleRange kPlausibleDiameter{5e-3, 4.0, 0.1, "cores are 25-600 mm inside, rolls up to ~4 m across"};
@@ -89,7 +89,7 @@ KeySpec modulus_key(std::string_view key, double typical) {
             {kMinPlausibleModulus, kMaxPlausibleModulus, typical, kModulusWhy}};
 }
 KeySpec poisson_key(std::string_view key) {
-    // The admissible range depends on the moduli (DOMAIN.md §6); the whole
+    // The admissible range depends on the moduli (Jones 1999, ch. 2); the whole
     // material is checked with why_not_admissible.
     return {"material", key, ValueKind::quantity, Dimension::dimensionless};
 }

@@ -11,14 +11,14 @@ constexpr std::string_view kIlomakiRestPaper =
 constexpr std::string_view kKoenig =
     "König & Müller, Hartpapierhülsen in Papierrollen im Tiefdruck (1988)";
 constexpr std::string_view kOutOfPlane =
-    "rule of thumb: out-of-plane modulus of paper near E_MD/200, DOMAIN.md §4";
-constexpr std::string_view kTransverseShear = "rule of thumb: a few per cent of E_MD, DOMAIN.md §4";
+    "rule of thumb: out-of-plane modulus of paper near E_MD/200, docs/material-sources.md";
+constexpr std::string_view kTransverseShear = "rule of thumb: a few per cent of E_MD, docs/material-sources.md";
 constexpr std::string_view kInPlaneAssumed =
-    "assumed: in-plane values typical of paperboard (CD stiffness about 60 % of MD), DOMAIN.md §4";
+    "assumed: in-plane values typical of paperboard (CD stiffness about 60 % of MD), docs/material-sources.md";
 constexpr std::string_view kSmallOutOfPlanePoisson =
-    "rule of thumb: out-of-plane Poisson ratios of paper are small, DOMAIN.md §4, §6";
+    "rule of thumb: out-of-plane Poisson ratios of paper are small, docs/material-sources.md";
 constexpr std::string_view kJorkama =
-    "Jorkama & von Hertzen: wound roll radial modulus of order 10 MPa, DOMAIN.md §3-4";
+    "Jorkama & von Hertzen: wound roll radial modulus of order 10 MPa (Fig. 4), docs/references.md";
 constexpr std::string_view kInPlaneEqual =
     "assumed equal to the measured cylinder modulus E_z (a wound roll's MD lies around it)";
 constexpr std::string_view kSteel = "handbook value for structural steel";

@@ -80,7 +80,7 @@ struct ResponseRange {
     std::vector<Probe> probes;  // the first is the one the safe speed is read at
 };
 
-// The default amplitude limit: Ilomaki's +-5 mm at mid-span (DOMAIN.md §7:
+// The default amplitude limit: Ilomaki's +-5 mm at mid-span (Ilomäki:
 // the field's limit, which I-5's factor 0.7-0.8 is meant to keep).
 inline constexpr double kDefaultAmplitudeLimit = 5e-3;  // m
 inline constexpr std::string_view kMidSpan = "mid-span";

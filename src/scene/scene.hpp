@@ -41,7 +41,7 @@ struct ExpandingElement {
     double segment_angle = 0;  // rad, span of one segment (segments > 0)
 };
 
-// How the core is held over the expanding elements (DOMAIN.md section 3,
+// How the core is held over the expanding elements (Ilomäki I-6,
 // docs/chucks.md): bonded = shared displacements; spring = a distributed
 // spring layer with normal and tangential stiffness per unit area.
 enum class InterfaceKind { bonded, spring };

@@ -6,7 +6,7 @@
 // Defaults come from Jorkama & von Hertzen's example where the paper gives a
 // value (a 9.1 m winder, five 1.68 m rolls, 10 m drums of 0.85 m with a 50 mm
 // wall, roll radial modulus 9.8 MPa, nu = 0.3, roll diameters 0.4-1.8 m;
-// DOMAIN.md section 3 and the issue that asked for the winder). Every other
+// Jorkama & von Hertzen, Fig. 4, and the issue that asked for the winder). Every other
 // default is an assumption, marked so beside it with its range; docs/winder.md
 // lists them all and cases/11-two-drum-winder.toml shows them in use.
 #pragma once
@@ -22,7 +22,7 @@ namespace coremodal {
 
 // The two drums (front and rear), alike: steel tubes on a bearing at each end.
 struct WinderDrums {
-    double outer_diameter = 0.85;  // m: the paper's d1 = 0.85 m (DOMAIN.md 3); range 0.3-2 m
+    double outer_diameter = 0.85;  // m: the paper's d1 = 0.85 m (Jorkama & von Hertzen); range 0.3-2 m
     double wall = 0.05;            // m: the paper's 50 mm wall; range 10-150 mm
     double length = 10.0;          // m, bearing to bearing: the paper's 10 m drum; range 1-15 m
     // m between the two drums' surfaces: an assumption (the paper's value was not
@@ -51,13 +51,13 @@ struct WinderRolls {
     int count = 5;        // the paper's five rolls; range 1-20
     double width = 1.68;  // m: the paper's 1.68 m rolls; range 0.1-10 m
     double gap = 0.0;     // m between neighbouring rolls (slitting): assumed 0; range 0-0.5 m
-    // The core: 150 x 13 mm (Do 176 mm), one of DOMAIN.md's named cores (section 1);
+    // The core: 150 x 13 mm (Do 176 mm), one of Ilomäki's named cores;
     // assumed, range Di 50-400 mm.
     double core_inner_diameter = 0.150;
     double core_outer_diameter = 0.176;
     std::string core_material = "paperboard_core";  // library: 920 kg/m^3 (Ilomäki), E_z 6.5 GPa
     // The paper's bending (E_z, G_thetaz; the "beam" roll model only): library
-    // rest_paper, Ep = 5 GPa measured on rest rolls (DOMAIN.md 4).
+    // rest_paper, Ep = 5 GPa measured on rest rolls (Ilomäki).
     std::string paper_material = "rest_paper";
     // kg/m^3 of the wound paper: an assumption (fine papers' sheet densities are
     // 700-850 kg/m^3, docs/material-sources.md); range 300-1500.
@@ -87,7 +87,7 @@ struct WinderRider {
 // Modal damping ratios by modal strain energy: each mode's ratio is the
 // energy-weighted mean of these (docs/winder.md, "Response").
 struct WinderDamping {
-    double drums = 0.01;  // drum bending and bearings: assumed, ζ of steel structures 0.005-0.02 (DOMAIN.md 3)
+    double drums = 0.01;  // drum bending and bearings: assumed, ζ of steel structures 0.005-0.02 (Ilomäki I-1...I-4)
     double nips = 0.05;   // nip springs (the paper's compression): assumed, range 0.005-0.3
     double rider = 0.01;  // rider bending and supports: assumed, as the drums
 };

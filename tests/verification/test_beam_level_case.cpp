@@ -80,7 +80,7 @@ TEST_CASE("The beam level on chucks reports the chuck factor with f2 from the be
     // (30 elements, error ~h^4: measured 3e-6 for the first bending mode).
     CHECK(k.f2_fe_hz == Approx(k.f2_beam_hz).epsilon(1e-5));
     // A soft stand (bearings, frames) holds the roll below the free span's
-    // free-free frequency: 0 < k < 1 (DOMAIN.md section 3).
+    // free-free frequency: 0 < k < 1 (Ilomäki I-6).
     CHECK(k.chuck_factor > 0);
     CHECK(k.chuck_factor < 1);
     CHECK(k.chuck_factor == Approx(k.f1_hz / k.f2_fe_hz));

@@ -55,7 +55,7 @@ TEST_CASE("Case 02: a core clamped over 70 mm bends well below the clamped beam 
     check_verified(r);
     CHECK(r.modes.modes[0].label.type == "bending");
     // Default mesh: 61.44 Hz = 0.889 x Timoshenko: the shear-soft wall lets a
-    // short clamp rotate (DOMAIN.md section 6: physics, not an error).
+    // short clamp rotate (docs/validation.md: physics, not an error).
     CHECK(r.beam.fe_first_bending_hz == Approx(61.44).epsilon(0.01));
     CHECK(r.beam.fe_over_timoshenko < 0.95);
 }

@@ -135,7 +135,7 @@ BeamSection drum_section(const WinderScene& s) {
 }
 
 // The thin ring's inextensional ovalling in plane strain, at the wall's
-// mid-surface radius (DOMAIN.md section 5), Hz.
+// mid-surface radius (docs/validation.md), Hz.
 double ring_ovalling_hz(const WinderScene& s, int n) {
     const OrthotropicMaterial steel = winder_material(s.drums.material);
     const double t = s.drums.wall, R = (s.drums.outer_diameter - t) / 2, I = t * t * t / 12;

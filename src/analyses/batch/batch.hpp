@@ -13,7 +13,7 @@
 
 namespace coremodal {
 
-// The safe web speed the batch table shows (DOMAIN.md I-5, v_safe = safe · π
+// The safe web speed the batch table shows (Ilomäki I-5, v_safe = safe · π
 // · Dp · f1, from summary.json's speeds): the conservative factor, no safety cage.
 inline constexpr double kBatchSafeFactor = kSafeFactors[0];
 static_assert(kBatchSafeFactor == 0.7);

@@ -180,7 +180,7 @@ void add_safe_speed(const BeamFormulaInputs& in, BeamFormulas& r) {
                           significant(highest));
 }
 
-// The field's middle damping ratio (DOMAIN.md section 3: 0.005-0.02), when
+// The field's middle damping ratio (Ilomäki I-1...I-4: 0.005-0.02), when
 // --web-speed comes without --zeta (noted as assumed).
 constexpr double kAssumedZeta = 0.01;
 
@@ -198,7 +198,7 @@ void add_amplification(const BeamFormulaInputs& in, BeamFormulas& r) {
     a.d = amplification(a.ratio, a.zeta);
     if (a.zeta_assumed)
         r.notes.push_back("zeta = " + significant(a.zeta) + " assumed for the amplification (cores and rest rolls: "
-                          "0.005-0.02, DOMAIN.md section 3); give --zeta");
+                          "0.005-0.02, Ilomäki; docs/references.md); give --zeta");
     r.amplification = a;
 }
 

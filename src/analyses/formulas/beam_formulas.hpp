@@ -1,4 +1,4 @@
-// `coremodal beam`'s analysis: the quick formulas of DOMAIN.md section 3 for
+// `coremodal beam`'s analysis: the quick formulas of Ilomäki and König & Müller for
 // one core or rest roll (Ilomäki I-5..I-15, König K-1/K-2) and Euler–Bernoulli
 // and Timoshenko beam frequencies, from a case file and/or values given on
 // the command line. No mesh, no PETSc. Formulas: beam/formulas.hpp; docs/beam.md.

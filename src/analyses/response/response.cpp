@@ -54,7 +54,7 @@ std::vector<std::string> setup_assumptions(const ResponseSetup& setup) {
     std::vector<std::string> out;
     if (setup.response.limit_m == kDefaultAmplitudeLimit)
         out.push_back("amplitude limit 5 mm at " + setup.response.probes.front().name +
-                      ": the default, Ilomaki's +-5 mm at mid-span (DOMAIN.md section 7)");
+                      ": the default, Ilomaki's +-5 mm at mid-span (Ilomäki; docs/references.md)");
     if (x.bow_m > 0)
         out.push_back(x.bow_shape == BowShape::half_sine
                           ? "bow: a half sine b sin(pi z / Lc) over the core length with its slope as the section "

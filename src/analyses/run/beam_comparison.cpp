@@ -116,7 +116,7 @@ void check_rigid_modes(const RunReport& report) {
     MPI_Bcast(&rigid, 1, MPI_INT, 0, PETSC_COMM_WORLD);
     if (ok) return;
     throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
-                     "(DOMAIN.md section 5), but " + std::to_string(rigid) + " of the lowest " +
+                     "(docs/validation.md), but " + std::to_string(rigid) + " of the lowest " +
                      std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "
                      "the body's lowest elastic eigenvalues, so they cannot be told apart. A core " +
                      significant(s.core.length) + " m long and " + significant(s.core.outer_diameter) +

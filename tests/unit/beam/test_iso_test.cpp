@@ -35,7 +35,7 @@ TEST_CASE("iso: an Euler-Bernoulli frequency reads back as E_z times Q", "[iso]"
     const double Di = 0.076, Do = 0.106, L = 1.5;
     const double A = M_PI / 4 * (Do * Do - Di * Di), I = M_PI / 64 * (std::pow(Do, 4) - std::pow(Di, 4));
     const double E = 6.5e9, rhoA = 920 * A;
-    // (beta1 L)^2 = 22.373: the free-free Euler-Bernoulli beam (DOMAIN.md I-7 with k = 1).
+    // (beta1 L)^2 = 22.373: the free-free Euler-Bernoulli beam (Ilomäki I-7 with k = 1).
     const double f_eb = 22.373 / (2 * M_PI * L * L) * std::sqrt(E * I / rhoA);
     const auto t = iso_flexural_test(s, f_eb);
     REQUIRE(t);

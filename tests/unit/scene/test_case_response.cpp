@@ -49,7 +49,7 @@ TEST_CASE("Only a scene with [response] simulates damping and excitation", "[res
     CHECK(c.response->excitation.bow_shape == BowShape::half_sine);
     CHECK(c.response->excitation.gravity);
     CHECK(excitation_effect_names(c.response->excitation) == std::vector<std::string>{"bow", "gravity"});
-    // Defaults: the +-5 mm limit at mid-span (DOMAIN.md section 7).
+    // Defaults: the +-5 mm limit at mid-span (Ilomäki).
     CHECK(c.response->response.limit_m == kDefaultAmplitudeLimit);
     REQUIRE(c.response->response.probes.size() == 1);
     CHECK(c.response->response.probes[0].name == "mid-span");

@@ -1,5 +1,5 @@
 // Jorkama's nip against a hand calculation with the paper's example values
-// (DOMAIN.md section 3): drum d1 = 0.85 m, roll radial modulus E = 9.8 MPa,
+// (Jorkama & von Hertzen eq. (5), Fig. 4): drum d1 = 0.85 m, roll radial modulus E = 9.8 MPa,
 // nu = 0.3, line load P = 5 kN/m, roll diameters d = 0.4, 1.2, 1.8 m.
 #include "winder/nip.hpp"
 
