@@ -24,7 +24,7 @@ int run_calibrate_command(const CalibrateOptions& o) {
                                 .with_model(o.model);
     print_warnings(sweep.warnings());
     const std::filesystem::path out_dir = results_path(o.output, sweep.case_name(), "-calibration");
-    prepare_output(out_dir, o.force);
+    claim_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "calibrate", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
     const CalibrationOutcome outcome = calibrate_chuck_factor(sweep, result);

@@ -16,6 +16,7 @@
 namespace coremodal {
 
 int run_rotating_case(const FolderCaseOptions& o) {
+    require_one_process(o, "a Campbell sweep");
     RotatingCase rotating = parse_rotating_case(o.case_file);
     Scene& scene = rotating.scene;
     if (!o.model.empty()) scene.model = o.model;

@@ -23,7 +23,7 @@ int run_fit_command(const FitCommandOptions& o) {
     const bool root = mpi_rank() == 0;
     const FitInput input = read_fit_input(o.measurements);
     const std::filesystem::path out_dir = results_path(o.output, std::filesystem::path(o.measurements).stem().string(), "-fit");
-    prepare_output(out_dir, o.force);
+    claim_output(out_dir, o.force);
     const FitOutcome outcome = run_fit(input, [&](const std::string& line) {
         if (root && !o.quiet) std::cout << "  fit: " << line << std::endl;
     });

@@ -1,5 +1,7 @@
 #include "app/folder_case.hpp"
 
+#include "common/error.hpp"
+#include "common/petsc_handle.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
 #include "output/text_file.hpp"
@@ -17,9 +19,15 @@ void add_folder_case_options(CLI::App* cmd, FolderCaseOptions& o, const std::str
     cmd->add_flag("--no-plots", o.no_plots, "do not run python3 for " + png);
 }
 
+void require_one_process(const FolderCaseOptions& o, const std::string& command) {
+    if (mpi_size() > 1)
+        throw InputError(o.case_file + ": " + command + " runs in one process (" + std::to_string(mpi_size()) +
+                         " MPI ranks would each run it and write the same results folder); run it without mpirun");
+}
+
 std::filesystem::path prepare_folder_case(const FolderCaseOptions& o, const Scene& scene, const std::string& suffix) {
     const std::filesystem::path out_dir = results_path(o.output, scene.name, suffix);
-    prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
+    claim_output(out_dir, o.force);  // refused before any work, never over the user's files
     for (const std::string& w : scene.warnings) std::cerr << "coremodal: warning: " << w << std::endl;
     return out_dir;
 }

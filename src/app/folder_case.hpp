@@ -44,6 +44,10 @@ struct FolderContents {
 // folder, then puts it in place. Returns the exit code.
 int write_folder_case(const FolderCaseOptions& o, const std::filesystem::path& out_dir, const FolderContents& contents);
 
+// Refuses more than one MPI rank before any work: a Campbell sweep and a
+// forced response run in one process (`command`: "a Campbell sweep").
+void require_one_process(const FolderCaseOptions& o, const std::string& command);
+
 // The two analyses (a case without their table is an InputError).
 int run_rotating_case(const FolderCaseOptions& o);  // app/campbell_command.cpp
 int run_response_case(const FolderCaseOptions& o);  // app/response_command.cpp

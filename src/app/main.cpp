@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -86,6 +87,20 @@ int report_error(const char* kind, const std::exception& e) {
     return 1;
 }
 
+// The number of processes an MPI launcher (mpirun, srun with PMI) started
+// with this one, and this one's rank; 1 and 0 without a launcher. Read from
+// the launcher's environment: the commands that do not start MPI need it.
+int launched_processes() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+        if (const char* value = std::getenv(name)) return std::max(1, std::atoi(value));
+    return 1;
+}
+int launched_rank() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK"})
+        if (const char* value = std::getenv(name)) return std::atoi(value);
+    return 0;
+}
+
 int run_guarded(const coremodal::Command& command) {
     try {
         return command.run();
@@ -134,6 +149,15 @@ int main(int argc, char** argv) {
         if (c.cli->parsed()) chosen = &c;
     if (!chosen) return 2;
     if (!chosen->needs_petsc) {
+        // Without PETSc a command has no work to share among MPI ranks: under
+        // mpirun each rank would run it whole and write the same folder.
+        if (launched_processes() > 1) {
+            if (launched_rank() == 0)
+                std::cerr << "coremodal: error: `coremodal " << chosen->cli->get_name() << "` runs in one process ("
+                          << launched_processes() << " MPI ranks would each run it and write the same output); run "
+                          << "it without mpirun" << std::endl;
+            return 1;
+        }
         const int status = run_guarded(*chosen);
         coremodal::wait_if_interrupted();
         return status;

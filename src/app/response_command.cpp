@@ -17,6 +17,7 @@
 namespace coremodal {
 
 int run_response_case(const FolderCaseOptions& o) {
+    require_one_process(o, "a forced response");
     ResponseCase c = parse_response_case(o.case_file);
     Scene& scene = c.scene;
     if (!o.model.empty()) scene.model = o.model;

@@ -35,7 +35,7 @@ int run_command(RunLine& line) {
         return run_rotating_case(folder_case(c.scene));
     // The results folder is checked before any work (its default needs the case's name).
     options.output_dir = output_of(parse_case_file(options.case_file).name).string();
-    prepare_output(*options.output_dir, options.force);
+    claim_output(*options.output_dir, options.force);
     run_case(options);
     return 0;
 }

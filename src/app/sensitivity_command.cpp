@@ -27,7 +27,7 @@ int run_sensitivity_command(const SensitivityCommandOptions& o) {
     const CaseParameters c = CaseParameters::read(o.case_file, keys, {}, o.model, o.mesh);
     sensitivity_level(c.scene(c.values()));  // refuses the solid level before any output is touched
     const std::filesystem::path out_dir = results_path(o.output, scene.name, "-sensitivity");
-    prepare_output(out_dir, o.force);
+    claim_output(out_dir, o.force);
     if (!o.quiet && mpi_rank() == 0)
         std::cout << "sensitivity: " << keys.size() << " parameters of " << o.case_file << std::endl;
     const SensitivityResult r = eigen_sensitivities(c, c.values());

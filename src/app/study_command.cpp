@@ -33,7 +33,7 @@ int run_study_command(const StudyCommandOptions& o) {
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh)).with_model(o.model);
     print_warnings(sweep.warnings());
     const std::filesystem::path out_dir = results_path(o.output, sweep.case_name(), "-study");
-    prepare_output(out_dir, o.force);
+    claim_output(out_dir, o.force);
     StudyResult result = run_and_track(sweep, "study", out_dir, o.quiet, o.jobs);
     if (!root) return 0;
 

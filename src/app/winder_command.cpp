@@ -29,7 +29,7 @@ struct WinderOptions {
 int run_winder_command(const WinderOptions& o) {
     const WinderScene scene = read_winder_file(o.case_file);
     const std::filesystem::path out_dir = results_path(o.output, scene.name, "-winder");
-    prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
+    claim_output(out_dir, o.force);  // refused before any work, never over the user's files
     // A progress line on a terminal only: a log gets the summary alone.
     const bool show = !o.quiet && ::isatty(STDERR_FILENO);
     const auto progress = [&](int i, int n) {

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 namespace coremodal {
@@ -170,7 +172,8 @@ void write_calibration(const std::string& path, const Calibration& c) {
         << "# g3 = Ep Ip/EI, EI = Ec Ic + Ep Ip, L = Lc - 2 Li. A coefficient 0 with its group constant over\n"
         << "# the calibration was not fitted ([range] shows the one value it had).\n\n"
         << t << "\n";
-    if (!out) throw std::runtime_error("cannot write " + path);
+    out.close();  // checked: a full disk fails at close
+    if (!out) throw std::runtime_error("cannot write " + path + " (" + std::strerror(errno) + ")");
 }
 
 namespace {

@@ -1,5 +1,7 @@
 #include "output/beam_shapes.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -27,7 +29,8 @@ void write_beam_shapes_csv(const std::string& path, const BeamModelResult& beam)
             for (int d = 0; d < beam_dof::per_node; ++d) f << ',' << beam.modes[i].shape(beam_dof::per_node * n + d);
             f << '\n';
         }
-    if (!f) throw std::runtime_error("cannot write " + path);
+    f.close();  // checked: a full disk fails at close
+    if (!f) throw std::runtime_error("cannot write " + path + " (" + std::strerror(errno) + ")");
 }
 
 }  // namespace coremodal

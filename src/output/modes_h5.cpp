@@ -1,6 +1,7 @@
 #include "output/modes_h5.hpp"
 
 #include "output/mode_display.hpp"
+#include "output/text_file.hpp"
 #include "output/xdmf.hpp"
 
 #include <hdf5.h>
@@ -132,10 +133,28 @@ public:
         if (status < 0) fail(what);
     }
 
+    // The file is built in memory (HDF5's core driver, no backing store)
+    // and written to disk whole by write_image. HDF5 writing to a full disk
+    // itself fails half-way and keeps the file open in the library, whose
+    // clean-up in MPI_Finalize then crashes (SIGSEGV in H5F__close_cb;
+    // issue 33, 6); a failed write of the image is an ordinary error.
     Handle create_file() const {
-        return {check_id(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                         "cannot create the file"),
+        Handle access(check_id(H5Pcreate(H5P_FILE_ACCESS), "file access properties"), H5Pclose);
+        constexpr size_t kGrowBytes = size_t{4} << 20;  // the image grows 4 MiB at a time
+        check_status(H5Pset_fapl_core(access, kGrowBytes, /*backing_store=*/0), "file access properties");
+        return {check_id(H5Fcreate(path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), "cannot create the file"),
                 H5Fclose};
+    }
+
+    // The bytes of the file built in memory, then the file closed.
+    std::string image(Handle& file) const {
+        check_status(H5Fflush(file, H5F_SCOPE_LOCAL), "cannot flush the file");
+        const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+        if (size < 0) fail("cannot take the file's image");
+        std::string bytes(static_cast<size_t>(size), '\0');
+        if (H5Fget_file_image(file, bytes.data(), bytes.size()) != size) fail("cannot take the file's image");
+        check_status(file.close(), "cannot close the file");
+        return bytes;
     }
 
     Handle group(hid_t parent, const std::string& name) const {
@@ -371,7 +390,6 @@ void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mod
                 const std::string& program_version, bool& created) {
     const Writer w(path);
     Handle file = w.create_file();
-    created = true;
 
     w.int_attribute(file, "schema_version", modes_h5_schema_version);
     const bool prefixed = program_version.rfind("coremodal", 0) == 0;
@@ -385,7 +403,9 @@ void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mod
     write_mesh(w, file, mesh);
     write_modes(w, file, mesh, modes);
 
-    w.check_status(file.close(), "cannot close (flush) the file");
+    const std::string bytes = w.image(file);
+    created = true;
+    write_text_file(path, bytes);  // closed and checked: "No space left on device" is an error here
 }
 
 std::string mode_dataset_name(int number) {

@@ -8,6 +8,7 @@
 #include "scene/case_file.hpp"
 
 #include "common/error.hpp"
+#include "scene/case_name.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/toml_text.hpp"
 
@@ -23,6 +24,12 @@ Scene CaseReader::read(const toml::table& root) {
     Scene scene;
     scene.source_file = path_;
     scene.name = text(top, "name").value_or(std::filesystem::path(path_).stem().string());
+    if (const std::string problem = case_name_problem(scene.name); !problem.empty()) {
+        if (const toml::node* given = get(top, "name"))
+            fail(*given, echo(top, "name", *given) + " " + problem + "; " + kCaseNameExpected);
+        throw InputError(path_ + ": the case's name is its file name, '" + scene.name + "', which " + problem +
+                         "; give the case a name = \"...\" (" + kCaseNameExpected + ")");
+    }
     scene.description = text(top, "description").value_or("");
     scene.model = choice(top, "model", kModelLevels).value_or(scene.model);
     scene.core = read_core(top, scene);

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/join.hpp"
+#include "scene/case_name.hpp"
 #include "scene/case_schema.hpp"  // nearest: the "did you mean" of every case file
 #include "scene/materials_library.hpp"
 #include "scene/toml_text.hpp"
@@ -139,6 +140,12 @@ public:
         WinderScene scene;
         scene.source_file = path_;
         scene.name = text(root, "", "name").value_or(std::filesystem::path(path_).stem().string());
+        if (const std::string problem = case_name_problem(scene.name); !problem.empty()) {
+            if (const toml::node* given = root.get("name"))
+                fail(given->source(), "name = " + shown(*given) + " " + problem + "; " + kCaseNameExpected);
+            throw InputError(path_ + ": the case's name is its file name, '" + scene.name + "', which " + problem +
+                             "; give the case a name = \"...\" (" + kCaseNameExpected + ")");
+        }
         scene.description = text(root, "", "description").value_or("");
         const toml::table* winder = root["winder"].as_table();
         if (!winder) fail(root.source(), "no [winder] table; expected a winder case file (docs/winder.md)");

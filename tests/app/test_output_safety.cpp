@@ -15,6 +15,7 @@
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -316,4 +317,188 @@ TEST_CASE("study passes SIGTERM on to its workers and removes its scratch folder
     for (pid_t worker : workers) CHECK(process_gone(worker));
     CHECK_FALSE(fs::exists(scratch));
     CHECK_FALSE(fs::exists(dir.path / "out"));
+}
+
+// ---- issue 33: nothing a user owns is ever lost ---------------------------
+
+namespace {
+
+const std::string kCase02 = std::string(COREMODAL_SOURCE_DIR) + "/cases/02-clamped-76x15.toml";
+const std::string kCase05 = std::string(COREMODAL_SOURCE_DIR) + "/cases/05-beam-level-rest-roll-150x15.8-4320.toml";
+const std::string kCase11 = std::string(COREMODAL_SOURCE_DIR) + "/cases/11-two-drum-winder.toml";
+const std::string kCase12 = std::string(COREMODAL_SOURCE_DIR) + "/cases/12-rotation-tester-76x15.toml";
+const std::string kCase13 =
+    std::string(COREMODAL_SOURCE_DIR) + "/cases/13-rest-roll-response-150x15.8-4320.toml";
+const std::string kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -n 2 --oversubscribe ";
+
+// Every file under `folder` with its content: what "nothing changed" compares.
+std::map<std::string, std::string> snapshot(const fs::path& folder) {
+    std::map<std::string, std::string> files;
+    if (!fs::exists(folder)) return files;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file()) files[fs::relative(entry.path(), folder).string()] = slurp(entry.path());
+    return files;
+}
+
+// `case_text` with its name line replaced by `name_line`.
+std::string renamed(std::string case_text, const std::string& name_line) {
+    const size_t end = case_text.find('\n');
+    return case_text.replace(0, end, name_line);
+}
+
+}  // namespace
+
+TEST_CASE("A results folder holding another case's results and the user's notes is never replaced (issue 33, 1)",
+          "[app][output_safety][issue33]") {
+    TempDir dir("safety");
+    // The exact sequence of the issue, case 02 at the beam level to stay fast.
+    REQUIRE(run_coremodal(dir, "run '" + kCase05 + "' -o results -q --no-plots").exit_code == 0);
+    REQUIRE(run_coremodal(dir, "run '" + kCase02 + "' --model beam -q --no-plots").exit_code == 0);
+    const fs::path inner = dir.path / "results" / "02-clamped-76x15";
+    REQUIRE(fs::exists(inner / "summary.json"));
+    dir.write("results/02-clamped-76x15/notes.txt", "my notes");
+    const auto before = snapshot(dir.path / "results");
+    for (const char* force : {"", " --force"}) {
+        INFO("force: '" << force << "'");
+        const Run r = run_coremodal(dir, "run '" + kCase05 + "' -o results -q --no-plots" + std::string(force));
+        INFO("stderr: " << r.err);
+        CHECK(r.exit_code == 1);
+        CHECK(contains(r.err, "output folder 'results' holds what coremodal did not write into it: "
+                              "'02-clamped-76x15/' (a results folder of its own)"));
+        CHECK(contains(r.err, "move those out yourself, or choose another folder"));
+        CHECK(snapshot(dir.path / "results") == before);
+        CHECK_FALSE(fs::exists(dir.path / "results.previous"));
+    }
+    // A user's file added to a result of its own keeps it too; its own files do not.
+    REQUIRE(run_coremodal(dir, "run '" + kCase05 + "' -o solo -q --no-plots").exit_code == 0);
+    REQUIRE(run_coremodal(dir, "run '" + kCase05 + "' -o solo -q --no-plots").exit_code == 0);  // replaces
+    dir.write("solo/notes.txt", "mine");
+    const Run kept = run_coremodal(dir, "run '" + kCase05 + "' -o solo -q --no-plots --force");
+    CHECK(kept.exit_code == 1);
+    CHECK(contains(kept.err, "output folder 'solo' holds what coremodal did not write into it: 'notes.txt'"));
+    CHECK(slurp(dir.path / "solo" / "notes.txt") == "mine");
+    // ... and keeps the .previous it would otherwise be rotated over.
+    fs::remove(dir.path / "solo" / "notes.txt");
+    dir.write("solo.previous/notes.txt", "mine too");
+    const Run previous = run_coremodal(dir, "run '" + kCase05 + "' -o solo -q --no-plots");
+    CHECK(previous.exit_code == 1);
+    CHECK(contains(previous.err, "would be kept as 'solo.previous', which holds what coremodal did not write into "
+                                 "it: 'notes.txt'"));
+    CHECK(slurp(dir.path / "solo.previous" / "notes.txt") == "mine too");
+}
+
+TEST_CASE("A case name that is empty, '.', '..' or a path is refused before any work (issue 33, 1 and 3)",
+          "[app][output_safety][issue33]") {
+    TempDir dir("safety");
+    // An earlier result in results/ that a name "" or "." would have rotated away.
+    REQUIRE(run_coremodal(dir, "run '" + kCase05 + "' -q --no-plots").exit_code == 0);
+    const auto before = snapshot(dir.path);
+    struct Bad {
+        std::string line, why;
+    };
+    for (const Bad& bad : {Bad{"name = \"\"", "is empty"}, Bad{"name = \".\"", "is '.'"},
+                           Bad{"name = \"..\"", "is '..'"}, Bad{"name = \"../../x\"", "is a path, not a name"},
+                           Bad{"name = \"/tmp/abs\"", "is a path, not a name"}}) {
+        INFO(bad.line);
+        std::string text = slurp(kCase05);
+        const std::string original = "name = \"05-beam-level-rest-roll-150x15.8-4320\"";
+        REQUIRE(text.find(original) != std::string::npos);
+        text.replace(text.find(original), original.size(), bad.line);
+        dir.write("bad.toml", text);
+        for (const std::string command : {"run bad.toml --no-plots", "run bad.toml --force", "check bad.toml"}) {
+            const Run r = run_coremodal(dir, command);
+            INFO(command << "\nstdout: " << r.out << "\nstderr: " << r.err);
+            CHECK(r.exit_code == 1);
+            CHECK(contains(r.err, "bad.toml:61:8: " + bad.line + " " + bad.why));
+            CHECK(contains(r.err, "expected a plain name"));
+        }
+        fs::remove(dir.path / "bad.toml");
+        CHECK(snapshot(dir.path) == before);
+    }
+    CHECK_FALSE(fs::exists("/tmp/abs"));
+    CHECK_FALSE(fs::exists(dir.path.parent_path().parent_path() / "x"));
+}
+
+TEST_CASE("schema --output never overwrites a user's file nor writes through a link (issue 33, 2)",
+          "[app][output_safety][issue33]") {
+    TempDir dir("safety");
+    dir.write("case.toml", kTinyCase);
+    fs::create_symlink(dir.path / "case.toml", dir.path / "link.json");
+    const Run file = run_coremodal(dir, "schema --output case.toml");
+    CHECK(file.exit_code == 1);
+    CHECK(contains(file.err, "schema output 'case.toml' exists and is not a schema coremodal wrote"));
+    const Run link = run_coremodal(dir, "schema --output link.json");
+    CHECK(link.exit_code == 1);
+    CHECK(contains(link.err, "schema output 'link.json' is a symbolic link"));
+    CHECK(slurp(dir.path / "case.toml") == kTinyCase);
+    CHECK(fs::is_symlink(dir.path / "link.json"));
+    // A new file is written, and so is one coremodal wrote before; nothing else is left.
+    REQUIRE(run_coremodal(dir, "schema --output case.schema.json").exit_code == 0);
+    const std::string schema = slurp(dir.path / "case.schema.json");
+    CHECK(contains(schema, "\"coremodal case file\""));
+    REQUIRE(run_coremodal(dir, "schema --output case.schema.json").exit_code == 0);
+    CHECK(slurp(dir.path / "case.schema.json") == schema);
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir.path)) names.insert(entry.path().filename().string());
+    CHECK(names == std::set<std::string>{"case.schema.json", "case.toml", "link.json"});
+}
+
+TEST_CASE("Under mpirun -n 2 the commands that run in one process refuse, the earlier result stays (issue 33, 4)",
+          "[app][output_safety][issue33][mpi]") {
+    TempDir dir("safety");
+    dir.write("batch.toml", renamed(kTinyCase, "name = \"b\""));
+    struct Trial {
+        std::string args, folder;
+    };
+    for (const Trial& t : {Trial{"campbell '" + kCase12 + "' --model beam --no-plots", "campbell"},
+                           Trial{"response '" + kCase13 + "' --model beam --no-plots", "response"},
+                           Trial{"response '" + kCase13 + "' --model harmonic --no-plots", "response-h"},
+                           Trial{"winder '" + kCase11 + "' --no-plots", "winder"},
+                           Trial{"batch batch.toml --mesh coarse", "batch"}}) {
+        INFO(t.args);
+        // The earlier result, written by one process (the harmonic response: the beam's stands in).
+        const std::string first = t.folder == "response-h" ? "response '" + kCase13 + "' --model beam --no-plots" : t.args;
+        REQUIRE(run_coremodal(dir, first + " -o " + t.folder, "COREMODAL_PYTHON=/nonexistent").exit_code == 0);
+        const auto before = snapshot(dir.path / t.folder);
+        const Run r = run_coremodal(dir, t.args + " -o " + t.folder, kMpirun);
+        INFO("stdout: " << r.out << "\nstderr: " << r.err);
+        CHECK(r.exit_code != 0);
+        CHECK(contains(r.err, "runs in one process"));
+        CHECK(contains(r.err, "run it without mpirun"));
+        CHECK(snapshot(dir.path / t.folder) == before);
+        CHECK_FALSE(fs::exists(dir.path / (t.folder + ".previous")));
+    }
+}
+
+TEST_CASE("Two runs into one --output: the second is refused naming the first, whose result survives (issue 33, 5)",
+          "[app][output_safety][issue33]") {
+    TempDir dir("safety");
+    dir.write("tiny.toml", kTinyCase);
+    REQUIRE(run_coremodal(dir, "run tiny.toml -o out -q --no-plots").exit_code == 0);
+    const auto earlier = snapshot(dir.path / "out");
+    // The first run holds the folder while it writes (the sleeping python keeps it there).
+    Started first = start_coremodal(dir, "run tiny.toml -o out -q", sleeping_python(dir));
+    REQUIRE(wait_until([&] { return !sleeping_pythons(dir).empty(); }, 120));
+    TempDir other("safety");
+    other.write("tiny.toml", kTinyCase);
+    const std::string out = (dir.path / "out").string();
+    for (const std::string command : {"run tiny.toml", "run tiny.toml --force", "converge tiny.toml"}) {
+        const Run second = run_coremodal(other, command + " -o '" + out + "' -q --no-plots");
+        INFO(command << "\nstderr: " << second.err);
+        CHECK(second.exit_code == 1);
+        CHECK(contains(second.err, "is being written by another coremodal run (pid " + std::to_string(first.pid) +
+                                       " on "));
+        CHECK(contains(second.err, "run tiny.toml -o out -q"));
+        CHECK(contains(second.err, "wait until it has finished, or choose another folder"));
+    }
+    CHECK(snapshot(dir.path / "out") == earlier);
+    // A run killed while holding the lock does not block the next (the kernel released it).
+    ::kill(-first.pid, SIGKILL);
+    REQUIRE(finish_coremodal(dir, first, 20));
+    const Run next = run_coremodal(dir, "run tiny.toml -o out -q --no-plots");
+    INFO("stderr: " << next.err);
+    CHECK(next.exit_code == 0);
+    CHECK(fs::exists(dir.path / "out" / "summary.json"));
+    CHECK(snapshot(dir.path / "out.previous") == earlier);
+    CHECK_FALSE(fs::exists(dir.path / "out.lock"));  // the next run took it over and removed it
 }

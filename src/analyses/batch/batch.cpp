@@ -184,9 +184,6 @@ std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs
 
 std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) {
     const auto files = batch_case_files(o.inputs);
-    // OUT is written in place, so that finished cases can be read while
-    // the others run: an earlier batch there moves to OUT.previous first.
-    start_folder_in_place(o.output_dir, o.force);
 
     // One result folder per case, named by the file stem; a stem seen before
     // (the same name in two folders) gets -2, -3, ...
@@ -202,6 +199,17 @@ std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) 
         c.log_file = (fs::path(o.output_dir) / (c.name + ".log")).string();
         cases.push_back(std::move(c));
     }
+    // OUT is written in place, so that finished cases can be read while
+    // the others run: an earlier batch there moves to OUT.previous first.
+    // Its marker lists what the batch writes into it (the cases' folders
+    // with all in them, their logs, the tables): anything else found there
+    // later is the user's, and keeps the folder from being replaced.
+    std::vector<std::string> contents = {"batch.csv", "batch.md"};
+    for (const BatchCase& c : cases) {
+        contents.push_back(c.name + "/");
+        contents.push_back(c.name + ".log");
+    }
+    start_folder_in_place(o.output_dir, o.force, contents);
 
     unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
     jobs = std::min<unsigned>(jobs, static_cast<unsigned>(cases.size()));

@@ -143,7 +143,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     print_warnings(scene.warnings);
     const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
                                                    : std::filesystem::path("results") / (scene.name + "-converge");
-    if (o.write_results) prepare_output(out, o.force);
+    if (o.write_results) claim_output(out, o.force);
     ConvergeStudy study;
     study.load_start = load_average();
     study.n_cores = static_cast<int>(std::thread::hardware_concurrency());

@@ -3,6 +3,7 @@
 // user's files and folders, the working and home folders and their parents,
 // and sweeps the partial folders of processes that no longer run.
 #include "output/results_folder.hpp"
+#include "output/text_file.hpp"
 
 #include "common/error.hpp"
 #include "support/program_run.hpp"
@@ -250,4 +251,98 @@ TEST_CASE("start_folder_in_place: a batch folder with the marker, the older one 
     fs::create_directories(dir.path / "mine");
     write(dir.path / "mine" / "notes.txt", "mine");
     CHECK_THROWS_WITH(start_folder_in_place(dir.path / "mine", true), Catch::Contains("was not written by coremodal"));
+}
+
+// ---- issue 33 ---------------------------------------------------------------
+
+TEST_CASE("A result's marker lists what coremodal wrote; anything else there keeps it from being replaced",
+          "[output][results_folder][issue33]") {
+    TempDir dir("rf");
+    const fs::path out = dir.path / "out";
+    {
+        ResultsFolder folder(out, false);
+        write(folder.file("summary.json"), "{}");
+        fs::create_directories(folder.dir() / "shapes");
+        write(folder.dir() / "shapes" / "mode_01.csv", "1");
+        folder.commit();
+    }
+    const std::string marker = slurp(out / kResultsMarker);
+    CHECK(marker.find("\ncontents\nwrote shapes\nwrote shapes/mode_01.csv\nwrote summary.json\n") !=
+          std::string::npos);
+    CHECK(refusal(out) == "");
+    SECTION("a user's file, also deep inside and with --force") {
+        write(out / "shapes" / "notes.txt", "mine");
+        for (bool force : {false, true})
+            CHECK(refusal(out, force).find("holds what coremodal did not write into it: 'shapes/notes.txt'") !=
+                  std::string::npos);
+    }
+    SECTION("another results folder inside it, written by a run of its own") {
+        {
+            ResultsFolder inner(out / "inner", false);
+            write(inner.file("summary.json"), "{}");
+            inner.commit();
+        }
+        CHECK(refusal(out, true).find("'inner/' (a results folder of its own)") != std::string::npos);
+        CHECK(refusal(out / "inner") == "");  // the inner one is replaceable itself
+    }
+    SECTION("as the .previous a new result would be rotated over") {
+        fake_result(dir.path / "new", "{}");
+        write(out / "mine.txt", "x");
+        fs::rename(out, previous_path(dir.path / "new"));
+        CHECK(refusal(dir.path / "new").find("which holds what coremodal did not write into it: 'mine.txt'") !=
+              std::string::npos);
+        CHECK(refusal(dir.path / "new", true) == "");  // --force keeps no .previous
+    }
+    SECTION("an earlier version's marker (no list): only nested results folders count") {
+        fake_result(dir.path / "old", "{}");
+        write(dir.path / "old" / "extra.csv", "1");
+        CHECK(refusal(dir.path / "old") == "");
+        fake_result(dir.path / "old" / "nested", "{}");
+        CHECK(refusal(dir.path / "old").find("'nested/' (a results folder of its own)") != std::string::npos);
+    }
+    CHECK(fs::exists(out));
+}
+
+TEST_CASE("A batch folder's marker lists its cases: their folders, logs and leftovers are coremodal's",
+          "[output][results_folder][issue33]") {
+    TempDir dir("rf");
+    const fs::path out = dir.path / "batch";
+    start_folder_in_place(out, false, {"a/", "a.log", "batch.csv"});
+    fake_result(out / "a", "{}");  // the case's own run wrote it
+    write(out / "a" / "anything", "x");
+    write(out / "a.log", "log");
+    fake_result(out / "a.partial-999999", "{}");  // a killed case's partial folder
+    write(out / "batch.csv", "table");
+    CHECK(refusal(out) == "");
+    fake_result(out / "b", "{}");
+    CHECK(refusal(out).find("'b/' (a results folder of its own)") != std::string::npos);
+}
+
+TEST_CASE("claim_output takes the output's lock once per process and says who holds it",
+          "[output][results_folder][issue33]") {
+    TempDir dir("rf");
+    const fs::path out = dir.path / "deeper" / "out";
+    claim_output(out, false);
+    claim_output(out, false);  // this process holds it: a check only
+    const std::string lock = slurp(dir.path / "deeper" / "out.lock");
+    CHECK(lock.find("pid " + std::to_string(::getpid()) + "\nhost " + this_host() + "\nstarted ") == 0);
+    // A ResultsFolder of the claimed output does not release the claim.
+    {
+        ResultsFolder folder(out, false);
+        folder.commit();
+    }
+    CHECK(fs::exists(dir.path / "deeper" / "out.lock"));
+    // One it took itself it releases, lock file and all.
+    {
+        ResultsFolder folder(dir.path / "other", false);
+        CHECK(fs::exists(dir.path / "other.lock"));
+    }
+    CHECK_FALSE(fs::exists(dir.path / "other.lock"));
+}
+
+TEST_CASE("A text file that cannot be written whole is an error, not 0 bytes (issue 33, 6)",
+          "[output][results_folder][issue33]") {
+    // /dev/full takes the open and fails every write with ENOSPC, as a full disk does.
+    CHECK_THROWS_WITH(write_text_file("/dev/full", "batch table\n"),
+                      Catch::Contains("cannot write /dev/full (No space left on device)"));
 }
