@@ -92,7 +92,7 @@ def draw(folder: Path) -> Path:
     bottom.set_ylabel("effective friction f_e [-]")
     bottom.set_xlabel("web speed V_w [m/s]")
     top.set_title(f"{summary['case']['name']}: web-to-roller traction (Rice & Gans), "
-                  f"h_eff = {1e6 * summary['clearance']['effective_clearance_m']:.3g} µm")
+                  f"h_eff = {1e6 * summary['clearance']['effective_clearance_m']:.4g} µm")
     top.legend(fontsize=8, loc="upper right")
     bottom.legend(fontsize=8, loc="upper right")
     out = folder / "traction.png"

@@ -24,7 +24,7 @@ std::string num(double v) {
 }
 std::string num(const std::optional<double>& v) { return v ? num(*v) : ""; }
 
-std::string um(double m) { return significant(m * 1e6, 3) + " µm"; }
+std::string um(double m) { return significant(m * 1e6, 4) + " µm"; }
 std::string speed(double v) { return std::isfinite(v) ? significant(v, 3) + " m/s" : "none (a massless web)"; }
 std::string deg(double rad) { return significant(rad * 180.0 / std::numbers::pi, 4) + "°"; }
 bool grooved(const TractionSpec& s) { return s.grooves.shape != GrooveShape::none; }
@@ -328,7 +328,8 @@ std::string traction_check_text(const TractionCase& tc) {
 std::string traction_console_summary(const TractionCase& tc, const TractionSweep& s) {
     std::ostringstream out;
     const TractionSpec& spec = tc.spec;
-    out << "traction: " << groove_shape_name(spec.grooves.shape) << " roller R " << significant(spec.roller_radius * 1e3, 4)
+    out << "traction: " << (grooved(spec) ? groove_shape_name(spec.grooves.shape) + std::string("-grooved") : "plain")
+        << " roller R " << significant(spec.roller_radius * 1e3, 4)
         << " mm, wrap " << deg(spec.wrap) << ", T_0 " << significant(spec.tension, 4) << " N/m, f "
         << significant(spec.friction, 3) << "; h_eff " << um(s.clearance.clearance) << "\n";
     out << "  zero-traction speed " << speed(s.zero_traction_speed);

@@ -189,7 +189,7 @@ TractionCase read_document(const toml::table& root, const std::string& path) {
     if (!out.speeds_given) {
         spec->web_speeds = default_speeds(*spec);
         out.assumptions.push_back("[traction] web_speeds: " + std::to_string(kDefaultSpeedPoints) +
-                                  " speeds from 0 to " + format_quantity(spec->web_speeds.back(), Dimension::speed) +
+                                  " speeds from 0 to " + significant(spec->web_speeds.back(), 3) + " m/s" +
                                   " (the file gives none: 0 to 1.25 x the zero-traction speed)");
     }
     out.spec = std::move(*spec);
