@@ -5,7 +5,8 @@
 ``python3 -m coremodal paraview RESULTS_DIR ...`` (ParaView's pvpython) and
 ``python3 -m coremodal winder-plot WINDER_FOLDER`` and
 ``python3 -m coremodal campbell-plot CAMPBELL_FOLDER`` and
-``python3 -m coremodal response-plot RESPONSE_FOLDER``.
+``python3 -m coremodal response-plot RESPONSE_FOLDER`` and
+``python3 -m coremodal traction-plot TRACTION_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -16,6 +17,7 @@
     python3 -m coremodal winder-plot results/11-two-drum-winder-winder  # crossing_diagram.png, response.png
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
     python3 -m coremodal response-plot results/13-rest-roll-response-response  # response.png
+    python3 -m coremodal traction-plot results/16-grooved-idler-traction-traction  # traction.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -93,6 +95,9 @@ def _parser() -> argparse.ArgumentParser:
     campbell = commands.add_parser(
         "campbell-plot", help="draw campbell.png of a `coremodal campbell` folder")
     campbell.add_argument("folder", type=Path, help="results folder of coremodal campbell")
+    traction = commands.add_parser(
+        "traction-plot", help="draw traction.png of a `coremodal traction` folder")
+    traction.add_argument("folder", type=Path, help="results folder of coremodal traction")
     response = commands.add_parser(
         "response-plot", help="draw response.png of a `coremodal response` folder")
     response.add_argument("folder", type=Path, help="results folder of coremodal response")
@@ -122,6 +127,13 @@ def _response_plot(folder: Path) -> int:
 
     return _drawn(lambda: [response_plot.draw(folder)],
                   (response_plot.ResponseFormatError, KeyError, ValueError, OSError))
+
+
+def _traction_plot(folder: Path) -> int:
+    from . import traction_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: [traction_plot.draw(folder)],
+                  (traction_plot.TractionFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -193,6 +205,8 @@ def main(argv: list[str] | None = None) -> int:
         return _campbell_plot(args.folder)
     if args.command == "response-plot":
         return _response_plot(args.folder)
+    if args.command == "traction-plot":
+        return _traction_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

@@ -11,7 +11,9 @@
 #include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
+#include "output/traction_report.hpp"
 #include "output/winder_report.hpp"
+#include "scene/traction_case.hpp"
 #include "winder/winder_scene.hpp"
 
 #include <iostream>
@@ -44,8 +46,21 @@ int check_winder(const CheckOptions& options) {
     return 0;
 }
 
+// A file for `coremodal traction` alone (docs/traction.md): its [traction] only.
+int check_traction(const CheckOptions& options, const TractionCase& tc) {
+    print_warnings(tc.warnings);
+    std::cout << options.case_file << ": valid traction file \"" << tc.name << "\"\n\n"
+              << "model: Rice & Gans' web-to-roller traction (closed forms; --model and --mesh do not apply); run it "
+                 "with `coremodal traction`\n\n"
+              << "resolved roller and web (SI units):\n"
+              << traction_check_text(tc);
+    return 0;
+}
+
 int check_case(const CheckOptions& options) {
     if (is_winder_file(options.case_file)) return check_winder(options);
+    const std::optional<TractionCase> traction = read_traction_case(options.case_file);
+    if (traction && !traction->has_roll) return check_traction(options, *traction);
     // The same reading as run_case's step 1, so that the same errors come out.
     Scene scene = parse_case_file(options.case_file);
     print_warnings(scene.warnings);  // on stderr, as `run` says them
@@ -70,6 +85,9 @@ int check_case(const CheckOptions& options) {
               << describe_assumptions(scene);
     if (const std::optional<ResponseSetup> response = parse_response_case(options.case_file).response)
         std::cout << "\nforced response (docs/response.md):\n" << describe_response(*response);
+    if (traction)
+        std::cout << "\nweb-to-roller traction ([traction], docs/traction.md; `coremodal traction` runs it):\n"
+                  << traction_check_text(*traction);
     return 0;
 }
 

@@ -69,5 +69,6 @@ Command add_fit_command(CLI::App& app);          // app/fit_command.cpp
 Command add_check_command(CLI::App& app);  // app/check_command.cpp
 Command add_winder_command(CLI::App& app);  // app/winder_command.cpp
 Command add_schema_command(CLI::App& app);  // app/schema_command.cpp
+Command add_traction_command(CLI::App& app);  // app/traction_command.cpp
 
 }  // namespace coremodal

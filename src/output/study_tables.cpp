@@ -31,6 +31,7 @@ std::string unit_suffix(const SweepParameter& p) {
         case Dimension::rotational_stiffness: return "_N_m_rad";
         case Dimension::unbalance: return "_kg_m";
         case Dimension::line_force: return "_N_m";
+        case Dimension::viscosity: return "_Pa_s";
         case Dimension::dimensionless: return "";
     }
     return "";

@@ -40,6 +40,8 @@ Scene CaseReader::read(const toml::table& root) {
     scene.mesh = read_mesh(top, scene);
     read_rotation(top, scene);  // checked with every key; parse_rotating_case keeps it
     read_response_setup(top, scene);  // likewise; parse_response_case keeps it
+    std::vector<std::string> traction_assumptions;  // `coremodal traction` echoes them; run does not
+    read_traction(top, traction_assumptions);       // checked; scene/traction_case.hpp keeps it
     scene.warnings = warnings_;
     return scene;
 }

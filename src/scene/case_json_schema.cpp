@@ -277,6 +277,7 @@ constexpr TableTitle kTables[] = {
     {"modes", "[damping] modes: the relative damping of single modes at rest, { mode = 1, ratio = 0.02 }"},
     {"excitation", "[excitation]: what excites the spinning roll (docs/response.md)"},
     {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
+    {"traction", "[traction]: web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/traction.md)"},
 };
 
 }  // namespace
@@ -296,6 +297,10 @@ std::string case_json_schema() {
         COREMODAL_ASSERT(spec.table.empty() || described.contains(spec.table));
 
     toml::table schema = table_schema("", "");
+    // [core] is required, except in a file for `coremodal traction` alone,
+    // which needs only [traction] (docs/traction.md).
+    schema.insert_or_assign("anyOf", toml::array{toml::table{{"required", toml::array{"core"}}},
+                                                 toml::table{{"required", toml::array{"traction"}}}});
     schema.insert_or_assign("$schema", kJsonSchemaDraft);
     schema.insert_or_assign("title", "coremodal case file");
     schema.insert_or_assign("description",

@@ -7,6 +7,7 @@
 //   case_reader_rotation.cpp  [rotation]
 //   case_reader_response.cpp  [damping], [excitation], [response]
 //   case_reader_damping.cpp   [damping]: the base ratio or Rayleigh, families, single modes
+//   case_reader_traction.cpp  [traction]: one roller under the web (Rice & Gans)
 // Private to scene/: everything else reads a case through case_file.hpp.
 #pragma once
 
@@ -18,6 +19,7 @@
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 #include "scene/units.hpp"
+#include "traction/traction_model.hpp"
 
 #include <toml++/toml.h>
 
@@ -90,6 +92,12 @@ public:
     std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
     // [damping], [excitation] and [response] of the same document (checked by read too).
     std::optional<ResponseSetup> response(const toml::table& root, const Scene& scene) const;
+    // [traction] of the same document (checked by read too). `assumptions`
+    // gets the defaults it used; the plausibility warnings go to warnings().
+    std::optional<TractionSpec> traction(const toml::table& root, std::vector<std::string>& assumptions) const;
+    // The top level's keys checked against the schema (a file without [core]).
+    void check_top_level(const toml::table& root) const;
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
 private:
     std::string path_;
@@ -240,6 +248,12 @@ private:
     std::vector<double> read_speed_list(const Section& rotation, std::string_view key, Dimension d) const;
 
     std::vector<int> read_excitation_orders(const Section& rotation) const;
+
+    // ---- [traction] -----------------------------------------------------
+
+    std::optional<TractionSpec> read_traction(const Section& top, std::vector<std::string>& assumptions) const;
+    Grooves read_grooves(const Section& traction) const;
+    void check_traction(const Section& traction, const TractionSpec& spec) const;
 
     // ---- [damping], [excitation], [response] ----------------------------
 

@@ -53,6 +53,22 @@ constexpr PlausibleRange kPlausibleWebTension{5.0, 20e3, 300.0, "running web ten
 constexpr PlausibleRange kPlausibleWebSpan{0.02, 20.0, 1.0, "roll surface to the first guide roller: ~0.1-5 m"};
 constexpr PlausibleRange kPlausibleWebThickness{10e-6, 3e-3, 80e-6, "papers and boards are ~30 um to ~1 mm thick"};
 constexpr PlausibleRange kPlausibleWebModulus{0.2e9, 30e9, 5e9, "paper's in-plane moduli are ~2-10 GPa (Niskanen, Paper Physics)"};
+// [traction] (docs/traction.md): Rice & Gans' rollers are 50 mm in radius,
+// their grooves 36-43 um deep and 254 um apart (3937 per metre), their
+// asperity engagement heights 0.4-26 um, their friction 0.13-0.55 (Tables 1-3
+// of "A simple model to predict web-to-roller traction"); idler rollers of
+// presses are ~25-300 mm in radius. Air's viscosity is 1.7-2.0e-5 Pa s from
+// 0 to 100 C (1.81e-5 at room temperature, their Table 3).
+constexpr PlausibleRange kPlausibleRollerRadius{5e-3, 1.0, 0.05, "web-handling rollers are ~25-300 mm in radius"};
+constexpr PlausibleRange kPlausibleGrooveSize{5e-6, 10e-3, 200e-6,
+                                              "roller grooves are tens of um to a few mm (Rice & Gans: 36-254 um)"};
+constexpr PlausibleRange kPlausibleRoughness{0.0, 200e-6, 5e-6,
+                                             "asperity engagement heights are ~0.4-26 um (Rice & Gans, Tables 1-2)"};
+constexpr PlausibleRange kPlausibleFriction{0.05, 1.5, 0.3, "web on roller: 0.13-0.55 (Rice & Gans, Table 3)"};
+constexpr PlausibleRange kPlausibleViscosity{1e-5, 3e-5, 1.81e-5,
+                                             "air: 1.7-2.0e-5 Pa*s from 0 to 100 C (Rice & Gans, Table 3: 1.81e-5)"};
+constexpr PlausibleRange kPlausibleWebDensity{100.0, 3000.0, 1000.0,
+                                              "papers ~500-1200 kg/m^3, PET films 1358 kg/m^3 (Rice & Gans, Table 1)"};
 constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (Ilomäki, with I-5; docs/references.md)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
@@ -121,6 +137,8 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "damping", ValueKind::table),
         plain_key("", "excitation", ValueKind::table),
         plain_key("", "response", ValueKind::table),
+        // Read by `coremodal traction` (docs/traction.md); other commands check it and ignore it.
+        plain_key("", "traction", ValueKind::table),
 
         length_key("core", "inner_diameter", kMaxDiameter, kPlausibleDiameter),
         length_key("core", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
@@ -210,6 +228,30 @@ const std::vector<KeySpec>& case_schema() {
         {"web", "thickness", ValueKind::quantity, Dimension::length, 0.0, 0.1, true, kPlausibleWebThickness},
         {"web", "modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
         {"web", "shear_modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
+
+        // [traction]: web-to-roller traction on one roller (Rice & Gans; docs/traction.md).
+        length_key("traction", "roller_radius", kMaxDiameter, kPlausibleRollerRadius),
+        {"traction", "wrap", ValueKind::quantity, Dimension::angle, 0.0, 2 * M_PI, true},
+        {"traction", "tension", ValueKind::quantity, Dimension::line_force, 0.0, 1e6, true, kPlausibleWebTension},
+        {"traction", "friction", ValueKind::quantity, Dimension::dimensionless, 0.0, 10.0, true, kPlausibleFriction},
+        {"traction", "roller_roughness", ValueKind::quantity, Dimension::length, 0.0, 0.01, false, kPlausibleRoughness},
+        {"traction", "web_roughness", ValueKind::quantity, Dimension::length, 0.0, 0.01, false, kPlausibleRoughness},
+        plain_key("traction", "grooves", ValueKind::text),
+        length_key("traction", "groove_depth", 0.1, kPlausibleGrooveSize),
+        length_key("traction", "groove_width", 0.1, kPlausibleGrooveSize),
+        length_key("traction", "groove_pitch", 0.1, kPlausibleGrooveSize),
+        length_key("traction", "tool_radius", 0.1, kPlausibleGrooveSize),
+        {"traction", "air_viscosity", ValueKind::quantity, Dimension::viscosity, 0.0, 1.0, true, kPlausibleViscosity},
+        {"traction", "web_thickness", ValueKind::quantity, Dimension::length, 0.0, 0.1, true, kPlausibleWebThickness},
+        {"traction", "web_density", ValueKind::quantity, Dimension::density, 0.0, kMaxDensity, true,
+         kPlausibleWebDensity},
+        {"traction", "web_modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true,
+         kPlausibleWebModulus},
+        {"traction", "web_poisson", ValueKind::quantity, Dimension::dimensionless, 0.0, 0.5, false},
+        {"traction", "tension_difference", ValueKind::quantity, Dimension::line_force, 0.0, 1e6, false},
+        {"traction", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed},
+        plain_key("traction", "web_speeds", ValueKind::list),
+        integer_key("traction", "points", 2, kMaxResponsePoints),
 
         // [damping], [excitation], [response]: the forced response (docs/response.md).
         {"damping", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},

@@ -98,6 +98,13 @@ constexpr std::array kUnits = {
     UnitSpec{"kgmm", Dimension::unbalance, 1.0, false, 1e3},
     UnitSpec{"gmm", Dimension::unbalance, 1.0, false, 1e6},
 
+    // Dynamic viscosity (air: 1.81e-5 Pa*s at room temperature, Rice & Gans' Table 3).
+    UnitSpec{"Pa*s", Dimension::viscosity, 1.0, true},
+    UnitSpec{"mPa*s", Dimension::viscosity, 1.0, true, 1e3},
+    UnitSpec{"uPa*s", Dimension::viscosity, 1.0, true, 1e6},
+    UnitSpec{"N*s/m^2", Dimension::viscosity, 1.0, false},
+    UnitSpec{"cP", Dimension::viscosity, 1.0, false, 1e3},
+
     UnitSpec{"N*m/rad", Dimension::rotational_stiffness, 1.0, true},
     UnitSpec{"kN*m/rad", Dimension::rotational_stiffness, 1e3, true},
     UnitSpec{"MN*m/rad", Dimension::rotational_stiffness, 1e6, true},
@@ -210,6 +217,8 @@ const char* dimension_name(Dimension d) {
             return "unbalance (mass times eccentricity)";
         case Dimension::line_force:
             return "force per unit width";
+        case Dimension::viscosity:
+            return "viscosity";
     }
     return "quantity";
 }
@@ -242,6 +251,8 @@ const char* si_unit(Dimension d) {
             return "kg*m";
         case Dimension::line_force:
             return "N/m";
+        case Dimension::viscosity:
+            return "Pa*s";
     }
     return "";
 }

@@ -13,7 +13,8 @@ enum class Dimension { length, pressure, density, frequency, dimensionless,
                        stiffness_per_area, angle, speed, mass,
                        stiffness, rotational_stiffness,
                        unbalance,     // kg m: a mass times its distance from the axis
-                       line_force };  // N/m: a force per unit length or width (a web's tension)
+                       line_force,    // N/m: a force per unit length or width (a web's tension)
+                       viscosity };   // Pa s: dynamic viscosity (the air dragged under a web)
 
 const char* dimension_name(Dimension d);  // "length", "pressure (modulus)", ...
 const char* si_unit(Dimension d);         // "m", "Pa", "kg/m^3", ...
