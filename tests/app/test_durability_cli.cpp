@@ -63,3 +63,31 @@ TEST_CASE("coremodal durability refuses bad data and options and writes nothing"
     CHECK(r.exit_code == 1);
     CHECK(slurp(dir.path / "mine" / "notes.txt") == "keep");
 }
+
+TEST_CASE("coremodal select writes the chart, the table per stand and the reels' verdicts", "[app][select]") {
+    TempDir dir("select");
+    const Run r = run_coremodal(dir, "select " COREMODAL_SOURCE_DIR "/cases/16-core-selection.toml --output out");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("select: default [selection.stand rotogravure] li = 100 mm (assumed") != std::string::npos);
+    CHECK(r.out.find("select: stand news: 110 mm chucks (k = 0.85), two-drum winder, 15 m/s") != std::string::npos);
+    CHECK(r.out.find("select: reel 1 (news, 1.6 m x 1000 mm, 15 m/s): passes A, B; lightest A; cheapest A") !=
+          std::string::npos);
+    for (const char* f : {"selection.csv", "reels.csv", "summary.json", "report.md", "selection_chart.png"})
+        CHECK(written(dir.path / "out" / f));
+    const std::string table = slurp(dir.path / "out" / "selection.csv");
+    CHECK(table.find("\nrotogravure,C,") != std::string::npos);
+    CHECK(table.find("\nnews,C,") == std::string::npos);  // the news stand's chucks take A and B only
+}
+
+TEST_CASE("coremodal select refuses a bad file with its place and writes nothing", "[app][select]") {
+    TempDir dir("select_bad");
+    dir.write("bad.toml", "[selection]\npaper_density = \"750 kg/m^3\"\nrest_paper_modulus = \"5 GPa\"\n"
+                          "rest_paper_density = 1350\n[[selection.core]]\nname = \"A\"\ninner_diameter = \"76 mm\"\n"
+                          "outer_diameter = \"70 mm\"\n");
+    const Run r = run_coremodal(dir, "select bad.toml --output out --no-plots");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find("bad.toml:8:18: [selection.core A] outer_diameter = 70 mm must be larger than inner_diameter = "
+                     "76 mm") != std::string::npos);
+    CHECK(!fs::exists(dir.path / "out"));
+}
