@@ -16,6 +16,7 @@ packages=(build-essential cmake pkg-config
           petsc-dev slepc-dev libsuitesparse-dev libopenblas0-pthread
           libgmsh-dev gmsh libhdf5-openmpi-dev libeigen3-dev
           catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+          libboost-dev
           python3 python3-h5py python3-numpy python3-matplotlib python3-pytest
           python3-pil python3-pip python3-setuptools
           python3-jsonschema "$@")  # jsonschema: python/tests/test_case_schema.py

@@ -7,6 +7,8 @@
 ``python3 -m coremodal campbell-plot CAMPBELL_FOLDER`` and
 ``python3 -m coremodal response-plot RESPONSE_FOLDER`` and
 ``python3 -m coremodal traction-plot TRACTION_FOLDER``.
+``python3 -m coremodal durability-plot DURABILITY_FOLDER`` and
+``python3 -m coremodal selection-plot SELECT_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -18,6 +20,8 @@
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
     python3 -m coremodal response-plot results/13-rest-roll-response-response  # response.png
     python3 -m coremodal traction-plot results/16-grooved-idler-traction-traction  # traction.png
+    python3 -m coremodal durability-plot results/16-core-B-durability  # durability.png
+    python3 -m coremodal selection-plot results/16-core-selection-select  # selection_chart.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -101,6 +105,12 @@ def _parser() -> argparse.ArgumentParser:
     response = commands.add_parser(
         "response-plot", help="draw response.png of a `coremodal response` folder")
     response.add_argument("folder", type=Path, help="results folder of coremodal response")
+    durability = commands.add_parser(
+        "durability-plot", help="draw durability.png of a `coremodal durability` folder")
+    durability.add_argument("folder", type=Path, help="results folder of coremodal durability")
+    selection = commands.add_parser(
+        "selection-plot", help="draw selection_chart.png of a `coremodal select` folder")
+    selection.add_argument("folder", type=Path, help="results folder of coremodal select")
     return parser
 
 
@@ -165,6 +175,20 @@ def _winder_plot(folder: Path) -> int:
                   (winder_plot.WinderFormatError, KeyError, ValueError, OSError))
 
 
+def _durability_plot(folder: Path) -> int:
+    from . import durability_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: durability_plot.draw_all(folder),
+                  (durability_plot.DurabilityFormatError, KeyError, ValueError, OSError, StopIteration))
+
+
+def _selection_plot(folder: Path) -> int:
+    from . import selection_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: selection_plot.draw_all(folder),
+                  (selection_plot.SelectionFormatError, KeyError, ValueError, OSError))
+
+
 def _run_plot(args: argparse.Namespace) -> int:
     from . import run_plot  # matplotlib only when drawing
 
@@ -207,6 +231,10 @@ def main(argv: list[str] | None = None) -> int:
         return _response_plot(args.folder)
     if args.command == "traction-plot":
         return _traction_plot(args.folder)
+    if args.command == "durability-plot":
+        return _durability_plot(args.folder)
+    if args.command == "selection-plot":
+        return _selection_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

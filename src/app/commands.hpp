@@ -70,5 +70,7 @@ Command add_check_command(CLI::App& app);  // app/check_command.cpp
 Command add_winder_command(CLI::App& app);  // app/winder_command.cpp
 Command add_schema_command(CLI::App& app);  // app/schema_command.cpp
 Command add_traction_command(CLI::App& app);  // app/traction_command.cpp
+Command add_durability_command(CLI::App& app);  // app/durability_command.cpp
+Command add_select_command(CLI::App& app);      // app/select_command.cpp
 
 }  // namespace coremodal

@@ -50,12 +50,13 @@ std::string program_name(const std::string& program) {
 }
 
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
-    const bool winder = is_winder_file(c.file);
-    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : "run", c.file, "--output",
-                                     c.result_dir, "--quiet"};
+    const bool winder = is_winder_file(c.file), selection = is_selection_file(c.file);
+    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : selection ? "select" : "run",
+                                     c.file, "--output", c.result_dir, "--quiet"};
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
+    if (selection) c.note = "a core selection (coremodal select): its chart and verdicts are in its report.md";
     if (o.mesh_level) {
-        if (winder)
+        if (winder || selection)
             c.note += "; a beam model: --mesh " + *o.mesh_level + " not applied";
         else if (case_has_mesh_file(c.file))
             c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
@@ -158,6 +159,10 @@ bool case_has_mesh_file(const std::string& case_file) {
 }
 
 bool is_winder_file(const std::string& case_file) { return case_table_or_empty(case_file).contains("winder"); }
+
+bool is_selection_file(const std::string& case_file) {
+    return case_table_or_empty(case_file).contains("selection");
+}
 
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {
     std::vector<std::string> files;

@@ -56,6 +56,9 @@ bool case_has_mesh_file(const std::string& case_file);
 // Whether a case file describes a two-drum winder ([winder], docs/winder.md):
 // batch runs it with `coremodal winder` rather than `coremodal run`.
 bool is_winder_file(const std::string& case_file);
+// Whether a file is a core-selection file ([selection], docs/durability.md):
+// batch runs it with `coremodal select`.
+bool is_selection_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.

@@ -1,0 +1,232 @@
+// The tables, summary.json, report.md and console lines of `coremodal select`.
+#include "output/selection_report.hpp"
+
+#include "common/format.hpp"
+#include "output/csv.hpp"
+#include "output/text_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+constexpr int kSelectionSchemaVersion = 1;
+constexpr const char* kPaper = "M. Ilomäki, \"On the durability of cores and rest roll dynamics\"";
+
+std::string g(double v, int digits = 5) { return significant(v, digits); }
+std::string width_text(double w) { return w >= kMaxSelectionWidth ? ">= " + g(kMaxSelectionWidth) : g(w, 4); }
+std::string yes_no(bool b) { return b ? "yes" : "no"; }
+
+// kg of reel per metre of width at the chart's diameter.
+double reel_mass_per_width(const SelectionScene& s, const Stand& st, const CoreGrade& c) {
+    return paper_roll_mass(c, st.roll_diameter, 1.0, s.paper_density);
+}
+
+std::string selection_csv(const SelectionScene& s, const SelectionResult& r) {
+    std::ostringstream out;
+    out << "stand,core,test_chuck_weight_kN,chuck_scale,winder_factor,max_roll_weight_kN,max_roll_mass_kg,"
+           "speed_width_m,weight_width_m,max_width_m,governing,reel_mass_kg_per_m,core_mass_kg_per_m,price_per_m\n";
+    for (std::size_t i = 0; i < s.stands.size(); ++i)
+        for (std::size_t j = 0; j < s.cores.size(); ++j) {
+            const CoreInStand& c = r.table[i][j];
+            if (!c.fits) continue;
+            out << csv_field(s.stands[i].name) << "," << csv_field(s.cores[j].name) << ","
+                << g(c.weight.test_chuck_weight_n / 1e3, 6) << "," << g(c.weight.chuck_scale, 6) << ","
+                << g(c.weight.winder_factor, 6) << "," << g(c.weight.weight_n / 1e3, 6) << "," << g(c.max_mass_kg, 6)
+                << "," << g(c.speed_width_m, 6) << "," << g(c.weight_width_m, 6) << "," << g(c.max_width_m, 6) << ","
+                << c.governing << "," << g(reel_mass_per_width(s, s.stands[i], s.cores[j]), 6) << "," << g(c.core_mass_per_m, 6)
+                << "," << (s.cores[j].price_per_m ? g(*s.cores[j].price_per_m, 6) : "") << "\n";
+        }
+    return out.str();
+}
+
+std::string reels_csv(const SelectionScene& s, const SelectionResult& r) {
+    std::ostringstream out;
+    out << "reel,stand,width_m,diameter_m,web_speed_m_s,core,reel_mass_kg,max_roll_mass_kg,weight_ok,safe_speed_m_s,"
+           "speed_ok,passes\n";
+    for (std::size_t k = 0; k < s.reels.size(); ++k) {
+        const Reel& reel = s.reels[k];
+        const ReelCheck& c = r.reels[k];
+        for (std::size_t j = 0; j < s.cores.size(); ++j) {
+            const ReelVerdict& v = c.cores[j];
+            if (!v.fits) continue;
+            out << k + 1 << "," << csv_field(reel.stand) << "," << g(reel.width, 6) << "," << g(reel.diameter, 6) << ","
+                << g(c.web_speed, 6) << "," << csv_field(s.cores[j].name) << "," << g(v.mass_kg, 6) << ","
+                << g(r.table[c.stand][j].max_mass_kg, 6) << "," << yes_no(v.weight_ok) << ","
+                << g(v.safe_speed_m_s, 6) << "," << yes_no(v.speed_ok) << "," << yes_no(v.passes()) << "\n";
+        }
+    }
+    return out.str();
+}
+
+std::string summary_json(const SelectionScene& s, const SelectionResult& r) {
+    nlohmann::json stands = nlohmann::json::array();
+    for (std::size_t i = 0; i < s.stands.size(); ++i) {
+        const Stand& st = s.stands[i];
+        nlohmann::json cores = nlohmann::json::array();
+        for (std::size_t j = 0; j < s.cores.size(); ++j) {
+            const CoreInStand& c = r.table[i][j];
+            if (!c.fits) continue;
+            cores.push_back({{"core", s.cores[j].name},
+                             {"method", c.weight.method},
+                             {"test_chuck_weight_n", c.weight.test_chuck_weight_n},
+                             {"chuck_scale", c.weight.chuck_scale},
+                             {"winder_factor", c.weight.winder_factor},
+                             {"max_roll_weight_n", c.weight.weight_n},
+                             {"max_roll_mass_kg", c.max_mass_kg},
+                             {"speed_width_m", c.speed_width_m},
+                             {"weight_width_m", c.weight_width_m},
+                             {"max_width_m", c.max_width_m},
+                             {"governing", c.governing}});
+        }
+        stands.push_back({{"name", st.name},
+                          {"chuck_length_m", st.chuck_length},
+                          {"li_m", st.li},
+                          {"chuck_factor", st.chuck_factor},
+                          {"web_speed_m_s", st.web_speed},
+                          {"safe_factor", st.safe_factor},
+                          {"winder", st.winder},
+                          {"centre_winder_factor", st.centre_winder_factor},
+                          {"chuck_length_exponent", st.chuck_length_exponent},
+                          {"rest_roll_diameter_m", st.rest_roll_diameter},
+                          {"roll_diameter_m", st.roll_diameter},
+                          {"cores", cores}});
+    }
+    nlohmann::json reels = nlohmann::json::array();
+    for (std::size_t k = 0; k < s.reels.size(); ++k) {
+        const ReelCheck& c = r.reels[k];
+        nlohmann::json passing = nlohmann::json::array();
+        for (std::size_t j = 0; j < s.cores.size(); ++j)
+            if (c.cores[j].passes()) passing.push_back(s.cores[j].name);
+        reels.push_back({{"stand", s.reels[k].stand},
+                         {"width_m", s.reels[k].width},
+                         {"diameter_m", s.reels[k].diameter},
+                         {"web_speed_m_s", c.web_speed},
+                         {"passing_cores", passing},
+                         {"lightest", c.lightest ? nlohmann::json(s.cores[*c.lightest].name) : nlohmann::json()},
+                         {"cheapest", c.cheapest ? nlohmann::json(s.cores[*c.cheapest].name) : nlohmann::json()}});
+    }
+    nlohmann::json j = {{"schema_version", kSelectionSchemaVersion},
+                        {"command", "select"},
+                        {"source", kPaper},
+                        {"case", {{"name", s.name}, {"file", s.source}}},
+                        {"failure_probability", s.failure_probability},
+                        {"confidence", s.confidence},
+                        {"cycles", s.cycles},
+                        {"paper_density_kg_m3", s.paper_density},
+                        {"width_criterion", "I-5 safe speed with I-7 and the stand's chuck factor k"},
+                        {"defaults_used", s.defaults},
+                        {"stands", stands},
+                        {"reels", reels}};
+    return j.dump(2) + "\n";
+}
+
+}  // namespace
+
+void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r) {
+    write_text_file(dir / "selection.csv", selection_csv(scene, r));
+    write_text_file(dir / "reels.csv", reels_csv(scene, r));
+    write_text_file(dir / "summary.json", summary_json(scene, r));
+}
+
+std::vector<std::string> selection_console_lines(const SelectionScene& s, const SelectionResult& r) {
+    std::vector<std::string> lines;
+    for (std::size_t i = 0; i < s.stands.size(); ++i) {
+        const Stand& st = s.stands[i];
+        lines.push_back("stand " + st.name + ": " + g(st.chuck_length * 1e3, 4) + " mm chucks (k = " +
+                        g(st.chuck_factor, 3) + "), " + st.winder + " winder, " + g(st.web_speed, 4) +
+                        " m/s, safe factor " + g(st.safe_factor, 3) + ", rest roll " +
+                        g(st.rest_roll_diameter * 1e3, 4) + " mm");
+        for (std::size_t j = 0; j < s.cores.size(); ++j) {
+            const CoreInStand& c = r.table[i][j];
+            if (!c.fits) continue;
+            lines.push_back("  core " + s.cores[j].name + ": max roll " + g(c.max_mass_kg, 4) + " kg (" +
+                            g(c.weight.weight_n / 1e3, 4) + " kN), width for the speed " + width_text(c.speed_width_m) +
+                            " m, for the weight at " + g(st.roll_diameter * 1e3, 4) + " mm " +
+                            g(c.weight_width_m, 4) + " m: max reel width " + width_text(c.max_width_m) + " m (" +
+                            c.governing + ")");
+        }
+    }
+    for (std::size_t k = 0; k < s.reels.size(); ++k) {
+        const ReelCheck& c = r.reels[k];
+        std::string line = "reel " + std::to_string(k + 1) + " (" + s.reels[k].stand + ", " + g(s.reels[k].width, 4) +
+                           " m x " + g(s.reels[k].diameter * 1e3, 4) + " mm, " + g(c.web_speed, 4) + " m/s): ";
+        std::string passing;
+        for (std::size_t j = 0; j < s.cores.size(); ++j)
+            if (c.cores[j].passes()) passing += (passing.empty() ? "" : ", ") + s.cores[j].name;
+        line += passing.empty() ? "no core passes" : "passes " + passing;
+        if (c.lightest) line += "; lightest " + s.cores[*c.lightest].name;
+        if (c.cheapest) line += "; cheapest " + s.cores[*c.cheapest].name;
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+std::string selection_report_markdown(const SelectionScene& s, const SelectionResult& r,
+                                      const std::vector<std::string>& pngs, const std::string& plot_problem) {
+    std::ostringstream md;
+    md << "# Core selection: " << s.name << "\n\n"
+       << "Which core grade carries which reel in which stand, after " << kPaper
+       << " (durability {16}-{32}; the chart in the form of Figs. 18-19). docs/durability.md, \"Choosing a core\".\n\n"
+       << "- failure probability P = " << g(s.failure_probability) << ", confidence C = " << g(100 * s.confidence, 4)
+       << " %, " << g(s.cycles) << " winding-unwinding cycle(s)\n"
+       << "- reel weight from the stand's roll diameter, paper " << g(s.paper_density, 4)
+       << " kg/m^3 (core included)\n"
+       << "- width limit: the rest roll's first bending frequency (I-7, the stand's chuck factor k, free span = "
+          "width - 2 li) and I-5's safe speed safe · π · Dp · f1 against the web speed; I-5's safety factor keeps "
+          "the mid-span vibration within about ±5 mm\n"
+       << "- weight limit: the core's reduced durability curve at the test chuck, times (stand chuck / test "
+          "chuck)^exponent, times the winder factor\n";
+    if (!s.defaults.empty()) {
+        md << "\nDefaults used (not in the file):\n\n";
+        for (const std::string& d : s.defaults) md << "- `" << d << "`\n";
+    }
+    for (std::size_t i = 0; i < s.stands.size(); ++i) {
+        const Stand& st = s.stands[i];
+        md << "\n## Stand " << st.name << "\n\n"
+           << g(st.chuck_length * 1e3, 4) << " mm unwinder chucks (li = " << g(st.li * 1e3, 4) << " mm, k = "
+           << g(st.chuck_factor, 3) << "), " << st.winder << " winder (factor " << g(st.winder_factor(), 3)
+           << "), chuck-length exponent " << g(st.chuck_length_exponent, 3) << ", " << g(st.web_speed, 4)
+           << " m/s, safe factor " << g(st.safe_factor, 3) << ", rest roll " << g(st.rest_roll_diameter * 1e3, 4)
+           << " mm, reels of " << g(st.roll_diameter * 1e3, 4) << " mm.\n\n| core | weight at the test chuck [kN] | x chuck | x winder | max roll [kN] | max roll [kg] | "
+              "width for the speed [m] | width for the weight [m] | max reel width [m] | governed by | method |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for (std::size_t j = 0; j < s.cores.size(); ++j) {
+            const CoreInStand& c = r.table[i][j];
+            if (!c.fits) continue;
+            md << "| " << s.cores[j].name << " | " << g(c.weight.test_chuck_weight_n / 1e3, 4) << " | "
+               << g(c.weight.chuck_scale, 4) << " | " << g(c.weight.winder_factor, 3) << " | "
+               << g(c.weight.weight_n / 1e3, 4) << " | " << g(c.max_mass_kg, 4) << " | " << width_text(c.speed_width_m)
+               << " | " << g(c.weight_width_m, 4) << " | " << width_text(c.max_width_m) << " | " << c.governing
+               << " | " << c.weight.method << " |\n";
+        }
+    }
+    if (!s.reels.empty()) {
+        md << "\n## The reels asked\n\n| reel | stand | width [m] | diameter [mm] | speed [m/s] |";
+        for (const CoreGrade& c : s.cores) md << " " << c.name << " |";
+        md << " lightest | cheapest |\n|---|---|---|---|---|";
+        for (std::size_t j = 0; j < s.cores.size() + 2; ++j) md << "---|";
+        md << "\n";
+        for (std::size_t k = 0; k < s.reels.size(); ++k) {
+            const ReelCheck& c = r.reels[k];
+            md << "| " << k + 1 << " | " << s.reels[k].stand << " | " << g(s.reels[k].width, 4) << " | "
+               << g(s.reels[k].diameter * 1e3, 4) << " | " << g(c.web_speed, 4) << " |";
+            for (const ReelVerdict& v : c.cores)
+                if (!v.fits) md << " does not fit the chucks |";
+                else md << " " << (v.passes() ? "passes" : std::string("fails:") + (v.weight_ok ? "" : " weight") +
+                                                          (v.speed_ok ? "" : " speed"))
+                   << " (" << g(v.mass_kg, 4) << " kg) |";
+            md << " " << (c.lightest ? s.cores[*c.lightest].name : "-") << " | "
+               << (c.cheapest ? s.cores[*c.cheapest].name : "-") << " |\n";
+        }
+    }
+    md << "\n## Chart\n\n";
+    for (const std::string& p : pngs) md << "![" << p << "](" << p << ")\n";
+    if (pngs.empty()) md << "No picture: " << plot_problem << "\n";
+    md << "\nFiles: selection.csv, reels.csv, summary.json.\n";
+    return md.str();
+}
+
+}  // namespace coremodal

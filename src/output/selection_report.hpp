@@ -1,0 +1,24 @@
+// The results of `coremodal select` (docs/durability.md, "Choosing a core"):
+// selection.csv (per stand and core: the largest roll weight, the widths
+// the speed and the weight allow; what `python3 -m coremodal selection-plot`
+// draws), reels.csv (the verdict on each reel asked), summary.json and
+// report.md.
+#pragma once
+
+#include "selection/core_selection.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r);
+
+std::string selection_report_markdown(const SelectionScene& scene, const SelectionResult& r,
+                                      const std::vector<std::string>& pngs, const std::string& plot_problem);
+
+// The console lines: one per stand and core, one per reel.
+std::vector<std::string> selection_console_lines(const SelectionScene& scene, const SelectionResult& r);
+
+}  // namespace coremodal

@@ -1,0 +1,82 @@
+// Which core for which reel in which stand: each core grade's largest roll
+// weight (its durability curve at the failure probability asked, scaled
+// from the test chuck to the stand's chuck and by the winder), its largest
+// reel width at which the rest roll still meets the stand's speed and
+// amplitude limit, the chart of the two (the form of Figs. 18–19 of M.
+// Ilomäki, "On the durability of cores and rest roll dynamics") and the
+// verdict on each reel asked. docs/durability.md, "Choosing a core".
+#pragma once
+
+#include "selection/selection_scene.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace coremodal {
+
+// The largest roll weight a core carries in a stand.
+struct WeightLimit {
+    double test_chuck_weight_n = 0;  // the reduced durability curve at the cycles asked, N
+    double chuck_scale = 1;          // (stand chuck / test chuck)^exponent
+    double winder_factor = 1;        // 1 two-drum, 0.8 centre (default)
+    double weight_n = 0;             // the product
+    std::string method;              // "{28} with C = 99 %" or "{32} (fitted values, no confidence)"
+};
+WeightLimit core_weight_limit(const CoreGrade& core, const Stand& stand, const SelectionScene& scene);
+
+// The rest roll's verdict at one reel width: its first bending frequency
+// (I-7 with the stand's chuck factor k, free span = width - 2 li) and I-5's
+// safe speed safe · π · Dp · f1 against the web speed. This is the one place
+// a fuller verdict (the `limits` command's, or an FE f1) would come in.
+struct RestRollVerdict {
+    double f1_hz = 0;
+    double safe_speed_m_s = 0;
+    bool passes = false;
+};
+RestRollVerdict rest_roll_verdict(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double width,
+                                  double web_speed);
+
+// The largest reel width (m) at which rest_roll_verdict passes, by bisection
+// to kWidthTolerance; kMaxSelectionWidth when it passes even there.
+inline constexpr double kWidthTolerance = 1e-4;     // m
+inline constexpr double kMaxSelectionWidth = 20.0;  // m, wider than any paper machine
+double max_width_for_speed(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double web_speed);
+
+// A paper roll's mass (kg) from its diameter, width, paper density and core:
+// mass_per_length of beam/formulas.hpp times the width.
+double paper_roll_mass(const CoreGrade& core, double diameter, double width, double paper_density);
+
+struct CoreInStand {
+    bool fits = true;               // the stand's chucks take this core (else nothing below is set)
+    WeightLimit weight;
+    double max_mass_kg = 0;         // weight / standard gravity
+    double speed_width_m = 0;       // widest rest roll that meets the speed limit
+    double weight_width_m = 0;      // widest reel of the stand's roll_diameter within the weight
+    double max_width_m = 0;         // the smaller: the chart's corner
+    std::string governing;          // "speed" or "weight"
+    double core_mass_per_m = 0;     // kg/m
+};
+
+struct ReelVerdict {
+    bool fits = true;        // the stand's chucks take the core
+    double mass_kg = 0;      // per core (the core's own mass differs)
+    bool weight_ok = false, speed_ok = false;
+    double safe_speed_m_s = 0;
+    bool passes() const { return fits && weight_ok && speed_ok; }
+};
+struct ReelCheck {
+    std::size_t stand = 0;
+    double web_speed = 0;
+    std::vector<ReelVerdict> cores;        // per core grade
+    std::optional<std::size_t> lightest;   // lightest passing core (mass per metre)
+    std::optional<std::size_t> cheapest;   // cheapest passing core with a price
+};
+
+struct SelectionResult {
+    std::vector<std::vector<CoreInStand>> table;  // [stand][core]
+    std::vector<ReelCheck> reels;
+};
+SelectionResult select_cores(const SelectionScene& scene);
+
+}  // namespace coremodal
