@@ -96,6 +96,9 @@ def _parser() -> argparse.ArgumentParser:
     response = commands.add_parser(
         "response-plot", help="draw response.png of a `coremodal response` folder")
     response.add_argument("folder", type=Path, help="results folder of coremodal response")
+    limits = commands.add_parser(
+        "limits-plot", help="draw limits.png of a `coremodal limits` folder")
+    limits.add_argument("folder", type=Path, help="results folder of coremodal limits")
     return parser
 
 
@@ -122,6 +125,13 @@ def _response_plot(folder: Path) -> int:
 
     return _drawn(lambda: [response_plot.draw(folder)],
                   (response_plot.ResponseFormatError, KeyError, ValueError, OSError))
+
+
+def _limits_plot(folder: Path) -> int:
+    from . import limits_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: [limits_plot.draw(folder)],
+                  (limits_plot.LimitsFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -193,6 +203,8 @@ def main(argv: list[str] | None = None) -> int:
         return _campbell_plot(args.folder)
     if args.command == "response-plot":
         return _response_plot(args.folder)
+    if args.command == "limits-plot":
+        return _limits_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

@@ -69,5 +69,6 @@ Command add_fit_command(CLI::App& app);          // app/fit_command.cpp
 Command add_check_command(CLI::App& app);  // app/check_command.cpp
 Command add_winder_command(CLI::App& app);  // app/winder_command.cpp
 Command add_schema_command(CLI::App& app);  // app/schema_command.cpp
+Command add_limits_command(CLI::App& app);  // app/limits_command.cpp
 
 }  // namespace coremodal

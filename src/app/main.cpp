@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
         coremodal::add_schema_command(app),
         coremodal::add_sensitivity_command(app), coremodal::add_fit_command(app),
         coremodal::add_campbell_command(app),
-        coremodal::add_response_command(app)};
+        coremodal::add_response_command(app),
+        coremodal::add_limits_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

@@ -33,6 +33,7 @@ Scene CaseReader::read(const toml::table& root) {
     scene.mesh = read_mesh(top, scene);
     read_rotation(top, scene);  // checked with every key; parse_rotating_case keeps it
     read_response_setup(top, scene);  // likewise; parse_response_case keeps it
+    read_limits(top, scene);          // likewise; parse_limits_case keeps it
     scene.warnings = warnings_;
     return scene;
 }
