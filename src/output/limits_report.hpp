@@ -15,18 +15,14 @@
 
 namespace coremodal {
 
-void write_limits_tables(const std::filesystem::path &dir, const Scene &scene,
-                         const LimitsResult &result);
+void write_limits_tables(const std::filesystem::path& dir, const Scene& scene, const LimitsResult& result);
 
 // pngs: the pictures drawn ("" problem), or why none were.
-std::string limits_report_markdown(const Scene &scene,
-                                   const LimitsResult &result,
-                                   const std::vector<std::string> &pngs,
-                                   const std::string &plot_problem);
+std::string limits_report_markdown(const Scene& scene, const LimitsResult& result, const std::vector<std::string>& pngs,
+                                   const std::string& plot_problem);
 
 // The console lines before the verdict: the table per diameter and the
 // warnings.
-std::string limits_console_summary(const Scene &scene,
-                                   const LimitsResult &result);
+std::string limits_console_summary(const Scene& scene, const LimitsResult& result);
 
-} // namespace coremodal
+}  // namespace coremodal
