@@ -111,6 +111,9 @@ def _parser() -> argparse.ArgumentParser:
     selection = commands.add_parser(
         "selection-plot", help="draw selection_chart.png of a `coremodal select` folder")
     selection.add_argument("folder", type=Path, help="results folder of coremodal select")
+    limits = commands.add_parser(
+        "limits-plot", help="draw limits.png of a `coremodal limits` folder")
+    limits.add_argument("folder", type=Path, help="results folder of coremodal limits")
     return parser
 
 
@@ -144,6 +147,11 @@ def _traction_plot(folder: Path) -> int:
 
     return _drawn(lambda: [traction_plot.draw(folder)],
                   (traction_plot.TractionFormatError, KeyError, ValueError, OSError))
+def _limits_plot(folder: Path) -> int:
+    from . import limits_plot  # matplotlib only when drawing
+
+    return _drawn(lambda: [limits_plot.draw(folder)],
+                  (limits_plot.LimitsFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -235,6 +243,8 @@ def main(argv: list[str] | None = None) -> int:
         return _durability_plot(args.folder)
     if args.command == "selection-plot":
         return _selection_plot(args.folder)
+    if args.command == "limits-plot":
+        return _limits_plot(args.folder)
     if args.command == "study-plot":
         from .study_plot import StudyFormatError
 

@@ -72,5 +72,6 @@ Command add_schema_command(CLI::App& app);  // app/schema_command.cpp
 Command add_traction_command(CLI::App& app);  // app/traction_command.cpp
 Command add_durability_command(CLI::App& app);  // app/durability_command.cpp
 Command add_select_command(CLI::App& app);      // app/select_command.cpp
+Command add_limits_command(CLI::App& app);  // app/limits_command.cpp
 
 }  // namespace coremodal

@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
         coremodal::add_sensitivity_command(app), coremodal::add_fit_command(app),
         coremodal::add_campbell_command(app),
         coremodal::add_response_command(app), coremodal::add_traction_command(app),
-        coremodal::add_durability_command(app), coremodal::add_select_command(app)};
+        coremodal::add_durability_command(app), coremodal::add_select_command(app),
+        coremodal::add_limits_command(app)};
 
     auto ours = coremodal::c_strings(args.ours);
     try {

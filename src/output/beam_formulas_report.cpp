@@ -38,6 +38,10 @@ void print_frequencies(const BeamFormulas& r, std::ostream& out) {
     out << "\nFirst bending frequency\n";
     out << "  I-7  f1 = k 22.373/(2 pi L^2) sqrt((EcIc + EpIp)/(rho_c Ac + rho_p Ap)), k = " << significant(r.k) << ":  "
         << significant(r.f1) << " Hz\n";
+    if (r.k_assumed)
+        out << "       k = 1 assumed: the core rigidly clamped at Li, no chuck or stand compliance; an upper bound. "
+               "Elastic chucks in a stand give k ~ 0.7-0.85 (docs/material-sources.md: case 07 0.744, case 08 0.768): give "
+               "--k, --calibration, or `coremodal run` / `coremodal limits` on the stand for a computed k\n";
     if (!r.k_source.empty())
         out << "       k from the " << r.k_source << ": g1 = " << significant(r.groups->g1) << ", g2 = " << significant(r.groups->g2)
             << ", g3 = " << significant(r.groups->g3) << "\n";
@@ -108,6 +112,7 @@ void print_beam_formulas_json(const BeamFormulas& r, std::ostream& out) {
         section.insert("rest_paper_thickness_m", r.paper_thickness);
     }
     toml::table i7{{"k", r.k}, {"f1_hz", r.f1}};
+    if (r.k_assumed) i7.insert("k_assumed", "k = 1: the rigid clamp at Li, an upper bound (no chuck or stand compliance)");
     if (!r.k_source.empty()) {
         i7.insert("k_source", r.k_source);
         i7.insert("g1", r.groups->g1);

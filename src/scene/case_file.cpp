@@ -42,6 +42,7 @@ Scene CaseReader::read(const toml::table& root) {
     read_response_setup(top, scene);  // likewise; parse_response_case keeps it
     std::vector<std::string> traction_assumptions;  // `coremodal traction` echoes them; run does not
     read_traction(top, traction_assumptions);       // checked; scene/traction_case.hpp keeps it
+    read_limits(top, scene);          // likewise; parse_limits_case keeps it
     scene.warnings = warnings_;
     return scene;
 }

@@ -23,6 +23,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"", "excitation", "none (needed by [response])", "what excites the spinning roll: bow, unbalance, eccentricity, ovality with gravity"},
         {"", "traction", "none: no roller", "web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/traction.md); other commands check it and ignore it"},
         {"", "response", "none: no forced response", "mid-span vibration against web speed and the safe speed from the amplitude limit (`coremodal response`)"},
+        {"", "limits", "none: the case's roll down to the bare core", "how fast the roll may run as it unwinds: one verdict (`coremodal limits`, docs/limits.md)"},
 
         {"core", "inner_diameter", kRequired, "inner diameter Di of the core, smaller than the outer diameter"},
         {"core", "outer_diameter", "none: give outer_diameter or wall", "outer diameter Do; give exactly one of outer_diameter and wall"},
@@ -158,6 +159,11 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"response", "points", "none: the speeds are a list", "number of equally spaced speeds from the first to the last"},
         {"response", "limit", "\"5 mm\"", "the amplitude limit at the first probe (semi-major axis of the orbit): the safe speed is where it is first reached"},
         {"response", "probes", "[\"mid-span\"]", "where the amplitude is reported: \"mid-span\" (the core's middle) or positions from the core's left end"},
+        {"limits", "diameters", "[the case's roll, the bare core]", "rest-roll diameters [largest, smallest] the verdict runs over (`coremodal limits`)"},
+        {"limits", "points", "20", "number of rest-roll diameters (more are added where a criterion changes fast)"},
+        {"limits", "web_speed", "none: no roll change reported", "the press's target web speed: the rest-roll diameter where the roll must be changed"},
+        {"limits", "limit", "[response] limit, else \"5 mm\"", "the amplitude limit at mid-span (Ilomaki's +-5 mm)"},
+        {"limits", "band", "true", "propagate the uncertain inputs' documented ranges into a band beside every speed"},
 
         {"study", "parameters", kRequired, "what to vary, one table per parameter; several make a grid (first slowest)"},
         {"study", "mesh", "the case's [mesh], else \"coarse\"", "mesh level of every point", "coarse default fine very_fine"},

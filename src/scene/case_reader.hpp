@@ -13,6 +13,7 @@
 
 #include "common/join.hpp"
 #include "scene/case_schema.hpp"
+#include "scene/limits_spec.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/response_spec.hpp"
@@ -92,6 +93,8 @@ public:
     std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
     // [damping], [excitation] and [response] of the same document (checked by read too).
     std::optional<ResponseSetup> response(const toml::table& root, const Scene& scene) const;
+    // [limits] of the same document (checked by read too; case_reader_limits.cpp).
+    std::optional<LimitsSpec> limits(const toml::table& root, const Scene& scene) const;
     // [traction] of the same document (checked by read too). `assumptions`
     // gets the defaults it used; the plausibility warnings go to warnings().
     std::optional<TractionSpec> traction(const toml::table& root, std::vector<std::string>& assumptions) const;
@@ -266,6 +269,11 @@ private:
     ExcitationSpec read_excitation(const Section& excitation, const Scene& scene) const;
     ResponseRange read_response_range(const Section& response, const Scene& scene) const;
     std::vector<ResponseRange::Probe> read_probes(const Section& response, const Scene& scene) const;
+
+    // ---- [limits] -------------------------------------------------------
+
+    std::optional<LimitsSpec> read_limits(const Section& top, const Scene& scene) const;
+    void read_limits_diameters(const Section& limits, const Scene& scene, LimitsSpec& spec) const;
 };
 
 }  // namespace coremodal::case_reading

@@ -30,6 +30,9 @@ constexpr int kMaxRotationPoints = 1000;
 // [response]: a dense reduced solve per speed is cheap, but 10 000 points is
 // already a 1 mm/s step over a press's whole range.
 constexpr int kMaxResponsePoints = 10000;
+// [limits]: each diameter is a forced response and a Campbell sweep; 200
+// diameters is already a step of a millimetre over a whole unwind.
+constexpr int kMaxLimitsPoints = 200;
 // Relative damping of cores and rest rolls: 0.005-0.02 (Ilomäki,
 // I-1...4); 1 is critical damping, above which nothing oscillates.
 constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (Ilomäki I-1...I-4; docs/references.md)"};
@@ -139,6 +142,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "response", ValueKind::table),
         // Read by `coremodal traction` (docs/traction.md); other commands check it and ignore it.
         plain_key("", "traction", ValueKind::table),
+        plain_key("", "limits", ValueKind::table),
 
         length_key("core", "inner_diameter", kMaxDiameter, kPlausibleDiameter),
         length_key("core", "outer_diameter", kMaxDiameter, kPlausibleDiameter),
@@ -287,6 +291,13 @@ const std::vector<KeySpec>& case_schema() {
         integer_key("response", "points", 2, kMaxResponsePoints),
         length_key("response", "limit", 1.0, kPlausibleLimit),
         plain_key("response", "probes", ValueKind::list),
+
+        // [limits]: one verdict over the rest-roll diameters (docs/limits.md).
+        plain_key("limits", "diameters", ValueKind::list),
+        integer_key("limits", "points", 2, kMaxLimitsPoints),
+        {"limits", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed, true},
+        length_key("limits", "limit", 1.0, kPlausibleLimit),
+        plain_key("limits", "band", ValueKind::boolean),
 
         // [study]: a sweep over case-file keys, with the modes tracked by MAC.
         plain_key("study", "parameters", ValueKind::tables),

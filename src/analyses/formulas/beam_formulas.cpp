@@ -135,6 +135,7 @@ void apply_calibration(const std::string& file, bool k_given, BeamFormulas& r) {
 
 void add_frequencies(const BeamFormulaInputs& in, BeamFormulas& r) {
     r.k = in.k.value_or(1.0);
+    r.k_assumed = !in.k && in.calibration.empty();
     if (!in.calibration.empty()) apply_calibration(in.calibration, in.k.has_value(), r);
     r.f1 = ilomaki_first_bending_hz(bending_stiffness(r.section), mass_per_length(r.section), r.L, r.k);
     r.eb_cc = euler_bernoulli_first_bending_hz(r.beam, r.L);

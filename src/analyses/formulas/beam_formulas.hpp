@@ -41,6 +41,9 @@ struct BeamFormulas {
     std::string li_source;
     double k = 1, f1 = 0;
     std::string k_source;  // "" for --k or the default
+    // Neither --k nor --calibration: k = 1, the rigid clamp at Li. An upper
+    // bound, said in the output (the chucks and the stand give 0.7-0.85).
+    bool k_assumed = false;
     std::optional<CalibrationGroups> groups;
     double eb_cc = 0, eb_ff = 0, timo_cc = 0, timo_ff = 0;
     std::string koenig_formula;

@@ -1,0 +1,69 @@
+// `coremodal limits CASE.toml [--speed V] [--output DIR] [--model beam] [-q]
+// [--no-plots]`: how fast the rest roll may run in its stand as it unwinds, one
+// verdict over the rest-roll diameters with the criterion that governs and its
+// band (analyses/limits, docs/limits.md). The console ends with the verdict
+// line, also under -q.
+#include "analyses/limits/limits.hpp"
+#include "app/folder_case.hpp"
+#include "common/error.hpp"
+#include "output/limits_report.hpp"
+#include "scene/limits_spec.hpp"
+
+#include <iostream>
+#include <memory>
+
+namespace coremodal {
+namespace {
+
+struct LimitsOptions {
+    FolderCaseOptions folder;
+    std::optional<double> speed_m_s;  // --speed, overrides [limits] web_speed
+};
+
+int run_limits_case(const LimitsOptions& o) {
+    LimitsCase c = parse_limits_case(o.folder.case_file);
+    Scene& scene = c.scene;
+    if (!o.folder.model.empty()) scene.model = o.folder.model;
+    const LimitsRequest request{c.limits.value_or(LimitsSpec{}), o.speed_m_s};
+    require_limits_scene(scene, request);  // before the folder: nothing written on bad input
+    const std::filesystem::path out_dir = prepare_folder_case(o.folder, scene, "-limits");
+    const LimitsResult result = verdict(scene, c.response, request);
+    const int code =
+        write_folder_case(o.folder, out_dir,
+                          {[&](const std::filesystem::path& dir) { write_limits_tables(dir, scene, result); },
+                           "limits-plot", "limits.png",  // python/coremodal/limits_plot.py
+                           [&](const std::vector<std::string>& pngs, const std::string& problem) {
+                               return limits_report_markdown(scene, result, pngs, problem);
+                           },
+                           limits_console_summary(scene, result)});
+    std::cout << verdict_line(result) << std::endl;
+    return code;
+}
+
+}  // namespace
+
+Command add_limits_command(CLI::App& app) {
+    auto o = std::make_shared<LimitsOptions>();
+    CLI::App* cmd = app.add_subcommand("limits",
+                                       "How fast may this roll run in this stand: every criterion "
+                                       "(I-5, Koenig, the order-1/-2 critical "
+                                       "speeds, the amplitude limit) over the rest-roll diameters "
+                                       "down to the bare core, the one that "
+                                       "governs, its band, and where to change the roll for a target "
+                                       "speed; limits.csv, limits.png, "
+                                       "report.md");
+    add_folder_case_options(cmd, o->folder,
+                            "case file (TOML) of a roll in its stand, e.g. "
+                            "cases/16-limits-rotogravure-150x15.8-4320.toml",
+                            "-limits", "limits.png");
+    cmd->add_option("--speed", o->speed_m_s,
+                    "target web speed in m/s (overrides [limits] web_speed): the "
+                    "rest-roll diameter where the roll "
+                    "must be changed, and the margin");
+    cmd->footer(
+        "Exit status 0 on success, 1 when the input is wrong (nothing is "
+        "written then). docs/limits.md.");
+    return {cmd, [o] { return run_limits_case(*o); }, true};
+}
+
+}  // namespace coremodal

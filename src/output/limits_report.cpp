@@ -1,0 +1,219 @@
+#include "output/limits_report.hpp"
+
+#include "common/format.hpp"
+#include "output/csv.hpp"
+#include "output/text_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <sstream>
+
+namespace coremodal {
+namespace {
+
+constexpr double kMm = 1e3;
+
+// Ten significant digits: a reader gets back what was computed.
+std::string num(double v) { return significant(v, 10); }
+std::string speed(double v) { return formatted("%.2f", v); }
+
+Criterion criterion(size_t i) { return static_cast<Criterion>(i); }
+
+std::string limits_rows(const LimitsResult& r) {
+    std::string out = "diameter_mm,added,f1_hz,chuck_factor";
+    for (int i = 0; i < kCriteria; ++i) {
+        const std::string id = criterion_id(criterion(i));
+        out += "," + id + "_m_s," + id + "_low_m_s," + id + "_high_m_s";
+    }
+    out += ",governing,safe_m_s,safe_low_m_s,safe_high_m_s\n";
+    for (const LimitsPoint& p : r.points) {
+        out += num(p.diameter_m * kMm) + "," + (p.added ? "1" : "0") + "," + num(p.f1_hz) + "," +
+               (p.chuck_factor ? num(*p.chuck_factor) : "");
+        for (const CriterionSpeed& c : p.criteria) {
+            const bool band = c.given || c.band_low_m_s > 0;
+            out += "," + (c.given ? num(c.web_speed_m_s) : "") + "," + (band ? num(c.band_low_m_s) : "") + "," +
+                   (band ? num(c.band_high_m_s) : "");
+        }
+        out += "," + csv_field(criterion_id(criterion(p.governing))) + "," + num(p.safe_m_s) + "," +
+               num(p.safe_low_m_s) + "," + num(p.safe_high_m_s) + "\n";
+    }
+    return out;
+}
+
+std::string amplitude_rows(const LimitsResult& r) {
+    std::string out = "diameter_mm,web_speed_m_s,amplitude_mm\n";
+    for (const LimitsPoint& p : r.points)
+        for (const auto& [v, a] : p.amplitude)
+            out += num(p.diameter_m * kMm) + "," + num(v) + "," + num(a * kMm) + "\n";
+    return out;
+}
+
+toml::table criterion_json(const CriterionSpeed& c) {
+    toml::table t{{"id", criterion_id(c.criterion)},
+                  {"name", criterion_name(c.criterion)},
+                  {"given", c.given},
+                  {"limiting", c.limits}};
+    if (c.given) t.insert("web_speed_m_s", c.web_speed_m_s);
+    if (c.given || c.band_low_m_s > 0) t.insert("band_m_s", toml::array{c.band_low_m_s, c.band_high_m_s});
+    if (!c.note.empty()) t.insert("note", c.note);
+    return t;
+}
+
+toml::table point_json(const LimitsPoint& p) {
+    toml::array criteria, peaks;
+    for (const CriterionSpeed& c : p.criteria) criteria.push_back(criterion_json(c));
+    for (const ResponsePeak& k : p.peaks)
+        peaks.push_back(toml::table{{"order", k.order},
+                                    {"web_speed_m_s", k.web_speed_m_s},
+                                    {"amplitude_mm", k.amplitude_m * kMm},
+                                    {"mode_frequency_hz", k.mode_frequency_hz}});
+    toml::table t{{"diameter_mm", p.diameter_m * kMm},
+                  {"added_where_fast", p.added},
+                  {"f1_hz", p.f1_hz},
+                  {"criteria", criteria},
+                  {"governing", criterion_id(criterion(p.governing))},
+                  {"safe_web_speed_m_s", p.safe_m_s},
+                  {"safe_band_m_s", toml::array{p.safe_low_m_s, p.safe_high_m_s}},
+                  {"order1_mode", p.order1_mode},
+                  {"peaks", peaks}};
+    if (p.chuck_factor) t.insert("chuck_factor", toml::table{{"k", *p.chuck_factor}, {"f2_hz", p.f2_hz}});
+    return t;
+}
+
+toml::array strings(const std::vector<std::string>& words) {
+    toml::array a;
+    for (const std::string& w : words) a.push_back(w);
+    return a;
+}
+
+std::string summary_json(const Scene& scene, const LimitsResult& r) {
+    toml::array points, inputs;
+    for (const LimitsPoint& p : r.points) points.push_back(point_json(p));
+    for (const UncertainInput& i : r.inputs) {
+        toml::table t{{"name", i.name}, {"range", i.range}, {"source", i.source}, {"applies", i.applies}};
+        if (i.applies)
+            t.insert("samples", toml::table{{"low", i.low}, {"high", i.high}, {"unit", i.what}});
+        else
+            t.insert("why_not", i.why_not);
+        inputs.push_back(t);
+    }
+    const Verdict& v = r.verdict;
+    toml::table verdict{{"line", verdict_line(r)},
+                        {"safe_web_speed_m_s", v.speed_m_s},
+                        {"roll_change_diameter_mm", v.diameter_m * kMm},
+                        {"governed_by", v.governed_by},
+                        {"at_diameter_mm", v.at_diameter_m * kMm},
+                        {"band_m_s", toml::array{v.band_low_m_s, v.band_high_m_s}}};
+    if (r.change)
+        verdict.insert("target", toml::table{{"web_speed_m_s", r.change->target_m_s},
+                                             {"never_safe", r.change->never_safe},
+                                             {"change_needed", r.change->needed},
+                                             {"change_diameter_mm", r.change->diameter_m * kMm},
+                                             {"margin_at_full_roll_m_s", r.change->margin_m_s}});
+    toml::table t{
+        {"program", "coremodal limits"},
+        {"version", COREMODAL_VERSION},
+        {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
+        {"model", toml::table{{"level", r.level}, {"solves", r.n_solves}}},
+        {"verdict", verdict},
+        {"inputs", toml::table{{"damping", r.damping_summary},
+                               {"bow_mm", r.bow_m * kMm},
+                               {"limit_mm", r.limit_m * kMm},
+                               {"band", r.band},
+                               {"uncertain", inputs}}},
+        {"points", points},
+        {"warnings", strings(r.warnings)},
+        {"notes", strings(r.notes)},
+        {"assumptions", strings(r.assumptions)},
+        {"time_s", r.seconds}};
+    std::ostringstream out;
+    out << toml::json_formatter{t} << "\n";
+    return out.str();
+}
+
+std::string cell(const CriterionSpeed& c, bool band) {
+    if (!c.given) return "—";
+    std::string s = speed(c.web_speed_m_s);
+    if (band) s += " (" + speed(c.band_low_m_s) + "–" + speed(c.band_high_m_s) + ")";
+    return s;
+}
+
+std::string verdict_table(const LimitsResult& r) {
+    std::ostringstream out;
+    out << "| D (mm) | f1 (Hz) | k |";
+    for (int i = 0; i < kCriteria; ++i) out << " " << criterion_name(criterion(i)) << " |";
+    out << " governing | safe (m/s) |\n|---:|---:|---:|";
+    for (int i = 0; i < kCriteria; ++i) out << "---:|";
+    out << "---|---:|\n";
+    for (const LimitsPoint& p : r.points) {
+        out << "| " << formatted("%.1f", p.diameter_m * kMm) << (p.added ? "*" : "") << " | "
+            << formatted("%.2f", p.f1_hz) << " | " << (p.chuck_factor ? formatted("%.3f", *p.chuck_factor) : "—")
+            << " |";
+        for (const CriterionSpeed& c : p.criteria) out << " " << cell(c, r.band) << " |";
+        out << " " << criterion_name(criterion(p.governing)) << " | **" << speed(p.safe_low_m_s) << "** ("
+            << speed(p.safe_m_s) << ", " << speed(p.safe_low_m_s) << "–" << speed(p.safe_high_m_s) << ") |\n";
+    }
+    return out.str();
+}
+
+}  // namespace
+
+void write_limits_tables(const std::filesystem::path& dir, const Scene& scene, const LimitsResult& result) {
+    write_text_file(dir / "limits.csv", limits_rows(result));
+    write_text_file(dir / "amplitude.csv", amplitude_rows(result));
+    write_text_file(dir / "summary.json", summary_json(scene, result));
+}
+
+std::string limits_report_markdown(const Scene& scene, const LimitsResult& r, const std::vector<std::string>& pngs,
+                                   const std::string& plot_problem) {
+    std::ostringstream out;
+    out << "# How fast may " << scene.name << " run: " << verdict_line(r) << "\n\n";
+    out << "Every criterion at each rest-roll diameter (web speeds in m/s; in "
+           "brackets the band from the uncertain "
+           "inputs below; * a diameter added where the verdict changes fast). "
+           "The safe speed is the conservative end "
+           "(bold), then the point value and the band. Level: "
+        << r.level << ".\n\n";
+    out << verdict_table(r) << "\n";
+    for (const std::string& png : pngs) out << "![web speed against rest-roll diameter](" << png << ")\n\n";
+    if (pngs.empty()) out << "(No picture: " << plot_problem << ")\n\n";
+    if (!r.warnings.empty()) {
+        out << "## Warnings\n\n";
+        for (const std::string& w : r.warnings) out << "- " << w << "\n";
+        out << "\n";
+    }
+    out << "## The uncertain inputs (the band)\n\n| input | range | source | "
+           "sampled |\n|---|---|---|---|\n";
+    for (const UncertainInput& i : r.inputs)
+        out << "| " << i.name << " | " << i.range << " | " << i.source << " | "
+            << (i.applies ? "yes" : "no: " + i.why_not) << " |\n";
+    out << "\nA measured first resonance of the roll in its stand narrows the "
+           "band: fit the stand to it with "
+           "`coremodal fit` and run the verdict on the fitted case "
+           "(docs/limits.md, \"Narrowing the band\").\n\n";
+    out << "## Assumptions\n\n";
+    for (const std::string& a : r.assumptions) out << "- " << a << "\n";
+    out << "\n## Notes\n\n";
+    for (const std::string& n : r.notes) out << "- " << n << "\n";
+    out << "\nDamping: " << r.damping_summary << ". Tables: limits.csv, amplitude.csv (the mid-span orbit against "
+        << "web speed at every diameter), summary.json. " << r.n_solves << " solves in "
+        << minutes_or_seconds(r.seconds) << ".\n";
+    return out.str();
+}
+
+std::string limits_console_summary(const Scene& scene, const LimitsResult& r) {
+    std::ostringstream out;
+    out << "limits: " << scene.name << ": " << r.points.size() << " rest-roll diameters at the " << r.level
+        << " level, " << r.n_solves << " solves, " << minutes_or_seconds(r.seconds) << "\n";
+    out << "  D (mm)   f1 (Hz)  governing              safe (m/s)  band (m/s)\n";
+    for (const LimitsPoint& p : r.points)
+        out << "  " << formatted("%6.1f", p.diameter_m * kMm) << "  " << formatted("%8.3f", p.f1_hz) << "  "
+            << criterion_name(criterion(p.governing))
+            << std::string(23 - std::string(criterion_name(criterion(p.governing))).size(), ' ')
+            << formatted("%10.2f", p.safe_m_s) << "  " << speed(p.safe_low_m_s) << "-" << speed(p.safe_high_m_s)
+            << "\n";
+    for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
+    return out.str();
+}
+
+}  // namespace coremodal

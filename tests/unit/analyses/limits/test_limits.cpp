@@ -1,0 +1,203 @@
+// The verdict over the unwind (analyses/limits) against the standalone
+// analyses it drives, on case 13's rotogravure rest roll at the beam level:
+// every criterion is the number `response`, `campbell`, `run` and König's
+// formula give on the same scene and diameter; the roll change is the hand
+// interpolation of the governing speeds; the band holds the point value and
+// narrows with an input's range; the knife edge of case 13 is flagged.
+#include "analyses/campbell/campbell.hpp"
+#include "analyses/limits/limits.hpp"
+#include "analyses/limits/limits_band.hpp"
+#include "analyses/response/response.hpp"
+#include "analyses/run/run.hpp"
+#include "common/error.hpp"
+#include "scene/limits_spec.hpp"
+#include "scene/toml_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace coremodal;
+
+namespace {
+
+const std::string kCase13 = std::string(COREMODAL_SOURCE_DIR) + "/cases/13-rest-roll-response-150x15.8-4320.toml";
+
+std::string case13_text() { return read_input_file(kCase13, "case file"); }
+
+// Case 13 with its rest paper `thickness` thick: the scene the verdict builds
+// at that diameter, read by the case reader instead.
+ResponseCase case13_with_paper(const std::string& thickness) {
+    std::string text = case13_text();
+    const std::string from = "thickness = \"10 mm\"";
+    text.replace(text.find(from), from.size(), "thickness = \"" + thickness + "\"");
+    return parse_response_case_text(text, kCase13);
+}
+
+LimitsRequest diameters(double largest, double smallest, int points, bool band) {
+    LimitsRequest r;
+    r.spec.largest_diameter_m = largest, r.spec.smallest_diameter_m = smallest;
+    r.spec.points = points, r.spec.band = band;
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "Each criterion of the verdict is the standalone analysis' number on "
+    "the same scene and diameter",
+    "[limits]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    REQUIRE(c.response);
+    const LimitsResult r = verdict(c.scene, c.response, diameters(0.2021, 0.1921, 2, false));
+    REQUIRE(r.points.size() == 2);
+    for (int i = 0; i < 2; ++i) {
+        const LimitsPoint& p = r.points[i];
+        // The case's roll, then the case with 5 mm of paper (Dp 192.1 mm), read
+        // from its file.
+        const ResponseCase standalone = i == 0 ? parse_response_case(kCase13) : case13_with_paper("5 mm");
+        CHECK(p.diameter_m == Approx(roll_outer_diameter(standalone.scene)).epsilon(1e-12));
+        const ResponseResult response = run_forced_response(standalone.scene, *standalone.response);
+        CHECK(p.f1_hz == Approx(response.speeds_at_rest.f1_hz).epsilon(1e-10));
+        CHECK(p.at(Criterion::i5_low).web_speed_m_s ==
+              Approx(response.speeds_at_rest.safe[0].v_safe_m_s).epsilon(1e-10));
+        CHECK(p.at(Criterion::i5_high).web_speed_m_s ==
+              Approx(response.speeds_at_rest.safe[1].v_safe_m_s).epsilon(1e-10));
+        const KoenigSpeeds& k = *response.speeds_at_rest.koenig;
+        CHECK(p.at(Criterion::koenig).web_speed_m_s ==
+              Approx(k.v_krit_large_core_m_s.value_or(k.speed.v_krit_m_s)).epsilon(1e-10));
+        // The amplitude limit: both refined by bisection on their own grids
+        // (response_sweep.hpp).
+        REQUIRE(response.safe.reached);
+        REQUIRE(p.at(Criterion::amplitude).given);
+        CHECK(p.at(Criterion::amplitude).web_speed_m_s == Approx(response.safe.web_speed_m_s).epsilon(1e-3));
+        // The Campbell sweep on another grid of speeds: the crossings are refined
+        // to 1e-6.
+        RotationSpec rotation;
+        rotation.speeds_hz = {0, 10, 20, 30, 40};
+        rotation.from_web_speed = true;
+        const CampbellResult campbell = run_campbell(standalone.scene, rotation);
+        const WhirlCrossing* first = campbell.first_order_one();
+        REQUIRE(first);
+        const Criterion which = first->whirl == Whirl::forward ? Criterion::order1_forward : Criterion::order1_backward;
+        CHECK(p.at(which).web_speed_m_s == Approx(first->web_speed_m_s).epsilon(1e-5));
+        // k as `run` computes it on the scene at its level.
+        const ChuckFactor factor = chuck_factor(standalone.scene, response.speeds_at_rest.f1_hz, true);
+        REQUIRE(p.chuck_factor);
+        CHECK(*p.chuck_factor == Approx(factor.chuck_factor).epsilon(1e-10));
+    }
+    // I-5 at 0.7 is below Koenig, the critical speeds and the amplitude limit
+    // here (docs/limits.md).
+    CHECK(r.points[0].governing == static_cast<int>(Criterion::i5_low));
+    CHECK(r.verdict.governed_by == criterion_name(Criterion::i5_low));
+}
+
+TEST_CASE(
+    "The roll change is where the governing speed crosses the target, "
+    "interpolated between diameters",
+    "[limits]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    LimitsRequest request = diameters(0.2021, 0.1821, 2, false);
+    const LimitsResult plain = verdict(c.scene, c.response, request);
+    REQUIRE(plain.points.size() == 2);  // no midpoint: the safe speed moves by less than kFastChange
+    const double va = plain.points[0].safe_m_s, vb = plain.points[1].safe_m_s;
+    const double da = plain.points[0].diameter_m, db = plain.points[1].diameter_m;
+    REQUIRE(va != vb);
+    // A target a quarter of the way from the one to the other: the change (or
+    // the refusal) a hand calculation gives.
+    request.target_web_speed_m_s = va + 0.25 * (vb - va);
+    const LimitsResult r = verdict(c.scene, c.response, request);
+    REQUIRE(r.change);
+    if (va > vb) {  // the safe speed falls as the roll unwinds: change at a
+                    // quarter of the way
+        CHECK(r.change->needed);
+        CHECK_FALSE(r.change->never_safe);
+        CHECK(r.change->diameter_m == Approx(da + 0.25 * (db - da)).epsilon(1e-9));
+        CHECK(r.change->margin_m_s == Approx(va - *request.target_web_speed_m_s).epsilon(1e-9));
+    } else {  // it rises: the full roll is the slowest, already below the target
+        CHECK(r.change->never_safe);
+        CHECK(r.change->diameter_m == Approx(da));
+    }
+    // The verdict quotes the lowest safe speed down to the change.
+    CHECK(r.verdict.speed_m_s <= std::max(va, vb));
+    CHECK(verdict_line(r).rfind("safe up to ", 0) == 0);
+}
+
+TEST_CASE(
+    "The band holds every point value and narrows when an input's range "
+    "narrows",
+    "[limits][band]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    const LimitsRequest wide = diameters(0.2021, 0.2021, 1, true);
+    const LimitsResult r = verdict(c.scene, c.response, wide);
+    REQUIRE(r.points.size() == 1);
+    const LimitsPoint& p = r.points[0];
+    CHECK(p.safe_low_m_s <= p.safe_m_s);
+    CHECK(p.safe_m_s <= p.safe_high_m_s);
+    CHECK(p.safe_low_m_s < p.safe_high_m_s);  // the stand and E_z move f1
+    for (const CriterionSpeed& s : p.criteria) {
+        if (!s.given) continue;
+        INFO(criterion_name(s.criterion));
+        CHECK(s.band_low_m_s <= s.web_speed_m_s);
+        CHECK(s.web_speed_m_s <= s.band_high_m_s);
+    }
+    // The verdict quotes the conservative end.
+    CHECK(r.verdict.speed_m_s == p.safe_low_m_s);
+    // Every input at a tenth of its spread about the nominal (a measurement):
+    // every band inside the wide one, the safe speed's narrower.
+    LimitsRequest narrow = wide;
+    ResponseSetup base = *c.response;
+    std::vector<UncertainInput> inputs = uncertain_inputs(c.scene, base);
+    for (UncertainInput& i : inputs) {
+        const double nominal = i.name == "damping ratio" ? base.damping.ratio
+                               : i.name == "bow"         ? base.excitation.bow_m
+                                                         : 1.0;
+        i.low = nominal + 0.1 * (i.low - nominal), i.high = nominal + 0.1 * (i.high - nominal);
+    }
+    narrow.inputs = inputs;
+    const LimitsResult n = verdict(c.scene, c.response, narrow);
+    const LimitsPoint& q = n.points[0];
+    CHECK(q.safe_m_s == Approx(p.safe_m_s).epsilon(1e-12));
+    CHECK(q.safe_low_m_s >= p.safe_low_m_s);
+    CHECK(q.safe_high_m_s <= p.safe_high_m_s);
+    CHECK(q.safe_high_m_s - q.safe_low_m_s < 0.5 * (p.safe_high_m_s - p.safe_low_m_s));
+    for (size_t i = 0; i < q.criteria.size(); ++i) {
+        if (!q.criteria[i].given) continue;
+        INFO(criterion_name(q.criteria[i].criterion));
+        CHECK(q.criteria[i].band_low_m_s >= p.criteria[i].band_low_m_s - 1e-9);
+        CHECK(q.criteria[i].band_high_m_s <= p.criteria[i].band_high_m_s + 1e-9);
+    }
+}
+
+TEST_CASE(
+    "Case 13 as shipped sits on a knife edge: its amplitude limit is 0.2 "
+    "% below the resonance peak",
+    "[limits]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    const LimitsResult r = verdict(c.scene, c.response, diameters(0.2021, 0.2021, 1, false));
+    bool knife = false;
+    for (const std::string& w : r.warnings) knife = knife || w.rfind("knife edge", 0) == 0;
+    CHECK(knife);
+    // With twice the damping the peak halves below the limit (docs/response.md):
+    // no knife edge.
+    ResponseSetup damped = *c.response;
+    damped.damping.ratio = 0.02;
+    const LimitsResult d = verdict(c.scene, damped, diameters(0.2021, 0.2021, 1, false));
+    for (const std::string& w : d.warnings) CHECK(w.rfind("knife edge", 0) != 0);
+}
+
+TEST_CASE("The verdict refuses what it cannot carry before any work, naming the key", "[limits]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    Scene coupled = c.scene;
+    coupled.model = "coupled";
+    CHECK_THROWS_WITH(
+        require_limits_scene(coupled, {}),
+        Catch::Contains("model = \"coupled\"") && Catch::Contains("expected model = \"beam\" or \"harmonic\""));
+    Scene free = c.scene;
+    free.supports = {};
+    CHECK_THROWS_WITH(require_limits_scene(free, {}), Catch::Contains("[supports]"));
+    LimitsRequest negative;
+    negative.target_web_speed_m_s = -3;
+    CHECK_THROWS_WITH(require_limits_scene(c.scene, negative),
+                      Catch::Contains("--speed") && Catch::Contains("above 0"));
+}
