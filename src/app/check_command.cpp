@@ -2,7 +2,7 @@
 // does, then say what `run` would simulate — every resolved value and where
 // it came from, the effects, the model level and why — without meshing,
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
-#include "analyses/batch/batch.hpp"  // is_winder_file
+#include "analyses/batch/batch.hpp"  // is_winder_file, is_selection_file
 #include "app/commands.hpp"
 #include "models/choose.hpp"  // level_choice_text, require_axisymmetric
 #include "common/warnings.hpp"
@@ -12,6 +12,7 @@
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
 #include "output/winder_report.hpp"
+#include "selection/selection_scene.hpp"
 #include "winder/winder_scene.hpp"
 
 #include <iostream>
@@ -44,8 +45,20 @@ int check_winder(const CheckOptions& options) {
     return 0;
 }
 
+// A core-selection file (docs/durability.md): its own reader, beam formulas.
+int check_selection(const CheckOptions& options) {
+    const SelectionScene scene = read_selection_file(options.case_file);
+    std::cout << options.case_file << ": valid core-selection file \"" << scene.name << "\": " << scene.cores.size()
+              << " core grade(s), " << scene.stands.size() << " stand(s), " << scene.reels.size()
+              << " reel(s); run it with `coremodal select` (--model and --mesh do not apply)\n";
+    if (!scene.defaults.empty()) std::cout << "\ndefaults used (not in the file):\n";
+    for (const std::string& d : scene.defaults) std::cout << "  " << d << "\n";
+    return 0;
+}
+
 int check_case(const CheckOptions& options) {
     if (is_winder_file(options.case_file)) return check_winder(options);
+    if (is_selection_file(options.case_file)) return check_selection(options);
     // The same reading as run_case's step 1, so that the same errors come out.
     Scene scene = parse_case_file(options.case_file);
     print_warnings(scene.warnings);  // on stderr, as `run` says them
