@@ -6,6 +6,7 @@
 #include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
+#include "selection/core_selection.hpp"
 #include "winder/winder_model.hpp"
 #include "winder/winder_modes.hpp"
 #include "winder/winder_scene.hpp"
@@ -60,18 +61,47 @@ Outcome run_winder_text(std::string_view text, const std::string& path) {
     return Outcome::solved;
 }
 
-bool is_winder_text(std::string_view text) {
+// A [selection] file: its reader (durability files named relative to
+// `path`), then every stand's weight and width limits and the reels'
+// verdicts, all finite.
+Outcome run_selection_text(std::string_view text, const std::string& path) {
+    SelectionScene scene;
     try {
-        return parse_toml_text(text, "fuzz.toml").contains("winder");
+        scene = read_selection_text(std::string(text), path);
+    } catch (const InputError&) {
+        return Outcome::invalid;
+    }
+    try {
+        const SelectionResult r = select_cores(scene);
+        for (const auto& row : r.table)
+            for (const CoreInStand& c : row) {
+                if (!c.fits) continue;
+                check(std::isfinite(c.weight.weight_n) && c.weight.weight_n >= 0, "a weight limit that is not finite");
+                check(std::isfinite(c.max_width_m) && c.max_width_m >= 0, "a width limit that is not finite");
+            }
+        for (const ReelCheck& reel : r.reels)
+            for (const ReelVerdict& v : reel.cores) check(std::isfinite(v.mass_kg), "a reel mass that is not finite");
+    } catch (const InputError&) {
+        return Outcome::not_solvable;
+    }
+    return Outcome::solved;
+}
+
+bool has_table(std::string_view text, const char* table) {
+    try {
+        return parse_toml_text(text, "fuzz.toml").contains(table);
     } catch (const std::exception&) {
         return false;  // not TOML: the case reader says why
     }
 }
 
+bool is_winder_text(std::string_view text) { return has_table(text, "winder"); }
+
 }  // namespace
 
 Outcome run_case_text(std::string_view text, const std::string& path) {
     if (is_winder_text(text)) return run_winder_text(text, path);
+    if (has_table(text, "selection")) return run_selection_text(text, path);
     Scene scene;
     try {
         scene = parse_case_text(text, path);

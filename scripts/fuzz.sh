@@ -24,10 +24,11 @@ cmake -S fuzz -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelW
 cmake --build build-fuzz -j "$(nproc)" 2>&1 | tail -n 5
 
 # The dictionary: TOML syntax (fuzz/case.dict), then every word of the readers
-# (case files, winder files: keys, value choices) and every ASCII unit symbol.
+# (case files, winder files, selection files: keys, value choices) and every
+# ASCII unit symbol.
 {
   cat fuzz/case.dict
-  grep -ohE '"[A-Za-z_][A-Za-z0-9_]*"' src/scene/*.cpp src/winder/winder_scene.cpp | sort -u
+  grep -ohE '"[A-Za-z_][A-Za-z0-9_]*"' src/scene/*.cpp src/winder/winder_scene.cpp src/selection/selection_scene.cpp | sort -u
   grep -ohE 'UnitSpec\{"[ -~]+",' src/scene/units.cpp | sed -E 's/UnitSpec\{"(.*)",/" \1"/'
 } > build-fuzz/case.dict
 

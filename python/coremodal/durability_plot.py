@@ -73,7 +73,8 @@ def draw_durability(folder: Path) -> Path:
                     abs(float(n[2:].rsplit("_", 1)[0]) - limit["failure_probability"])
                     <= 1e-6 * limit["failure_probability"])
         ax.loglog(x, curves[name], "-", color=colours[i % len(colours)], linewidth=1.3,
-                  label=f"P = {limit['failure_probability']:g} (lambda = {limit['lambda']:.3f})")
+                  label=f"P = {limit['failure_probability']:g} (lambda = {limit['lambda']:.3f})"
+                  + (": the mean at C" if limit["lambda"] == 0 else ""))
     ax.set_xlabel("winding-unwinding cycles x [cycles]")
     ax.set_ylabel(f"{weight.replace('_', ' ')} y [{unit}]")
     ax.set_title(f"durability on a {1e3 * data['chuck_length_m']:g} mm {data['chuck_type']} test chuck: "

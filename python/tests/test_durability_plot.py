@@ -51,3 +51,13 @@ def test_a_folder_that_is_not_theirs_is_refused(tmp_path: Path) -> None:
         draw_durability(tmp_path)
     with pytest.raises(SelectionFormatError, match="selection.csv: no such file"):
         draw_chart(tmp_path)
+
+
+def test_the_command_line_says_why_there_is_no_picture(tmp_path: Path) -> None:
+    import sys
+
+    for command in ("durability-plot", "selection-plot"):
+        bad = subprocess.run([sys.executable, "-m", "coremodal", command, str(tmp_path / "none")],
+                             capture_output=True, text=True, timeout=60)
+        assert bad.returncode == 1
+        assert "no such file" in bad.stderr

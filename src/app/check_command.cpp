@@ -2,7 +2,7 @@
 // does, then say what `run` would simulate — every resolved value and where
 // it came from, the effects, the model level and why — without meshing,
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
-#include "analyses/batch/batch.hpp"  // is_winder_file
+#include "analyses/batch/batch.hpp"  // is_winder_file, is_selection_file
 #include "app/commands.hpp"
 #include "models/choose.hpp"  // level_choice_text, require_axisymmetric
 #include "common/warnings.hpp"
@@ -14,6 +14,7 @@
 #include "output/traction_report.hpp"
 #include "output/winder_report.hpp"
 #include "scene/traction_case.hpp"
+#include "selection/selection_scene.hpp"
 #include "winder/winder_scene.hpp"
 
 #include <iostream>
@@ -57,8 +58,20 @@ int check_traction(const CheckOptions& options, const TractionCase& tc) {
     return 0;
 }
 
+// A core-selection file (docs/durability.md): its own reader, beam formulas.
+int check_selection(const CheckOptions& options) {
+    const SelectionScene scene = read_selection_file(options.case_file);
+    std::cout << options.case_file << ": valid core-selection file \"" << scene.name << "\": " << scene.cores.size()
+              << " core grade(s), " << scene.stands.size() << " stand(s), " << scene.reels.size()
+              << " reel(s); run it with `coremodal select` (--model and --mesh do not apply)\n";
+    if (!scene.defaults.empty()) std::cout << "\ndefaults used (not in the file):\n";
+    for (const std::string& d : scene.defaults) std::cout << "  " << d << "\n";
+    return 0;
+}
+
 int check_case(const CheckOptions& options) {
     if (is_winder_file(options.case_file)) return check_winder(options);
+    if (is_selection_file(options.case_file)) return check_selection(options);
     const std::optional<TractionCase> traction = read_traction_case(options.case_file);
     if (traction && !traction->has_roll) return check_traction(options, *traction);
     // The same reading as run_case's step 1, so that the same errors come out.

@@ -54,6 +54,10 @@ Scene parse_case_table(const toml::table& root, const std::string& path) {
         throw InputError(path + ":" + std::to_string(winder->source().begin.line) +
                          ": [winder] is a two-drum winder file, not a roll's case file; run it with "
                          "`coremodal winder " + path + "` (docs/winder.md)");
+    if (const toml::node* selection = root.get("selection"))
+        throw InputError(path + ":" + std::to_string(selection->source().begin.line) +
+                         ": [selection] is a core-selection file, not a roll's case file; run it with "
+                         "`coremodal select " + path + "` (docs/durability.md)");
     return case_reading::CaseReader(path).read(root);
 }
 

@@ -21,6 +21,7 @@ namespace {
 constexpr double kMaxDiameter = 5.0;  // m
 constexpr double kMaxWidth = 20.0;    // m
 constexpr double kMaxSpeed = 100.0;   // m/s
+constexpr double kMaxChuck = 2.0;     // m: a chuck's supporting length (rotogravure's longest: 340 mm)
 
 const std::vector<std::string_view> kTopKeys = {"name", "description", "selection"};
 const std::vector<std::string_view> kSelectionKeys = {"failure_probability", "confidence",         "cycles",
@@ -247,9 +248,9 @@ private:
         s.name = text(st, "selection.stand", "name").value_or("");
         if (s.name.empty()) fail(st.source(), "[[selection.stand]] has no name; expected name = \"news\"");
         const std::string at = "selection.stand " + s.name;
-        s.chuck_length = required(st, at, "chuck_length", Dimension::length, 0, kMaxWidth);
+        s.chuck_length = required(st, at, "chuck_length", Dimension::length, 0, kMaxChuck);
         s.li = s.chuck_length / 2;
-        if (const auto li = quantity(st, at, "li", Dimension::length, 0, kMaxWidth)) s.li = *li;
+        if (const auto li = quantity(st, at, "li", Dimension::length, 0, kMaxChuck)) s.li = *li;
         else defaults_.push_back("[" + at + "] li = " + mm(s.li) + " (assumed: the middle of the chuck)");
         s.chuck_factor = required(st, at, "chuck_factor", Dimension::dimensionless, 0, 1);
         take(st, at, "web_speed", Dimension::speed, 0, kMaxSpeed, s.web_speed, "Figs. 18-19: 15 m/s");

@@ -91,3 +91,17 @@ TEST_CASE("coremodal select refuses a bad file with its place and writes nothing
                      "76 mm") != std::string::npos);
     CHECK(!fs::exists(dir.path / "out"));
 }
+
+TEST_CASE("A selection file: check validates it, run names the command that runs it", "[app][select][check]") {
+    TempDir dir;
+    const std::string file = COREMODAL_SOURCE_DIR "/cases/16-core-selection.toml";
+    const Run checked = run_coremodal(dir, "check '" + file + "'");
+    CHECK(checked.exit_code == 0);
+    CHECK(checked.out.find("valid core-selection file \"16-core-selection\": 3 core grade(s), 2 stand(s), 4 reel(s); "
+                           "run it with `coremodal select`") != std::string::npos);
+    const Run run = run_coremodal(dir, "run '" + file + "'");
+    CHECK(run.exit_code == 1);
+    CHECK(run.err.find("[selection] is a core-selection file, not a roll's case file; run it with `coremodal select")
+          != std::string::npos);
+    CHECK(fs::is_empty(dir.path));  // nothing written
+}
