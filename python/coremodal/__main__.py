@@ -20,8 +20,8 @@
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
     python3 -m coremodal response-plot results/13-rest-roll-response-response  # response.png
     python3 -m coremodal traction-plot results/16-grooved-idler-traction-traction  # traction.png
-    python3 -m coremodal durability-plot results/16-core-B-durability  # durability.png
-    python3 -m coremodal selection-plot results/16-core-selection-select  # selection_chart.png
+    python3 -m coremodal durability-plot results/18-core-B-durability  # durability.png
+    python3 -m coremodal selection-plot results/18-core-selection-select  # selection_chart.png
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for

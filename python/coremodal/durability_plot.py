@@ -1,6 +1,6 @@
 """Picture of a ``coremodal durability`` results folder (docs/durability.md):
 
-    python3 -m coremodal durability-plot results/16-core-B-durability
+    python3 -m coremodal durability-plot results/18-core-B-durability
 
 reads ``points.csv``, ``curves.csv`` and ``summary.json`` and draws
 ``durability.png`` in the form of Figs. 16-17 of M. Ilomäki, "On the

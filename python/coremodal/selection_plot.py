@@ -1,7 +1,7 @@
 """The chart of a ``coremodal select`` results folder (docs/durability.md,
 "Choosing a core"):
 
-    python3 -m coremodal selection-plot results/16-core-selection-select
+    python3 -m coremodal selection-plot results/18-core-selection-select
 
 reads ``selection.csv``, ``reels.csv`` and ``summary.json`` and draws
 ``selection_chart.png`` in the form of Figs. 18-19 of M. Ilomäki, "On the

@@ -7,7 +7,7 @@ a unit string of the wrong dimension or no unit at all.
 cases/11-two-drum-winder.toml is left out: it is a [winder] file, read by its
 own reader (src/winder/winder_scene.cpp, docs/winder.md), which the schema does
 not describe (docs/case-files.md, "Editor support: the JSON Schema");
-cases/16-core-selection.toml likewise, a [selection] file
+cases/18-core-selection.toml likewise, a [selection] file
 (src/selection/selection_scene.cpp, docs/durability.md).
 
 Needs COREMODAL_BIN (the program) and the jsonschema package (Debian
@@ -30,7 +30,7 @@ jsonschema = pytest.importorskip(
 
 REPO = Path(__file__).resolve().parents[2]
 WINDER_FILES = {"11-two-drum-winder.toml"}  # [winder] files: their own reader, not in the schema
-SELECTION_FILES = {"16-core-selection.toml"}  # [selection] files: likewise
+SELECTION_FILES = {"18-core-selection.toml"}  # [selection] files: likewise
 
 
 def shipped_cases() -> list[Path]:

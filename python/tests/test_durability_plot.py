@@ -1,6 +1,6 @@
 """The durability and core-selection pictures (coremodal.durability_plot,
 coremodal.selection_plot) on folders the program writes from the shipped
-case 16 (``coremodal durability``, ``coremodal select`` with --no-plots), and
+case 18 (``coremodal durability``, ``coremodal select`` with --no-plots), and
 a folder that is not theirs refused.
 
 Needs COREMODAL_BIN (the program); skipped without it."""
@@ -35,14 +35,14 @@ def run(args: list[str]) -> None:
 
 def test_the_durability_plot_draws_the_fit_limits_and_reduced_curves(tmp_path: Path) -> None:
     out = tmp_path / "dur"
-    run(["durability", str(REPO / "cases" / "16-core-durability-76x15.csv"), "-o", str(out), "-p", "1e-5"])
+    run(["durability", str(REPO / "cases" / "18-core-durability-76x15.csv"), "-o", str(out), "-p", "1e-5"])
     assert not (out / "durability.png").exists()
     assert png_size(draw_durability(out)) == (1100, 750)
 
 
 def test_the_selection_chart_has_one_panel_per_stand(tmp_path: Path) -> None:
     out = tmp_path / "sel"
-    run(["select", str(REPO / "cases" / "16-core-selection.toml"), "-o", str(out)])
+    run(["select", str(REPO / "cases" / "18-core-selection.toml"), "-o", str(out)])
     assert png_size(draw_chart(out)) == (1800, 650)  # two stands, 900 px each
 
 

@@ -51,7 +51,7 @@ Command add_select_command(CLI::App& app) {
         "select", "Core selection ([selection] file): each core grade's largest roll weight (durability, scaled to "
                   "the stand's chuck and winder) and largest reel width (rest roll safe speed, I-5/I-7) per stand; "
                   "the chart, the cores that pass each reel, the lightest and cheapest");
-    cmd->add_option("case", o->case_file, "core-selection file (TOML), e.g. cases/16-core-selection.toml")->required();
+    cmd->add_option("case", o->case_file, "core-selection file (TOML), e.g. cases/18-core-selection.toml")->required();
     add_results_options(cmd, o->output, o->force, "-select");
     cmd->add_flag("-q,--quiet", o->quiet, "no lines per stand and reel");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the chart");

@@ -15,7 +15,7 @@ namespace {
 
 bool written(const fs::path& p) { return fs::is_regular_file(p) && fs::file_size(p) > 0; }
 
-const std::string kExample = COREMODAL_SOURCE_DIR "/cases/16-core-durability-76x15.csv";
+const std::string kExample = COREMODAL_SOURCE_DIR "/cases/18-core-durability-76x15.csv";
 
 }  // namespace
 
@@ -66,7 +66,7 @@ TEST_CASE("coremodal durability refuses bad data and options and writes nothing"
 
 TEST_CASE("coremodal select writes the chart, the table per stand and the reels' verdicts", "[app][select]") {
     TempDir dir("select");
-    const Run r = run_coremodal(dir, "select " COREMODAL_SOURCE_DIR "/cases/16-core-selection.toml --output out");
+    const Run r = run_coremodal(dir, "select " COREMODAL_SOURCE_DIR "/cases/18-core-selection.toml --output out");
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("select: default [selection.stand rotogravure] li = 100 mm (assumed") != std::string::npos);
@@ -94,10 +94,10 @@ TEST_CASE("coremodal select refuses a bad file with its place and writes nothing
 
 TEST_CASE("A selection file: check validates it, run names the command that runs it", "[app][select][check]") {
     TempDir dir;
-    const std::string file = COREMODAL_SOURCE_DIR "/cases/16-core-selection.toml";
+    const std::string file = COREMODAL_SOURCE_DIR "/cases/18-core-selection.toml";
     const Run checked = run_coremodal(dir, "check '" + file + "'");
     CHECK(checked.exit_code == 0);
-    CHECK(checked.out.find("valid core-selection file \"16-core-selection\": 3 core grade(s), 2 stand(s), 4 reel(s); "
+    CHECK(checked.out.find("valid core-selection file \"18-core-selection\": 3 core grade(s), 2 stand(s), 4 reel(s); "
                            "run it with `coremodal select`") != std::string::npos);
     const Run run = run_coremodal(dir, "run '" + file + "'");
     CHECK(run.exit_code == 1);

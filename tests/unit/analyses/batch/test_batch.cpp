@@ -153,7 +153,7 @@ TEST_CASE("case_has_mesh_file tells cases with their own mesh (no --mesh for the
     CHECK_FALSE(case_has_mesh_file(cases + "no-such-case.toml"));
     CHECK(is_winder_file(cases + "11-two-drum-winder.toml"));  // run with `coremodal winder`
     CHECK_FALSE(is_winder_file(cases + "02-clamped-76x15.toml"));
-    CHECK(is_selection_file(cases + "16-core-selection.toml"));  // run with `coremodal select`
+    CHECK(is_selection_file(cases + "18-core-selection.toml"));  // run with `coremodal select`
     CHECK_FALSE(is_selection_file(cases + "11-two-drum-winder.toml"));
 }
 
