@@ -7,6 +7,7 @@
 // forms only: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/warnings.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
@@ -15,6 +16,7 @@
 #include "scene/traction_case.hpp"
 #include "traction/traction_sweep.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -40,6 +42,15 @@ int run_traction_command(const TractionOptions& o) {
     prepare_output(out_dir, o.force);
     // 3. The model at every speed, the speeds where traction ends.
     const TractionSweep sweep = run_traction_sweep(tc->spec);
+    if (sweep.n_invalid > 0) {  // said on stderr too: the numbers there are outside what the paper vouches for
+        const auto first = std::find_if(sweep.points.begin(), sweep.points.end(), [](const TractionPoint& p) {
+            return !p.valid;
+        });
+        print_warnings({std::to_string(sweep.n_invalid) + " of " + std::to_string(sweep.points.size()) +
+                        " web speeds are outside Rice & Gans' validity limits, the first at " +
+                        significant(first->web_speed, 4) + " m/s: " + first->violations.front() +
+                        " (report.md, \"Validity\")"});
+    }
     // 4. Tables, picture, report; the folder appears complete or not at all.
     ResultsFolder folder(out_dir, o.force);
     const std::filesystem::path& dir = folder.dir();

@@ -137,8 +137,7 @@ void CaseReader::check_traction(const Section& t, const TractionSpec& spec) cons
     for (double v : spec.web_speeds)
         if (v >= limit)
             fail(*speeds, name_of(t, speeds == get(t, "web_speed") ? "web_speed" : "web_speeds") + ": " +
-                              format_quantity(v, Dimension::speed) + " is at or above " +
-                              format_quantity(limit, Dimension::speed) +
+                              significant(v, 4) + " m/s is at or above " + significant(limit, 3) + " m/s" +
                               ", where the web's centripetal term c rho V^2 takes its whole tension (T = T_0 - c "
                               "rho V^2 = 0) and it no longer wraps the roller; expected speeds below it");
 }
