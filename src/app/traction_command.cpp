@@ -27,7 +27,7 @@ namespace {
 
 struct TractionOptions {
     std::string case_file, output;
-    bool no_plots = false, force = false;
+    bool no_plots = false, force = false, quiet = false;
 };
 
 int run_traction_command(const TractionOptions& o) {
@@ -75,6 +75,7 @@ Command add_traction_command(CLI::App& app) {
         ->required();
     add_results_options(cmd, o->output, o->force, "-traction");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plot");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines (as the other commands take it; closed forms print none)");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [traction] table: docs/traction.md.");
     return {cmd, [o] { return run_traction_command(*o); }, false};

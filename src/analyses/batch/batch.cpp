@@ -51,12 +51,15 @@ std::string program_name(const std::string& program) {
 
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
     const bool winder = is_winder_file(c.file);
-    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : "run", c.file, "--output",
-                                     c.result_dir, "--quiet"};
+    const bool traction = !winder && is_traction_file(c.file);
+    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : traction ? "traction" : "run",
+                                     c.file, "--output", c.result_dir, "--quiet"};
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
+    if (traction) c.note = "a roller's traction (coremodal traction): its speeds are in its report.md";
     if (o.mesh_level) {
-        if (winder)
-            c.note += "; a beam model: --mesh " + *o.mesh_level + " not applied";
+        if (winder || traction)
+            c.note += std::string("; ") + (winder ? "a beam model" : "closed forms") + ": --mesh " + *o.mesh_level +
+                      " not applied";
         else if (case_has_mesh_file(c.file))
             c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
         else
@@ -86,7 +89,7 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
         c.error = "finished without writing " + summary.string();
         return;
     }
-    if (winder) {  // no f1 or safe speed of one roll: the winder's answer is its crossing table
+    if (winder || traction) {  // no f1 or safe speed of one roll: the answer is in the command's own report
         c.ok = true;
         return;
     }
@@ -158,6 +161,11 @@ bool case_has_mesh_file(const std::string& case_file) {
 }
 
 bool is_winder_file(const std::string& case_file) { return case_table_or_empty(case_file).contains("winder"); }
+
+bool is_traction_file(const std::string& case_file) {
+    const toml::table t = case_table_or_empty(case_file);
+    return t.contains("traction") && !t.contains("core");
+}
 
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {
     std::vector<std::string> files;

@@ -56,6 +56,9 @@ bool case_has_mesh_file(const std::string& case_file);
 // Whether a case file describes a two-drum winder ([winder], docs/winder.md):
 // batch runs it with `coremodal winder` rather than `coremodal run`.
 bool is_winder_file(const std::string& case_file);
+// Whether the file is for `coremodal traction` alone: [traction] and no roll
+// ([core]) (docs/traction.md); batch runs it with that command.
+bool is_traction_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.

@@ -153,6 +153,8 @@ TEST_CASE("case_has_mesh_file tells cases with their own mesh (no --mesh for the
     CHECK_FALSE(case_has_mesh_file(cases + "no-such-case.toml"));
     CHECK(is_winder_file(cases + "11-two-drum-winder.toml"));  // run with `coremodal winder`
     CHECK_FALSE(is_winder_file(cases + "02-clamped-76x15.toml"));
+    CHECK(is_traction_file(cases + "16-grooved-idler-traction.toml"));  // run with `coremodal traction`
+    CHECK_FALSE(is_traction_file(cases + "02-clamped-76x15.toml"));
 }
 
 TEST_CASE("batch tables: CSV quotes error messages, Markdown escapes bars", "[batch]") {
