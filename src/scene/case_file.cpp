@@ -46,6 +46,10 @@ Scene parse_case_table(const toml::table& root, const std::string& path) {
         throw InputError(path + ":" + std::to_string(winder->source().begin.line) +
                          ": [winder] is a two-drum winder file, not a roll's case file; run it with "
                          "`coremodal winder " + path + "` (docs/winder.md)");
+    if (const toml::node* traction = root.get("traction"); traction && !root.get("core"))
+        throw InputError(path + ":" + std::to_string(traction->source().begin.line) +
+                         ": [traction] without [core] is a roller's traction file, not a roll's case file; run it "
+                         "with `coremodal traction " + path + "` (docs/traction.md)");
     return case_reading::CaseReader(path).read(root);
 }
 
