@@ -6,7 +6,9 @@
 #include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/toml_text.hpp"
+#include "scene/traction_case.hpp"
 #include "selection/core_selection.hpp"
+#include "traction/traction_sweep.hpp"
 #include "winder/winder_model.hpp"
 #include "winder/winder_modes.hpp"
 #include "winder/winder_scene.hpp"
@@ -97,11 +99,46 @@ bool has_table(std::string_view text, const char* table) {
 
 bool is_winder_text(std::string_view text) { return has_table(text, "winder"); }
 
+// A file with [traction] (docs/traction.md): its reader (the whole scene too
+// when it describes a roll), then the model at every speed: finite,
+// non-negative traction, f_e between 0 and f, a zero-traction speed.
+Outcome run_traction_text(std::string_view text, const std::string& path) {
+    std::optional<TractionCase> tc;
+    try {
+        tc = read_traction_case_text(text, path);
+    } catch (const InputError&) {
+        return Outcome::invalid;
+    }
+    const TractionSweep sweep = run_traction_sweep(tc->spec);
+    for (const TractionPoint& p : sweep.points) {
+        check(std::isfinite(p.traction) && p.traction >= 0, "a traction that is not a finite number >= 0");
+        check(p.effective_friction >= 0 && p.effective_friction <= tc->spec.friction * (1 + 1e-12),
+              "an effective friction outside [0, f]");
+    }
+    check(sweep.zero_traction_speed >= 0 && std::isfinite(sweep.zero_traction_speed),
+          "a zero-traction speed that is not a finite number >= 0");
+    return Outcome::solved;
+}
+
+// Only name, description and [traction]: a file for `coremodal traction` alone.
+bool is_traction_text(std::string_view text) {
+    try {
+        const toml::table root = parse_toml_text(text, "fuzz.toml");
+        if (!root.contains("traction")) return false;
+        for (const auto& [key, value] : root)
+            if (key.str() != "name" && key.str() != "description" && key.str() != "traction") return false;
+        return true;
+    } catch (const std::exception&) {
+        return false;  // not TOML: the case reader says why
+    }
+}
+
 }  // namespace
 
 Outcome run_case_text(std::string_view text, const std::string& path) {
     if (is_winder_text(text)) return run_winder_text(text, path);
     if (has_table(text, "selection")) return run_selection_text(text, path);
+    if (is_traction_text(text)) return run_traction_text(text, path);
     Scene scene;
     try {
         scene = parse_case_text(text, path);

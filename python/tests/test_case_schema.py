@@ -84,6 +84,7 @@ def test_the_test_sees_the_shipped_cases() -> None:
 
 BASE = "cases/02-clamped-76x15.toml"
 CHUCKS = "cases/08-news-chucks-76x15-2200.toml"
+TRACTION = "cases/16-grooved-idler-traction.toml"  # [traction] alone: no [core] needed
 
 
 def broken(path: str, change) -> dict:
@@ -113,6 +114,12 @@ BROKEN = [
      "inserted_length"),
     ("a clamp key on a chuck", CHUCKS, lambda d: d["supports"]["left"].update(start="0 mm"), "start"),
     ("a band of one frequency", BASE, lambda d: d["analysis"].update(band=["0 Hz"]), "band"),
+    ("a wrap of zero", TRACTION, lambda d: d["traction"].update(wrap=0), "wrap"),
+    ("an unknown [traction] key", TRACTION, lambda d: d["traction"].update(grove_depth="36 um"), "grove_depth"),
+    ("a viscosity in the wrong unit", TRACTION, lambda d: d["traction"].update(air_viscosity="1.8e-5 Pa"),
+     "air_viscosity"),
+    ("neither [core] nor [traction]", TRACTION, lambda d: d.pop("traction"),
+     "is not valid under any of the given schemas"),
 ]
 
 

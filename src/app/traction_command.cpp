@@ -7,6 +7,7 @@
 // forms only: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "common/warnings.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
@@ -15,6 +16,7 @@
 #include "scene/traction_case.hpp"
 #include "traction/traction_sweep.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -25,7 +27,7 @@ namespace {
 
 struct TractionOptions {
     std::string case_file, output;
-    bool no_plots = false, force = false;
+    bool no_plots = false, force = false, quiet = false;
 };
 
 int run_traction_command(const TractionOptions& o) {
@@ -40,6 +42,15 @@ int run_traction_command(const TractionOptions& o) {
     prepare_output(out_dir, o.force);
     // 3. The model at every speed, the speeds where traction ends.
     const TractionSweep sweep = run_traction_sweep(tc->spec);
+    if (sweep.n_invalid > 0) {  // said on stderr too: the numbers there are outside what the paper vouches for
+        const auto first = std::find_if(sweep.points.begin(), sweep.points.end(), [](const TractionPoint& p) {
+            return !p.valid;
+        });
+        print_warnings({std::to_string(sweep.n_invalid) + " of " + std::to_string(sweep.points.size()) +
+                        " web speeds are outside Rice & Gans' validity limits, the first at " +
+                        significant(first->web_speed, 4) + " m/s: " + first->violations.front() +
+                        " (report.md, \"Validity\")"});
+    }
     // 4. Tables, picture, report; the folder appears complete or not at all.
     ResultsFolder folder(out_dir, o.force);
     const std::filesystem::path& dir = folder.dir();
@@ -64,6 +75,7 @@ Command add_traction_command(CLI::App& app) {
         ->required();
     add_results_options(cmd, o->output, o->force, "-traction");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plot");
+    cmd->add_flag("-q,--quiet", o->quiet, "no progress lines (as the other commands take it; closed forms print none)");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [traction] table: docs/traction.md.");
     return {cmd, [o] { return run_traction_command(*o); }, false};

@@ -35,23 +35,37 @@ std::string join_lines(const std::vector<std::string>& v) {
     return out;
 }
 
-std::string csv_rows(const TractionSpec& spec, const TractionSweep& s) {
-    std::string out =
-        "web_speed_m_s,tension_N_m,air_pressure_Pa,wrap_pressure_Pa,contact_pressure_Pa,air_share,p_star,h_star,"
-        "traction_N_m,capstan_traction_N_m,effective_friction,theta_star,b_star,contact,valid";
-    if (s.plain) out += ",plain_traction_N_m,plain_effective_friction";
-    out += ",violations\n";
+// One CSV line from its fields (numbers, fixed words and csv_field text).
+std::string row(const std::vector<std::string>& fields) {
+    std::string out;
+    for (size_t i = 0; i < fields.size(); ++i) {
+        if (i) out += ',';
+        out += fields[i];
+    }
+    out += '\n';
+    return out;
+}
+
+std::string csv_rows(const TractionSweep& s) {
+    std::vector<std::string> header = {"web_speed_m_s",       "tension_N_m",  "air_pressure_Pa",  "wrap_pressure_Pa",
+                                       "contact_pressure_Pa", "air_share",    "p_star",           "h_star",
+                                       "traction_N_m",        "capstan_traction_N_m", "effective_friction",
+                                       "theta_star",          "b_star",       "contact",          "valid"};
+    if (s.plain) header.insert(header.end(), {"plain_traction_N_m", "plain_effective_friction"});
+    header.push_back("violations");
+    std::string out = row(header);
     for (size_t i = 0; i < s.points.size(); ++i) {
         const TractionPoint& p = s.points[i];
-        out += num(p.web_speed) + "," + num(p.tension) + "," + num(p.air_pressure) + "," + num(p.wrap_pressure) + "," +
-               num(p.contact_pressure) + "," + num(p.air_share) + "," + num(p.p_star) + "," + num(p.h_star) + "," +
-               num(p.traction) + "," + num(p.capstan_traction) + "," + num(p.effective_friction) + "," +
-               num(p.theta_star) + "," + num(p.b_star) + "," + (p.contact ? "true" : "false") + "," +
-               (p.valid ? "true" : "false");
-        if (s.plain) out += "," + num(s.plain->traction[i]) + "," + num(s.plain->effective_friction[i]);
-        out += "," + csv_field(join_lines(p.violations)) + "\n";
+        std::vector<std::string> fields = {num(p.web_speed),        num(p.tension),         num(p.air_pressure),
+                                           num(p.wrap_pressure),    num(p.contact_pressure), num(p.air_share),
+                                           num(p.p_star),           num(p.h_star),          num(p.traction),
+                                           num(p.capstan_traction), num(p.effective_friction), num(p.theta_star),
+                                           num(p.b_star),           p.contact ? "true" : "false",
+                                           p.valid ? "true" : "false"};
+        if (s.plain) fields.insert(fields.end(), {num(s.plain->traction[i]), num(s.plain->effective_friction[i])});
+        fields.push_back(csv_field(join_lines(p.violations)));
+        out += row(fields);
     }
-    (void)spec;
     return out;
 }
 
@@ -271,7 +285,7 @@ void validity_section(std::ostringstream& md, const TractionSpec& spec, const Tr
 }  // namespace
 
 void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep) {
-    write_text_file(dir / "traction.csv", csv_rows(tc.spec, sweep));
+    write_text_file(dir / "traction.csv", csv_rows(sweep));
     write_text_file(dir / "summary.json", summary_json(tc, sweep));
 }
 

@@ -58,6 +58,10 @@ Scene parse_case_table(const toml::table& root, const std::string& path) {
         throw InputError(path + ":" + std::to_string(selection->source().begin.line) +
                          ": [selection] is a core-selection file, not a roll's case file; run it with "
                          "`coremodal select " + path + "` (docs/durability.md)");
+    if (const toml::node* traction = root.get("traction"); traction && !root.get("core"))
+        throw InputError(path + ":" + std::to_string(traction->source().begin.line) +
+                         ": [traction] without [core] is a roller's traction file, not a roll's case file; run it "
+                         "with `coremodal traction " + path + "` (docs/traction.md)");
     return case_reading::CaseReader(path).read(root);
 }
 

@@ -52,7 +52,10 @@ std::vector<double> CaseReader::read_speed_list(const Section& rotation, std::st
     const toml::node& node = *get(rotation, key);
     const toml::array& array = *node.as_array();
     const std::string what = echo(rotation, key, node);
-    const KeySpec& bound = *find_key(rotation.schema, d == Dimension::speed ? "web_speed" : "speed");
+    // The bound of the table's own single-speed key ([traction] web_speed), else [rotation]'s.
+    const std::string_view single = d == Dimension::speed ? "web_speed" : "speed";
+    const KeySpec* own = find_key(rotation.schema, single);
+    const KeySpec& bound = own ? *own : *find_key("rotation", single);
     if (array.empty()) fail(node, what + ": expected at least one speed");
     std::vector<double> values;
     for (const toml::node& item : array) {

@@ -129,16 +129,17 @@ std::optional<TractionSpec> CaseReader::read_traction(const Section& top, std::v
 void CaseReader::check_traction(const Section& t, const TractionSpec& spec) const {
     if (!(effective_clearance(spec).clearance > 0))
         fail(t.table->source(),
-             t.display + " roller_roughness = 0 and web_roughness = 0 on a plain roller: the effective clearance "
-                         "h_eff is zero and the air film has no gap to flow in (eq. 5 gives no finite pressure); "
-                         "expected an asperity engagement height above 0, or grooves");
+             t.display + (spec.grooves.shape == GrooveShape::none
+                              ? " roller_roughness = 0 and web_roughness = 0 on a plain roller"
+                              : " grooves and asperities too small to count") +
+                 ": the effective clearance h_eff is zero and the air film has no gap to flow in (eq. 5 gives no "
+                 "finite pressure); expected an asperity engagement height above 0, or grooves");
     const double limit = centripetal_limit_speed(spec);
     const toml::node* speeds = get(t, "web_speed") ? get(t, "web_speed") : get(t, "web_speeds");
     for (double v : spec.web_speeds)
         if (v >= limit)
             fail(*speeds, name_of(t, speeds == get(t, "web_speed") ? "web_speed" : "web_speeds") + ": " +
-                              format_quantity(v, Dimension::speed) + " is at or above " +
-                              format_quantity(limit, Dimension::speed) +
+                              significant(v, 4) + " m/s is at or above " + significant(limit, 3) + " m/s" +
                               ", where the web's centripetal term c rho V^2 takes its whole tension (T = T_0 - c "
                               "rho V^2 = 0) and it no longer wraps the roller; expected speeds below it");
 }

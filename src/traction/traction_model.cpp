@@ -82,6 +82,7 @@ double foil_bearing_gap(double radius, double viscosity, double speed_sum, doubl
 }
 
 double contact_air_pressure(double radius, double viscosity, double speed_sum, double clearance) {
+    if (speed_sum == 0) return 0.0;  // at rest no air is dragged in, however small h_eff (no 0 x inf)
     return kFoilPressureFactor * viscosity * speed_sum / radius * std::pow(radius / clearance, 1.5);
 }
 

@@ -39,6 +39,8 @@ TEST_CASE("coremodal traction writes its table, summary, picture and report", "[
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("zero-traction speed 25.1 m/s") != std::string::npos);
     CHECK(r.out.find("slips under 20 N/m at 19.8 m/s") != std::string::npos);
+    CHECK(r.err.find("warning: 1 of 61 web speeds are outside Rice & Gans' validity limits, the first at 25 m/s: "
+                     "theta* = 0.121") != std::string::npos);
     for (const char* f : {"traction.csv", "summary.json", "report.md", "traction.png"}) CHECK(written(dir.path / "out" / f));
     const std::string csv = slurp(dir.path / "out" / "traction.csv");
     CHECK(csv.rfind("web_speed_m_s,tension_N_m,air_pressure_Pa,", 0) == 0);

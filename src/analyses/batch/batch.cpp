@@ -51,13 +51,16 @@ std::string program_name(const std::string& program) {
 
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
     const bool winder = is_winder_file(c.file), selection = is_selection_file(c.file);
-    std::vector<std::string> args = {program_name(o.program), winder ? "winder" : selection ? "select" : "run",
-                                     c.file, "--output", c.result_dir, "--quiet"};
+    const bool traction = !winder && !selection && is_traction_file(c.file);
+    const char* command = winder ? "winder" : selection ? "select" : traction ? "traction" : "run";
+    std::vector<std::string> args = {program_name(o.program), command, c.file, "--output", c.result_dir, "--quiet"};
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
     if (selection) c.note = "a core selection (coremodal select): its chart and verdicts are in its report.md";
+    if (traction) c.note = "a roller's traction (coremodal traction): its speeds are in its report.md";
     if (o.mesh_level) {
-        if (winder || selection)
-            c.note += "; a beam model: --mesh " + *o.mesh_level + " not applied";
+        if (winder || selection || traction)
+            c.note += std::string("; ") + (traction ? "closed forms" : "a beam model") + ": --mesh " + *o.mesh_level +
+                      " not applied";
         else if (case_has_mesh_file(c.file))
             c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
         else
@@ -87,7 +90,7 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
         c.error = "finished without writing " + summary.string();
         return;
     }
-    if (winder) {  // no f1 or safe speed of one roll: the winder's answer is its crossing table
+    if (winder || traction) {  // no f1 or safe speed of one roll: the answer is in the command's own report
         c.ok = true;
         return;
     }
@@ -162,6 +165,11 @@ bool is_winder_file(const std::string& case_file) { return case_table_or_empty(c
 
 bool is_selection_file(const std::string& case_file) {
     return case_table_or_empty(case_file).contains("selection");
+}
+
+bool is_traction_file(const std::string& case_file) {
+    const toml::table t = case_table_or_empty(case_file);
+    return t.contains("traction") && !t.contains("core");
 }
 
 std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs) {

@@ -59,6 +59,9 @@ bool is_winder_file(const std::string& case_file);
 // Whether a file is a core-selection file ([selection], docs/durability.md):
 // batch runs it with `coremodal select`.
 bool is_selection_file(const std::string& case_file);
+// Whether the file is for `coremodal traction` alone: [traction] and no roll
+// ([core]) (docs/traction.md); batch runs it with that command.
+bool is_traction_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.

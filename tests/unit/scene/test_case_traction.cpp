@@ -123,8 +123,11 @@ TEST_CASE("[traction] mistakes are refused with the place, the key and what is e
     CHECK(error_in(changed("friction = 0.16\n", "")) ==
           "cases/t.toml:2:1: [traction] friction is missing; expected the static coefficient of friction of web on "
           "roller, e.g. friction = 0.3");
-    CHECK(error_in(changed("grooves = \"circular\"", "grooves = \"circle\"")).starts_with(
-        "cases/t.toml:9:11: [traction] grooves = \"circle\": unknown value; did you mean \"circular\"?"));
+    CHECK(error_in(changed("grooves = \"circular\"", "grooves = \"circlar\"")).starts_with(
+        "cases/t.toml:9:11: [traction] grooves = \"circlar\": unknown value; did you mean \"circular\"?"));
+    CHECK(error_in(changed("grooves = \"circular\"", "grooves = \"knurled\"")) ==
+          "cases/t.toml:9:11: [traction] grooves = \"knurled\": unknown value; expected one of none, sine, circular, "
+          "rectangular");
     SECTION("A plain roller with perfectly smooth surfaces has no clearance for the air") {
         CHECK(error_in(changed("roller_roughness = \"25.9 um\"\nweb_roughness = \"1.54 um\"",
                                "roller_roughness = 0\nweb_roughness = 0", kPlain))
@@ -155,6 +158,11 @@ TEST_CASE("[traction] mistakes are refused with the place, the key and what is e
                   .starts_with("cases/t.toml:18:14: [traction] web_speeds = [\"0 m/s\", \"20 m/s\"] and [traction] "
                                "web_speed = \"3 m/s\" are both given"));
     }
+}
+
+TEST_CASE("A [traction] file given to run is pointed to coremodal traction", "[traction][scene]") {
+    CHECK(error_of(kGrooved) == "cases/x.toml:2: [traction] without [core] is a roller's traction file, not a roll's "
+                                "case file; run it with `coremodal traction cases/x.toml` (docs/traction.md)");
 }
 
 TEST_CASE("[traction] beside [web] in a stand scene: checked, and the scene is the same without it",

@@ -56,6 +56,14 @@ TEST_CASE("Quantities with units convert to SI", "[scene][units]") {
         CHECK(parse_quantity("3 kg", Dimension::mass) == 3.0);
         CHECK(parse_quantity("0.3", Dimension::dimensionless) == 0.3);
     }
+    SECTION("viscosities (air: 1.81e-5 Pa*s, [traction])") {
+        CHECK(parse_quantity("1.81e-5 Pa*s", Dimension::viscosity) == 1.81e-5);
+        CHECK(parse_quantity("0.0181 mPa * s", Dimension::viscosity) == Approx(1.81e-5).epsilon(1e-15));
+        CHECK(parse_quantity("18.1 µPa*s", Dimension::viscosity) == Approx(1.81e-5).epsilon(1e-15));
+        CHECK(parse_quantity("0.0181 cP", Dimension::viscosity) == Approx(1.81e-5).epsilon(1e-15));
+        CHECK_THROWS_WITH(parse_quantity("1.8e-5 Pa", Dimension::viscosity),
+                          "unit 'Pa' is a pressure (modulus), expected a viscosity (Pa*s, mPa*s, uPa*s)");
+    }
 }
 
 TEST_CASE("Bad quantities say what was expected", "[scene][units]") {
