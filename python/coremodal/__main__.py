@@ -19,7 +19,7 @@
     python3 -m coremodal winder-plot results/11-two-drum-winder-winder  # crossing_diagram.png, response.png
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell  # campbell.png
     python3 -m coremodal response-plot results/13-rest-roll-response-response  # response.png
-    python3 -m coremodal traction-plot results/16-grooved-idler-traction-traction  # traction.png
+    python3 -m coremodal traction-plot results/19-grooved-idler-traction-traction  # traction.png
     python3 -m coremodal durability-plot results/18-core-B-durability  # durability.png
     python3 -m coremodal selection-plot results/18-core-selection-select  # selection_chart.png
 

@@ -1,6 +1,6 @@
 """The picture of a ``coremodal traction`` results folder (docs/traction.md):
 
-    python3 -m coremodal traction-plot results/16-grooved-idler-traction-traction
+    python3 -m coremodal traction-plot results/19-grooved-idler-traction-traction
 
 reads ``traction.csv`` and ``summary.json`` and draws ``traction.png``: the
 traction Delta T [N/m] (top) and the effective friction f_e (bottom) against

@@ -84,7 +84,7 @@ def test_the_test_sees_the_shipped_cases() -> None:
 
 BASE = "cases/02-clamped-76x15.toml"
 CHUCKS = "cases/08-news-chucks-76x15-2200.toml"
-TRACTION = "cases/16-grooved-idler-traction.toml"  # [traction] alone: no [core] needed
+TRACTION = "cases/19-grooved-idler-traction.toml"  # [traction] alone: no [core] needed
 
 
 def broken(path: str, change) -> dict:

@@ -71,7 +71,7 @@ Command add_traction_command(CLI::App& app) {
         "traction", "Web-to-roller traction on one roller ([traction] table, Rice & Gans): traction and effective "
                     "friction against web speed, the zero-traction speed, the grooves' gain, the validity limits; "
                     "traction.csv, summary.json, a plot and report.md");
-    cmd->add_option("case", o->case_file, "case file (TOML) with a [traction] table, e.g. cases/16-grooved-idler-traction.toml")
+    cmd->add_option("case", o->case_file, "case file (TOML) with a [traction] table, e.g. cases/19-grooved-idler-traction.toml")
         ->required();
     add_results_options(cmd, o->output, o->force, "-traction");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plot");

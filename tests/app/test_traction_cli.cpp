@@ -1,5 +1,5 @@
 // `coremodal traction` as a user meets it: the real binary on the shipped
-// case 16 and on small files in a temporary folder; bad input refused with
+// case 19 and on small files in a temporary folder; bad input refused with
 // its place, exit 1 and nothing written.
 #include "support/program_run.hpp"
 
@@ -15,7 +15,7 @@ namespace {
 
 bool written(const fs::path& p) { return fs::is_regular_file(p) && fs::file_size(p) > 0; }
 
-const std::string kCase16 = std::string(COREMODAL_SOURCE_DIR) + "/cases/16-grooved-idler-traction.toml";
+const std::string kCase16 = std::string(COREMODAL_SOURCE_DIR) + "/cases/19-grooved-idler-traction.toml";
 
 // Roller 2 of Rice & Gans (plain) at 44 N/m, the default speeds.
 const std::string kPlain = R"(name = "plain"
@@ -46,7 +46,7 @@ TEST_CASE("coremodal traction writes its table, summary, picture and report", "[
     CHECK(csv.rfind("web_speed_m_s,tension_N_m,air_pressure_Pa,", 0) == 0);
     CHECK(csv.find("plain_traction_N_m") != std::string::npos);
     const std::string report = slurp(dir.path / "out" / "report.md");
-    // theta* passes 0.1 at 25 m/s, just short of the zero-traction speed (case 16 says why).
+    // theta* passes 0.1 at 25 m/s, just short of the zero-traction speed (case 19 says why).
     CHECK(report.find("**1 of 61 points are outside the paper's limits**; the first: theta* = 0.121 >= 0.1") !=
           std::string::npos);
     CHECK(report.find("![traction.png](traction.png)") != std::string::npos);

@@ -155,7 +155,7 @@ TEST_CASE("case_has_mesh_file tells cases with their own mesh (no --mesh for the
     CHECK_FALSE(is_winder_file(cases + "02-clamped-76x15.toml"));
     CHECK(is_selection_file(cases + "18-core-selection.toml"));  // run with `coremodal select`
     CHECK_FALSE(is_selection_file(cases + "11-two-drum-winder.toml"));
-    CHECK(is_traction_file(cases + "16-grooved-idler-traction.toml"));  // run with `coremodal traction`
+    CHECK(is_traction_file(cases + "19-grooved-idler-traction.toml"));  // run with `coremodal traction`
     CHECK_FALSE(is_traction_file(cases + "02-clamped-76x15.toml"));
 }
 
