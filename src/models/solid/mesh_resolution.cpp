@@ -10,7 +10,7 @@ namespace coremodal {
 namespace {
 
 bool is_elastic_family(const ModeLabel& label) {
-    return label.type != "rigid" && label.type != "support" && label.type != "mixed";
+    return label.type != "rigid" && label.type != "support" && label.type != "nutation" && label.type != "mixed";
 }
 
 bool same_family(const ModeLabel& a, const ModeLabel& b) { return a.type == b.type && a.n == b.n && a.m == b.m; }

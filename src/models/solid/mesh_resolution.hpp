@@ -45,7 +45,7 @@ struct MeshResolution {
     double error() const { return compared ? solid_hz / harmonic_hz - 1 : 0.0; }
 };
 
-// Every elastic solid mode (not rigid, support or mixed) against the
+// Every elastic solid mode (not rigid, support, nutation or mixed) against the
 // harmonic mode of the same label nearest in frequency.
 MeshResolution compare_with_harmonic(const std::vector<Mode>& solid, const std::vector<Mode>& harmonic);
 

@@ -38,7 +38,7 @@ const Mesh& core_mesh() {
 
 }  // namespace
 
-TEST_CASE("A roll rocking or swinging rigidly on its supports is a support mode, a free body's a rigid one",
+TEST_CASE("A roll rocking or swinging rigidly on its supports is a support mode, a free spinning body's a nutation",
           "[classify]") {
     const Mesh& mesh = core_mesh();
     const double zc = kLength / 2;
@@ -56,7 +56,7 @@ TEST_CASE("A roll rocking or swinging rigidly on its supports is a support mode,
     CHECK(rock.type == "support");
     CHECK(rock.n == 1);
     CHECK(rock.m == 1);  // rocking: the two ends move opposite ways
-    CHECK(free_body.classify(tilt, kLambda, kLambdaScale).type == "rigid");  // a spinning body's nutation
+    CHECK(free_body.classify(tilt, kLambda, kLambdaScale).type == "nutation");  // a spinning free body's
 
     // Sideways swinging: a translation along x.
     const ModeLabel swing = held.classify(
