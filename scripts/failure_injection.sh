@@ -247,7 +247,7 @@ run_trial() {
     fi
     local rc output=(-o "$out")
     [[ $out == - ]] && output=()
-    (cd "$d" && timeout -k 5 "$limit" "${prefix[@]}" "$binary" "$@" "${output[@]}" >"$d/stdout.txt" 2>"$d/stderr.txt" </dev/null)
+    { (cd "$d" && timeout -k 5 "$limit" "${prefix[@]}" "$binary" "$@" "${output[@]}" >"$d/stdout.txt" 2>"$d/stderr.txt" </dev/null); } 2>/dev/null
     rc=$?
     [[ $rc == 124 || $rc == 137 ]] && rc=hang
     judge "$name" "$d" "$rc" 0 "$out" "$earlier"
