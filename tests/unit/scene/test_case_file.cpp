@@ -580,3 +580,22 @@ TEST_CASE("Truncated and corrupted case files never crash", "[scene][case_file][
         }
     }
 }
+
+TEST_CASE("A case's name is a name, not a path (issue 33, 1 and 3)", "[scene][case_file][issue33]") {
+    const auto with_name = [](const std::string& value) { return "name = " + value + "\n" + kCore; };
+    CHECK(error_of(with_name("\"\"")) ==
+          "cases/x.toml:1:8: name = \"\" is empty; expected a plain name such as \"rest-roll-300\" (letters, digits, "
+          "spaces, '-', '_', '.'; no '/'), which names the results folder results/<name>");
+    for (const char* bad : {"\".\"", "\"..\""})
+        CHECK_THAT(error_of(with_name(bad)), Catch::Contains("which as a folder name means a folder of the path"));
+    for (const char* bad : {"\"../../x\"", "\"/tmp/abs\"", "\"a/b\"", "\"a\\\\b\""})
+        CHECK_THAT(error_of(with_name(bad)), Catch::Contains("is a path, not a name (it would write outside results/)"));
+    CHECK_THAT(error_of(with_name("\"-x\"")), Catch::Contains("starts with '-'"));
+    CHECK_THAT(error_of(with_name("\"tab\\there\"")), Catch::Contains("holds a control character"));
+    CHECK_THAT(error_of(with_name("\"" + std::string(201, 'a') + "\"")), Catch::Contains("is 201 bytes long"));
+    // Names that are names: spaces, dots, UTF-8.
+    for (const char* good : {"\"rest roll 300\"", "\"core.v2\"", "\"..x\"", "\"Hülse 76\""})
+        CHECK(parse_case_text(with_name(good), kFile).name == std::string(good).substr(1, std::string(good).size() - 2));
+    // Without a name key the file's stem is the name, and it is checked too.
+    CHECK_THAT(error_of(kCore, "cases/..toml"), Catch::Contains("the case's name is its file name, '.'"));
+}
