@@ -45,7 +45,7 @@ int run_durability_command(DurabilityOptions o) {
     const DurabilityData data = read_durability_data(o.data);
     const std::filesystem::path out_dir =
         results_path(o.output, std::filesystem::path(o.data).stem().string(), "-durability");
-    prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
+    claim_output(out_dir, o.force);  // refused before any work, never over the user's files
     const DurabilityAnalysis analysis = analyse_durability(data, o.confidence, o.probabilities);
     const std::vector<std::string> steps = durability_steps(data, analysis);
     if (!o.quiet)

@@ -27,7 +27,7 @@ struct SelectOptions {
 int run_select_command(const SelectOptions& o) {
     const SelectionScene scene = read_selection_file(o.case_file);
     const std::filesystem::path out_dir = results_path(o.output, scene.name, "-select");
-    prepare_output(out_dir, o.force);  // refused before any work, never over the user's files
+    claim_output(out_dir, o.force);  // refused before any work, never over the user's files
     const SelectionResult result = select_cores(scene);
     if (!o.quiet) {
         for (const std::string& d : scene.defaults) std::cout << "select: default " << d << std::endl;

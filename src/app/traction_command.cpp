@@ -39,7 +39,7 @@ int run_traction_command(const TractionOptions& o) {
     print_warnings(tc->warnings);
     // 2. Where the results go, refused before any work if it is not ours to write.
     const std::filesystem::path out_dir = results_path(o.output, tc->name, "-traction");
-    prepare_output(out_dir, o.force);
+    claim_output(out_dir, o.force);
     // 3. The model at every speed, the speeds where traction ends.
     const TractionSweep sweep = run_traction_sweep(tc->spec);
     if (sweep.n_invalid > 0) {  // said on stderr too: the numbers there are outside what the paper vouches for
