@@ -53,6 +53,7 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
     const bool winder = is_winder_file(c.file);
     std::vector<std::string> args = {program_name(o.program), winder ? "winder" : "run", c.file, "--output",
                                      c.result_dir, "--quiet"};
+    if (!o.plots) args.push_back("--no-plots");
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
     if (o.mesh_level) {
         if (winder)
