@@ -37,7 +37,7 @@ FOLDER_TABLES = ("study.csv", "calibration.csv", "batch.csv", "converge.csv", "c
                  "response.csv", "sensitivity.csv")
 #: The main table of the folder each command writes.
 COMMAND_TABLES = {"campbell": "campbell.csv", "response": "response.csv", "winder": "winder.csv",
-                  "study": "study.csv", "converge": "converge.csv", "run": "modes.csv"}
+                  "study": "study.csv", "calibrate": "calibration.csv", "converge": "converge.csv", "run": "modes.csv"}
 #: Where each command's JSON is (the same scheme in each).
 SUMMARY_FILES = ("summary.json", "study.json", "converge.json")
 

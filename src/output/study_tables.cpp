@@ -124,7 +124,7 @@ std::string study_json(const CaseSweep& sweep, const StudyResult& result, const 
     // Whether the points ran the forced response (the case has [response]).
     const bool response = std::any_of(result.points.begin(), result.points.end(),
                                       [](const StudyPoint& p) { return p.response.has_value(); });
-    Json t = summary_head("study", sweep.case_name(), sweep.case_file(), "");
+    Json t = summary_head(kind == "calibration" ? "calibrate" : "study", sweep.case_name(), sweep.case_file(), "");
     t["kind"] = kind;
     t["n_points"] = sweep.n_points();
     t["n_failed"] = result.n_failed();
