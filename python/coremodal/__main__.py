@@ -54,10 +54,10 @@ def _parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(dest="command", required=True)
 
     table = commands.add_parser("table", help="print every mode as a table")
-    table.add_argument("results", type=Path, help="modes.h5 written by coremodal")
+    table.add_argument("results", type=Path, help="modes.h5 written by coremodal, or its results folder")
 
     plot = commands.add_parser("plot", help="draw one mode shape into a PNG")
-    plot.add_argument("results", type=Path, help="modes.h5 written by coremodal")
+    plot.add_argument("results", type=Path, help="modes.h5 written by coremodal, or its results folder")
     plot.add_argument("--mode", type=int, required=True, help="mode number, 1-based as in the table")
     plot.add_argument("--out", type=Path, help="PNG to write (default: mode_NN.png)")
     plot.add_argument("--scale", type=float, help="displacement scale of the side view "
@@ -256,6 +256,12 @@ def main(argv: list[str] | None = None) -> int:
         _print(output)
         return 0
     try:
+        if args.results.is_dir():  # a results folder: its modes.h5
+            if not (args.results / "modes.h5").is_file():
+                raise ResultsFormatError(
+                    f"{args.results}: a folder without modes.h5 (a beam-level run writes none; its modes are in "
+                    "modes.csv and beam_shapes.csv)")
+            args.results = args.results / "modes.h5"
         if not args.results.is_file():
             raise ResultsFormatError(f"{args.results}: no such file")
         results = load(args.results)

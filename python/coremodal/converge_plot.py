@@ -153,7 +153,8 @@ def draw_error_vs_time(study: dict[str, Any], out: Path | str, size_px: tuple[in
     ax.set_yscale("log")
     ax.set_xlabel("run time per level [s] (median; mesh + assembly + factor and solve + classification)")
     ax.set_ylabel("relative error against the extrapolated frequency\n(own model level; dotted: against the solid's)")
-    ax.set_title(f"{study.get('case', '')}: accuracy against cost (labels: DOFs; open marker: finest level, "
+    case = study.get("case", "")  # {name, file, description} since schema_version 2; a name before
+    ax.set_title(f"{case.get('name', '') if isinstance(case, dict) else case}: accuracy against cost (labels: DOFs; open marker: finest level, "
                  "estimate)", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     if curves:

@@ -38,7 +38,7 @@ def _speed_lines(ax, summary: dict) -> None:
     """The safe web speeds as vertical lines, labelled at staggered heights
     near the bottom (in axes fractions, so they never sit on the curve's
     peak): from the amplitude limit, and I-5's."""
-    safe = summary["safe_speed"]
+    safe = summary["speeds"]
     where = ax.get_xaxis_transform()  # x in data, y in axes fraction
     amplitude = safe["from_amplitude_limit"]
     if amplitude.get("reached"):
@@ -46,10 +46,10 @@ def _speed_lines(ax, summary: dict) -> None:
         ax.axvline(v, color="tab:red", lw=1.4)
         ax.text(v, 0.17, f" limit reached: {v:.2f} m/s\n (I-5 factor {amplitude['implied_safe_factor']:.2f})",
                 transform=where, fontsize=8, color="tab:red")
-    for i, item in enumerate(safe.get("i5_safe_web_speed", [])):
+    for i, item in enumerate(safe.get("safe_web_speed", [])):
         v = item["v_safe_m_s"]
         ax.axvline(v, color="tab:green", ls=":", lw=1.2)
-        ax.text(v, 0.03 + 0.06 * i, f" I-5 x{item['factor']:.1f}: {v:.2f} m/s", transform=where, fontsize=8,
+        ax.text(v, 0.03 + 0.06 * i, f" I-5 x{item['safe']:.1f}: {v:.2f} m/s", transform=where, fontsize=8,
                 color="tab:green")
 
 
@@ -60,7 +60,7 @@ def draw(folder: Path) -> Path:
     if not points:
         raise ResponseFormatError(f"{folder}: response.csv holds no amplitudes at {probe}")
     speeds, amplitudes = [p[0] for p in points], [p[1] for p in points]
-    limit = summary["safe_speed"]["limit_mm"]
+    limit = summary["speeds"]["limit_mm"]
     fig = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI)
     FigureCanvasAgg(fig)
     ax = fig.add_subplot(1, 1, 1)

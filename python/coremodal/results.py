@@ -20,6 +20,10 @@ import numpy as np
 from . import display, meshes
 from .tables import Table
 
+# The console's mode table (src/output/summary.cpp, kNegligibleMassShare)
+# prints effective masses below this share of the model mass as 0.
+NEGLIGIBLE_MASS_SHARE = 1e-9
+
 #: Newest layout of modes.h5 that this package understands.
 SUPPORTED_SCHEMA_VERSION = 1
 
@@ -168,8 +172,16 @@ class Results:
             f"{self.n_cells} cells)",
             header,
         ]
+        # Effective masses below NEGLIGIBLE_MASS_SHARE of the largest (of the
+        # masses; of the rotary inertias) are round-off of an exact zero
+        # (symmetry): 0, as the run's console shows them.
+        shown = np.array(self.effective_mass, dtype=np.float64, copy=True)
+        for columns in (slice(0, 3), slice(3, 4)):
+            part = shown[:, columns]
+            if part.size:
+                part[np.abs(part) < NEGLIGIBLE_MASS_SHARE * np.max(np.abs(part))] = 0.0
         for i in range(self.n_modes):
-            mx, my, mz, mrz = self.effective_mass[i]
+            mx, my, mz, mrz = shown[i]
             lines.append(
                 f"{i + 1:>4}  {self.frequencies_hz[i]:>11.3f}  {self.types[i]:<10}"
                 f" {self.n[i]:>3} {self.m[i]:>3}  {self.dominant_share[i]:>5.2f}"

@@ -10,9 +10,16 @@
     run.to_meshio([1, 2])    # the mesh and two shapes for meshio (or to_pyvista)
     fig = run.plot_mode(1)   # a matplotlib Figure
 
-A study or calibration folder (study.csv), a batch (batch.csv) or a
-convergence study (converge.csv) opens as a Folder whose ``table`` is that
-CSV.
+Every other folder a command writes opens as a Folder: its ``summary``
+(summary.json of campbell, response and winder, study.json, converge.json:
+one scheme, docs/results.md), its ``command`` and its main ``table``
+(campbell.csv, response.csv, winder.csv, study.csv, calibration.csv,
+batch.csv, converge.csv, sensitivity.csv), with ``to_pandas()``.
+
+    spin = coremodal.load("results/12-rotation-tester-76x15-campbell")
+    spin.command             # "campbell"
+    spin.to_pandas()         # campbell.csv
+    spin.read("critical_speeds.csv")
 """
 
 from __future__ import annotations
@@ -24,8 +31,15 @@ from typing import Any, Iterable
 from .results import Results, ResultsFormatError, first_elastic, load_h5
 from .tables import Table, read_summary, read_table
 
-#: The main table of each kind of folder, in the order they are looked for.
-FOLDER_TABLES = ("study.csv", "calibration.csv", "batch.csv", "converge.csv")
+#: The main table of each kind of folder, in the order they are looked for
+#: when the folder's JSON does not name its command.
+FOLDER_TABLES = ("study.csv", "calibration.csv", "batch.csv", "converge.csv", "campbell.csv", "winder.csv",
+                 "response.csv", "sensitivity.csv")
+#: The main table of the folder each command writes.
+COMMAND_TABLES = {"campbell": "campbell.csv", "response": "response.csv", "winder": "winder.csv",
+                  "study": "study.csv", "calibrate": "calibration.csv", "converge": "converge.csv", "run": "modes.csv"}
+#: Where each command's JSON is (the same scheme in each).
+SUMMARY_FILES = ("summary.json", "study.json", "converge.json")
 
 
 class Folder:
@@ -45,8 +59,27 @@ class Folder:
         return read_table(self.path / name)
 
     @cached_property
+    def summary(self) -> dict[str, Any]:
+        """The folder's JSON as a dict (summary.json, study.json or
+        converge.json); {} for a folder without one (batch, sensitivity, fit)."""
+        for name in SUMMARY_FILES:
+            if (self.path / name).is_file():
+                return read_summary(self.path / name)
+        return {}
+
+    @property
+    def command(self) -> str:
+        """The coremodal command that wrote the folder ("" when its JSON does
+        not say: a batch, a sensitivity or a fit, or an older folder)."""
+        return str(self.summary.get("command", ""))
+
+    @cached_property
     def table(self) -> Table:
-        """The folder's main table: study.csv, calibration.csv, batch.csv or converge.csv."""
+        """The folder's main table: the CSV of its command (campbell.csv,
+        response.csv, winder.csv, study.csv, converge.csv), else the first of
+        FOLDER_TABLES it holds."""
+        if self.command in COMMAND_TABLES and (self.path / COMMAND_TABLES[self.command]).is_file():
+            return self.read(COMMAND_TABLES[self.command])
         for name in FOLDER_TABLES:
             if (self.path / name).is_file():
                 return self.read(name)
@@ -57,7 +90,8 @@ class Folder:
         return self.table.to_pandas()
 
     def __repr__(self) -> str:
-        return f"<coremodal folder {self.path.name}: {', '.join(self.files)}>"
+        what = f"{self.command} " if self.command else ""
+        return f"<coremodal {what}folder {self.path.name}: {', '.join(self.files)}>"
 
 
 class Run(Folder):
@@ -68,7 +102,9 @@ class Run(Folder):
         super().__init__(path)
         if not (self.path / "summary.json").is_file():
             raise ResultsFormatError(f"{self.path} is not the folder of a coremodal run (no summary.json)")
-        self.summary: dict[str, Any] = read_summary(self.path / "summary.json")
+        if self.command not in ("", "run"):
+            raise ResultsFormatError(f"{self.path} was written by coremodal {self.command}, not run: "
+                                     "open it with coremodal.load()")
 
     @property
     def name(self) -> str:
@@ -139,12 +175,14 @@ class Run(Folder):
 
 
 def load(path: str | Path) -> Run | Folder | Results:
-    """Opens coremodal results: a run's folder gives a Run, another results
-    folder (study, calibration, batch, converge) a Folder, and a modes.h5
-    file its Results (as before)."""
+    """Opens coremodal results: a run's folder gives a Run, every other
+    results folder (campbell, response, winder, study, calibration, batch,
+    converge, sensitivity, fit) a Folder, and a modes.h5 file its Results."""
     path = Path(path)
     if path.is_dir():
-        return Run(path) if (path / "summary.json").is_file() else Folder(path)
+        folder = Folder(path)
+        is_run = (path / "summary.json").is_file() and folder.command in ("", "run")
+        return Run(path) if is_run else folder
     if not path.is_file():
         raise ResultsFormatError(f"{path}: no such file or folder")
     return load_h5(path)

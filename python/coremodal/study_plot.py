@@ -89,6 +89,13 @@ class Study:
     diameter_parameters: list[str] = field(default_factory=list)
 
     @property
+    def case_name(self) -> str:
+        """The case's name: study.json's case {name, file, ...} (schema 2),
+        or the plain name older study.json files hold."""
+        case = self.meta.get("case", "")
+        return str(case.get("name", "")) if isinstance(case, dict) else str(case)
+
+    @property
     def web_speed_m_s(self) -> float | None:
         return self.meta.get("options", {}).get("web_speed_m_s")
 
@@ -241,7 +248,7 @@ def plot_tracked_modes(study: Study, out: Path) -> Path | None:
     for j in range(len(keys), rows_n * cols):
         axes[j // cols][j % cols].set_visible(False)
     note = "" if len(panels) <= MAX_PANELS else f" (first {MAX_PANELS} of {len(panels)} combinations)"
-    figure.suptitle(f"{study.meta.get('case', '')}: modes tracked by MAC; red rings: ambiguous steps{note}",
+    figure.suptitle(f"{study.case_name}: modes tracked by MAC; red rings: ambiguous steps{note}",
                     fontsize=10)
     figure.tight_layout()
     path = out / f"modes_vs_{file_stem(x_par.name)}.png"
@@ -273,7 +280,7 @@ def plot_point_value(study: Study, out: Path, column: str, name: str, ylabel: st
         ax.grid(True, alpha=0.3)
         if 1 < len(curves) <= MAX_LEGEND:
             ax.legend(fontsize=7)
-        ax.set_title(f"{study.meta.get('case', '')}: {ylabel} against {p.human_name}", fontsize=10)
+        ax.set_title(f"{study.case_name}: {ylabel} against {p.human_name}", fontsize=10)
         figure.tight_layout()
         path = out / f"{name}_vs_{file_stem(p.name)}.png"
         figure.savefig(path)
@@ -316,7 +323,7 @@ def plot_safe_speed(study: Study, out: Path) -> Path | None:
     ax.grid(True, alpha=0.3)
     if len(curves) <= MAX_LEGEND:
         ax.legend(fontsize=8, loc="lower right")
-    ax.set_title(f"{study.meta.get('case', '')}: safe web speed v_safe = {study.safe_factor:g} pi D f1 (I-5); "
+    ax.set_title(f"{study.case_name}: safe web speed v_safe = {study.safe_factor:g} pi D f1 (I-5); "
                  "change the roll where its curve falls below the web speed", fontsize=9)
     figure.tight_layout()
     path = out / "safe_speed.png"
@@ -385,7 +392,7 @@ def plot_response_safe_speed(study: Study, out: Path) -> Path | None:
     ax.grid(True, alpha=0.3)
     if 4 * len(curves) <= MAX_LEGEND:
         ax.legend(fontsize=7, loc="best")
-    ax.set_title(f"{study.meta.get('case', '')}: safe web speed from the forced response (±{limit_mm:g} mm) "
+    ax.set_title(f"{study.case_name}: safe web speed from the forced response (±{limit_mm:g} mm) "
                  "beside I-5 and König", fontsize=9)
     figure.tight_layout()
     path = out / "response_safe_speed.png"
@@ -426,7 +433,7 @@ def plot_calibration(study: Study, out: Path) -> Path | None:
     ax.set_ylabel("k from the fitted law")
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    ax.set_title(f"{study.meta.get('case', '')}: calibrated chuck factor", fontsize=10)
+    ax.set_title(f"{study.case_name}: calibrated chuck factor", fontsize=10)
     figure.tight_layout()
     path = out / "calibration.png"
     figure.savefig(path)

@@ -5,10 +5,10 @@ few broken cases must not: an unknown key, a wrong type, a negative length,
 a unit string of the wrong dimension or no unit at all.
 
 cases/11-two-drum-winder.toml is left out: it is a [winder] file, read by its
-own reader (src/winder/winder_scene.cpp, docs/winder.md), which the schema does
-not describe (docs/case-files.md, "Editor support: the JSON Schema");
-cases/18-core-selection.toml likewise, a [selection] file
-(src/selection/selection_scene.cpp, docs/durability.md).
+own reader (src/winder/winder_scene.cpp, docs/winder.md), with its own schema,
+`coremodal schema --winder` (test_winder_fit_schema.py); cases/18-core-selection.toml
+is a [selection] file (src/selection/selection_scene.cpp, docs/durability.md),
+which the case-file schema does not describe.
 
 Needs COREMODAL_BIN (the program) and the jsonschema package (Debian
 python3-jsonschema, installed by scripts/setup.sh); skipped without either.

@@ -33,10 +33,10 @@ def write_response(folder: Path) -> Path:
         "case": {"name": "synthetic"},
         "inputs": {"probes": [{"name": "mid-span", "z_m": 2.16}, {"name": "z = 1 m", "z_m": 1}],
                    "roll_outer_diameter_m": 0.2},
-        "safe_speed": {"limit_mm": 5, "from_amplitude_limit": {"reached": True, "web_speed_m_s": 13.6,
+        "speeds": {"limit_mm": 5, "from_amplitude_limit": {"reached": True, "web_speed_m_s": 13.6,
                                                                 "implied_safe_factor": 0.91},
-                       "i5_safe_web_speed": [{"factor": 0.7, "v_safe_m_s": 10.5},
-                                             {"factor": 0.8, "v_safe_m_s": 12.0}]}}))
+                       "safe_web_speed": [{"safe": 0.7, "v_safe_m_s": 10.5, "v_safe_m_min": 630.0},
+                                             {"safe": 0.8, "v_safe_m_s": 12.0, "v_safe_m_min": 720.0}]}}))
     return folder
 
 
@@ -49,8 +49,8 @@ def test_the_picture_is_drawn_into_the_folder(tmp_path: Path) -> None:
 def test_a_limit_never_reached_draws_too(tmp_path: Path) -> None:
     folder = write_response(tmp_path / "r")
     summary = json.loads((folder / "summary.json").read_text())
-    summary["safe_speed"]["from_amplitude_limit"] = {"reached": False}
-    del summary["safe_speed"]["i5_safe_web_speed"]
+    summary["speeds"]["from_amplitude_limit"] = {"reached": False}
+    del summary["speeds"]["safe_web_speed"]
     (folder / "summary.json").write_text(json.dumps(summary))
     assert draw(folder).is_file()
 

@@ -291,6 +291,33 @@ def test_cli_table_prints_every_mode(modes_h5: Path, results: coremodal.Results,
         assert row[2] == kind
 
 
+def test_cli_table_reads_a_results_folder_and_says_why_one_has_no_modes_h5(
+        modes_h5: Path, cli_env: dict[str, str], tmp_path: Path) -> None:
+    by_file = run_cli(cli_env, "table", str(modes_h5))
+    by_folder = run_cli(cli_env, "table", str(modes_h5.parent))
+    assert by_folder.returncode == 0, by_folder.stderr
+    assert by_folder.stdout == by_file.stdout
+    beam_run = tmp_path / "beam-run"
+    beam_run.mkdir()
+    (beam_run / "modes.csv").write_text("index,frequency_hz\n1,10\n")
+    none = run_cli(cli_env, "table", str(beam_run))
+    assert none.returncode == 1
+    assert "a folder without modes.h5" in none.stderr and "modes.csv" in none.stderr
+
+
+def test_the_table_prints_round_off_effective_masses_as_0_as_the_console_does(
+        results: coremodal.Results) -> None:
+    import dataclasses
+
+    masses = np.array(results.effective_mass, copy=True)
+    masses[0, :3] = [4.4e-23, 2.0, 0.0]  # round-off of an exact zero beside a real mass
+    masses[1, :3] = [1e-3, 0.0, 0.0]  # small, but far above round-off: kept
+    table = dataclasses.replace(results, effective_mass=masses).table().splitlines()
+    first = table[2].split()
+    assert float(first[6]) == 0.0 and float(first[7]) == 2.0
+    assert float(table[3].split()[6]) == pytest.approx(1e-3)
+
+
 def test_cli_plot_writes_the_png(modes_h5: Path, cli_env: dict[str, str],
                                  tmp_path: Path) -> None:
     out = tmp_path / "mode7.png"

@@ -27,10 +27,13 @@ Command add_batch_command(CLI::App& app) {
         ->check(CLI::Range(1u, 4096u));
     cmd->add_option("-m,--mesh", *mesh_level,
                     "mesh level for every case, overriding the case files: coarse, default, fine, very_fine");
+    auto no_plots = std::make_shared<bool>(false);
+    cmd->add_flag("--no-plots", *no_plots, "passed on to every case: no python3 pictures in their report.md");
     cmd->footer("Each case runs as `coremodal run CASE --output OUT/<case> --quiet`; a failing case does not stop "
                 "the others. Exit code 1 if any case failed. See docs/batch.md.");
-    auto run = [options, mesh_level] {
+    auto run = [options, mesh_level, no_plots] {
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
+        options->plots = !*no_plots;
         const auto cases = run_batch(*options, std::cout);
         const std::filesystem::path out = options->output_dir;
         unless_interrupted([&] {  // no table of cases an interrupt stopped

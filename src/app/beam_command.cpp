@@ -9,6 +9,7 @@
 #include "output/beam_formulas_report.hpp"
 #include "scene/units.hpp"
 
+#include <chrono>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -102,9 +103,11 @@ Command add_beam_command(CLI::App& app) {
     cmd->footer("Values carry units (\"--li 250mm\", \"--f-free 52Hz\", \"--ep 1.8GPa\"); options override the "
                 "case file. Formulas and limits: docs/beam.md.");
     auto run = [options] {
+        const auto start = std::chrono::steady_clock::now();
         const BeamFormulas r = beam_formulas(parse_inputs(*options));
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::ostringstream text;
-        if (options->json) print_beam_formulas_json(r, text);
+        if (options->json) print_beam_formulas_json(r, seconds, text);
         else print_beam_formulas_text(r, text);
         std::cout << text.str() << std::flush;
         return 0;

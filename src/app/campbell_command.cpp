@@ -1,4 +1,4 @@
-// `coremodal campbell CASE.toml [--output DIR] [--model beam] [--no-plots]`:
+// `coremodal campbell CASE.toml [--output DIR] [--model beam] [--mesh LEVEL] [--no-plots]`:
 // the modes of a spinning scene ([rotation]) at every speed of its sweep,
 // followed by MAC and labelled forward/backward whirl, with the critical
 // speeds where the excitation lines f = k f_rot cross them (docs/rotation.md).
@@ -19,7 +19,7 @@ int run_rotating_case(const FolderCaseOptions& o) {
     require_one_process(o, "a Campbell sweep");
     RotatingCase rotating = parse_rotating_case(o.case_file);
     Scene& scene = rotating.scene;
-    if (!o.model.empty()) scene.model = o.model;
+    apply_level_options(o, scene);
     if (!rotating.rotation)
         throw InputError(o.case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
                                        "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");

@@ -5,7 +5,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -28,6 +30,28 @@ inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const st
                            "where the scene allows it, else coupled where it allows that, else solid), beam")
         ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
 }
+// -m/--mesh: the mesh level of a generated mesh, overriding the case's [mesh].
+inline CLI::Option* add_mesh_option(CLI::App* cmd, std::string& mesh) {
+    return cmd->add_option("-m,--mesh", mesh,
+                           "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
+}
+// An option every command accepts (--mesh, --no-plots) that this one has no
+// use for: accepted, and answered with a note on stderr saying why, so that
+// one command line works for every command.
+inline void add_unused_option(CLI::App* cmd, const std::string& name, bool takes_value, const std::string& why) {
+    const std::string note = "coremodal: note: " + name + " is not used by `coremodal " + cmd->get_name() + "`: " + why;
+    const auto say = [note](const auto&) { std::cerr << note << std::endl; };
+    if (takes_value)
+        cmd->add_option_function<std::string>(name, say, "not used by this command: " + why)->type_name("VALUE");
+    else
+        cmd->add_flag_function(name, [say](std::int64_t count) { say(count); }, "not used by this command: " + why);
+}
+
+// The exit status of a command line that cannot be parsed (an unknown
+// command or option, a missing or invalid value): EX_USAGE of BSD's
+// sysexits.h, 64 (docs/architecture.md, "Exit status").
+inline constexpr int kExitUsage = 64;
+
 // -o/--output and --force of a command that writes one results folder
 // (default results/<case name><suffix>).
 inline void add_results_options(CLI::App* cmd, std::string& output, bool& force, const std::string& suffix) {

@@ -62,6 +62,9 @@ void add_run_options(CLI::App* cmd, ConvergeLine& line) {
         ->delimiter(',');
     cmd->add_flag("-q,--quiet", o.quiet, "no progress lines or summary");
     cmd->add_flag("--no-plots", line.no_plots, "do not run python3 for error_vs_time.png");
+    add_unused_option(cmd, "--mesh", true,
+                      "it runs its own ladder of meshes (--first, --levels); named levels to compare go in "
+                      "--check-levels");
 }
 
 // The ladders in one paragraph; docs/accuracy-vs-cost.md says the rest.

@@ -48,6 +48,7 @@ Command add_fit_command(CLI::App& app) {
         ->required();
     add_results_options(cmd, o->output, o->force, "-fit");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+    add_unused_option(cmd, "--no-plots", false, "it draws no pictures");
     cmd->footer("Writes fit.toml, report.md and <case>-fitted.toml per case. Exit status 0 when the fit converged "
                 "(warnings about parameters the data cannot separate are in report.md); 1 otherwise. "
                 "docs/calibration.md.");

@@ -5,6 +5,7 @@
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
 #include "output/text_file.hpp"
+#include "scene/mesh_levels.hpp"
 
 #include <iostream>
 
@@ -15,6 +16,7 @@ void add_folder_case_options(CLI::App* cmd, FolderCaseOptions& o, const std::str
     cmd->add_option("case", o.case_file, case_help)->required();
     add_results_options(cmd, o.output, o.force, suffix);
     add_model_option(cmd, o.model);
+    add_mesh_option(cmd, o.mesh);
     cmd->add_flag("-q,--quiet", o.quiet, "print only where the results are");
     cmd->add_flag("--no-plots", o.no_plots, "do not run python3 for " + png);
 }
@@ -23,6 +25,11 @@ void require_one_process(const FolderCaseOptions& o, const std::string& command)
     if (mpi_size() > 1)
         throw InputError(o.case_file + ": " + command + " runs in one process (" + std::to_string(mpi_size()) +
                          " MPI ranks would each run it and write the same results folder); run it without mpirun");
+}
+
+void apply_level_options(const FolderCaseOptions& o, Scene& scene) {
+    if (!o.model.empty()) scene.model = o.model;
+    if (!o.mesh.empty()) apply_mesh_level(scene, o.mesh);
 }
 
 std::filesystem::path prepare_folder_case(const FolderCaseOptions& o, const Scene& scene, const std::string& suffix) {

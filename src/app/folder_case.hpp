@@ -18,10 +18,11 @@ namespace coremodal {
 
 struct FolderCaseOptions {
     std::string case_file, output, model;  // "" output: results/<case name><suffix>
+    std::string mesh;                      // --mesh LEVEL, "" for the case's own [mesh]
     bool quiet = false, no_plots = false, force = false;
 };
 
-// The case, -o/--output, --force, --model, -q and --no-plots.
+// The case, -o/--output, --force, --model, -m/--mesh, -q and --no-plots.
 void add_folder_case_options(CLI::App* cmd, FolderCaseOptions& o, const std::string& case_help,
                              const std::string& suffix, const std::string& png);
 
@@ -29,6 +30,10 @@ void add_folder_case_options(CLI::App* cmd, FolderCaseOptions& o, const std::str
 // results folder chosen and refused if it is not coremodal's
 // (output/results_folder.hpp), the scene's warnings printed. Returns the folder.
 std::filesystem::path prepare_folder_case(const FolderCaseOptions& o, const Scene& scene, const std::string& suffix);
+
+// --model and --mesh applied to the case's scene (a mesh level is refused,
+// naming the levels, for a user mesh file).
+void apply_level_options(const FolderCaseOptions& o, Scene& scene);
 
 // What an analysis puts into its folder.
 struct FolderContents {

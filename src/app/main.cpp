@@ -141,10 +141,11 @@ int main(int argc, char** argv) {
     try {
         app.parse(static_cast<int>(args.ours.size()), ours.data());
     } catch (const CLI::ParseError& e) {
+        // --help and --version end here with 0; a usage error with EX_USAGE.
         const std::optional<std::string> explained = e.get_exit_code() ? explain_parse_error(commands, args.ours) : std::nullopt;
-        if (!explained) return app.exit(e);
+        if (!explained) return app.exit(e) == 0 ? 0 : coremodal::kExitUsage;
         std::cerr << "coremodal: error: " << *explained << std::endl;
-        return e.get_exit_code();
+        return coremodal::kExitUsage;
     }
     const coremodal::Command* chosen = nullptr;
     for (const auto& c : commands)

@@ -1,4 +1,4 @@
-// `coremodal response CASE.toml [--output DIR] [--model beam] [--no-plots]`:
+// `coremodal response CASE.toml [--output DIR] [--model beam] [--mesh LEVEL] [--no-plots]`:
 // the mid-span vibration of a spinning roll against web speed from its
 // damping and excitation ([damping], [excitation], [response]), the
 // resonance peaks and the safe web speed from the amplitude limit beside
@@ -20,7 +20,7 @@ int run_response_case(const FolderCaseOptions& o) {
     require_one_process(o, "a forced response");
     ResponseCase c = parse_response_case(o.case_file);
     Scene& scene = c.scene;
-    if (!o.model.empty()) scene.model = o.model;
+    apply_level_options(o, scene);
     if (!c.response)
         throw InputError(o.case_file + ": no [response] table; expected [damping], [excitation] and [response] with "
                                        "web_speeds = [\"5 m/s\", \"20 m/s\"] and points (docs/response.md)");

@@ -26,8 +26,12 @@ int run_command(RunLine& line) {
     // A forced response (docs/response.md) before a spinning scene's modes
     // (docs/rotation.md): [response] includes the rotation.
     const auto folder_case = [&](const Scene& scene) {
-        return FolderCaseOptions{options.case_file, output_of(scene.name).string(), line.model,
-                                 options.quiet,     line.no_plots,                   options.force};
+        FolderCaseOptions o{options.case_file, output_of(scene.name).string(), line.model};
+        o.mesh = line.mesh_level;
+        o.quiet = options.quiet;
+        o.no_plots = line.no_plots;
+        o.force = options.force;
+        return o;
     };
     if (const ResponseCase c = parse_response_case(options.case_file); c.response)
         return run_response_case(folder_case(c.scene));
@@ -48,8 +52,7 @@ Command add_run_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("run", "Compute, verify and name the modes of one case file");
     cmd->add_option("case", options.case_file, "case file (TOML), e.g. cases/02-clamped-76x15.toml")->required();
     add_results_options(cmd, line->output, options.force, "");
-    cmd->add_option("-m,--mesh", line->mesh_level,
-                    "mesh level for a generated mesh, overriding the case: coarse, default, fine, very_fine");
+    add_mesh_option(cmd, line->mesh_level);
     add_model_option(cmd, line->model);
     cmd->add_flag("-q,--quiet", options.quiet, "no progress lines or tables");
     cmd->add_flag("--compare-rigid", options.compare_rigid,

@@ -55,6 +55,7 @@ Command add_sensitivity_command(CLI::App& app) {
     add_model_option(cmd, o->model);
     cmd->add_option("-m,--mesh", o->mesh, "mesh level, overriding the case's [mesh]: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
+    add_unused_option(cmd, "--no-plots", false, "it draws no pictures");
     cmd->footer("Writes sensitivity.csv and report.md (docs/calibration.md, \"Sensitivities\").");
     return {cmd, [o] { return run_sensitivity_command(*o); }, true};
 }

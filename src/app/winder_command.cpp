@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -30,13 +31,20 @@ int run_winder_command(const WinderOptions& o) {
     const WinderScene scene = read_winder_file(o.case_file);
     const std::filesystem::path out_dir = results_path(o.output, scene.name, "-winder");
     claim_output(out_dir, o.force);  // refused before any work, never over the user's files
-    // A progress line on a terminal only: a log gets the summary alone.
-    const bool show = !o.quiet && ::isatty(STDERR_FILENO);
+    // Progress: one line rewritten in place on a terminal; in a log (not a
+    // terminal) a line at the first diameter, every tenth of the sweep and
+    // the last, so that a logged run is never silent for a minute.
+    const bool terminal = ::isatty(STDERR_FILENO);
     const auto progress = [&](int i, int n) {
-        if (show) std::cerr << "\rwinder: diameter " << i << " of " << n << std::flush;
+        if (o.quiet) return;
+        if (terminal) {
+            std::cerr << "\rwinder: diameter " << i << " of " << n << std::flush;
+        } else if (const int every = std::max(1, (n + 9) / 10); i == 1 || i == n || i % every == 0) {
+            std::cerr << "winder: diameter " << i << " of " << n << std::endl;
+        }
     };
     const WinderSweepResult result = run_winder_sweep(scene, progress);
-    if (show) std::cerr << "\n";
+    if (terminal && !o.quiet) std::cerr << "\n";
 
     ResultsFolder folder(out_dir, o.force);
     const std::filesystem::path& dir = folder.dir();
@@ -61,6 +69,7 @@ Command add_winder_command(CLI::App& app) {
     add_results_options(cmd, o->output, o->force, "-winder");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress line");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
+    add_unused_option(cmd, "--mesh", true, "the drums, rolls and rider are beam elements ([winder] elements)");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [winder] table: docs/winder.md.");
     return {cmd, [o] { return run_winder_command(*o); }, false};

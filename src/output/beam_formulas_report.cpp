@@ -1,9 +1,8 @@
 #include "output/beam_formulas_report.hpp"
 
 #include "common/format.hpp"
+#include "output/summary_json.hpp"
 #include "scene/units.hpp"
-
-#include <toml++/toml.h>
 
 #include <cstdio>
 
@@ -95,63 +94,60 @@ void print_beam_formulas_text(const BeamFormulas& r, std::ostream& out) {
     }
 }
 
-void print_beam_formulas_json(const BeamFormulas& r, std::ostream& out) {
+void print_beam_formulas_json(const BeamFormulas& r, double seconds, std::ostream& out) {
     const Scene& s = r.scene;
     const RestRollSection& sec = r.section;
-    toml::table section{{"Di_m", sec.Di},          {"Do_m", sec.Do},
+    Json section{{"Di_m", sec.Di},          {"Do_m", sec.Do},
                         {"Dp_m", sec.Dp},          {"Ec_Pa", sec.Ec},
                         {"rho_c_kg_m3", sec.rho_c}, {"Ic_m4", r.Ic},
                         {"Ac_m2", r.Ac},           {"EI_N_m2", r.beam.EI},
                         {"mass_per_length_kg_m", r.beam.rho_A}, {"kappa_GA_N", r.beam.kappa_GA},
                         {"rho_I_kg_m", r.beam.rho_I}};
     if (s.rest_paper) {
-        section.insert("Ep_Pa", sec.Ep);
-        section.insert("rho_p_kg_m3", sec.rho_p);
-        section.insert("Ip_m4", r.Ip);
-        section.insert("Ap_m2", r.Ap);
-        section.insert("rest_paper_thickness_m", r.paper_thickness);
+        section["Ep_Pa"] = (sec.Ep);
+        section["rho_p_kg_m3"] = (sec.rho_p);
+        section["Ip_m4"] = (r.Ip);
+        section["Ap_m2"] = (r.Ap);
+        section["rest_paper_thickness_m"] = (r.paper_thickness);
     }
-    toml::table i7{{"k", r.k}, {"f1_hz", r.f1}};
-    if (r.k_assumed) i7.insert("k_assumed", "k = 1: the rigid clamp at Li, an upper bound (no chuck or stand compliance)");
+    Json i7{{"k", r.k}, {"f1_hz", r.f1}};
+    if (r.k_assumed) i7["k_assumed"] = "k = 1: the rigid clamp at Li, an upper bound (no chuck or stand compliance)";
     if (!r.k_source.empty()) {
-        i7.insert("k_source", r.k_source);
-        i7.insert("g1", r.groups->g1);
-        i7.insert("g2", r.groups->g2);
-        i7.insert("g3", r.groups->g3);
+        i7["k_source"] = (r.k_source);
+        i7["g1"] = (r.groups->g1);
+        i7["g2"] = (r.groups->g2);
+        i7["g3"] = (r.groups->g3);
     }
-    toml::table t{
-        {"case", s.name},
-        {"source_file", s.source_file},
-        {"section", section},
-        {"span", toml::table{{"Lc_m", r.Lc}, {"Li_m", r.Li}, {"Li_source", r.li_source}, {"L_m", r.L}}},
-        {"i7", i7},
-        {"euler_bernoulli", toml::table{{"clamped_clamped_L_hz", r.eb_cc}, {"free_free_Lc_hz", r.eb_ff}}},
-        {"timoshenko", toml::table{{"clamped_clamped_L_hz", r.timo_cc}, {"free_free_Lc_hz", r.timo_ff}}},
-        {"koenig", toml::table{{"formula", r.koenig_formula},
-                               {"experience_factor", r.koenig_factor},
-                               {"l_m", r.koenig_l},
-                               {"l_source", r.koenig_l_source},
-                               {"f_krit_hz", r.koenig.f_krit_hz},
-                               {"v_krit_m_s", r.koenig.v_krit_m_s}}},
-        {"safe_web_speed", toml::table{{"safe", r.safe}, {"Dp_m", sec.Dp}, {"f1_hz", r.f1}, {"v_safe_m_s", r.v_safe}}},
-    };
+    // The same head and I-5 shape as every command's summary.json (output/summary_json.hpp).
+    Json t = summary_head("beam", s.name, s.source_file, s.description);
+    t["section"] = section;
+    t["span"] = Json{{"Lc_m", r.Lc}, {"Li_m", r.Li}, {"Li_source", r.li_source}, {"L_m", r.L}};
+    t["i7"] = i7;
+    t["euler_bernoulli"] = Json{{"clamped_clamped_L_hz", r.eb_cc}, {"free_free_Lc_hz", r.eb_ff}};
+    t["timoshenko"] = Json{{"clamped_clamped_L_hz", r.timo_cc}, {"free_free_Lc_hz", r.timo_ff}};
+    t["koenig"] = Json{{"formula", r.koenig_formula}, {"experience_factor", r.koenig_factor}, {"l_m", r.koenig_l},
+                       {"l_source", r.koenig_l_source}, {"f_krit_hz", r.koenig.f_krit_hz},
+                       {"v_krit_m_s", r.koenig.v_krit_m_s}};
+    RollSpeeds speeds;
+    speeds.f1_hz = r.f1;
+    speeds.dp_m = sec.Dp;
+    speeds.safe = {SafeSpeed{r.safe, r.v_safe}};
+    t["speeds"] = safe_web_speed_json(speeds);
     if (const auto& a = r.amplification)
-        t.insert("single_mode_amplification",
-                 toml::table{{"web_speed_m_s", a->web_speed_m_s}, {"f_rot_hz", a->f_rot_hz}, {"r", a->ratio},
-                             {"zeta", a->zeta}, {"zeta_assumed", a->zeta_assumed}, {"d", a->d}});
+        t["single_mode_amplification"] = Json{{"web_speed_m_s", a->web_speed_m_s}, {"f_rot_hz", a->f_rot_hz},
+                                              {"r", a->ratio}, {"zeta", a->zeta}, {"zeta_assumed", a->zeta_assumed},
+                                              {"d", a->d}};
     if (r.f_free) {
-        toml::table m{{"f_free_hz", *r.f_free}, {"f2_hz", *r.f2}};
-        if (r.f_clamped) m.insert("f_clamped_hz", *r.f_clamped), m.insert("k", *r.k_measured);
-        if (r.Ec_measured) m.insert("Q", *r.Q), m.insert("Ec_Pa", *r.Ec_measured);
-        if (r.Ep_measured) m.insert("Ep_Pa", *r.Ep_measured);
-        t.insert("free_free_measurement", m);
+        Json m{{"f_free_hz", *r.f_free}, {"f2_hz", *r.f2}};
+        if (r.f_clamped) m["f_clamped_hz"] = (*r.f_clamped), m["k"] = (*r.k_measured);
+        if (r.Ec_measured) m["Q"] = (*r.Q), m["Ec_Pa"] = (*r.Ec_measured);
+        if (r.Ep_measured) m["Ep_Pa"] = (*r.Ep_measured);
+        t["free_free_measurement"] = (m);
     }
-    toml::array notes, assumptions;
-    for (const auto& n : r.notes) notes.push_back(n);
-    for (const auto& a : beam_formula_assumptions(s)) assumptions.push_back(a);
-    t.insert("notes", notes);
-    t.insert("assumptions", assumptions);
-    out << toml::json_formatter{t} << "\n";
+    t["notes"] = string_array(r.notes);
+    t["assumptions"] = string_array(beam_formula_assumptions(s));
+    t["timing_s"] = Json{{"total", seconds}};
+    out << json_text(t);
 }
 
 }  // namespace coremodal

@@ -4,9 +4,8 @@
 #include "modes/tracking.hpp"  // label_text
 #include "output/csv.hpp"
 #include "output/i5_speeds.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <toml++/toml.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -47,8 +46,8 @@ std::string critical_rows(const CampbellResult& r) {
     return out;
 }
 
-toml::table critical_json(const WhirlCrossing& c) {
-    return toml::table{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
+Json critical_json(const WhirlCrossing& c) {
+    return Json{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
                        {"speed_hz", c.speed_hz},    {"frequency_hz", c.frequency_hz},
                        {"web_speed_m_s", c.web_speed_m_s}, {"track", c.track},
                        {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)},
@@ -56,40 +55,35 @@ toml::table critical_json(const WhirlCrossing& c) {
                        {"source", crossing_source_name(c.source)}};
 }
 
-toml::table safe_speed_json(const CampbellResult& r) {
-    toml::table t = i5_speeds_json(r.speeds_at_rest);
+// I-5 at rest in the shape every summary uses, and the first order-1 critical speed.
+Json speeds_json(const CampbellResult& r) {
+    Json t = safe_web_speed_json(r.speeds_at_rest);
     if (!r.speeds_at_rest.given()) return t;
-    if (const WhirlCrossing* c = r.first_order_one()) t.insert("first_order_1_critical", critical_json(*c));
+    if (const WhirlCrossing* c = r.first_order_one()) t["first_order_1_critical"] = critical_json(*c);
     return t;
 }
 
 std::string summary_json(const Scene& scene, const RotationSpec& rotation, const CampbellResult& r) {
-    toml::array speeds, critical, effects, notes, orders;
+    Json speeds = Json::array(), critical = Json::array(), orders = Json::array();
     for (const CampbellPoint& p : r.points) speeds.push_back(p.speed_hz * kRpmPerHz);
     for (const WhirlCrossing& c : r.critical) critical.push_back(critical_json(c));
-    for (const std::string& e : r.effects) effects.push_back(e);
-    for (const std::string& n : r.notes) notes.push_back(n);
     for (int k : r.excitation_orders) orders.push_back(k);
-    toml::table t{{"program", "coremodal campbell"},
-                  {"version", COREMODAL_VERSION},
-                  {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
-                  {"model", toml::table{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}}},
-                  {"effects", effects},
-                  {"notes", notes},
-                  {"rotation", toml::table{{"speeds_rpm", speeds}, {"excitation_orders", orders},
-                                           {"roll_outer_diameter_m", r.roll_outer_diameter},
-                                           {"from_web_speed", r.from_web_speed},
-                                           {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening},
-                                           {"sweep_end", r.sweep_end}}},
-                  {"critical_speeds", critical},
-                  {"safe_speed", safe_speed_json(r)},
-                  {"verification", toml::table{{"max_relative_residual", r.max_relative_residual},
-                                               {"complete", true},
-                                               {"completeness", r.completeness}}},
-                  {"time_s", r.solve_seconds}};
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+    Json t = summary_head("campbell", scene.name, scene.source_file, scene.description);
+    t["model"] = Json{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}};
+    t["effects"] = string_array(r.effects);
+    t["notes"] = string_array(r.notes);
+    t["rotation"] = Json{{"speeds_rpm", speeds},
+                         {"excitation_orders", orders},
+                         {"roll_outer_diameter_m", r.roll_outer_diameter},
+                         {"from_web_speed", r.from_web_speed},
+                         {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening},
+                         {"sweep_end", r.sweep_end}};
+    t["critical_speeds"] = critical;
+    t["speeds"] = speeds_json(r);
+    t["verification"] =
+        Json{{"max_relative_residual", r.max_relative_residual}, {"complete", true}, {"completeness", r.completeness}};
+    t["timing_s"] = Json{{"total", r.solve_seconds}};
+    return json_text(t);
 }
 
 std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }

@@ -4,9 +4,9 @@
 #include "output/csv.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
 
-#include <toml++/toml.h>
 
 #include <cmath>
 #include <cstdint>
@@ -78,37 +78,37 @@ std::string converge_csv(const ConvergeStudy& study) {
 
 namespace {
 
-toml::table timing_table(const Timing& t) {
-    return toml::table{{"mesh", t.mesh},
+Json timing_table(const Timing& t) {
+    return Json{{"mesh", t.mesh},
                        {"assemble", t.assemble},
                        {"factor_and_solve", t.factor_and_solve},
                        {"classify", t.classify},
                        {"total", t.total}};
 }
 
-toml::table richardson_table(const Richardson& r) {
-    toml::table t{{"extrapolated", r.extrapolated},
+Json richardson_table(const Richardson& r) {
+    Json t{{"extrapolated", r.extrapolated},
                   {"order", r.order},
                   {"f0_hz", r.f0},
                   {"error_estimate_hz", r.error_estimate},
                   {"relative_error_estimate", r.error_estimate / std::abs(r.f0)},
                   {"asymptotic", r.asymptotic},
                   {"note", r.note}};
-    if (r.previous_order) t.insert("previous_order", *r.previous_order);
-    if (r.previous_f0) t.insert("previous_f0_hz", *r.previous_f0);
-    if (r.f0_uncertainty) t.insert("f0_uncertainty_hz", *r.f0_uncertainty);
+    if (r.previous_order) t["previous_order"] = (*r.previous_order);
+    if (r.previous_f0) t["previous_f0_hz"] = (*r.previous_f0);
+    if (r.f0_uncertainty) t["f0_uncertainty_hz"] = (*r.f0_uncertainty);
     return t;
 }
 
-toml::table level_table(const LevelResult& l) {
-    return toml::table{{"k", l.step.k},
+Json level_table(const LevelResult& l) {
+    return Json{{"k", l.step.k},
                        {"h", l.step.h},
                        {"mesh", l.step.counts},
                        {"n_dofs", l.n_dofs},
                        {"runs", l.runs},
                        {"timing_s", timing_table(l.median_s)},
                        {"cpu_s", l.median_cpu_s},
-                       {"solver_s", toml::table{{"factorizations", l.median_solver_s.factor_s},
+                       {"solver_s", Json{{"factorizations", l.median_solver_s.factor_s},
                                                 {"triangular_solves", l.median_solver_s.solve_s},
                                                 {"orthogonalization", l.median_solver_s.orthogonalize_s}}},
                        {"peak_memory_mb", l.peak_memory_mb},
@@ -116,20 +116,20 @@ toml::table level_table(const LevelResult& l) {
                        {"repeat_spread", l.max_repeat_spread}};
 }
 
-toml::table mode_table(const ModelStudy& model, const TrackedMode& mode, const ConvergeStudy& study) {
+Json mode_table(const ModelStudy& model, const TrackedMode& mode, const ConvergeStudy& study) {
     const auto errors = vs_solid(model, mode, study);
-    toml::array values;
+    Json values = Json::array();
     for (std::size_t i = 0; i < model.levels.size(); ++i) {
         if (!mode.frequency_hz[i]) continue;
-        toml::table v{{"level", static_cast<int64_t>(i)}, {"frequency_hz", *mode.frequency_hz[i]}};
-        if (mode.relative_error[i]) v.insert("relative_error", *mode.relative_error[i]);
-        if (!errors.empty() && errors[i]) v.insert("error_vs_solid", *errors[i]);
+        Json v{{"level", static_cast<int64_t>(i)}, {"frequency_hz", *mode.frequency_hz[i]}};
+        if (mode.relative_error[i]) v["relative_error"] = (*mode.relative_error[i]);
+        if (!errors.empty() && errors[i]) v["error_vs_solid"] = (*errors[i]);
         values.push_back(v);
     }
-    toml::table t{{"id", mode.key.text()}, {"type", mode.key.type},         {"n", mode.key.n},
+    Json t{{"id", mode.key.text()}, {"type", mode.key.type},         {"n", mode.key.n},
                   {"m", mode.key.m},       {"occurrence", mode.key.occurrence}, {"role", mode.role},
                   {"values", values}};
-    if (mode.richardson) t.insert("richardson", richardson_table(*mode.richardson));
+    if (mode.richardson) t["richardson"] = (richardson_table(*mode.richardson));
     return t;
 }
 
@@ -145,28 +145,28 @@ const char* timing_parts(const std::string& model) {
     return nullptr;
 }
 
-toml::table model_table(const ModelStudy& model, const ConvergeStudy& study) {
-    toml::array levels, modes;
+Json model_table(const ModelStudy& model, const ConvergeStudy& study) {
+    Json levels = Json::array(), modes = Json::array();
     for (const auto& l : model.levels) levels.push_back(level_table(l));
     for (const auto& mode : model.modes) modes.push_back(mode_table(model, mode, study));
-    toml::table m{{"model", model.model},
+    Json m{{"model", model.model},
                   {"ladder", model.ladder_note},
                   {"refined_dimensions", model.refined_dimensions},
                   {"levels", levels},
                   {"modes", modes}};
-    if (const char* parts = timing_parts(model.model)) m.insert("timing_parts", parts);
-    toml::array unseen;
-    for (const auto& [role, why] : model.unseen_roles) unseen.push_back(toml::table{{"role", role}, {"reason", why}});
-    m.insert("not_in_model", unseen);
-    if (model.time_exponent) m.insert("time_exponent", *model.time_exponent);
-    if (model.memory_exponent) m.insert("memory_exponent", *model.memory_exponent);
+    if (const char* parts = timing_parts(model.model)) m["timing_parts"] = (parts);
+    Json unseen = Json::array();
+    for (const auto& [role, why] : model.unseen_roles) unseen.push_back(Json{{"role", role}, {"reason", why}});
+    m["not_in_model"] = (unseen);
+    if (model.time_exponent) m["time_exponent"] = (*model.time_exponent);
+    if (model.memory_exponent) m["memory_exponent"] = (*model.memory_exponent);
     return m;
 }
 
-toml::array model_errors_array(const ConvergeStudy& study) {
-    toml::array errors;
+Json model_errors_array(const ConvergeStudy& study) {
+    Json errors = Json::array();
     for (const ModelError& e : model_errors(study.models))
-        errors.push_back(toml::table{{"model", e.model},
+        errors.push_back(Json{{"model", e.model},
                                      {"role", e.role},
                                      {"id", e.id},
                                      {"solid_id", e.solid_id},
@@ -177,22 +177,22 @@ toml::array model_errors_array(const ConvergeStudy& study) {
     return errors;
 }
 
-toml::array checks_array(const ConvergeStudy& study) {
-    toml::array checks;
+Json checks_array(const ConvergeStudy& study) {
+    Json checks = Json::array();
     const ModelStudy* solid = find_model(study.models, "solid");
     for (const auto& c : study.checks) {
-        toml::array modes;
+        Json modes = Json::array();
         for (const auto& d : distinct_modes(c.result.modes)) {
-            toml::table v{{"id", d.key.text()}, {"frequency_hz", d.frequency_hz}};
+            Json v{{"id", d.key.text()}, {"frequency_hz", d.frequency_hz}};
             if (solid)
                 for (const auto& t : solid->modes)
                     if (t.key == d.key && t.richardson) {
-                        v.insert("relative_error", std::abs(d.frequency_hz - t.richardson->f0) / t.richardson->f0);
-                        v.insert("role", t.role);
+                        v["relative_error"] = (std::abs(d.frequency_hz - t.richardson->f0) / t.richardson->f0);
+                        v["role"] = (t.role);
                     }
             modes.push_back(v);
         }
-        checks.push_back(toml::table{{"name", c.name},
+        checks.push_back(Json{{"name", c.name},
                                      {"mesh", c.mesh},
                                      {"n_dofs", c.result.n_dofs},
                                      {"timing_s", timing_table(c.result.median_s)},
@@ -205,27 +205,20 @@ toml::array checks_array(const ConvergeStudy& study) {
 }  // namespace
 
 std::string converge_json(const ConvergeStudy& study) {
-    toml::array models;
+    Json models = Json::array();
     for (const auto& model : study.models) models.push_back(model_table(model, study));
-    toml::array notes;
-    for (const auto& n : study.notes) notes.push_back(n);
-    toml::table root{{"program", "coremodal " COREMODAL_VERSION},
-                     {"case", study.case_name},
-                     {"source_file", study.source_file},
-                     {"n_modes", study.n_modes},
-                     {"repeats", study.repeats},
-                     {"repeat_limit_s", study.repeat_limit_s},
-                     {"total_time_s", study.total_time_s},
-                     {"ladder_time_s", study.ladder_time_s},
-                     {"load_average", toml::array{study.load_start, study.load_end}},
-                     {"n_cores", study.n_cores},
-                     {"models", models},
-                     {"model_errors", model_errors_array(study)},
-                     {"checks", checks_array(study)},
-                     {"notes", notes}};
-    std::ostringstream s;
-    s << toml::json_formatter{root} << "\n";
-    return s.str();
+    Json root = summary_head("converge", study.case_name, study.source_file, "");
+    root["n_modes"] = study.n_modes;
+    root["repeats"] = study.repeats;
+    root["repeat_limit_s"] = study.repeat_limit_s;
+    root["timing_s"] = Json{{"total", study.total_time_s}, {"ladder", study.ladder_time_s}};
+    root["load_average"] = Json::array({study.load_start, study.load_end});
+    root["n_cores"] = study.n_cores;
+    root["models"] = models;
+    root["model_errors"] = model_errors_array(study);
+    root["checks"] = checks_array(study);
+    root["notes"] = string_array(study.notes);
+    return json_text(root);
 }
 
 void write_converge_results(const ConvergeStudy& study, const std::filesystem::path& out, const ConvergeWriting& how,

@@ -4,9 +4,8 @@
 #include "modes/tracking.hpp"  // label_text
 #include "output/csv.hpp"
 #include "output/i5_speeds.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <toml++/toml.h>
 
 #include <sstream>
 
@@ -46,8 +45,8 @@ std::string peak_rows(const ResponseResult& r) {
     return out;
 }
 
-toml::table peak_json(const ResponsePeak& p) {
-    return toml::table{{"order", p.order},
+Json peak_json(const ResponsePeak& p) {
+    return Json{{"order", p.order},
                        {"web_speed_m_s", p.web_speed_m_s},
                        {"speed_rpm", p.speed_hz * kRpmPerHz},
                        {"excitation_hz", p.excitation_hz},
@@ -56,40 +55,42 @@ toml::table peak_json(const ResponsePeak& p) {
                        {"mode_frequency_hz", p.mode_frequency_hz}};
 }
 
-toml::table safe_speed_json(const ResponseResult& r) {
-    toml::table t = i5_speeds_json(r.speeds_at_rest);
-    t.insert("limit_mm", r.limit_m * kMm);
-    t.insert("probe", r.probes.front().name);
-    toml::table amplitude{{"reached", r.safe.reached}};
+// I-5 at rest in the shape every summary uses, and the speed at which the
+// amplitude reaches the limit.
+Json speeds_json(const ResponseResult& r) {
+    Json t = safe_web_speed_json(r.speeds_at_rest);
+    t["limit_mm"] = (r.limit_m * kMm);
+    t["probe"] = (r.probes.front().name);
+    Json amplitude{{"reached", r.safe.reached}};
     if (r.safe.reached) {
-        amplitude.insert("below_range", r.safe.below_range);
-        amplitude.insert("web_speed_m_s", r.safe.web_speed_m_s);
-        amplitude.insert("speed_rpm", r.safe.speed_hz * kRpmPerHz);
-        amplitude.insert("implied_safe_factor", r.safe.implied_factor);
+        amplitude["below_range"] = (r.safe.below_range);
+        amplitude["web_speed_m_s"] = (r.safe.web_speed_m_s);
+        amplitude["speed_rpm"] = (r.safe.speed_hz * kRpmPerHz);
+        amplitude["implied_safe_factor"] = (r.safe.implied_factor);
     }
-    t.insert("from_amplitude_limit", amplitude);
+    t["from_amplitude_limit"] = (amplitude);
     return t;
 }
 
 // [damping] as given, and the ratio each kept mode took (and from what).
-toml::table damping_json(const ResponseResult& r) {
+Json damping_json(const ResponseResult& r) {
     const DampingSpec& d = r.damping;
-    toml::table t{{"model", d.rayleigh ? "rayleigh" : "modal"}, {"source", d.source}, {"summary", r.damping_summary}};
-    if (d.rayleigh) t.insert("rayleigh", toml::table{{"alpha_per_s", d.rayleigh->alpha}, {"beta_s", d.rayleigh->beta}});
-    else t.insert("ratio", d.ratio);
-    toml::table families;
-    for (const DampingSpec::FamilyRatio& f : d.families) families.insert(f.family, f.ratio);
-    t.insert("families", families);
-    toml::array given, kept;
-    for (const DampingSpec::ModeRatio& m : d.modes) given.push_back(toml::table{{"mode", m.mode}, {"ratio", m.ratio}});
-    t.insert("modes", given);
+    Json t{{"model", d.rayleigh ? "rayleigh" : "modal"}, {"source", d.source}, {"summary", r.damping_summary}};
+    if (d.rayleigh) t["rayleigh"] = (Json{{"alpha_per_s", d.rayleigh->alpha}, {"beta_s", d.rayleigh->beta}});
+    else t["ratio"] = (d.ratio);
+    Json families = Json::object();
+    for (const DampingSpec::FamilyRatio& f : d.families) families[f.family] = (f.ratio);
+    t["families"] = (families);
+    Json given = Json::array(), kept = Json::array();
+    for (const DampingSpec::ModeRatio& m : d.modes) given.push_back(Json{{"mode", m.mode}, {"ratio", m.ratio}});
+    t["modes"] = (given);
     for (const ModeDamping& m : r.mode_damping) {
-        toml::array rest;
+        Json rest = Json::array();
         for (int k : m.rest_modes) rest.push_back(k);
-        kept.push_back(toml::table{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
+        kept.push_back(Json{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
                                    {"zeta", m.zeta}, {"from", m.from}});
     }
-    t.insert("kept_modes", kept);
+    t["kept_modes"] = (kept);
     return t;
 }
 
@@ -106,18 +107,18 @@ std::string damping_table(const ResponseResult& r) {
     return out;
 }
 
-toml::table inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
+Json inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
     const ExcitationSpec& x = setup.excitation;
-    toml::array probes, orders;
-    for (const ResponseRange::Probe& p : r.probes) probes.push_back(toml::table{{"name", p.name}, {"z_m", p.z_m}});
+    Json probes = Json::array(), orders = Json::array();
+    for (const ResponseRange::Probe& p : r.probes) probes.push_back(Json{{"name", p.name}, {"z_m", p.z_m}});
     for (size_t k = 0; k < r.orders.size(); ++k) {
-        toml::array sources;
+        Json sources = Json::array();
         for (const std::string& s : r.order_sources[k]) sources.push_back(s);
-        orders.push_back(toml::table{{"order", r.orders[k]}, {"sources", sources}});
+        orders.push_back(Json{{"order", r.orders[k]}, {"sources", sources}});
     }
-    return toml::table{
+    return Json{
         {"damping", damping_json(r)},
-        {"excitation", toml::table{{"bow_mm", x.bow_m * kMm}, {"bow_shape", bow_shape_name(x.bow_shape)},
+        {"excitation", Json{{"bow_mm", x.bow_m * kMm}, {"bow_shape", bow_shape_name(x.bow_shape)},
                                    {"unbalance_kg_m", x.unbalance_kg_m}, {"eccentricity_mm", x.eccentricity_m * kMm},
                                    {"ovality_mm", x.ovality_m * kMm}, {"gravity", x.gravity},
                                    {"ovality_stiffness_split", r.ovality_split}, {"static_sag_mm", r.sag_m * kMm}}},
@@ -128,34 +129,28 @@ toml::table inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
 }
 
 std::string summary_json(const Scene& scene, const ResponseSetup& setup, const ResponseResult& r) {
-    toml::array peaks, effects, notes, assumptions;
+    Json peaks = Json::array();
     for (const ResponsePeak& p : r.peaks) peaks.push_back(peak_json(p));
-    for (const std::string& e : r.effects) effects.push_back(e);
-    for (const std::string& n : r.notes) notes.push_back(n);
-    for (const std::string& a : r.assumptions) assumptions.push_back(a);
     const ResponseChecks& c = r.checks;
-    toml::table t{
-        {"program", "coremodal response"},
-        {"version", COREMODAL_VERSION},
-        {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
-        {"model", toml::table{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}}},
-        {"effects", effects},
-        {"notes", notes},
-        {"assumptions", assumptions},
-        {"inputs", inputs_json(setup, r)},
-        {"max_amplitude_mm", r.max_amplitude_m * kMm},
-        {"max_amplitude_web_speed_m_s", r.max_amplitude_web_speed_m_s},
-        {"peaks", peaks},
-        {"safe_speed", safe_speed_json(r)},
-        {"verification", toml::table{{"modes_all", c.n_modes_all}, {"modes_used", c.n_modes_used},
-                                     {"cutoff_hz", c.cutoff_hz}, {"speeds_checked", c.speeds_checked},
-                                     {"truncation_max_relative", c.truncation_max_relative},
-                                     {"direct_max_relative", c.direct_max_relative},
-                                     {"reference", c.complete_basis ? "complete basis" : "direct solve"}}},
-        {"time_s", r.solve_seconds}};
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+    Json t = summary_head("response", scene.name, scene.source_file, scene.description);
+    t["model"] = Json{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}};
+    t["effects"] = string_array(r.effects);
+    t["notes"] = string_array(r.notes);
+    t["assumptions"] = string_array(r.assumptions);
+    t["inputs"] = inputs_json(setup, r);
+    t["max_amplitude_mm"] = r.max_amplitude_m * kMm;
+    t["max_amplitude_web_speed_m_s"] = r.max_amplitude_web_speed_m_s;
+    t["peaks"] = peaks;
+    t["speeds"] = speeds_json(r);
+    t["verification"] = Json{{"modes_all", c.n_modes_all},
+                             {"modes_used", c.n_modes_used},
+                             {"cutoff_hz", c.cutoff_hz},
+                             {"speeds_checked", c.speeds_checked},
+                             {"truncation_max_relative", c.truncation_max_relative},
+                             {"direct_max_relative", c.direct_max_relative},
+                             {"reference", c.complete_basis ? "complete basis" : "direct solve"}};
+    t["timing_s"] = Json{{"total", r.solve_seconds}};
+    return json_text(t);
 }
 
 std::string peak_table(const ResponseResult& r) {

@@ -4,9 +4,9 @@
 #include "common/format.hpp"
 #include "output/csv.hpp"
 #include "output/python_plots.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
 
-#include <toml++/toml.h>
 
 #include <algorithm>
 #include <sstream>
@@ -101,13 +101,13 @@ std::string study_csv(const CaseSweep& sweep, const StudyResult& result) {
 }
 
 std::string study_json(const CaseSweep& sweep, const StudyResult& result, const std::string& kind) {
-    toml::array parameters;
+    Json parameters = Json::array();
     for (const SweepParameter& p : sweep.parameters()) {
-        toml::array keys, labels, values;
+        Json keys = Json::array(), labels = Json::array(), values = Json::array();
         for (const auto& k : p.keys) keys.push_back(k);
         for (const auto& l : p.labels) labels.push_back(l);
         for (double v : p.si) values.push_back(v);
-        parameters.push_back(toml::table{{"name", p.name},
+        parameters.push_back(Json{{"name", p.name},
                                          {"column", parameter_column(p)},
                                          {"keys", keys},
                                          {"numeric", p.numeric},
@@ -115,29 +115,26 @@ std::string study_json(const CaseSweep& sweep, const StudyResult& result, const 
                                          {"labels", labels},
                                          {"values", values}});
     }
-    toml::array diameter;
+    Json diameter = Json::array();
     for (int j : diameter_parameters(sweep, result)) diameter.push_back(sweep.parameters()[static_cast<size_t>(j)].name);
     const SweepOptions& o = sweep.options();
-    toml::table options{{"mesh", o.mesh_level.empty() ? "(the case's own [mesh])" : o.mesh_level},
+    Json options{{"mesh", o.mesh_level.empty() ? "(the case's own [mesh])" : o.mesh_level},
                         {"modes", o.modes},  // 0: the case's own [analysis]
                         {"safe_factor", o.safe_factor}};
-    if (o.web_speed_m_s) options.insert("web_speed_m_s", *o.web_speed_m_s);
+    if (o.web_speed_m_s) options["web_speed_m_s"] = (*o.web_speed_m_s);
     // Whether the points ran the forced response (the case has [response]).
     const bool response = std::any_of(result.points.begin(), result.points.end(),
                                       [](const StudyPoint& p) { return p.response.has_value(); });
-    toml::table t{{"kind", kind},
-                  {"case", sweep.case_name()},
-                  {"case_file", sweep.case_file()},
-                  {"n_points", sweep.n_points()},
-                  {"n_failed", result.n_failed()},
-                  {"time_s", result.time_s},
-                  {"parameters", parameters},
-                  {"diameter_parameters", diameter},
-                  {"options", options},
-                  {"response", response}};
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+    Json t = summary_head(kind == "calibration" ? "calibrate" : "study", sweep.case_name(), sweep.case_file(), "");
+    t["kind"] = kind;
+    t["n_points"] = sweep.n_points();
+    t["n_failed"] = result.n_failed();
+    t["parameters"] = parameters;
+    t["diameter_parameters"] = diameter;
+    t["options"] = options;
+    t["response"] = response;
+    t["timing_s"] = Json{{"total", result.time_s}};
+    return json_text(t);
 }
 
 StudyFiles write_study_files(const std::filesystem::path& dir, const CaseSweep& sweep, const StudyResult& result,

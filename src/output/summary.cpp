@@ -1,10 +1,10 @@
 #include "output/summary.hpp"
 
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
 
 #include "beam/iso_test.hpp"
 
-#include <toml++/toml.h>
 
 #include <cmath>
 #include <cstdio>
@@ -23,35 +23,21 @@ namespace {
 // never expected (every writer input is checked upstream).
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
 
-// JSON's null for a value that does not exist (no bending mode was found):
-// TOML, which builds the document, has none, so this marker stands in for it
-// and becomes null after formatting (to_json). Its control characters keep it
-// apart from any text a user can write by accident.
-constexpr std::string_view kNullMarker = "\x1f" "coremodal:null" "\x1f";
-constexpr std::string_view kFormattedNullMarker = "\"\\u001Fcoremodal:null\\u001F\"";
-
-// `value` where it exists, else null.
+// `value` where it exists, else null (no bending mode was found).
 template <typename Number>
-void insert_or_null(toml::table& t, std::string_view key, bool exists, Number value) {
-    if (!exists)
-        t.insert(key, kNullMarker);
-    else if constexpr (std::is_floating_point_v<Number>)
-        t.insert(key, finite(value));
+Json value_or_null(bool exists, Number value) {
+    if (!exists) return nullptr;
+    if constexpr (std::is_floating_point_v<Number>)
+        return finite(value);
     else
-        t.insert(key, value);
+        return value;
 }
 
-toml::array strings_array(const std::vector<std::string>& items) {
-    toml::array a;
-    for (const auto& item : items) a.push_back(item);
-    return a;
-}
-
-toml::table material_table(const OrthotropicMaterial& m) {
-    return toml::table{{"name", m.name},           {"E_r", m.E_r},           {"E_theta", m.E_theta},
-                       {"E_z", m.E_z},             {"G_rtheta", m.G_rtheta}, {"G_rz", m.G_rz},
-                       {"G_thetaz", m.G_thetaz},   {"nu_rtheta", m.nu_rtheta}, {"nu_rz", m.nu_rz},
-                       {"nu_thetaz", m.nu_thetaz}, {"density", m.density},   {"source", m.source}};
+Json material_json(const OrthotropicMaterial& m) {
+    return Json{{"name", m.name},           {"E_r", m.E_r},           {"E_theta", m.E_theta},
+                {"E_z", m.E_z},             {"G_rtheta", m.G_rtheta}, {"G_rz", m.G_rz},
+                {"G_thetaz", m.G_thetaz},   {"nu_rtheta", m.nu_rtheta}, {"nu_rz", m.nu_rz},
+                {"nu_thetaz", m.nu_thetaz}, {"density", m.density},   {"source", m.source}};
 }
 
 const char* support_type_name(SupportKind kind) {
@@ -63,237 +49,215 @@ const char* support_type_name(SupportKind kind) {
     return "";
 }
 
-toml::table bearing_table(const BearingSpec& b) {
-    toml::table t{{"type", b.rigid ? "rigid" : "elastic"}};
+Json bearing_json(const BearingSpec& b) {
+    Json t{{"type", b.rigid ? "rigid" : "elastic"}};
     if (b.rigid) return t;
-    t.insert("radial_stiffness_n_per_m", b.radial_stiffness);
-    t.insert("tilting_stiffness_nm_per_rad", b.tilting_stiffness);
-    if (b.frame_mass) t.insert("frame_mass_kg", *b.frame_mass);
-    if (b.frame_stiffness) t.insert("frame_stiffness_n_per_m", *b.frame_stiffness);
+    t["radial_stiffness_n_per_m"] = b.radial_stiffness;
+    t["tilting_stiffness_nm_per_rad"] = b.tilting_stiffness;
+    if (b.frame_mass) t["frame_mass_kg"] = *b.frame_mass;
+    if (b.frame_stiffness) t["frame_stiffness_n_per_m"] = *b.frame_stiffness;
     return t;
 }
 
-toml::array chucks_array(const std::vector<ChuckSpec>& chucks) {
-    toml::array out;
+Json chucks_json(const std::vector<ChuckSpec>& chucks) {
+    Json out = Json::array();
     for (const auto& c : chucks) {
-        toml::array expanding;
+        Json expanding = Json::array();
         for (const auto& e : c.expanding)
-            expanding.push_back(toml::table{{"center_m", e.center},
-                                            {"width_m", e.width},
-                                            {"segments", e.segments},
-                                            {"segment_angle_rad", e.segment_angle}});
-        toml::table interface{{"kind", c.interface.kind == InterfaceKind::bonded ? "bonded" : "spring"}};
+            expanding.push_back(Json{{"center_m", e.center},
+                                     {"width_m", e.width},
+                                     {"segments", e.segments},
+                                     {"segment_angle_rad", e.segment_angle}});
+        Json interface{{"kind", c.interface.kind == InterfaceKind::bonded ? "bonded" : "spring"}};
         if (c.interface.kind == InterfaceKind::spring) {
-            interface.insert("expanded", c.interface.expanded);
-            if (c.interface.contact == ContactKind::one_sided) interface.insert("contact", "one-sided");
-            interface.insert("normal_stiffness_pa_per_m", c.interface.normal_stiffness);
-            interface.insert("tangential_stiffness_pa_per_m", c.interface.tangential_stiffness);
-            if (c.interface.expansion_pressure) interface.insert("expansion_pressure_pa", *c.interface.expansion_pressure);
+            interface["expanded"] = c.interface.expanded;
+            if (c.interface.contact == ContactKind::one_sided) interface["contact"] = "one-sided";
+            interface["normal_stiffness_pa_per_m"] = c.interface.normal_stiffness;
+            interface["tangential_stiffness_pa_per_m"] = c.interface.tangential_stiffness;
+            if (c.interface.expansion_pressure) interface["expansion_pressure_pa"] = *c.interface.expansion_pressure;
         }
-        out.push_back(toml::table{{"name", c.name},
-                                  {"inserted_length_m", c.inserted_length},
-                                  {"body_diameter_m", c.body_diameter},
-                                  {"shaft_diameter_m", c.shaft_diameter},
-                                  {"shaft_length_m", c.shaft_length},
-                                  {"li_m", c.li()},
-                                  {"material", material_table(c.material)},
-                                  {"expanding", expanding},
-                                  {"interface", interface},
-                                  {"bearing", bearing_table(c.bearing)}});
+        out.push_back(Json{{"name", c.name},
+                           {"inserted_length_m", c.inserted_length},
+                           {"body_diameter_m", c.body_diameter},
+                           {"shaft_diameter_m", c.shaft_diameter},
+                           {"shaft_length_m", c.shaft_length},
+                           {"li_m", c.li()},
+                           {"material", material_json(c.material)},
+                           {"expanding", expanding},
+                           {"interface", interface},
+                           {"bearing", bearing_json(c.bearing)}});
     }
     return out;
 }
 
-toml::table scene_table(const Scene& s) {
-    toml::table core{{"inner_diameter", s.core.inner_diameter},
+// The resolved scene after the case head's name, file and description.
+void add_scene(Json& t, const Scene& s) {
+    t["model"] = s.model;
+    t["core"] = Json{{"inner_diameter", s.core.inner_diameter},
                      {"outer_diameter", s.core.outer_diameter},
                      {"length", s.core.length},
-                     {"material", material_table(s.core.material)}};
-    toml::table t{{"name", s.name}, {"source_file", s.source_file}, {"model", s.model}, {"core", core}};
+                     {"material", material_json(s.core.material)}};
     if (s.rest_paper)
-        t.insert("rest_paper", toml::table{{"outer_diameter", s.rest_paper->outer_diameter},
-                                           {"material", material_table(s.rest_paper->material)}});
-    toml::array clamps;
+        t["rest_paper"] = Json{{"outer_diameter", s.rest_paper->outer_diameter},
+                               {"material", material_json(s.rest_paper->material)}};
+    Json clamps = Json::array();
     for (const auto& c : s.supports.clamps)
-        clamps.push_back(toml::table{{"name", c.name}, {"z_start", c.z_start}, {"z_end", c.z_end}});
-    toml::table supports{{"type", support_type_name(s.supports.kind)}, {"clamps", clamps}};
-    if (!s.supports.chucks.empty()) supports.insert("chucks", chucks_array(s.supports.chucks));
-    t.insert("supports", supports);
-    toml::table mesh{{"level", s.mesh.level},         {"through_wall", s.mesh.n_wall},
-                     {"through_rest_paper", s.mesh.n_rest_paper}, {"around", s.mesh.n_around},
-                     {"along", s.mesh.n_along},       {"element", s.mesh.element}};
-    if (s.mesh.file) mesh.insert("file", *s.mesh.file);
-    t.insert("mesh", mesh);
-    toml::table analysis{{"modes", s.analysis.n_modes},
-                         {"tolerance", s.analysis.tolerance},
-                         {"max_iterations", s.analysis.max_iterations}};
-    if (s.analysis.f_max_hz)
-        analysis.insert("band_hz", toml::array{s.analysis.f_min_hz.value_or(0.0), *s.analysis.f_max_hz});
-    t.insert("analysis", analysis);
-    t.insert("assumptions", strings_array(s.assumptions));
-    return t;
+        clamps.push_back(Json{{"name", c.name}, {"z_start", c.z_start}, {"z_end", c.z_end}});
+    Json supports{{"type", support_type_name(s.supports.kind)}, {"clamps", clamps}};
+    if (!s.supports.chucks.empty()) supports["chucks"] = chucks_json(s.supports.chucks);
+    t["supports"] = supports;
+    Json mesh{{"level", s.mesh.level},         {"through_wall", s.mesh.n_wall},
+              {"through_rest_paper", s.mesh.n_rest_paper}, {"around", s.mesh.n_around},
+              {"along", s.mesh.n_along},       {"element", s.mesh.element}};
+    if (s.mesh.file) mesh["file"] = *s.mesh.file;
+    t["mesh"] = mesh;
+    Json analysis{{"modes", s.analysis.n_modes}};
+    if (s.analysis.f_max_hz) analysis["band_hz"] = Json::array({s.analysis.f_min_hz.value_or(0.0), *s.analysis.f_max_hz});
+    analysis["tolerance"] = s.analysis.tolerance;
+    analysis["max_iterations"] = s.analysis.max_iterations;
+    t["analysis"] = analysis;
+    t["assumptions"] = string_array(s.assumptions);
 }
 
-// The safe and critical speeds (beam/speeds.hpp), as report.md gives them;
-// "not_given" says why there are none.
-toml::table speeds_table(const RollSpeeds& v) {
-    toml::table t;
-    if (!v.given()) {
-        t.insert("not_given", v.not_given);
-        return t;
-    }
-    toml::array safe;
-    for (const SafeSpeed& s : v.safe)
-        safe.push_back(toml::table{{"safe", s.safe}, {"v_safe_m_s", s.v_safe_m_s}, {"v_safe_m_min", 60 * s.v_safe_m_s}});
-    t.insert("f1_hz", v.f1_hz);
-    t.insert("dp_m", v.dp_m);
-    t.insert("safe_web_speed", safe);
-    if (v.koenig) {
-        const KoenigSpeeds& k = *v.koenig;
-        toml::table koenig{{"formula", k.formula},         {"span_m", k.span.length_m},
-                           {"span", k.span.source},        {"experience", k.experience},
-                           {"f_krit_hz", k.speed.f_krit_hz}, {"v_krit_m_s", k.speed.v_krit_m_s},
-                           {"v_krit_m_min", 60 * k.speed.v_krit_m_s}};
-        if (k.v_krit_large_core_m_s) koenig.insert("v_krit_large_core_m_s", *k.v_krit_large_core_m_s);
-        t.insert("koenig_critical_speed", koenig);
-    }
+// The speeds of report.md's "Speeds" section (beam/speeds.hpp): I-5 in the
+// shape every summary uses, and König's critical speed.
+Json speeds_json(const RollSpeeds& v) {
+    Json t = safe_web_speed_json(v);
+    if (!v.given() || !v.koenig) return t;
+    const KoenigSpeeds& k = *v.koenig;
+    Json koenig{{"formula", k.formula},         {"span_m", k.span.length_m},
+                {"span", k.span.source},        {"experience", k.experience},
+                {"f_krit_hz", k.speed.f_krit_hz}, {"v_krit_m_s", k.speed.v_krit_m_s},
+                {"v_krit_m_min", 60 * k.speed.v_krit_m_s}};
+    if (k.v_krit_large_core_m_s) koenig["v_krit_large_core_m_s"] = *k.v_krit_large_core_m_s;
+    t["koenig_critical_speed"] = koenig;
     return t;
-}
-
-std::string to_json(const toml::table& t) {
-    std::ostringstream s;
-    s << toml::json_formatter{t};
-    std::string json = s.str();
-    for (size_t at = json.find(kFormattedNullMarker); at != std::string::npos; at = json.find(kFormattedNullMarker, at))
-        json.replace(at, kFormattedNullMarker.size(), "null");
-    return json;
 }
 
 // The solver's proof, and what was asked against what was found: a model
 // with fewer modes than [analysis] modes asks (a small beam network) reports
 // all it has, and says so here and in the warnings.
-toml::table verification_table(const RunReport& r) {
+Json verification_json(const RunReport& r) {
     const Verification& v = r.modes.verification;
-    toml::table t{{"max_relative_residual", v.max_relative_residual},
-                  {"max_orthonormality_error", v.max_orthonormality_error},
-                  {"check_shift", v.check_shift},
-                  {"negative_pivots_at_shift", v.negative_pivots_at_shift},
-                  {"modes_below_shift", v.modes_below_shift},
-                  {"eigenvalues_below_band", v.eigenvalues_below_band},
-                  {"complete", v.complete}};
-    insert_or_null(t, "modes_requested", !r.scene.analysis.f_max_hz, r.scene.analysis.n_modes);
-    t.insert("modes_reported", static_cast<int64_t>(r.modes.modes.size()));
-    return t;
+    return Json{{"max_relative_residual", v.max_relative_residual},
+                {"max_orthonormality_error", v.max_orthonormality_error},
+                {"check_shift", v.check_shift},
+                {"negative_pivots_at_shift", v.negative_pivots_at_shift},
+                {"modes_below_shift", v.modes_below_shift},
+                {"eigenvalues_below_band", v.eigenvalues_below_band},
+                {"complete", v.complete},
+                {"modes_requested", value_or_null(!r.scene.analysis.f_max_hz, r.scene.analysis.n_modes)},
+                {"modes_reported", static_cast<int64_t>(r.modes.modes.size())}};
 }
 
 // The beam comparison; the FE values are null when no bending mode was found.
-toml::table beam_table(const BeamComparison& b) {
-    toml::table t{{"span_m", b.span_m},
-                  {"ends", b.ends},
-                  {"euler_bernoulli_hz", b.euler_bernoulli_hz},
-                  {"timoshenko_hz", b.timoshenko_hz}};
-    insert_or_null(t, "fe_first_bending_hz", b.fe_found(), b.fe_first_bending_hz);
-    insert_or_null(t, "fe_mode_index", b.fe_found(), b.fe_mode_index);
-    insert_or_null(t, "fe_over_timoshenko", b.fe_found(), b.fe_over_timoshenko);
-    insert_or_null(t, "fe_over_euler_bernoulli", b.fe_found(), b.fe_over_euler_bernoulli);
-    if (b.fe_found())
-        t.insert("fe_missing", kNullMarker);
-    else
-        t.insert("fe_missing", b.fe_missing);
-    return t;
+Json beam_json(const BeamComparison& b) {
+    const bool found = b.fe_found();
+    return Json{{"span_m", b.span_m},
+                {"ends", b.ends},
+                {"euler_bernoulli_hz", b.euler_bernoulli_hz},
+                {"timoshenko_hz", b.timoshenko_hz},
+                {"fe_first_bending_hz", value_or_null(found, b.fe_first_bending_hz)},
+                {"fe_mode_index", value_or_null(found, b.fe_mode_index)},
+                {"fe_over_timoshenko", value_or_null(found, b.fe_over_timoshenko)},
+                {"fe_over_euler_bernoulli", value_or_null(found, b.fe_over_euler_bernoulli)},
+                {"fe_missing", found ? Json(nullptr) : Json(b.fe_missing)}};
 }
 
 // The chuck factor; f1, f2 (FE) and the factors built on them are null where
 // they do not exist (no bending mode, or f2 not computed).
-toml::table chuck_table(const ChuckFactor& k) {
+Json chuck_json(const ChuckFactor& k) {
     const bool f1 = k.f1_hz > 0, f2 = k.f2_fe_hz > 0;
-    toml::table t{{"li_m", k.li_m}, {"free_span_m", k.free_span_m}, {"f2_beam_hz", k.f2_beam_hz}};
-    insert_or_null(t, "f1_hz", f1, k.f1_hz);
-    insert_or_null(t, "f2_fe_hz", f2, k.f2_fe_hz);
-    insert_or_null(t, "chuck_factor", f1 && f2, k.chuck_factor);
-    insert_or_null(t, "chuck_factor_beam", f1, k.chuck_factor_beam);
-    t.insert("span_definition", "free_span = core length - Li_left - Li_right");
+    Json t{{"li_m", k.li_m},
+           {"free_span_m", k.free_span_m},
+           {"f1_hz", value_or_null(f1, k.f1_hz)},
+           {"f2_fe_hz", value_or_null(f2, k.f2_fe_hz)},
+           {"f2_beam_hz", k.f2_beam_hz},
+           {"chuck_factor", value_or_null(f1 && f2, k.chuck_factor)},
+           {"chuck_factor_beam", value_or_null(f1, k.chuck_factor_beam)},
+           {"span_definition", "free_span = core length - Li_left - Li_right"}};
     if (std::abs(k.li_left_m - k.li_right_m) > 1e-12) {
-        t.insert("li_left_m", k.li_left_m);
-        t.insert("li_right_m", k.li_right_m);
+        t["li_left_m"] = k.li_left_m;
+        t["li_right_m"] = k.li_right_m;
     }
     return t;
 }
 
-toml::table mode_table(const Mode& m) {
+Json mode_json(const Mode& m) {
     const auto& e = m.effective_mass;
-    return toml::table{{"index", m.index},
-                       {"frequency_hz", finite(m.frequency_hz)},
-                       {"eigenvalue", finite(m.eigenvalue)},
-                       {"type", m.label.type},
-                       {"n", m.label.n},
-                       {"m", m.label.m},
-                       {"dominant_share", finite(m.label.dominant_share)},
-                       {"relative_residual", finite(m.relative_residual)},
-                       {"effective_mass", toml::table{{"x_kg", e.x}, {"y_kg", e.y}, {"z_kg", e.z}, {"rz_kgm2", e.rz}}}};
+    return Json{{"index", m.index},
+                {"frequency_hz", finite(m.frequency_hz)},
+                {"eigenvalue", finite(m.eigenvalue)},
+                {"type", m.label.type},
+                {"n", m.label.n},
+                {"m", m.label.m},
+                {"dominant_share", finite(m.label.dominant_share)},
+                {"relative_residual", finite(m.relative_residual)},
+                {"effective_mass", Json{{"x_kg", e.x}, {"y_kg", e.y}, {"z_kg", e.z}, {"rz_kgm2", e.rz}}}};
 }
 
 }  // namespace
 
-std::string scene_json(const Scene& scene) { return to_json(scene_table(scene)); }
+std::string scene_json(const Scene& scene) {
+    Json t{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}};
+    add_scene(t, scene);
+    return t.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 void write_summary_json(const std::string& path, const RunReport& r) {
-    const toml::array effects = strings_array(r.scene.effects());
-    toml::array modes;
-    for (const auto& m : r.modes.modes) modes.push_back(mode_table(m));
-    const auto& t = r.timing_s;
-    toml::table summary{
-        {"schema_version", kSummarySchemaVersion},
-        {"program", "coremodal " COREMODAL_VERSION},
-        {"case", scene_table(r.scene)},
-        {"effects", effects},
-        {"model", toml::table{{"level", r.model.level},
-                              {"element", r.model.element},
-                              {"n_dofs", r.model.n_dofs},
-                              {"n_nodes", r.model.n_nodes},
-                              {"n_elements", r.model.n_elements},
-                              {"n_eliminated_nodes", r.model.n_eliminated_nodes},
-                              {"mass_kg", r.model.mass_kg},
-                              {"expected_mass_kg", r.model.expected_mass_kg},
-                              {"mesh_source", r.model.mesh_source},
-                              {"harmonics", r.model.harmonics}}},
-        {"modes", modes},
-        {"verification", verification_table(r)},
-        {"beam", beam_table(r.beam)},
-        {"speeds", speeds_table(report_speeds(r))},
-        {"timing_s", toml::table{{"mesh", t.mesh},
-                                 {"chuck_factor", t.chuck_factor},
-                                 {"assemble", t.assemble},
-                                 {"factor_and_solve", t.factor_and_solve},
-                                 {"classify", t.classify},
-                                 {"total", t.total}}},
-        {"warnings", strings_array(r.warnings)},
-        {"peak_memory_mb", r.peak_memory_mb},
-        {"mpi_ranks", r.mpi_ranks}};
-    if (r.chuck) summary.insert("chuck", chuck_table(*r.chuck));
+    Json summary = summary_head("run", r.scene.name, r.scene.source_file, r.scene.description);
+    add_scene(summary["case"], r.scene);
+    summary["effects"] = string_array(r.scene.effects());
+    summary["model"] = Json{{"level", r.model.level},
+                            {"element", r.model.element},
+                            {"n_dofs", r.model.n_dofs},
+                            {"n_nodes", r.model.n_nodes},
+                            {"n_elements", r.model.n_elements},
+                            {"n_eliminated_nodes", r.model.n_eliminated_nodes},
+                            {"mass_kg", r.model.mass_kg},
+                            {"expected_mass_kg", r.model.expected_mass_kg},
+                            {"mesh_source", r.model.mesh_source},
+                            {"harmonics", r.model.harmonics}};
+    Json modes = Json::array();
+    for (const auto& m : r.modes.modes) modes.push_back(mode_json(m));
+    summary["modes"] = modes;
+    summary["verification"] = verification_json(r);
+    summary["beam"] = beam_json(r.beam);
+    summary["speeds"] = speeds_json(report_speeds(r));
+    if (r.chuck) summary["chuck"] = chuck_json(*r.chuck);
     if (const auto iso = iso_flexural_test(r.scene, r.beam.fe_first_bending_hz))
-        summary.insert("iso_11093_8", toml::table{{"f_free_hz", iso->f_free_hz},
-                                                  {"mass_per_length_kg_m", iso->mass_per_length},
-                                                  {"length_m", iso->length_m},
-                                                  {"Q", iso->Q},
-                                                  {"flexural_modulus_pa", iso->flexural_modulus_pa},
-                                                  {"E_z_pa", iso->E_z_pa},
-                                                  {"difference", iso->difference},
-                                                  {"notes", strings_array(iso->notes)}});
+        summary["iso_11093_8"] = Json{{"f_free_hz", iso->f_free_hz},
+                                      {"mass_per_length_kg_m", iso->mass_per_length},
+                                      {"length_m", iso->length_m},
+                                      {"Q", iso->Q},
+                                      {"flexural_modulus_pa", iso->flexural_modulus_pa},
+                                      {"E_z_pa", iso->E_z_pa},
+                                      {"difference", iso->difference},
+                                      {"notes", string_array(iso->notes)}};
     if (!r.rigid_comparison.empty()) {
-        toml::array rows;
+        Json rows = Json::array();
         for (const ModeShift& m : r.rigid_comparison)
-            rows.push_back(toml::table{{"type", m.type},
-                                       {"n", m.n},
-                                       {"m", m.m},
-                                       {"elastic_mode", m.elastic_index},
-                                       {"elastic_hz", m.elastic_hz},
-                                       {"rigid_mode", m.rigid_index},
-                                       {"rigid_hz", m.rigid_hz},
-                                       {"shift_percent", m.shift_percent()}});
-        summary.insert("rigid_comparison", rows);
+            rows.push_back(Json{{"type", m.type},
+                                {"n", m.n},
+                                {"m", m.m},
+                                {"elastic_mode", m.elastic_index},
+                                {"elastic_hz", m.elastic_hz},
+                                {"rigid_mode", m.rigid_index},
+                                {"rigid_hz", m.rigid_hz},
+                                {"shift_percent", m.shift_percent()}});
+        summary["rigid_comparison"] = rows;
     }
-    write_text_file(path, to_json(summary) + "\n");
+    const auto& t = r.timing_s;
+    summary["timing_s"] = Json{{"total", t.total},
+                               {"mesh", t.mesh},
+                               {"chuck_factor", t.chuck_factor},
+                               {"assemble", t.assemble},
+                               {"factor_and_solve", t.factor_and_solve},
+                               {"classify", t.classify}};
+    summary["warnings"] = string_array(r.warnings);
+    summary["peak_memory_mb"] = r.peak_memory_mb;
+    summary["mpi_ranks"] = r.mpi_ranks;
+    write_text_file(path, json_text(summary));
 }
 
 void write_modes_csv(const std::string& path, const RunReport& r) {

@@ -9,8 +9,6 @@
 
 namespace coremodal {
 
-constexpr int kSummarySchemaVersion = 1;
-
 // The resolved scene (SI units) as JSON text, also stored in modes.h5.
 std::string scene_json(const Scene& scene);
 

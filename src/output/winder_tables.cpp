@@ -1,4 +1,5 @@
 // winder.csv, crossings.csv, response.csv and summary.json of `coremodal winder`.
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
 #include "output/winder_report.hpp"
 
@@ -95,57 +96,76 @@ toml::table scene_json(const WinderScene& s) {
                        {"damping", damping}, {"sweep", sweep}};
 }
 
-toml::table nip_json(const Nip& n, double line_load) {
-    return toml::table{{"line_load_n_m", line_load}, {"half_width_m", n.half_width}, {"deflection_m", n.deflection},
+Json nip_json(const Nip& n, double line_load) {
+    return Json{{"line_load_n_m", line_load}, {"half_width_m", n.half_width}, {"deflection_m", n.deflection},
                        {"stiffness_n_m2", n.stiffness_per_length}};
 }
 
-toml::table point_json(const SweepPoint& p) {
-    toml::table estimate{{"drum_alone_hz", p.estimate.drum_alone_hz},
+Json point_json(const SweepPoint& p) {
+    Json estimate{{"drum_alone_hz", p.estimate.drum_alone_hz},
                          {"isotropic_bearings", p.estimate.isotropic},
                          {"nip_modal_stiffness", p.estimate.nip_modal_stiffness}};
     const char* names[kDrumFamilies] = {"symmetric", "antisymmetric"};
     for (int f = 0; f < kDrumFamilies; ++f) {
         const auto& e = p.estimate.family[f];
-        estimate.insert(names[f], toml::table{{"estimate_hz", e.drum_hz}, {"other_root_hz", e.roll_hz},
+        estimate[names[f]] = Json{{"estimate_hz", e.drum_hz}, {"other_root_hz", e.roll_hz},
                                                {"heavy_roll_hz", e.heavy_roll_hz}, {"roll_bounce_hz", e.roll_bounce_hz},
-                                               {"model_hz", e.model_hz}, {"model_participation", e.model_participation}});
+                                               {"model_hz", e.model_hz}, {"model_participation", e.model_participation}};
     }
     const Verification& v = p.verification;
-    return toml::table{{"roll_diameter_m", p.roll_diameter},
+    return Json{{"roll_diameter_m", p.roll_diameter},
                        {"nip_angle_deg", p.state.geometry.nip_angle * 180 / M_PI},
                        {"roll_mass_per_width_kg_m", p.state.roll_mass_per_width},
                        {"drum_nip", nip_json(p.state.drum_nip, p.state.drum_line_load)},
                        {"rider_nip", nip_json(p.state.rider_nip, p.state.rider_line_load)},
                        {"modes", static_cast<int64_t>(p.modes.size())},
                        {"estimate", estimate},
-                       {"verification", toml::table{{"max_relative_residual", v.max_relative_residual},
+                       {"verification", Json{{"max_relative_residual", v.max_relative_residual},
                                                     {"max_orthonormality_error", v.max_orthonormality_error},
                                                     {"check_shift_hz", std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)},
                                                     {"negative_pivots", v.negative_pivots_at_shift},
                                                     {"complete", v.complete}}}};
 }
 
+// The resolved scene (a TOML table: winder_scene_description prints it as
+// TOML) as JSON, keys in the table's order.
+Json to_json(const toml::node& node) {
+    if (const toml::table* t = node.as_table()) {
+        Json out = Json::object();
+        for (const auto& [key, value] : *t) out[std::string(key.str())] = to_json(value);
+        return out;
+    }
+    if (const toml::array* a = node.as_array()) {
+        Json out = Json::array();
+        for (const toml::node& value : *a) out.push_back(to_json(value));
+        return out;
+    }
+    if (const auto* v = node.as_string()) return v->get();
+    if (const auto* v = node.as_integer()) return v->get();
+    if (const auto* v = node.as_floating_point()) return number_or_null(v->get());
+    if (const auto* v = node.as_boolean()) return v->get();
+    return nullptr;  // dates and times: none in a winder scene
+}
+
 std::string summary_json(const WinderScene& s, const WinderSweepResult& r) {
-    toml::array defaults, points, crossings;
-    for (const auto& d : s.defaults) defaults.push_back(d);
+    Json points = Json::array(), crossings = Json::array();
     for (const SweepPoint& p : r.points) points.push_back(point_json(p));
     for (const Crossing& c : r.crossings)
-        crossings.push_back(toml::table{{"roll_diameter_m", c.roll_diameter}, {"harmonic", c.harmonic},
-                                        {"harmonic_frequency_hz", c.frequency_hz}, {"track", c.track},
-                                        {"mode_frequency_hz", c.mode_frequency_hz}, {"type", body_kind_name(c.type)},
-                                        {"damping_ratio", c.damping_ratio}, {"x_over_f_m_per_n", c.resonance_response}});
-    toml::table model{{"level", "beam"},
+        crossings.push_back(Json{{"roll_diameter_m", c.roll_diameter}, {"harmonic", c.harmonic},
+                                 {"harmonic_frequency_hz", c.frequency_hz}, {"track", c.track},
+                                 {"mode_frequency_hz", c.mode_frequency_hz}, {"type", body_kind_name(c.type)},
+                                 {"damping_ratio", c.damping_ratio}, {"x_over_f_m_per_n", c.resonance_response}});
+    Json t = summary_head("winder", s.name, s.source_file, s.description);
+    t["scene"] = to_json(scene_json(s));
+    t["defaults_used"] = string_array(s.defaults);
+    t["model"] = Json{{"level", "beam"},
                       {"rolls", roll_model_name(s.rolls.model)},
                       {"dofs", r.n_dofs},
                       {"motion", "bending only (ux, uy, rx, ry); no rotation (gyroscopic) terms"}};
-    toml::table t{{"program", "coremodal winder"}, {"version", COREMODAL_VERSION},
-                  {"case", toml::table{{"name", s.name}, {"file", s.source_file}, {"description", s.description}}},
-                  {"scene", scene_json(s)}, {"defaults_used", defaults}, {"model", model},
-                  {"points", points}, {"crossings", crossings}, {"time_s", r.time_s}};
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+    t["points"] = points;
+    t["crossings"] = crossings;
+    t["timing_s"] = Json{{"total", r.time_s}};
+    return json_text(t);
 }
 
 }  // namespace

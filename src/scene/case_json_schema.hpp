@@ -14,8 +14,9 @@
 // material admissibility, plausible ranges (in the descriptions only). The
 // reader (`coremodal check`) stays the judge; the schema is for editing.
 //
-// Two-drum winder files ([winder], docs/winder.md) have a reader of their own
-// and are not described.
+// Two-drum winder files ([winder], docs/winder.md) and a fit's measurements
+// files have readers and schemas of their own (winder/winder_scene.hpp,
+// analyses/fit/measurements.hpp; `coremodal schema --winder`, `--fit`).
 #pragma once
 
 #include "scene/units.hpp"

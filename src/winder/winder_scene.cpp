@@ -3,19 +3,23 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/join.hpp"
+#include "scene/case_json_schema.hpp"  // quantity_pattern, the draft
 #include "scene/case_name.hpp"
-#include "scene/case_schema.hpp"  // nearest: the "did you mean" of every case file
+#include "scene/case_schema.hpp"       // nearest: the "did you mean" of every case file
 #include "scene/materials_library.hpp"
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
 
+#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -435,5 +439,60 @@ OrthotropicMaterial winder_material(const std::string& library_name) {
 const char* roll_model_name(RollModel m) { return m == RollModel::rigid ? "rigid" : "beam"; }
 const char* drum_side_name(DrumSide s) { return s == DrumSide::front ? "front" : "rear"; }
 const char* direction_name(ResponseDirection d) { return d == ResponseDirection::vertical ? "vertical" : "horizontal"; }
+
+namespace {
+// The string values a key takes (the reader's `choice` calls); none for the others.
+std::vector<std::string> winder_choices(std::string_view table, std::string_view key) {
+    if (table == "winder.rolls" && key == "model") return {"rigid", "beam"};
+    if (key == "response_drum") return {"front", "rear"};
+    if (key == "response_direction") return {"vertical", "horizontal"};
+    return {};
+}
+}  // namespace
+
+std::string winder_json_schema() {
+    using Json = nlohmann::ordered_json;
+    // One schema object per table of the key table, filled key by key.
+    std::map<std::string, Json, std::less<>> tables;
+    const auto table_of = [&](std::string_view name) -> Json& {
+        auto [at, added] = tables.try_emplace(std::string(name));
+        if (added) at->second = Json{{"type", "object"}, {"additionalProperties", false}, {"properties", Json::object()}};
+        return at->second;
+    };
+    for (const Spec& s : schema()) {
+        Json value;
+        switch (s.kind) {
+        case Kind::table: value = Json{{"$ref", "#/definitions/" + std::string(s.table.empty() ? "" : std::string(s.table) + ".") + std::string(s.key)}}; break;
+        case Kind::text: {
+            const auto choices = winder_choices(s.table, s.key);
+            value = choices.empty() ? Json{{"type", "string"}} : Json{{"enum", choices}};
+            break;
+        }
+        case Kind::integer: value = Json{{"type", "integer"}, {"minimum", s.min}, {"maximum", s.max}}; break;
+        case Kind::quantity: {
+            Json number{{"type", "number"}};
+            if (std::isfinite(s.min)) number[s.min_exclusive ? "exclusiveMinimum" : "minimum"] = s.min;
+            if (std::isfinite(s.max)) number["maximum"] = s.max;
+            value = Json{{"anyOf", Json::array({number, Json{{"type", "string"}, {"pattern", quantity_pattern(s.dimension, false)}}})}};
+            break;
+        }
+        }
+        const std::string unit = s.kind == Kind::quantity && s.dimension != Dimension::dimensionless
+                                     ? std::string(" (plain numbers in ") + si_unit(s.dimension) + ")"
+                                     : "";
+        const std::string description = (s.origin.empty() ? "" : std::string(s.origin) + " default") + unit;
+        if (!description.empty()) value["description"] = description;
+        table_of(s.table)["properties"][std::string(s.key)] = value;
+    }
+    Json root = table_of("");
+    root["$schema"] = kJsonSchemaDraft;
+    root["title"] = "coremodal two-drum winder case file ([winder], docs/winder.md)";
+    root["required"] = Json::array({"winder"});
+    Json definitions = Json::object();
+    for (const auto& [name, table] : tables)
+        if (!name.empty()) definitions[name] = table;
+    root["definitions"] = definitions;
+    return root.dump(2) + "\n";
+}
 
 }  // namespace coremodal

@@ -118,6 +118,12 @@ struct WinderScene {
     std::vector<std::string> defaults;
 };
 
+// The winder case file's keys as a JSON Schema (draft-07), generated from the
+// reader's key table: each key's table, type, unit pattern, the SI bounds of
+// plain numbers and the string choices (`coremodal schema --winder`; editors
+// as for the case schema, docs/case-files.md "Editor support").
+std::string winder_json_schema();
+
 // Reads a winder case file. Throws InputError (file:line:col, the key, what
 // is wrong, what is expected) on any problem.
 WinderScene read_winder_file(const std::string& path);

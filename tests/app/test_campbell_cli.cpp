@@ -3,6 +3,7 @@
 // output folder refused before any work, nothing written.
 #include "support/program_run.hpp"
 #include "support/tiny_case.hpp"
+#include "support/json_lookup.hpp"  // json_at: read back summary.json
 
 #include <catch2/catch.hpp>
 
@@ -37,7 +38,14 @@ TEST_CASE("coremodal campbell writes the Campbell table, the critical speeds, th
     const std::string summary = slurp(dir.path / "out" / "summary.json");
     CHECK(summary.find("\"gyroscopic\"") != std::string::npos);
     CHECK(summary.find("\"centrifugal_stiffening\"") == std::string::npos);  // not included at the beam level
-    CHECK(summary.find("i5_safe_web_speed") != std::string::npos);
+    // I-5 in the shape of every summary.json: {safe, v_safe_m_s, v_safe_m_min} for 0.7 and 0.8.
+    const auto safe = coremodal::json_at(summary, "speeds.safe_web_speed");
+    REQUIRE(safe);
+    REQUIRE(safe->size() == 2);
+    CHECK((*safe)[0]["safe"].get<double>() == 0.7);
+    CHECK((*safe)[1]["v_safe_m_s"].get<double>() > (*safe)[0]["v_safe_m_s"].get<double>());
+    CHECK((*safe)[0]["v_safe_m_min"].get<double>() == Approx(60 * (*safe)[0]["v_safe_m_s"].get<double>()));
+    CHECK(coremodal::json_string(summary, "program") == "coremodal " COREMODAL_VERSION);
     CHECK(summary.find("first_order_1_critical") != std::string::npos);
     const std::string report = slurp(dir.path / "out" / "report.md");
     CHECK(report.find("## Critical speeds") != std::string::npos);

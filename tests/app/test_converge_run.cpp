@@ -308,7 +308,7 @@ TEST_CASE("The converge command runs both ladders of a small case and sets the b
     CHECK_THAT(md, Catch::Contains("## Model error: beam against solid"));
     CHECK_THAT(md, Catch::Contains("- f1 (first bending): beam level converges to "));
     const std::string json = slurp(out / "converge.json");
-    CHECK_THAT(json, Catch::Contains("\"model\" : \"beam\""));
+    CHECK_THAT(json, Catch::Contains("\"model\": \"beam\""));
     CHECK_THAT(json, Catch::Contains("\"model_errors\""));
     CHECK(fs::exists(out / "error_vs_time.png"));
 

@@ -38,14 +38,14 @@ int count_of(const std::string& text, const std::string& part) {
 
 // The modes array of a summary.json text (its entries hold no brackets).
 std::string modes_of(const std::string& json) {
-    const size_t start = json.find("\"modes\" : [");
+    const size_t start = json.find("\"modes\": [");
     return start == std::string::npos ? "" : json.substr(start, json.find(']', start) - start);
 }
 
 // Every "key" : value of a JSON text, as written.
 std::vector<std::string> json_values(const std::string& json, const std::string& key) {
     std::vector<std::string> values;
-    const std::regex pattern("\"" + key + "\" : (null|true|false|\"[^\"]*\"|-?[0-9.eE+-]+)");
+    const std::regex pattern("\"" + key + "\": (null|true|false|\"[^\"]*\"|-?[0-9.eE+-]+)");
     for (auto it = std::sregex_iterator(json.begin(), json.end(), pattern); it != std::sregex_iterator(); ++it)
         values.push_back((*it)[1]);
     return values;

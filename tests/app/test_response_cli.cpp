@@ -3,6 +3,7 @@
 // folder refused before any work, nothing written.
 #include "support/program_run.hpp"
 #include "support/tiny_case.hpp"
+#include "support/json_lookup.hpp"  // json_at: read back summary.json
 
 #include <catch2/catch.hpp>
 
@@ -42,7 +43,14 @@ TEST_CASE("coremodal response writes the amplitude table, the peaks, the picture
         CHECK(summary.find(effect) != std::string::npos);
     CHECK(summary.find("\"bow\"") == std::string::npos);  // not given: not simulated
     CHECK(summary.find("from_amplitude_limit") != std::string::npos);
-    CHECK(summary.find("i5_safe_web_speed") != std::string::npos);
+    // I-5 in the shape of every summary.json: {safe, v_safe_m_s, v_safe_m_min} for 0.7 and 0.8.
+    const auto safe = coremodal::json_at(summary, "speeds.safe_web_speed");
+    REQUIRE(safe);
+    REQUIRE(safe->size() == 2);
+    CHECK((*safe)[0]["safe"].get<double>() == 0.7);
+    CHECK((*safe)[1]["v_safe_m_s"].get<double>() > (*safe)[0]["v_safe_m_s"].get<double>());
+    CHECK((*safe)[0]["v_safe_m_min"].get<double>() == Approx(60 * (*safe)[0]["v_safe_m_s"].get<double>()));
+    CHECK(coremodal::json_string(summary, "program") == "coremodal " COREMODAL_VERSION);
     const std::string report = slurp(dir.path / "out" / "report.md");
     CHECK(report.find("## Safe web speed") != std::string::npos);
     CHECK(report.find("## Resonance peaks") != std::string::npos);
@@ -63,8 +71,8 @@ TEST_CASE("coremodal response --model harmonic runs the same scene on its r-z se
     REQUIRE(r.exit_code == 0);
     for (const char* f : {"response.csv", "peaks.csv", "summary.json", "report.md"}) CHECK(written(dir.path / "out" / f));
     const std::string summary = slurp(dir.path / "out" / "summary.json");
-    CHECK(summary.find("\"level\" : \"harmonic\"") != std::string::npos);
-    CHECK(summary.find("\"reference\" : \"direct solve\"") != std::string::npos);
+    CHECK(summary.find("\"level\": \"harmonic\"") != std::string::npos);
+    CHECK(summary.find("\"reference\": \"direct solve\"") != std::string::npos);
     CHECK(slurp(dir.path / "out" / "report.md").find("Harmonic level (wave number n = 1)") != std::string::npos);
     CHECK(slurp(dir.path / "out" / "response.csv").rfind("web_speed_m_s,speed_rpm,speed_hz,probe,position_m,amplitude_mm,order_1_mm,order_2_mm\n", 0) == 0);
 }

@@ -49,7 +49,7 @@ through_wall = 1
 // Every value of "key" : number in a JSON text, in order.
 std::vector<double> json_numbers(const std::string& json, const std::string& key) {
     std::vector<double> values;
-    const std::regex pattern("\"" + key + "\" : (-?[0-9.eE+-]+)");
+    const std::regex pattern("\"" + key + "\": (-?[0-9.eE+-]+)");
     for (auto it = std::sregex_iterator(json.begin(), json.end(), pattern); it != std::sregex_iterator(); ++it)
         values.push_back(std::stod((*it)[1]));
     return values;
@@ -166,7 +166,7 @@ TEST_CASE("A chuck scene's report has the chuck factor block with the k of summa
     const double f1 = json_numbers(summary, "fe_first_bending_hz").at(0);
     CHECK(contains(report, "| 0.7 | " + significant(safe_web_speed(f1, 0.106, 0.7)) + " m/s"));
     CHECK(contains(report, "between the chucks' inserted ends"));
-    CHECK(contains(summary, "\"span\" : \"between the chucks' inserted ends\""));
+    CHECK(contains(summary, "\"span\": \"between the chucks' inserted ends\""));
     CHECK(json_numbers(summary, "v_safe_m_s").at(0) == Approx(safe_web_speed(f1, 0.106, 0.7)).epsilon(1e-12));
     CHECK(contains(report, "No pictures: switched off (--no-plots)"));
     CHECK(linked_pictures(report).empty());

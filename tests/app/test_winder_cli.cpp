@@ -33,6 +33,10 @@ TEST_CASE("coremodal winder writes its tables, pictures and report", "[app][wind
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("winder: 6 roll diameters from 400 mm to 1800 mm") != std::string::npos);
     CHECK(r.out.find("crosses a drum mode") != std::string::npos);
+    // Not a terminal (stderr is a file here): progress as whole lines, never silent, never "\r".
+    CHECK(r.err.find("winder: diameter 1 of 6\n") != std::string::npos);
+    CHECK(r.err.find("winder: diameter 6 of 6\n") != std::string::npos);
+    CHECK(r.err.find('\r') == std::string::npos);
     for (const char* f : {"winder.csv", "crossings.csv", "response.csv", "summary.json", "report.md",
                           "crossing_diagram.png", "response.png"})
         CHECK(written(dir.path / "out" / f));

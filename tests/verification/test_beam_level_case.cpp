@@ -51,8 +51,8 @@ TEST_CASE("Case 05: the rest roll as a beam, written like a solid run", "[cases]
     CHECK(r.modes.modes[9].frequency_hz == Approx(310.17).epsilon(1e-4));
 
     const std::string summary = slurp(out / "summary.json");
-    CHECK(summary.find("\"level\" : \"beam\"") != std::string::npos);
-    CHECK(summary.find("\"model\" : \"beam\"") != std::string::npos);
+    CHECK(summary.find("\"level\": \"beam\"") != std::string::npos);
+    CHECK(summary.find("\"model\": \"beam\"") != std::string::npos);
     CHECK(lines_of(slurp(out / "modes.csv")) == 1 + 13);
     const std::string shapes = slurp(out / "beam_shapes.csv");
     CHECK(shapes.rfind("mode,node,beam,z_m,ux,uy,uz,rx,ry,rz\n", 0) == 0);

@@ -54,6 +54,7 @@ void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env)
     const bool traction = !winder && !selection && is_traction_file(c.file);
     const char* command = winder ? "winder" : selection ? "select" : traction ? "traction" : "run";
     std::vector<std::string> args = {program_name(o.program), command, c.file, "--output", c.result_dir, "--quiet"};
+    if (!o.plots) args.push_back("--no-plots");
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
     if (selection) c.note = "a core selection (coremodal select): its chart and verdicts are in its report.md";
     if (traction) c.note = "a roller's traction (coremodal traction): its speeds are in its report.md";

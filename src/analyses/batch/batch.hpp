@@ -25,6 +25,7 @@ struct BatchOptions {
     unsigned jobs = 0;                           // 0: number of cores; never more than the cases
     std::optional<std::string> mesh_level;       // passed on as `run --mesh LEVEL`, except to
                                                  // cases with their own [mesh] file
+    bool plots = true;                           // false: `--no-plots` passed on to every case
     std::string program = "/proc/self/exe";      // the coremodal executable to run the cases with
 };
 

@@ -2,8 +2,11 @@
 #include "analyses/fit/measurements.hpp"
 
 #include "common/error.hpp"
+#include "scene/case_json_schema.hpp"  // quantity_pattern, the draft
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -170,5 +173,41 @@ FitInput parse_fit_input(const std::string& text, const std::string& path) {
 }
 
 FitInput read_fit_input(const std::string& path) { return parse_fit_input(read_input_file(path, "measurements file"), path); }
+
+std::string fit_json_schema() {
+    using Json = nlohmann::ordered_json;
+    const Json frequency{{"anyOf", Json::array({Json{{"type", "number"}, {"exclusiveMinimum", 0}},
+                                                 Json{{"type", "string"},
+                                                      {"pattern", quantity_pattern(Dimension::frequency, false)}}})}};
+    // A bound's unit is its key's, checked when the key is resolved: here any number, with or without a unit.
+    const Json bound{{"anyOf", Json::array({Json{{"type", "number"}},
+                                             Json{{"type", "string"}, {"pattern", R"(^\s*[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?(\s*\S.*)?$)"}}})}};
+    const Json key{{"type", "string"}, {"pattern", R"(^[a-z_]+(\.[A-Za-z_0-9]+)+$)"},
+                   {"description", "a case-file key a [study] can vary, e.g. core.material.E_z"}};
+    const Json parameter{{"anyOf", Json::array({key, Json{{"type", "object"},
+                                                         {"additionalProperties", false},
+                                                         {"required", Json::array({"key"})},
+                                                         {"properties", Json{{"key", key}, {"min", bound}, {"max", bound}}}}})}};
+    const Json measurement{
+        {"type", "object"},
+        {"additionalProperties", false},
+        {"required", Json::array({"case", "mode", "frequency"})},
+        {"properties",
+         Json{{"case", Json{{"type", "string"}, {"description", "case file, relative to this file"}}},
+              {"mode", Json{{"type", "string"},
+                            {"pattern", R"(^\s*[a-z_]+\s+n\s*=\s*\d+\s+m\s*=\s*\d+\s*(#\s*[1-9]\d*)?\s*$)"},
+                            {"description", "a mode label as the run reports it, e.g. \"bending n=1 m=0\""}}},
+              {"frequency", frequency},
+              {"uncertainty", frequency},
+              {"model", Json{{"enum", Json::array({"beam", "harmonic", "auto"})}}}}}};
+    const Json root{{"$schema", kJsonSchemaDraft},
+                    {"title", "coremodal fit measurements file (docs/calibration.md, \"Fitting the model\")"},
+                    {"type", "object"},
+                    {"additionalProperties", false},
+                    {"required", Json::array({"parameters", "measurement"})},
+                    {"properties", Json{{"parameters", Json{{"type", "array"}, {"minItems", 1}, {"items", parameter}}},
+                                        {"measurement", Json{{"type", "array"}, {"minItems", 1}, {"items", measurement}}}}}};
+    return root.dump(2) + "\n";
+}
 
 }  // namespace coremodal

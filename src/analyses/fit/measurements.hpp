@@ -55,6 +55,11 @@ struct FitInput {
 inline constexpr double kDefaultRelativeUncertainty = 0.01;
 
 FitInput read_fit_input(const std::string& path);
+
+// The measurements file's keys as a JSON Schema (draft-07): parameters (a
+// key, or {key, min, max}), [[measurement]] {case, mode, frequency,
+// uncertainty, model}; `coremodal schema --fit`.
+std::string fit_json_schema();
 FitInput parse_fit_input(const std::string& text, const std::string& path);
 
 // "bending n=1 m=0" or "bending n=1 m=0 #2" -> ModeKey; nothing when it is not one.

@@ -377,7 +377,8 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     // counted, until one more step moves no wanted frequency by kCoupledTolerance
     // and N reaches every wanted mode's dominant harmonic plus N_s.
     say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
-        " nodes; n = 0 ... N coupled, one eigenproblem per independent set (SLEPc Krylov-Schur, shift-and-invert with " +
+        " nodes: n = 0 ... N coupled, stiffness and mass assembled per independent set");
+    say(std::string("[4/7] solving one eigenproblem per independent set (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));

@@ -276,8 +276,10 @@ LevelModes HarmonicLevel::solve(const Scene& scene, const Printer& say) {
     out.timing.mesh = stage.lap();
 
     // 3-5. Per wave number n: assemble, solve, verify, prove complete.
+    // Steps 3 and 4 alternate per n; the lines say what each is (the solid's numbering).
     say("[3/7] " + std::to_string(section.n_cells()) + " quad8 cells, " + std::to_string(section.n_nodes()) +
-        " nodes; one eigenproblem per wave number n (SLEPc Krylov-Schur, shift-and-invert with " +
+        " nodes: stiffness and mass assembled per wave number n");
+    say(std::string("[4/7] solving one eigenproblem per wave number n (SLEPc Krylov-Schur, shift-and-invert with ") +
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the counts)");
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));

@@ -66,7 +66,7 @@ TEST_CASE("Campbell outputs name each critical speed's source and the sweep's en
     CHECK(csv.find(",sweep\n") != std::string::npos);
     CHECK(csv.find(",pencil\n") != std::string::npos);
     const std::string json = read_all(dir / "summary.json");
-    CHECK(json.find("\"source\" : \"pencil\"") != std::string::npos);
+    CHECK(json.find("\"source\": \"pencil\"") != std::string::npos);
     CHECK(json.find("the sweep stopped at 2400 rpm") != std::string::npos);
     std::filesystem::remove_all(dir);
 }

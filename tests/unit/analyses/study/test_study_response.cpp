@@ -74,7 +74,7 @@ TEST_CASE("A study over a response case runs each point's forced response", "[lo
     const std::string report = study_report_markdown(sweep, result, {}, "switched off");
     CHECK(report.find("## Safe web speed from the forced response") != std::string::npos);
     CHECK(report.find("At the web speed 14 m/s:") != std::string::npos);
-    CHECK(study_json(sweep, result, "study").find("\"response\" : true") != std::string::npos);
+    CHECK(study_json(sweep, result, "study").find("\"response\": true") != std::string::npos);
 }
 
 TEST_CASE("A point's forced response survives the worker record; a study without [response] has none",
