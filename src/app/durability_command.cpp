@@ -69,7 +69,7 @@ Command add_durability_command(CLI::App& app) {
         "durability", "A core's winding-unwinding simulator results (CSV) fitted by Ilomaki's power law and reduced "
                       "to the roll weight each failure probability allows ({16}-{32}); tables, a plot and report.md");
     cmd->add_option("data", o->data, "simulator results (CSV with units in the header and the test chuck), e.g. "
-                                     "cases/18-core-selection-durability-B.csv")
+                                     "cases/18-core-durability-76x15.csv")
         ->required();
     add_results_options(cmd, o->output, o->force, "-durability");
     cmd->add_option("-c,--confidence", o->confidence,
