@@ -87,9 +87,10 @@ TEST_CASE(
               Approx(k.v_krit_large_core_m_s.value_or(k.speed.v_krit_m_s)).epsilon(1e-10));
         // The amplitude limit: both refined by bisection on their own grids
         // (response_sweep.hpp).
-        REQUIRE(response.safe.reached);
-        REQUIRE(p.at(Criterion::amplitude).given);
-        CHECK(p.at(Criterion::amplitude).web_speed_m_s == Approx(response.safe.web_speed_m_s).epsilon(1e-3));
+        // At 192.1 mm the resonance stays below +-5 mm in both: no limit reached.
+        CHECK(p.at(Criterion::amplitude).given == response.safe.reached);
+        if (response.safe.reached)
+            CHECK(p.at(Criterion::amplitude).web_speed_m_s == Approx(response.safe.web_speed_m_s).epsilon(1e-3));
         // The Campbell sweep on another grid of speeds: the crossings are refined
         // to 1e-6.
         RotationSpec rotation;
@@ -115,8 +116,8 @@ TEST_CASE(
     "The roll change is where the governing speed crosses the target, "
     "interpolated between diameters",
     "[limits]") {
-    const LimitsCase c = small_roll();
-    LimitsRequest request = diameters(0.126, 0.120, 2, false);
+    const LimitsCase c = parse_limits_case(kCase13);
+    LimitsRequest request = diameters(0.2021, 0.1921, 2, false);
     const LimitsResult plain = verdict(c.scene, c.response, request);
     REQUIRE(plain.points.size() == 2);  // no midpoint: the safe speed moves by less than kFastChange
     const double va = plain.points[0].safe_m_s, vb = plain.points[1].safe_m_s;
