@@ -174,7 +174,10 @@ RollChange roll_change(const std::vector<LimitsPoint>& points, double target) {
 
 Verdict the_verdict(const LimitsResult& r) {
     Verdict v;
-    const double change = r.change ? r.change->diameter_m : r.points.back().diameter_m;
+    // A target out of reach already at the full roll changes nothing: the
+    // verdict is then the whole unwind's, and the line says the target's margin.
+    const bool changes = r.change && r.change->needed && !r.change->never_safe;
+    const double change = changes ? r.change->diameter_m : r.points.back().diameter_m;
     v.diameter_m = change;
     const LimitsPoint* lowest = nullptr;
     for (const LimitsPoint& p : r.points)
@@ -378,16 +381,19 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
 
 std::string verdict_line(const LimitsResult& r) {
     const Verdict& v = r.verdict;
-    std::string at = r.change && r.change->needed ? "at roll change, D = " : "down to D = ";
-    if (r.change && r.change->never_safe) at = "below the target already at the full roll, D = ";
-    std::string line = "safe up to " + formatted("%.2f", v.speed_m_s) + " m/s " + at +
-                       formatted("%.1f", v.diameter_m * 1e3) + " mm; governed by " + v.governed_by + " at " +
-                       formatted("%.1f", v.at_diameter_m * 1e3) + " mm; band " + formatted("%.2f", v.band_low_m_s) +
-                       "-" + formatted("%.2f", v.band_high_m_s) + " m/s";
-    if (r.change)
-        line += "; target " + formatted("%.2f", r.change->target_m_s) + " m/s, margin at the full roll " +
-                formatted("%+.2f", r.change->margin_m_s) + " m/s";
-    return line;
+    const bool changes = r.change && r.change->needed && !r.change->never_safe;
+    std::string line = "safe up to " + formatted("%.2f", v.speed_m_s) + " m/s " +
+                       (changes ? "at roll change, D = " : "down to D = ") + formatted("%.1f", v.diameter_m * 1e3) +
+                       " mm; governed by " + v.governed_by + " at " + formatted("%.1f", v.at_diameter_m * 1e3) +
+                       " mm; band " + formatted("%.2f", v.band_low_m_s) + "-" + formatted("%.2f", v.band_high_m_s) +
+                       " m/s";
+    if (!r.change) return line;
+    line += "; target " + formatted("%.2f", r.change->target_m_s) + " m/s";
+    if (r.change->never_safe)
+        return line + " is above the safe speed already at the full roll (margin " +
+               formatted("%+.2f", r.change->margin_m_s) + " m/s)";
+    return line + (changes ? "" : " holds down to the smallest diameter") + ", margin at the full roll " +
+           formatted("%+.2f", r.change->margin_m_s) + " m/s";
 }
 
 }  // namespace coremodal
