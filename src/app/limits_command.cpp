@@ -24,7 +24,9 @@ int run_limits_case(const LimitsOptions& o) {
     LimitsCase c = parse_limits_case(o.folder.case_file);
     Scene& scene = c.scene;
     if (!o.folder.model.empty()) scene.model = o.folder.model;
-    const LimitsRequest request{c.limits.value_or(LimitsSpec{}), o.speed_m_s};
+    LimitsRequest request;
+    request.spec = c.limits.value_or(LimitsSpec{});
+    request.target_web_speed_m_s = o.speed_m_s;
     require_limits_scene(scene, request);  // before the folder: nothing written on bad input
     const std::filesystem::path out_dir = prepare_folder_case(o.folder, scene, "-limits");
     const LimitsResult result = verdict(scene, c.response, request);

@@ -69,6 +69,7 @@ toml::table point_json(const LimitsPoint& p) {
                                     {"mode_frequency_hz", k.mode_frequency_hz}});
     toml::table t{{"diameter_mm", p.diameter_m * kMm},
                   {"added_where_fast", p.added},
+                  {"band_sampled", p.band_sampled},
                   {"f1_hz", p.f1_hz},
                   {"criteria", criteria},
                   {"governing", criterion_id(criterion(p.governing))},

@@ -47,6 +47,11 @@ constexpr double kFastChange = 0.10;
 // resonance, whose forward whirl stiffens a few per cent.
 constexpr double kRangeTop = 1.3;
 constexpr double kRangeBottom = 0.05;
+// The band is sampled at every kBandStride-th diameter and the last; between
+// them each criterion's band, relative to its point value, is interpolated
+// linearly in the diameter (the ranges move the speeds by similar fractions
+// along one unwind; docs/limits.md, "The band").
+constexpr int kBandStride = 4;
 // Speeds of the forced response's grid and of the Campbell sweep per diameter.
 constexpr int kResponsePoints = 121;
 constexpr int kCampbellPoints = 14;
@@ -70,6 +75,7 @@ struct CriterionSpeed {
 struct LimitsPoint {
     double diameter_m = 0;               // the rest roll's outer diameter (the core's when bare)
     bool added = false;                  // a midpoint of step 1
+    bool band_sampled = false;  // the band sampled here, or interpolated from the sampled neighbours
     double f1_hz = 0;                    // first bending at rest, the scene's level
     std::optional<double> chuck_factor;  // k = f1 / f2 (chucks only)
     double f2_hz = 0;
