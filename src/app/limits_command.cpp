@@ -23,7 +23,8 @@ struct LimitsOptions {
 int run_limits_case(const LimitsOptions& o) {
     LimitsCase c = parse_limits_case(o.folder.case_file);
     Scene& scene = c.scene;
-    if (!o.folder.model.empty()) scene.model = o.folder.model;
+    require_one_process(o.folder, "the limits verdict");
+    apply_level_options(o.folder, scene);
     LimitsRequest request;
     request.spec = c.limits.value_or(LimitsSpec{});
     request.target_web_speed_m_s = o.speed_m_s;
