@@ -1,6 +1,8 @@
 // The fuzz target's body: one case file's text through the case reader,
 // the scene description and the beam model level (a [winder] file: the
-// winder reader and its beam model). Shared by the libFuzzer
+// winder reader and its beam model; a fit's measurements file: its reader,
+// its parameters resolved against a fixed case and that case solved at the
+// ends of the fit's search). Shared by the libFuzzer
 // target (fuzz/case_fuzzer.cpp, built by scripts/fuzz.sh) and the test that
 // replays every input the fuzzer ever crashed on (tests/fuzz_regressions/,
 // tests/unit/fuzz/test_fuzz_regressions.cpp).

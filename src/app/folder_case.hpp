@@ -19,6 +19,9 @@ namespace coremodal {
 struct FolderCaseOptions {
     std::string case_file, output, model;  // "" output: results/<case name><suffix>
     bool quiet = false, no_plots = false, force = false;
+    // campbell: modes that fail their verification written, marked
+    // (modes/verification_check.hpp); a response is never made of them.
+    bool keep_going = false;
 };
 
 // The case, -o/--output, --force, --model, -q and --no-plots.

@@ -27,7 +27,8 @@ int run_command(RunLine& line) {
     // (docs/rotation.md): [response] includes the rotation.
     const auto folder_case = [&](const Scene& scene) {
         return FolderCaseOptions{options.case_file, output_of(scene.name).string(), line.model,
-                                 options.quiet,     line.no_plots,                   options.force};
+                                 options.quiet,     line.no_plots,                   options.force,
+                                 options.keep_going};
     };
     if (const ResponseCase c = parse_response_case(options.case_file); c.response)
         return run_response_case(folder_case(c.scene));
@@ -56,6 +57,10 @@ Command add_run_command(CLI::App& app) {
                   "with elastic chucks: also run rigid clamps over the expanding elements and list both mode "
                   "tables side by side (rigid_vs_elastic.csv)");
     cmd->add_flag("--no-plots", line->no_plots, "do not run python3 for the pictures in report.md");
+    cmd->add_flag("--keep-going", options.keep_going,
+                  "write the results even when the modes fail their verification (a residual not finite or "
+                  "above 1e-6, an incomplete count, a mass that does not match), marked as not verified; "
+                  "otherwise such a run exits non-zero and writes nothing");
     cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
                 "they override coremodal's solver defaults.");
     return {cmd, [line] { return run_command(*line); }, true};
