@@ -81,6 +81,14 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     return p;
 }
 
+// The traction line of a case without [traction].
+CriterionSpeed no_roller() {
+    CriterionSpeed s;
+    s.criterion = Criterion::traction;
+    s.note = "no [traction] roller in the case";
+    return s;
+}
+
 // Step 4 at one point: the lowest limiting criterion given, and the safe
 // speed's band from the samples' own verdicts.
 void govern(LimitsPoint& p) {
@@ -248,7 +256,8 @@ std::vector<std::string> limits_notes(const LimitsResult& r) {
             "factor, 0.55 for a large core), the order-1 critical speeds "
             "(backward and forward whirl), the order-2 one "
             "where an order-2 load acts (ovality with gravity), and the "
-            "amplitude limit; I-5 at 0.8 is reported",
+            "amplitude limit and, with [traction], the web's slip on its first idler "
+            "(Rice & Gans); I-5 at 0.8 is reported",
             "the band: each uncertain input at each end of its range, one at a "
             "time, with the forced response re-solved, at every " +
                 std::to_string(kBandStride) +
@@ -257,24 +266,39 @@ std::vector<std::string> limits_notes(const LimitsResult& r) {
                 "sample's f1 (they follow f1 within the "
                 "gyroscopic shift, a few per cent); the safe speed's band is the "
                 "range of the samples' own verdicts",
-            "not included: the core's strength and fatigue (durability), the "
-            "web's slip on its idlers (traction), rotating "
+            std::string("not included: the core's strength and fatigue (durability), ") +
+                (r.points.empty() || !r.points.front().at(Criterion::traction).given
+                     ? "the web's slip on its idlers (give [traction]: Rice & Gans), "
+                     : "") +
+                "rotating "
             "(internal) damping, the contact opening at large amplitude, the "
             "rest paper's own out-of-roundness"};
 }
 
 }  // namespace
 
+CriterionSpeed traction_slip_criterion(const TractionSpec& spec) {
+    CriterionSpeed s;
+    s.criterion = Criterion::traction;
+    s.given = true;
+    s.web_speed_m_s = spec.tension_difference ? slip_speed(spec, *spec.tension_difference) : zero_traction_speed(spec);
+    s.band_low_m_s = s.band_high_m_s = s.web_speed_m_s;
+    s.note = spec.tension_difference
+                 ? "the roller can no longer carry [traction] tension_difference (Rice & Gans, eqs. 12-13)"
+                 : "traction vanishes (Rice & Gans, P* = 1); give [traction] tension_difference for the slip speed";
+    return s;
+}
+
 const char* criterion_id(Criterion c) {
-    static const char* ids[] = {"i5_0.7",         "i5_0.8", "koenig",         "order1_backward",
-                                "order1_forward", "order2", "amplitude_limit"};
+    static const char* ids[] = {"i5_0.7",         "i5_0.8", "koenig",          "order1_backward",
+                                "order1_forward", "order2", "amplitude_limit", "traction_slip"};
     return ids[static_cast<int>(c)];
 }
 
 const char* criterion_name(Criterion c) {
     static const char* names[] = {
         "I-5 x0.7",         "I-5 x0.8",       "Koenig K-1/K-2", "order-1 critical BW", "order-1 critical FW",
-        "order-2 critical", "amplitude limit"};
+        "order-2 critical", "amplitude limit", "web slip (traction)"};
     return names[static_cast<int>(c)];
 }
 
@@ -355,6 +379,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     const std::vector<double> diameters = n > 1 ? spaced(largest, smallest, n) : std::vector<double>{largest};
     auto solve = [&](double d, bool added, bool sample_band) {
         LimitsPoint p = solve_point(scene, base, d, r);
+        p.criteria.push_back(request.traction.value_or(no_roller()));
         p.added = added;
         p.band_sampled = r.band && sample_band;
         if (p.band_sampled) propagate_band(scene, base, r.inputs, p, r.n_solves);

@@ -28,6 +28,7 @@
 #include "scene/limits_spec.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/scene.hpp"
+#include "traction/traction_model.hpp"
 
 #include <optional>
 #include <string>
@@ -57,8 +58,10 @@ constexpr int kResponsePoints = 121;
 constexpr int kCampbellPoints = 14;
 
 // The criteria, in the order every table lists them.
-enum class Criterion { i5_low, i5_high, koenig, order1_backward, order1_forward, order2, amplitude };
-constexpr int kCriteria = 7;
+// `traction` is the web's slip on its first idler roller (Rice & Gans,
+// traction/), given when the case has a [traction] table.
+enum class Criterion { i5_low, i5_high, koenig, order1_backward, order1_forward, order2, amplitude, traction };
+constexpr int kCriteria = 8;
 const char* criterion_id(Criterion c);    // "i5_0.7", ... (summary.json, CSV)
 const char* criterion_name(Criterion c);  // "I-5 x0.7", ... (people)
 
@@ -144,7 +147,16 @@ struct LimitsRequest {
     // (limits_band.hpp). A narrower range (a measured damping, a fitted
     // contact stiffness) narrows the band.
     std::optional<std::vector<UncertainInput>> inputs;
+    // The web speed at which the web slips on its first idler roller (the
+    // case's [traction], traction_slip_criterion), or none without a roller.
+    std::optional<CriterionSpeed> traction;
 };
+
+// The traction criterion of a roller: the speed at which it can no longer
+// carry the tension difference it is given ([traction] tension_difference),
+// else the speed at which traction vanishes altogether (docs/traction.md).
+// It does not depend on the rest roll's diameter nor on the band's inputs.
+CriterionSpeed traction_slip_criterion(const TractionSpec& spec);
 
 // The verdict for a scene held in its stand. `response`: the case's
 // [damping]/[excitation]/[response] (their damping, excitation, limit and

@@ -12,11 +12,14 @@
 #include "common/error.hpp"
 #include "scene/limits_spec.hpp"
 #include "scene/toml_text.hpp"
+#include "scene/traction_case.hpp"
+#include "traction/traction_sweep.hpp"
 
 #include "support/tiny_case.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <string>
 
 using namespace coremodal;
@@ -220,4 +223,50 @@ TEST_CASE("The verdict refuses what it cannot carry before any work, naming the 
     negative.target_web_speed_m_s = -3;
     CHECK_THROWS_WITH(require_limits_scene(c.scene, negative),
                       Catch::Contains("--speed") && Catch::Contains("above 0"));
+}
+
+TEST_CASE("A [traction] roller joins the verdict as the web's slip speed, the standalone traction number",
+          "[limits][traction]") {
+    const LimitsCase c = small_roll();
+    const std::string case19 = std::string(COREMODAL_SOURCE_DIR) + "/cases/19-grooved-idler-traction.toml";
+    const std::optional<TractionCase> roller = read_traction_case(case19);
+    REQUIRE(roller);
+    const double d = roll_outer_diameter(c.scene);
+    SECTION("without a roller the line is there, not given, and the verdict is the roll's own") {
+        const LimitsResult r = verdict(c.scene, c.response, diameters(d, d, 1, false));
+        REQUIRE(r.points.size() == 1);
+        CHECK_FALSE(r.points[0].at(Criterion::traction).given);
+        CHECK(r.points[0].governing != static_cast<int>(Criterion::traction));
+    }
+    SECTION("the zero-traction speed is `coremodal traction`'s, the same at every diameter") {
+        LimitsRequest request = diameters(d, c.scene.core.outer_diameter, 2, false);
+        TractionSpec spec = roller->spec;
+        spec.tension_difference.reset();
+        request.traction = traction_slip_criterion(spec);
+        const LimitsResult r = verdict(c.scene, c.response, request);
+        const double standalone = run_traction_sweep(spec).zero_traction_speed;  // what `traction` reports
+        for (const LimitsPoint& p : r.points) {
+            CHECK(p.at(Criterion::traction).given);
+            CHECK(p.at(Criterion::traction).web_speed_m_s == Approx(standalone).epsilon(1e-12));
+        }
+    }
+    SECTION("a roller that slips first governs, band and all") {
+        // 99 % of what the roller carries at rest, the capstan limit
+        // T0 (1 - exp(-f theta)): it slips at a crawl, below every roll speed.
+        TractionSpec spec = roller->spec;
+        const double at_rest = spec.tension * (1 - std::exp(-spec.friction * spec.wrap));
+        spec.tension_difference = 0.99 * at_rest;
+        LimitsRequest request = diameters(d, d, 1, true);
+        request.traction = traction_slip_criterion(spec);
+        const double slip = slip_speed(spec, *spec.tension_difference);
+        REQUIRE(slip > 0);
+        const LimitsResult r = verdict(c.scene, c.response, request);
+        const LimitsPoint& p = r.points.at(0);
+        REQUIRE(p.at(Criterion::i5_low).given);
+        REQUIRE(slip < p.at(Criterion::i5_low).web_speed_m_s);
+        CHECK(p.governing == static_cast<int>(Criterion::traction));
+        CHECK(p.safe_m_s == Approx(slip).epsilon(1e-12));
+        CHECK(p.safe_low_m_s == Approx(slip).epsilon(1e-12));  // no input of the roll's band moves the roller
+        CHECK(r.verdict.governed_by == std::string("web slip (traction)"));
+    }
 }
