@@ -11,10 +11,12 @@
     fig = run.plot_mode(1)   # a matplotlib Figure
 
 Every other folder a command writes opens as a Folder: its ``summary``
-(summary.json of campbell, response and winder, study.json, converge.json:
-one scheme, docs/results.md), its ``command`` and its main ``table``
-(campbell.csv, response.csv, winder.csv, study.csv, calibration.csv,
-batch.csv, converge.csv, sensitivity.csv), with ``to_pandas()``.
+(summary.json of campbell, response, winder, limits, select, traction and
+durability, study.json, converge.json: one scheme, docs/results.md), its
+``command`` and its main ``table`` (campbell.csv, response.csv, winder.csv,
+limits.csv, selection.csv, traction.csv, points.csv of durability,
+study.csv, calibration.csv, batch.csv, converge.csv, sensitivity.csv), with
+``to_pandas()``.
 
     spin = coremodal.load("results/12-rotation-tester-76x15-campbell")
     spin.command             # "campbell"
@@ -34,10 +36,12 @@ from .tables import Table, read_summary, read_table
 #: The main table of each kind of folder, in the order they are looked for
 #: when the folder's JSON does not name its command.
 FOLDER_TABLES = ("study.csv", "calibration.csv", "batch.csv", "converge.csv", "campbell.csv", "winder.csv",
-                 "response.csv", "sensitivity.csv")
+                 "response.csv", "sensitivity.csv", "limits.csv", "selection.csv", "traction.csv", "points.csv")
 #: The main table of the folder each command writes.
 COMMAND_TABLES = {"campbell": "campbell.csv", "response": "response.csv", "winder": "winder.csv",
-                  "study": "study.csv", "calibrate": "calibration.csv", "converge": "converge.csv", "run": "modes.csv"}
+                  "study": "study.csv", "calibrate": "calibration.csv", "converge": "converge.csv", "run": "modes.csv",
+                  "limits": "limits.csv", "select": "selection.csv", "traction": "traction.csv",
+                  "durability": "points.csv"}
 #: Where each command's JSON is (the same scheme in each).
 SUMMARY_FILES = ("summary.json", "study.json", "converge.json")
 
@@ -76,7 +80,8 @@ class Folder:
     @cached_property
     def table(self) -> Table:
         """The folder's main table: the CSV of its command (campbell.csv,
-        response.csv, winder.csv, study.csv, converge.csv), else the first of
+        response.csv, winder.csv, limits.csv, selection.csv, traction.csv,
+        points.csv, study.csv, converge.csv), else the first of
         FOLDER_TABLES it holds."""
         if self.command in COMMAND_TABLES and (self.path / COMMAND_TABLES[self.command]).is_file():
             return self.read(COMMAND_TABLES[self.command])

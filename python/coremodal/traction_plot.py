@@ -36,7 +36,7 @@ def load(folder: Path) -> tuple[dict[str, Any], list[dict[str, str]]]:
             raise TractionFormatError(f"{folder / name}: no such file; expected a folder written by coremodal traction")
     try:
         summary = json.loads((folder / "summary.json").read_text())
-        float(summary["speeds"]["zero_traction_m_s"])
+        float(summary["traction_speeds"]["zero_traction_m_s"])
     except (ValueError, KeyError, TypeError) as error:
         raise TractionFormatError(f"{folder / 'summary.json'}: not a coremodal traction summary ({error})") from error
     with (folder / "traction.csv").open(newline="") as f:
@@ -76,7 +76,7 @@ def draw(folder: Path) -> Path:
     if bad:
         top.plot([v[i] for i in bad], [float(rows[i]["traction_N_m"]) for i in bad], "rx",
                  label="outside the paper's validity limits")
-    zero = float(summary["speeds"]["zero_traction_m_s"])
+    zero = float(summary["traction_speeds"]["zero_traction_m_s"])
     for ax in (top, bottom):
         if v[0] <= zero <= v[-1]:
             ax.axvline(zero, color="tab:red", linewidth=1, linestyle=":")
@@ -85,7 +85,7 @@ def draw(folder: Path) -> Path:
     if v[0] <= zero <= v[-1]:
         top.annotate(f"zero traction {zero:.3g} m/s", (zero, 0), textcoords="offset points", xytext=(4, 8),
                      fontsize=9, color="tab:red")
-    slip = summary["speeds"].get("slip_m_s")
+    slip = summary["traction_speeds"].get("slip_m_s")
     if slip is not None and v[0] <= slip <= v[-1]:
         top.axvline(slip, color="tab:purple", linewidth=1, linestyle="-.", label=f"slip speed {slip:.3g} m/s")
     top.set_ylabel("traction ΔT [N/m]")

@@ -69,6 +69,12 @@ def run(args: list[str], cwd: Path) -> subprocess.CompletedProcess:
 
 def command_of(case: dict) -> str:
     """The command a case file is made for: its tables say it."""
+    if "selection" in case:
+        return "select"
+    if "traction" in case and "core" not in case:
+        return "traction"
+    if "limits" in case:
+        return "limits"
     if "winder" in case:
         return "winder"
     if "study" in case:
@@ -81,7 +87,20 @@ def command_of(case: dict) -> str:
 
 
 def shipped_cases() -> list[Path]:
-    return sorted((REPO / "cases").glob("*.toml"))
+    """Every case file: the TOML cases and the durability data (CSV)."""
+    return sorted([*(REPO / "cases").glob("*.toml"), *DURABILITY_DATA])
+
+
+#: The simulator results `coremodal durability` reads (the selection's grade
+#: files are read through cases/18-core-selection.toml).
+DURABILITY_DATA = [REPO / "cases" / "18-core-durability-76x15.csv"]
+
+
+def command_of_file(case: Path) -> str:
+    if case in DURABILITY_DATA:
+        return "durability"
+    with case.open("rb") as f:
+        return command_of(tomllib.load(f))
 
 
 # Cheap variants, keys unchanged: the winder on 4 roll diameters instead of
@@ -93,6 +112,9 @@ CHEAP_EDITS = {
     "11-two-drum-winder": (r"(?m)^points\s*=\s*\d+", "points = 4"),
     "09-news-chucks-not-expanded-76x15-2200": (r"(?m)^expanded = false", 'expanded = false\ncontact = "uniform"'),
     "14-study-response-safe-speed": (r"(?m)^points\s*=\s*126", "points = 20"),  # web speeds per point
+    # limits on 4 rest-roll diameters instead of 20 (at the beam level)
+    "16-limits-rotogravure-150x15.8-4320": (r"(?m)^points\s*=\s*20", "points = 4"),
+    "17-limits-news-76x15-2200": (r"(?m)^points\s*=\s*20", "points = 4"),
 }
 
 
@@ -109,7 +131,7 @@ def cheap_copy(case: Path, tmp: Path) -> Path:
 
 
 def cheap_options(command: str) -> list[str]:
-    if ALL_LEVELS or command == "winder":
+    if ALL_LEVELS or command in ("winder", "select", "traction", "durability"):  # no model level to choose
         return []
     if command == "study":
         return ["--model", "beam", "--jobs", "1"]
@@ -123,8 +145,7 @@ def written_json(command: str, out: Path) -> dict:
 
 @pytest.mark.parametrize("case", shipped_cases(), ids=lambda p: p.stem)
 def test_every_shipped_case_writes_a_summary_of_the_scheme(case: Path, tmp_path: Path, validator) -> None:
-    with case.open("rb") as f:
-        command = command_of(tomllib.load(f))
+    command = command_of_file(case)
     out = tmp_path / "out"
     source = cheap_copy(case, tmp_path)
     run([command, str(source), "--output", str(out), "--no-plots", "-q", *cheap_options(command)], tmp_path)
@@ -146,8 +167,8 @@ def same_numbers_in_python(out: Path, command: str, summary: dict) -> None:
     frame = folder.to_pandas()
     assert len(frame) > 0
 
-    def same(table_values, json_values) -> None:
-        assert list(table_values) == pytest.approx(list(json_values), rel=1e-9, abs=1e-12)
+    def same(table_values, json_values, rel: float = 1e-9) -> None:
+        assert list(table_values) == pytest.approx(list(json_values), rel=rel, abs=1e-12)
 
     if command == "run":
         assert isinstance(folder, coremodal.Run)
@@ -164,6 +185,23 @@ def same_numbers_in_python(out: Path, command: str, summary: dict) -> None:
         assert len(set(frame["roll_diameter_m"])) == len(summary["points"])
     elif command == "study":
         assert max(frame["point"]) == summary["n_points"]
+    elif command == "limits":
+        same(frame["diameter_mm"], [p["diameter_mm"] for p in summary["points"]])
+        same(frame["safe_m_s"], [p["safe_web_speed_m_s"] for p in summary["points"]])
+    elif command == "select":
+        assert len(set(folder.read("reels.csv")["reel"])) == len(summary["reels"])
+        json_cores = {(s["name"], c["core"]): c for s in summary["stands"] for c in s["cores"]}
+        assert len(frame) == len(json_cores) > 0
+        # selection.csv carries 6 significant digits
+        same(frame["max_roll_mass_kg"],
+             [json_cores[(str(r["stand"]), str(r["core"]))]["max_roll_mass_kg"] for r in folder.table], rel=1e-5)
+    elif command == "traction":
+        same(frame["web_speed_m_s"], [p["web_speed_m_s"] for p in summary["points"]])
+        same(frame["traction_N_m"], [p["traction_N_m"] for p in summary["points"]])
+    elif command == "durability":
+        assert len(frame) == summary["data"]["points"]
+        allowed = folder.read("allowed_weights.csv")
+        same(allowed["cycles"], summary["table_cycles"])
 
 
 def test_a_solid_run_and_the_beam_formulas_follow_the_scheme(tmp_path: Path, validator) -> None:

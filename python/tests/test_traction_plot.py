@@ -35,7 +35,7 @@ def write_traction(folder: Path, grooved: bool = True) -> Path:
     (folder / "traction.csv").write_text("\n".join(lines) + "\n")
     summary = {"case": {"name": "synthetic"}, "roller": {"grooves": {"shape": "circular" if grooved else "none"}},
                "clearance": {"effective_clearance_m": 25e-6},
-               "speeds": {"zero_traction_m_s": 3.0, "slip_m_s": 1.5}}
+               "traction_speeds": {"zero_traction_m_s": 3.0, "slip_m_s": 1.5}}
     (folder / "summary.json").write_text(json.dumps(summary))
     return folder
 

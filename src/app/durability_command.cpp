@@ -4,6 +4,7 @@
 // ({16}–{32}; docs/durability.md). Plain numbers: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/error.hpp"
+#include "common/stopwatch.hpp"
 #include "common/format.hpp"
 #include "durability/durability_analysis.hpp"
 #include "output/durability_report.hpp"
@@ -40,6 +41,7 @@ void check_levels(const DurabilityOptions& o) {
 }
 
 int run_durability_command(DurabilityOptions o) {
+    const Stopwatch clock;
     if (o.probabilities.empty()) o.probabilities.assign(std::begin(kTable3Probabilities), std::end(kTable3Probabilities));
     check_levels(o);
     const DurabilityData data = read_durability_data(o.data);
@@ -52,7 +54,7 @@ int run_durability_command(DurabilityOptions o) {
         for (const std::string& s : steps) std::cout << "durability: " << s << std::endl;
 
     ResultsFolder folder(out_dir, o.force);
-    write_durability_tables(folder.dir(), data, analysis);
+    write_durability_tables(folder.dir(), data, analysis, clock.seconds());
     // The picture python/coremodal/durability_plot.py draws (Figs. 16-17).
     const Pictures pictures = draw_pictures("durability-plot", folder.dir(), o.no_plots, {"durability.png"});
     write_text_file(folder.dir() / "report.md", durability_report_markdown(data, analysis, pictures.pngs, pictures.problem));

@@ -5,6 +5,7 @@
 // rest roll dynamics") and the verdict on each reel asked
 // (docs/durability.md, "Choosing a core"). Beam formulas only: no PETSc.
 #include "app/commands.hpp"
+#include "common/stopwatch.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
 #include "output/selection_report.hpp"
@@ -25,6 +26,7 @@ struct SelectOptions {
 };
 
 int run_select_command(const SelectOptions& o) {
+    const Stopwatch clock;
     const SelectionScene scene = read_selection_file(o.case_file);
     const std::filesystem::path out_dir = results_path(o.output, scene.name, "-select");
     claim_output(out_dir, o.force);  // refused before any work, never over the user's files
@@ -34,7 +36,7 @@ int run_select_command(const SelectOptions& o) {
         for (const std::string& l : selection_console_lines(scene, result)) std::cout << "select: " << l << std::endl;
     }
     ResultsFolder folder(out_dir, o.force);
-    write_selection_tables(folder.dir(), scene, result);
+    write_selection_tables(folder.dir(), scene, result, clock.seconds());
     // The chart python/coremodal/selection_plot.py draws (Figs. 18-19).
     const Pictures pictures = draw_pictures("selection-plot", folder.dir(), o.no_plots, {"selection_chart.png"});
     write_text_file(folder.dir() / "report.md", selection_report_markdown(scene, result, pictures.pngs, pictures.problem));

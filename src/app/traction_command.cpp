@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "common/stopwatch.hpp"
 #include "common/warnings.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
@@ -31,6 +32,7 @@ struct TractionOptions {
 };
 
 int run_traction_command(const TractionOptions& o) {
+    const Stopwatch clock;
     // 1. The case's [traction] (the whole file checked when it is a stand scene).
     const std::optional<TractionCase> tc = read_traction_case(o.case_file);
     if (!tc)
@@ -54,7 +56,7 @@ int run_traction_command(const TractionOptions& o) {
     // 4. Tables, picture, report; the folder appears complete or not at all.
     ResultsFolder folder(out_dir, o.force);
     const std::filesystem::path& dir = folder.dir();
-    write_traction_tables(dir, *tc, sweep);
+    write_traction_tables(dir, *tc, sweep, clock.seconds());
     const Pictures pictures = draw_pictures("traction-plot", dir, o.no_plots, {"traction.png"});
     write_text_file(dir / "report.md", traction_report_markdown(*tc, sweep, pictures.pngs, pictures.problem));
     folder.commit();

@@ -2,9 +2,8 @@
 #include "output/durability_report.hpp"
 
 #include "common/format.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -12,8 +11,6 @@
 namespace coremodal {
 namespace {
 
-// The summary's layout; raised when a key changes meaning.
-constexpr int kDurabilitySchemaVersion = 1;
 constexpr const char* kPaper = "M. Ilomäki, \"On the durability of cores and rest roll dynamics\"";
 
 std::string g(double v, int digits = 5) { return significant(v, digits); }
@@ -64,55 +61,56 @@ std::string allowed_csv(const DurabilityData& d, const DurabilityAnalysis& a) {
     return out.str();
 }
 
-nlohmann::json band_json(const Band& b) { return {b.lower, b.upper}; }
+Json band_json(const Band& b) { return Json::array({b.lower, b.upper}); }
 
-std::string summary_json(const DurabilityData& d, const DurabilityAnalysis& a) {
-    nlohmann::json limits = nlohmann::json::array();
+std::string summary_json(const DurabilityData& d, const DurabilityAnalysis& a, double seconds) {
+    Json limits = Json::array();
     for (const ProbabilityLimit& l : a.limits)
-        limits.push_back({{"failure_probability", l.probability},
-                          {"lambda", l.factors.lambda},
-                          {"safety_factor", l.factors.log_space},
-                          {"relative_deviation", l.factors.relative_deviation},
-                          {"safety_factor_eq30", l.factors.paper_eq30},
-                          {"allowed_weights", l.allowed_weights}});
+        limits.push_back(Json{{"failure_probability", l.probability},
+                              {"lambda", l.factors.lambda},
+                              {"safety_factor", l.factors.log_space},
+                              {"relative_deviation", l.factors.relative_deviation},
+                              {"safety_factor_eq30", l.factors.paper_eq30},
+                              {"allowed_weights", l.allowed_weights}});
     const PowerLawFit& f = a.fit;
-    nlohmann::json j = {
-        {"schema_version", kDurabilitySchemaVersion},
-        {"command", "durability"},
-        {"source", kPaper},
-        {"data",
-         {{"file", d.source},
-          {"points", f.n},
-          {"chuck_length_m", d.chuck_length_m},
-          {"chuck_type", d.chuck_type},
-          {"weight", d.weight_name},
-          {"weight_unit", d.weight_unit},
-          {"weight_unit_newton", d.weight_unit_newton}}},
-        {"fit",
-         {{"b0", f.b0},
-          {"b1", f.b1},
-          {"log10_b0", f.log_b0},
-          {"s_log", f.s_log},
-          {"degrees_of_freedom", f.degrees_of_freedom()},
-          {"mean_log10_cycles", f.mean_log_x},
-          {"sxx", f.sxx},
-          {"intervals", {{"b1", band_json(a.intervals.b1)},
-                         {"log10_b0", band_json(a.intervals.log_b0)},
-                         {"s_log", band_json(a.intervals.s_log)}}}}},
-        {"confidence", {{"level", a.confidence}, {"t2", a.t2}, {"h1", a.h1}, {"upper_s_log", a.upper_sd_log}}},
-        {"table_cycles", a.table_cycles},
-        {"limits", limits}};
-    return j.dump(2) + "\n";
+    // The same head as every command's summary.json (output/summary_json.hpp);
+    // the data file is the case.
+    Json j = summary_head("durability", std::filesystem::path(d.source).stem().string(), d.source,
+                          "winding-unwinding simulator results, " + std::to_string(f.n) + " points, test chuck " +
+                              g(d.chuck_length_m * 1e3, 4) + " mm " + d.chuck_type);
+    j["source"] = kPaper;
+    j["data"] = Json{{"file", d.source},
+                     {"points", f.n},
+                     {"chuck_length_m", d.chuck_length_m},
+                     {"chuck_type", d.chuck_type},
+                     {"weight", d.weight_name},
+                     {"weight_unit", d.weight_unit},
+                     {"weight_unit_newton", d.weight_unit_newton}};
+    j["fit"] = Json{{"b0", f.b0},
+                    {"b1", f.b1},
+                    {"log10_b0", f.log_b0},
+                    {"s_log", f.s_log},
+                    {"degrees_of_freedom", f.degrees_of_freedom()},
+                    {"mean_log10_cycles", f.mean_log_x},
+                    {"sxx", f.sxx},
+                    {"intervals", Json{{"b1", band_json(a.intervals.b1)},
+                                       {"log10_b0", band_json(a.intervals.log_b0)},
+                                       {"s_log", band_json(a.intervals.s_log)}}}};
+    j["confidence"] = Json{{"level", a.confidence}, {"t2", a.t2}, {"h1", a.h1}, {"upper_s_log", a.upper_sd_log}};
+    j["table_cycles"] = a.table_cycles;
+    j["limits"] = limits;
+    j["timing_s"] = Json{{"total", seconds}};
+    return json_text(j);
 }
 
 }  // namespace
 
 void write_durability_tables(const std::filesystem::path& dir, const DurabilityData& data,
-                             const DurabilityAnalysis& a) {
+                             const DurabilityAnalysis& a, double seconds) {
     write_text_file(dir / "points.csv", points_csv(data, a));
     write_text_file(dir / "curves.csv", curves_csv(data, a));
     write_text_file(dir / "allowed_weights.csv", allowed_csv(data, a));
-    write_text_file(dir / "summary.json", summary_json(data, a));
+    write_text_file(dir / "summary.json", summary_json(data, a, seconds));
 }
 
 std::vector<std::string> durability_steps(const DurabilityData& d, const DurabilityAnalysis& a) {

@@ -14,8 +14,9 @@
 
 namespace coremodal {
 
+// `seconds`: the command's wall time so far (summary.json timing_s.total).
 void write_durability_tables(const std::filesystem::path& dir, const DurabilityData& data,
-                             const DurabilityAnalysis& a);
+                             const DurabilityAnalysis& a, double seconds);
 
 // report.md; `pngs` the pictures drawn, `plot_problem` why there are none.
 std::string durability_report_markdown(const DurabilityData& data, const DurabilityAnalysis& a,

@@ -2,9 +2,8 @@
 
 #include "common/format.hpp"
 #include "output/csv.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <toml++/toml.h>
 
 #include <sstream>
 
@@ -48,88 +47,78 @@ std::string amplitude_rows(const LimitsResult& r) {
     return out;
 }
 
-toml::table criterion_json(const CriterionSpeed& c) {
-    toml::table t{{"id", criterion_id(c.criterion)},
-                  {"name", criterion_name(c.criterion)},
-                  {"given", c.given},
-                  {"limiting", c.limits}};
-    if (c.given) t.insert("web_speed_m_s", c.web_speed_m_s);
-    if (c.given || c.band_low_m_s > 0) t.insert("band_m_s", toml::array{c.band_low_m_s, c.band_high_m_s});
-    if (!c.note.empty()) t.insert("note", c.note);
+Json criterion_json(const CriterionSpeed& c) {
+    Json t{{"id", criterion_id(c.criterion)},
+           {"name", criterion_name(c.criterion)},
+           {"given", c.given},
+           {"limiting", c.limits}};
+    if (c.given) t["web_speed_m_s"] = c.web_speed_m_s;
+    if (c.given || c.band_low_m_s > 0) t["band_m_s"] = Json::array({c.band_low_m_s, c.band_high_m_s});
+    if (!c.note.empty()) t["note"] = c.note;
     return t;
 }
 
-toml::table point_json(const LimitsPoint& p) {
-    toml::array criteria, peaks;
+Json point_json(const LimitsPoint& p) {
+    Json criteria = Json::array(), peaks = Json::array();
     for (const CriterionSpeed& c : p.criteria) criteria.push_back(criterion_json(c));
     for (const ResponsePeak& k : p.peaks)
-        peaks.push_back(toml::table{{"order", k.order},
-                                    {"web_speed_m_s", k.web_speed_m_s},
-                                    {"amplitude_mm", k.amplitude_m * kMm},
-                                    {"mode_frequency_hz", k.mode_frequency_hz}});
-    toml::table t{{"diameter_mm", p.diameter_m * kMm},
-                  {"added_where_fast", p.added},
-                  {"band_sampled", p.band_sampled},
-                  {"f1_hz", p.f1_hz},
-                  {"criteria", criteria},
-                  {"governing", criterion_id(criterion(p.governing))},
-                  {"safe_web_speed_m_s", p.safe_m_s},
-                  {"safe_band_m_s", toml::array{p.safe_low_m_s, p.safe_high_m_s}},
-                  {"order1_mode", p.order1_mode},
-                  {"peaks", peaks}};
-    if (p.chuck_factor) t.insert("chuck_factor", toml::table{{"k", *p.chuck_factor}, {"f2_hz", p.f2_hz}});
+        peaks.push_back(Json{{"order", k.order},
+                             {"web_speed_m_s", k.web_speed_m_s},
+                             {"amplitude_mm", k.amplitude_m * kMm},
+                             {"mode_frequency_hz", k.mode_frequency_hz}});
+    Json t{{"diameter_mm", p.diameter_m * kMm},
+           {"added_where_fast", p.added},
+           {"band_sampled", p.band_sampled},
+           {"f1_hz", p.f1_hz},
+           {"criteria", criteria},
+           {"governing", criterion_id(criterion(p.governing))},
+           {"safe_web_speed_m_s", p.safe_m_s},
+           {"safe_band_m_s", Json::array({p.safe_low_m_s, p.safe_high_m_s})},
+           {"order1_mode", p.order1_mode},
+           {"peaks", peaks}};
+    if (p.chuck_factor) t["chuck_factor"] = Json{{"k", *p.chuck_factor}, {"f2_hz", p.f2_hz}};
     return t;
-}
-
-toml::array strings(const std::vector<std::string>& words) {
-    toml::array a;
-    for (const std::string& w : words) a.push_back(w);
-    return a;
 }
 
 std::string summary_json(const Scene& scene, const LimitsResult& r) {
-    toml::array points, inputs;
+    Json points = Json::array(), inputs = Json::array();
     for (const LimitsPoint& p : r.points) points.push_back(point_json(p));
     for (const UncertainInput& i : r.inputs) {
-        toml::table t{{"name", i.name}, {"range", i.range}, {"source", i.source}, {"applies", i.applies}};
+        Json t{{"name", i.name}, {"range", i.range}, {"source", i.source}, {"applies", i.applies}};
         if (i.applies)
-            t.insert("samples", toml::table{{"low", i.low}, {"high", i.high}, {"unit", i.what}});
+            t["samples"] = Json{{"low", i.low}, {"high", i.high}, {"unit", i.what}};
         else
-            t.insert("why_not", i.why_not);
+            t["why_not"] = i.why_not;
         inputs.push_back(t);
     }
     const Verdict& v = r.verdict;
-    toml::table verdict{{"line", verdict_line(r)},
-                        {"safe_web_speed_m_s", v.speed_m_s},
-                        {"roll_change_diameter_mm", v.diameter_m * kMm},
-                        {"governed_by", v.governed_by},
-                        {"at_diameter_mm", v.at_diameter_m * kMm},
-                        {"band_m_s", toml::array{v.band_low_m_s, v.band_high_m_s}}};
+    Json verdict{{"line", verdict_line(r)},
+                 {"safe_web_speed_m_s", v.speed_m_s},
+                 {"roll_change_diameter_mm", v.diameter_m * kMm},
+                 {"governed_by", v.governed_by},
+                 {"at_diameter_mm", v.at_diameter_m * kMm},
+                 {"band_m_s", Json::array({v.band_low_m_s, v.band_high_m_s})}};
     if (r.change)
-        verdict.insert("target", toml::table{{"web_speed_m_s", r.change->target_m_s},
-                                             {"never_safe", r.change->never_safe},
-                                             {"change_needed", r.change->needed},
-                                             {"change_diameter_mm", r.change->diameter_m * kMm},
-                                             {"margin_at_full_roll_m_s", r.change->margin_m_s}});
-    toml::table t{
-        {"program", "coremodal limits"},
-        {"version", COREMODAL_VERSION},
-        {"case", toml::table{{"name", scene.name}, {"file", scene.source_file}, {"description", scene.description}}},
-        {"model", toml::table{{"level", r.level}, {"solves", r.n_solves}}},
-        {"verdict", verdict},
-        {"inputs", toml::table{{"damping", r.damping_summary},
-                               {"bow_mm", r.bow_m * kMm},
-                               {"limit_mm", r.limit_m * kMm},
-                               {"band", r.band},
-                               {"uncertain", inputs}}},
-        {"points", points},
-        {"warnings", strings(r.warnings)},
-        {"notes", strings(r.notes)},
-        {"assumptions", strings(r.assumptions)},
-        {"time_s", r.seconds}};
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+        verdict["target"] = Json{{"web_speed_m_s", r.change->target_m_s},
+                                 {"never_safe", r.change->never_safe},
+                                 {"change_needed", r.change->needed},
+                                 {"change_diameter_mm", r.change->diameter_m * kMm},
+                                 {"margin_at_full_roll_m_s", r.change->margin_m_s}};
+    // The same head as every command's summary.json (output/summary_json.hpp).
+    Json t = summary_head("limits", scene.name, scene.source_file, scene.description);
+    t["model"] = Json{{"level", r.level}, {"solves", r.n_solves}};
+    t["verdict"] = verdict;
+    t["inputs"] = Json{{"damping", r.damping_summary},
+                       {"bow_mm", r.bow_m * kMm},
+                       {"limit_mm", r.limit_m * kMm},
+                       {"band", r.band},
+                       {"uncertain", inputs}};
+    t["points"] = points;
+    t["warnings"] = string_array(r.warnings);
+    t["notes"] = string_array(r.notes);
+    t["assumptions"] = string_array(r.assumptions);
+    t["timing_s"] = Json{{"total", r.seconds}};
+    return json_text(t);
 }
 
 std::string cell(const CriterionSpeed& c, bool band) {

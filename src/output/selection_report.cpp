@@ -3,16 +3,14 @@
 
 #include "common/format.hpp"
 #include "output/csv.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <nlohmann/json.hpp>
 
 #include <sstream>
 
 namespace coremodal {
 namespace {
 
-constexpr int kSelectionSchemaVersion = 1;
 constexpr const char* kPaper = "M. Ilomäki, \"On the durability of cores and rest roll dynamics\"";
 
 std::string g(double v, int digits = 5) { return significant(v, digits); }
@@ -61,15 +59,15 @@ std::string reels_csv(const SelectionScene& s, const SelectionResult& r) {
     return out.str();
 }
 
-std::string summary_json(const SelectionScene& s, const SelectionResult& r) {
-    nlohmann::json stands = nlohmann::json::array();
+std::string summary_json(const SelectionScene& s, const SelectionResult& r, double seconds) {
+    Json stands = Json::array();
     for (std::size_t i = 0; i < s.stands.size(); ++i) {
         const Stand& st = s.stands[i];
-        nlohmann::json cores = nlohmann::json::array();
+        Json cores = Json::array();
         for (std::size_t j = 0; j < s.cores.size(); ++j) {
             const CoreInStand& c = r.table[i][j];
             if (!c.fits) continue;
-            cores.push_back({{"core", s.cores[j].name},
+            cores.push_back(Json{{"core", s.cores[j].name},
                              {"method", c.weight.method},
                              {"test_chuck_weight_n", c.weight.test_chuck_weight_n},
                              {"chuck_scale", c.weight.chuck_scale},
@@ -81,7 +79,7 @@ std::string summary_json(const SelectionScene& s, const SelectionResult& r) {
                              {"max_width_m", c.max_width_m},
                              {"governing", c.governing}});
         }
-        stands.push_back({{"name", st.name},
+        stands.push_back(Json{{"name", st.name},
                           {"chuck_length_m", st.chuck_length},
                           {"li_m", st.li},
                           {"chuck_factor", st.chuck_factor},
@@ -94,41 +92,42 @@ std::string summary_json(const SelectionScene& s, const SelectionResult& r) {
                           {"roll_diameter_m", st.roll_diameter},
                           {"cores", cores}});
     }
-    nlohmann::json reels = nlohmann::json::array();
+    Json reels = Json::array();
     for (std::size_t k = 0; k < s.reels.size(); ++k) {
         const ReelCheck& c = r.reels[k];
-        nlohmann::json passing = nlohmann::json::array();
+        Json passing = Json::array();
         for (std::size_t j = 0; j < s.cores.size(); ++j)
             if (c.cores[j].passes()) passing.push_back(s.cores[j].name);
-        reels.push_back({{"stand", s.reels[k].stand},
+        reels.push_back(Json{{"stand", s.reels[k].stand},
                          {"width_m", s.reels[k].width},
                          {"diameter_m", s.reels[k].diameter},
                          {"web_speed_m_s", c.web_speed},
                          {"passing_cores", passing},
-                         {"lightest", c.lightest ? nlohmann::json(s.cores[*c.lightest].name) : nlohmann::json()},
-                         {"cheapest", c.cheapest ? nlohmann::json(s.cores[*c.cheapest].name) : nlohmann::json()}});
+                         {"lightest", c.lightest ? Json(s.cores[*c.lightest].name) : Json()},
+                         {"cheapest", c.cheapest ? Json(s.cores[*c.cheapest].name) : Json()}});
     }
-    nlohmann::json j = {{"schema_version", kSelectionSchemaVersion},
-                        {"command", "select"},
-                        {"source", kPaper},
-                        {"case", {{"name", s.name}, {"file", s.source}}},
-                        {"failure_probability", s.failure_probability},
-                        {"confidence", s.confidence},
-                        {"cycles", s.cycles},
-                        {"paper_density_kg_m3", s.paper_density},
-                        {"width_criterion", "I-5 safe speed with I-7 and the stand's chuck factor k"},
-                        {"defaults_used", s.defaults},
-                        {"stands", stands},
-                        {"reels", reels}};
-    return j.dump(2) + "\n";
+    // The same head as every command's summary.json (output/summary_json.hpp).
+    Json j = summary_head("select", s.name, s.source, s.description);
+    j["source"] = kPaper;
+    j["failure_probability"] = s.failure_probability;
+    j["confidence"] = s.confidence;
+    j["cycles"] = s.cycles;
+    j["paper_density_kg_m3"] = s.paper_density;
+    j["width_criterion"] = "I-5 safe speed with I-7 and the stand's chuck factor k";
+    j["defaults_used"] = string_array(s.defaults);
+    j["stands"] = stands;
+    j["reels"] = reels;
+    j["timing_s"] = Json{{"total", seconds}};
+    return json_text(j);
 }
 
 }  // namespace
 
-void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r) {
+void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r,
+                            double seconds) {
     write_text_file(dir / "selection.csv", selection_csv(scene, r));
     write_text_file(dir / "reels.csv", reels_csv(scene, r));
-    write_text_file(dir / "summary.json", summary_json(scene, r));
+    write_text_file(dir / "summary.json", summary_json(scene, r, seconds));
 }
 
 std::vector<std::string> selection_console_lines(const SelectionScene& s, const SelectionResult& r) {

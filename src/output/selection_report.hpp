@@ -13,7 +13,9 @@
 
 namespace coremodal {
 
-void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r);
+// `seconds`: the command's wall time so far (summary.json timing_s.total).
+void write_selection_tables(const std::filesystem::path& dir, const SelectionScene& scene, const SelectionResult& r,
+                            double seconds);
 
 std::string selection_report_markdown(const SelectionScene& scene, const SelectionResult& r,
                                       const std::vector<std::string>& pngs, const std::string& plot_problem);

@@ -3,9 +3,8 @@
 
 #include "common/format.hpp"
 #include "output/csv.hpp"
+#include "output/summary_json.hpp"
 #include "output/text_file.hpp"
-
-#include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -69,95 +68,88 @@ std::string csv_rows(const TractionSweep& s) {
     return out;
 }
 
-toml::table roller_json(const TractionSpec& s) {
+Json roller_json(const TractionSpec& s) {
     const Grooves& g = s.grooves;
-    toml::table grooves{{"shape", groove_shape_name(g.shape)}};
+    Json grooves{{"shape", groove_shape_name(g.shape)}};
     if (grooved(s)) {
-        grooves.insert("depth_m", g.depth);
-        grooves.insert("width_m", g.width);
-        grooves.insert("pitch_m", g.pitch);
-        grooves.insert("land_width_m", g.land_width());
-        grooves.insert("land_fraction", g.land_fraction());
-        if (g.shape == GrooveShape::circular) grooves.insert("tool_radius_m", g.tool_radius);
+        grooves["depth_m"] = g.depth;
+        grooves["width_m"] = g.width;
+        grooves["pitch_m"] = g.pitch;
+        grooves["land_width_m"] = g.land_width();
+        grooves["land_fraction"] = g.land_fraction();
+        if (g.shape == GrooveShape::circular) grooves["tool_radius_m"] = g.tool_radius;
     }
-    toml::table web{{"tension_N_m", s.tension}, {"thickness_m", s.web_thickness}, {"density_kg_m3", s.web_density},
-                    {"roughness_m", s.web_roughness}};
-    if (s.web_modulus) web.insert("modulus_Pa", *s.web_modulus);
-    if (s.web_poisson) web.insert("poisson", *s.web_poisson);
-    toml::table out{{"radius_m", s.roller_radius}, {"wrap_rad", s.wrap},
-                    {"wrap_deg", s.wrap * 180.0 / std::numbers::pi}, {"roughness_m", s.roller_roughness},
-                    {"grooves", grooves}, {"friction", s.friction}, {"air_viscosity_Pa_s", s.air_viscosity},
-                    {"web", web}};
-    if (s.tension_difference) out.insert("tension_difference_N_m", *s.tension_difference);
+    Json web{{"tension_N_m", s.tension}, {"thickness_m", s.web_thickness}, {"density_kg_m3", s.web_density},
+             {"roughness_m", s.web_roughness}};
+    if (s.web_modulus) web["modulus_Pa"] = *s.web_modulus;
+    if (s.web_poisson) web["poisson"] = *s.web_poisson;
+    Json out{{"radius_m", s.roller_radius}, {"wrap_rad", s.wrap},
+             {"wrap_deg", s.wrap * 180.0 / std::numbers::pi}, {"roughness_m", s.roller_roughness},
+             {"grooves", grooves}, {"friction", s.friction}, {"air_viscosity_Pa_s", s.air_viscosity},
+             {"web", web}};
+    if (s.tension_difference) out["tension_difference_N_m"] = *s.tension_difference;
     return out;
 }
 
-toml::table point_json(const TractionPoint& p) {
-    toml::table t{{"web_speed_m_s", p.web_speed},
-                  {"tension_N_m", p.tension},
-                  {"air_pressure_Pa", p.air_pressure},
-                  {"wrap_pressure_Pa", p.wrap_pressure},
-                  {"contact_pressure_Pa", p.contact_pressure},
-                  {"air_share", p.air_share},
-                  {"p_star", p.p_star},
-                  {"h_star", p.h_star},
-                  {"traction_N_m", p.traction},
-                  {"capstan_traction_N_m", p.capstan_traction},
-                  {"effective_friction", p.effective_friction},
-                  {"contact", p.contact},
-                  {"valid", p.valid}};
+Json point_json(const TractionPoint& p) {
+    Json t{{"web_speed_m_s", p.web_speed},
+           {"tension_N_m", p.tension},
+           {"air_pressure_Pa", p.air_pressure},
+           {"wrap_pressure_Pa", p.wrap_pressure},
+           {"contact_pressure_Pa", p.contact_pressure},
+           {"air_share", p.air_share},
+           {"p_star", p.p_star},
+           {"h_star", p.h_star},
+           {"traction_N_m", p.traction},
+           {"capstan_traction_N_m", p.capstan_traction},
+           {"effective_friction", p.effective_friction},
+           {"contact", p.contact},
+           {"valid", p.valid}};
     // theta* is infinite on lands without asperities: JSON has no infinity, so a string.
     if (p.theta_star) {
         if (std::isfinite(*p.theta_star))
-            t.insert("theta_star", *p.theta_star);
+            t["theta_star"] = *p.theta_star;
         else
-            t.insert("theta_star", "infinite");
+            t["theta_star"] = "infinite";
     }
-    if (p.b_star) t.insert("b_star", *p.b_star);
-    toml::array violations;
-    for (const std::string& v : p.violations) violations.push_back(v);
-    t.insert("violations", violations);
+    if (p.b_star) t["b_star"] = *p.b_star;
+    t["violations"] = string_array(p.violations);
     return t;
 }
 
-std::string summary_json(const TractionCase& tc, const TractionSweep& s) {
-    toml::array points, assumptions, warnings, model;
+std::string summary_json(const TractionCase& tc, const TractionSweep& s, double seconds) {
+    Json points = Json::array();
     for (const TractionPoint& p : s.points) points.push_back(point_json(p));
-    for (const std::string& a : tc.assumptions) assumptions.push_back(a);
-    for (const std::string& a : traction_model_assumptions(tc.spec)) model.push_back(a);
-    for (const std::string& w : tc.warnings) warnings.push_back(w);
-    toml::table clearance{{"asperity_height_m", s.clearance.asperity_height},
-                          {"effective_clearance_m", s.clearance.clearance}};
-    if (s.clearance.groove_depth_eff) clearance.insert("groove_depth_eff_m", *s.clearance.groove_depth_eff);
-    toml::table speeds{{"zero_traction_m_s", s.zero_traction_speed}};
-    if (std::isfinite(s.centripetal_limit_speed)) speeds.insert("centripetal_limit_m_s", s.centripetal_limit_speed);
-    if (s.slip_speed) speeds.insert("slip_m_s", *s.slip_speed);
-    toml::table t{{"program", "coremodal traction"},
-                  {"version", COREMODAL_VERSION},
-                  {"source", kRiceGansCitation},
-                  {"case", toml::table{{"name", tc.name}, {"file", tc.source_file}, {"description", tc.description}}},
-                  {"roller", roller_json(tc.spec)},
-                  {"clearance", clearance},
-                  {"speeds", speeds}};
+    Json clearance{{"asperity_height_m", s.clearance.asperity_height},
+                   {"effective_clearance_m", s.clearance.clearance}};
+    if (s.clearance.groove_depth_eff) clearance["groove_depth_eff_m"] = *s.clearance.groove_depth_eff;
+    // Not "speeds": that key is a roll's I-5 speeds in every summary.json.
+    Json speeds{{"zero_traction_m_s", s.zero_traction_speed}};
+    if (std::isfinite(s.centripetal_limit_speed)) speeds["centripetal_limit_m_s"] = s.centripetal_limit_speed;
+    if (s.slip_speed) speeds["slip_m_s"] = *s.slip_speed;
+    // The same head as every command's summary.json (output/summary_json.hpp).
+    Json t = summary_head("traction", tc.name, tc.source_file, tc.description);
+    t["source"] = kRiceGansCitation;
+    t["roller"] = roller_json(tc.spec);
+    t["clearance"] = clearance;
+    t["traction_speeds"] = speeds;
     if (s.plain) {
-        toml::table plain{{"clearance_m", s.plain->clearance},
-                          {"zero_traction_speed_m_s", s.plain->zero_traction_speed}};
-        if (const std::optional<double> gain = groove_speed_gain(s)) plain.insert("groove_speed_gain", *gain);
-        t.insert("plain_roller", plain);
+        Json plain{{"clearance_m", s.plain->clearance}, {"zero_traction_speed_m_s", s.plain->zero_traction_speed}};
+        if (const std::optional<double> gain = groove_speed_gain(s)) plain["groove_speed_gain"] = *gain;
+        t["plain_roller"] = plain;
     }
-    t.insert("validity", toml::table{{"theta_star_max", kMaxThetaStar},
-                                     {"b_star_max", kMaxBStar},
-                                     {"local_flow_error_max", kMaxLocalFlowError},
-                                     {"points", static_cast<int64_t>(s.points.size())},
-                                     {"points_invalid", s.n_invalid},
-                                     {"points_without_contact", s.n_no_contact}});
-    t.insert("defaults_used", assumptions);
-    t.insert("model_assumptions", model);
-    t.insert("warnings", warnings);
-    t.insert("points", points);
-    std::ostringstream out;
-    out << toml::json_formatter{t} << "\n";
-    return out.str();
+    t["validity"] = Json{{"theta_star_max", kMaxThetaStar},
+                         {"b_star_max", kMaxBStar},
+                         {"local_flow_error_max", kMaxLocalFlowError},
+                         {"points", s.points.size()},
+                         {"points_invalid", s.n_invalid},
+                         {"points_without_contact", s.n_no_contact}};
+    t["defaults_used"] = string_array(tc.assumptions);
+    t["model_assumptions"] = string_array(traction_model_assumptions(tc.spec));
+    t["warnings"] = string_array(tc.warnings);
+    t["points"] = points;
+    t["timing_s"] = Json{{"total", seconds}};
+    return json_text(t);
 }
 
 // The rows report.md shows: all of a short sweep, else about 21 evenly spread
@@ -284,9 +276,10 @@ void validity_section(std::ostringstream& md, const TractionSpec& spec, const Tr
 
 }  // namespace
 
-void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep) {
+void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep,
+                           double seconds) {
     write_text_file(dir / "traction.csv", csv_rows(sweep));
-    write_text_file(dir / "summary.json", summary_json(tc, sweep));
+    write_text_file(dir / "summary.json", summary_json(tc, sweep, seconds));
 }
 
 std::string traction_report_markdown(const TractionCase& tc, const TractionSweep& s, const std::vector<std::string>& pngs,
@@ -326,8 +319,7 @@ std::string traction_report_markdown(const TractionCase& tc, const TractionSweep
 std::string traction_check_text(const TractionCase& tc) {
     const TractionSpec& spec = tc.spec;
     std::ostringstream out;
-    constexpr auto flags = toml::toml_formatter::default_flags | toml::format_flags::relaxed_float_precision;
-    out << toml::toml_formatter{roller_json(spec), flags} << "\n";
+    out << json_text(roller_json(spec));
     const EffectiveClearance h = effective_clearance(spec);
     out << "effective clearance h_eff " << um(h.clearance) << " (asperities " << um(h.asperity_height) << ")"
         << "; zero-traction speed " << speed(zero_traction_speed(spec));

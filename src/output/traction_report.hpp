@@ -17,7 +17,9 @@ namespace coremodal {
 // roller's beside a grooved one), whether the point is valid and why not;
 // summary.json: the inputs in SI, the clearance, the speeds, the validity
 // limits, the assumptions and every point.
-void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep);
+// `seconds`: the command's wall time so far (summary.json timing_s.total).
+void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep,
+                           double seconds);
 
 // report.md: the roller, the clearance, the speeds, the curve in a table,
 // the validity limits, the assumptions; `pngs` the pictures drawn (file
@@ -26,7 +28,7 @@ std::string traction_report_markdown(const TractionCase& tc, const TractionSweep
                                      const std::vector<std::string>& pngs, const std::string& plot_problem);
 
 // What `coremodal check` says of a [traction] table: the resolved roller and
-// web (SI), the clearance and the zero-traction speed, the defaults used.
+// web (SI, as JSON), the clearance and the zero-traction speed, the defaults used.
 std::string traction_check_text(const TractionCase& tc);
 
 // The lines the command prints.

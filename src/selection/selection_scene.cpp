@@ -54,6 +54,7 @@ public:
         s.source = path_;
         check_keys(root, "the top level", kTopKeys);
         s.name = text(root, "", "name").value_or(std::filesystem::path(path_).stem().string());
+        s.description = text(root, "", "description").value_or("");
         const toml::table* sel = root["selection"].as_table();
         if (!sel) fail(root.source(), "no [selection] table; expected a core-selection file (docs/durability.md)");
         check_keys(*sel, "[selection]", kSelectionKeys);

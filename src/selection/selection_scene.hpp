@@ -74,7 +74,7 @@ struct Reel {
 };
 
 struct SelectionScene {
-    std::string name, source;
+    std::string name, source, description;
     double failure_probability = kSelectionProbability;
     double confidence = kDefaultConfidence;
     double cycles = kSelectionCycles;

@@ -46,9 +46,9 @@ TEST_CASE(
     CHECK(last_line(r.out).rfind("safe up to ", 0) == 0);
     CHECK(last_line(r.out).find("governed by") != std::string::npos);
     const std::string summary = slurp(dir.path / "out" / "summary.json");
-    CHECK(summary.find("\"program\" : \"coremodal limits\"") != std::string::npos);
+    CHECK(summary.find("\"command\": \"limits\"") != std::string::npos);  // the one scheme (output/summary_json.hpp)
     CHECK(summary.find("\"roll_change_diameter_mm\"") != std::string::npos);
-    CHECK(summary.find("\"web_speed_m_s\" : 15") != std::string::npos);
+    CHECK(summary.find("\"web_speed_m_s\": 15.0") != std::string::npos);
     CHECK(slurp(dir.path / "out" / "report.md").rfind("# How fast may small run: safe up to ", 0) == 0);
     CHECK(slurp(dir.path / "out" / "limits.csv").rfind("diameter_mm,added,f1_hz,chuck_factor,i5_0.7_m_s,", 0) == 0);
     // -q: only where the results are, and the verdict.
