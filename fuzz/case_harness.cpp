@@ -1,12 +1,14 @@
 #include "case_harness.hpp"
 
+#include "analyses/fit/measurements.hpp"
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "scene/case_file.hpp"
+#include "scene/case_parameters.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/scene_description.hpp"
-#include "scene/toml_text.hpp"
 #include "scene/traction_case.hpp"
+#include "scene/toml_text.hpp"
 #include "selection/core_selection.hpp"
 #include "traction/traction_sweep.hpp"
 #include "winder/winder_model.hpp"
@@ -63,6 +65,89 @@ Outcome run_winder_text(std::string_view text, const std::string& path) {
     return Outcome::solved;
 }
 
+// The case a fuzzed measurements file's parameters are resolved against (its
+// own `case = ...` files are on disk, not in the input): Ilomäki's rest roll
+// of cases/validation/ilomaki-web-cut.toml with an elastic bearing and the
+// web of case 15, so that every family of key a fit may vary is there.
+constexpr std::string_view kFitCase = R"(name = "fit-case"
+model = "beam"
+[core]
+inner_diameter = "76 mm"
+wall = "15 mm"
+length = "2211 mm"
+material = "paperboard_core"
+[rest_paper]
+thickness = "4 mm"
+material = "rest_paper"
+[supports]
+type = "chucks"
+[supports.left]
+inserted_length = "106 mm"
+clearance = "0.5 mm"
+shaft_diameter = "60 mm"
+shaft_length = "150 mm"
+expansion_pressure = "6 bar"
+[[supports.left.expanding]]
+center = "70 mm"
+width = "60 mm"
+[supports.left.bearing]
+radial_stiffness = "200 kN/mm"
+tilting_stiffness = "1 MN*m/rad"
+frame_mass = "80 kg"
+frame_stiffness = "50 kN/mm"
+[web]
+tension = "300 N/m"
+span = "1.2 m"
+angle = "0 deg"
+thickness = "80 um"
+modulus = "5 GPa"
+[analysis]
+modes = 4
+)";
+
+// How far a fit moves a parameter without bounds of its own (analyses/fit/fit.cpp).
+constexpr double kFitBoundFactor = 10.0;
+
+// A fit's measurements file (`coremodal fit`): its reader, then each
+// parameter resolved against kFitCase and the scene at the two ends of the
+// range the fit would search, each read (or refused) and solved at the beam
+// level: the places a fit's search can take a case to.
+Outcome run_fit_text(std::string_view text, const std::string& path) {
+    FitInput in;
+    try {
+        in = parse_fit_input(std::string(text), path);
+    } catch (const InputError&) {
+        return Outcome::invalid;
+    }
+    for (const Measurement& m : in.measurements) {
+        check(std::isfinite(m.frequency_hz) && m.frequency_hz > 0, "a measured frequency that is not positive");
+        check(std::isfinite(m.uncertainty_hz) && m.uncertainty_hz > 0, "an uncertainty that is not positive");
+        check(!m.case_file.empty(), "a measurement without its case");
+    }
+    Outcome outcome = Outcome::solved;
+    for (size_t j = 0; j < in.parameters.size(); ++j) {
+        const FitParameterSpec& spec = in.parameters[j];
+        try {
+            const CaseParameters c = CaseParameters::from_text(std::string(kFitCase), "fit-case.toml", {spec.key},
+                                                               {KeySource{in.parameter_nodes[j], path}}, "beam");
+            const CaseParameter& p = c.parameters().front();
+            const double low = spec.min.value_or(std::max(p.min, p.value / kFitBoundFactor));
+            const double high = spec.max.value_or(std::min(p.max, p.value * kFitBoundFactor));
+            for (double v : {low, high}) check_modes(solve_beam_model(c.scene({v})));
+        } catch (const InputError&) {
+            outcome = Outcome::not_solvable;
+        } catch (const SolveError&) {
+            outcome = Outcome::not_solvable;
+        }
+    }
+    return outcome;
+}
+
+// Which reader a fuzzed text is for, by its top-level tables: a winder file
+// has [winder], a fit's measurements file [[measurement]] or parameters, a
+// case file anything else (its reader says what is wrong). The inputs still
+// to come have their place here: durability data and traction tables
+// (being written in parallel, issue 33) each get a branch and a run_*_text.
 // A [selection] file: its reader (durability files named relative to
 // `path`), then every stand's weight and width limits and the reels'
 // verdicts, all finite.
@@ -88,16 +173,6 @@ Outcome run_selection_text(std::string_view text, const std::string& path) {
     }
     return Outcome::solved;
 }
-
-bool has_table(std::string_view text, const char* table) {
-    try {
-        return parse_toml_text(text, "fuzz.toml").contains(table);
-    } catch (const std::exception&) {
-        return false;  // not TOML: the case reader says why
-    }
-}
-
-bool is_winder_text(std::string_view text) { return has_table(text, "winder"); }
 
 // A file with [traction] (docs/traction.md): its reader (the whole scene too
 // when it describes a roll), then the model at every speed: finite,
@@ -133,12 +208,31 @@ bool is_traction_text(std::string_view text) {
     }
 }
 
+enum class InputKind { case_file, winder, fit, selection, traction };
+
+InputKind kind_of(std::string_view text) {
+    try {
+        const toml::table root = parse_toml_text(text, "fuzz.toml");
+        if (root.contains("winder")) return InputKind::winder;
+        if (root.contains("selection")) return InputKind::selection;
+        if (!root.contains("core") && (root.contains("measurement") || root.contains("parameters")))
+            return InputKind::fit;
+    } catch (const std::exception&) {
+        // not TOML: the case reader says why
+    }
+    return is_traction_text(text) ? InputKind::traction : InputKind::case_file;
+}
+
 }  // namespace
 
 Outcome run_case_text(std::string_view text, const std::string& path) {
-    if (is_winder_text(text)) return run_winder_text(text, path);
-    if (has_table(text, "selection")) return run_selection_text(text, path);
-    if (is_traction_text(text)) return run_traction_text(text, path);
+    switch (kind_of(text)) {
+        case InputKind::winder: return run_winder_text(text, path);
+        case InputKind::fit: return run_fit_text(text, path);
+        case InputKind::selection: return run_selection_text(text, path);
+        case InputKind::traction: return run_traction_text(text, path);
+        case InputKind::case_file: break;
+    }
     Scene scene;
     try {
         scene = parse_case_text(text, path);

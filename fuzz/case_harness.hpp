@@ -1,7 +1,10 @@
 // The fuzz target's body: one case file's text through the case reader,
 // the scene description and the beam model level (a [winder] file: the
 // winder reader and its beam model; a [selection] file: its reader and the
-// core-selection numbers). Shared by the libFuzzer
+// core-selection numbers; a [traction] file: its reader and the model at every
+// speed; a fit's measurements file: its reader, its parameters resolved
+// against a fixed case and that case solved at the ends of the fit's search).
+// Shared by the libFuzzer
 // target (fuzz/case_fuzzer.cpp, built by scripts/fuzz.sh) and the test that
 // replays every input the fuzzer ever crashed on (tests/fuzz_regressions/,
 // tests/unit/fuzz/test_fuzz_regressions.cpp).

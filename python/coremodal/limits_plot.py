@@ -49,12 +49,14 @@ def draw(folder: Path) -> Path:
     ax.fill_between(d, 0, low, color="tab:green", alpha=0.15, lw=0, label="safe (conservative end)")
     ax.fill_between(d, low, high, color="tab:orange", alpha=0.25, lw=0, label="band of the safe speed")
     ax.plot(d, safe, color="k", lw=2.2, label="governing (point value)")
+    plotted = list(high) + list(safe)
     for c in criteria:
         key = c["id"] + "_m_s"
         pts = [(x, _value(r, key)) for x, r in zip(d, rows)]
         pts = [(x, v) for x, v in pts if v is not None]
         if not pts:
             continue
+        plotted += [p[1] for p in pts]
         ax.plot([p[0] for p in pts], [p[1] for p in pts], lw=1.2, marker=".", ls="-" if c["limiting"] else "--",
                 label=c["name"])
     verdict = summary["verdict"]
@@ -65,7 +67,9 @@ def draw(folder: Path) -> Path:
         if target["change_needed"]:
             ax.axvline(target["change_diameter_mm"], color="tab:red", lw=1.2,
                        label=f"roll change at {target['change_diameter_mm']:.1f} mm")
-    top = max(max(high), max(safe)) * 1.35
+    if target:
+        plotted.append(target["web_speed_m_s"])
+    top = max(plotted) * 1.3  # room for the legend above the curves
     ax.set_ylim(0, top)
     ax.set_xlim(min(d), max(d) if max(d) > min(d) else min(d) + 1)
     ax.invert_xaxis()  # the roll unwinds from left to right

@@ -7,7 +7,9 @@
 #include "analyses/campbell/campbell.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
+#include "common/warnings.hpp"
 #include "models/choose.hpp"
+#include "modes/verification_check.hpp"
 #include "output/campbell_report.hpp"
 #include "scene/rotation_spec.hpp"
 
@@ -34,6 +36,14 @@ int run_rotating_case(const FolderCaseOptions& o) {
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;
     const CampbellResult result = run_campbell(scene, rotation);
+    // Every mode at every speed: its residual of the quadratic problem (the
+    // counts are checked where each speed is solved).
+    std::vector<std::string> failures;
+    if (!(result.max_relative_residual <= kMaxVerifiedResidual))
+        failures.push_back("the largest relative residual over the speeds is " +
+                           std::to_string(result.max_relative_residual) + ", not a finite number at most " +
+                           std::to_string(kMaxVerifiedResidual));
+    print_warnings(require_verified("the Campbell diagram of " + scene.name, failures, o.keep_going));
     return write_folder_case(
         o, out_dir,
         {[&](const std::filesystem::path& dir) { write_campbell_tables(dir, scene, rotation, result); },
@@ -52,6 +62,9 @@ Command add_campbell_command(CLI::App& app) {
                     "report.md (beam, harmonic and solid levels)");
     add_folder_case_options(cmd, *o, "case file (TOML) with a [rotation] table, e.g. cases/12-rotation-tester-76x15.toml",
                             "-campbell", "campbell.png");
+    cmd->add_flag("--keep-going", o->keep_going,
+                  "write the results even when the modes fail their verification (a residual not finite or above "
+                  "1e-6), marked as not verified; otherwise such a run exits non-zero and writes nothing");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
                 "The [rotation] table: docs/rotation.md.");
     // PETSc and SLEPc: the harmonic and solid levels solve with them (the beam level does not need them).

@@ -20,6 +20,9 @@ struct FolderCaseOptions {
     std::string case_file, output, model;  // "" output: results/<case name><suffix>
     std::string mesh;                      // --mesh LEVEL, "" for the case's own [mesh]
     bool quiet = false, no_plots = false, force = false;
+    // campbell: modes that fail their verification written, marked
+    // (modes/verification_check.hpp); a response is never made of them.
+    bool keep_going = false;
 };
 
 // The case, -o/--output, --force, --model, -m/--mesh, -q and --no-plots.

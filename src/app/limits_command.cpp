@@ -8,6 +8,7 @@
 #include "common/error.hpp"
 #include "output/limits_report.hpp"
 #include "scene/limits_spec.hpp"
+#include "scene/traction_case.hpp"
 
 #include <iostream>
 #include <memory>
@@ -23,8 +24,14 @@ struct LimitsOptions {
 int run_limits_case(const LimitsOptions& o) {
     LimitsCase c = parse_limits_case(o.folder.case_file);
     Scene& scene = c.scene;
-    if (!o.folder.model.empty()) scene.model = o.folder.model;
-    const LimitsRequest request{c.limits.value_or(LimitsSpec{}), o.speed_m_s};
+    require_one_process(o.folder, "the limits verdict");
+    apply_level_options(o.folder, scene);
+    LimitsRequest request;
+    request.spec = c.limits.value_or(LimitsSpec{});
+    request.target_web_speed_m_s = o.speed_m_s;
+    // The web's first idler, when the stand scene names one (docs/traction.md).
+    if (const std::optional<TractionCase> roller = read_traction_case(o.folder.case_file))
+        request.traction = traction_slip_criterion(roller->spec);
     require_limits_scene(scene, request);  // before the folder: nothing written on bad input
     const std::filesystem::path out_dir = prepare_folder_case(o.folder, scene, "-limits");
     const LimitsResult result = verdict(scene, c.response, request);

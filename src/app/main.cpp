@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
+#include "common/free_memory.hpp"
 #include "common/join.hpp"
 #include "common/mpi_start.hpp"
 #include "common/petsc_handle.hpp"
@@ -16,10 +17,17 @@
 
 #include <gmsh.h>  // GMSH_API_VERSION
 #include <slepcsys.h>
+#include <cxxabi.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <new>
+#include <typeinfo>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -79,11 +87,64 @@ std::optional<std::string> explain_parse_error(const std::vector<coremodal::Comm
     return std::nullopt;
 }
 
-int report_error(const char* kind, const std::exception& e) {
+// PETSc's own words for the last error it raised (its first line, where it
+// was detected): COREMODAL_PETSC's exception carries only the code and the
+// call. Kept by the error handler main() installs.
+struct PetscFailure {
+    PetscErrorCode code = 0;
+    std::string message;
+};
+PetscFailure last_petsc_failure;
+
+PetscErrorCode remember_petsc_error(MPI_Comm, int, const char*, const char*, PetscErrorCode n, PetscErrorType p,
+                                    const char* message, void*) {
+    if (p == PETSC_ERROR_INITIAL) last_petsc_failure = {n, message ? message : ""};
+    return n;  // as PetscReturnErrorHandler: the caller gets the code, nothing is printed
+}
+
+bool mentions(const std::string& text, const char* part) { return text.find(part) != std::string::npos; }
+
+// A raw solver error ("PETSc error 55 in MatLUFactorNumeric(...)") said as
+// what went wrong and what to do; the raw words stay at the end for a report.
+std::string explain_petsc_error(const std::string& raw) {
+    const int code = std::atoi(raw.c_str() + std::strlen("PETSc error "));
+    const char* meaning = nullptr;
+    PetscErrorMessage(code, &meaning, nullptr);
+    std::string detail = raw + (meaning ? std::string(" (") + meaning + ")" : std::string());
+    if (last_petsc_failure.code == code && !last_petsc_failure.message.empty())
+        detail += ": " + last_petsc_failure.message;
+    const std::string& why = last_petsc_failure.message;
+    // MUMPS's INFOG(1) -8, -9, -11, -13, -14, -17, -19, -20: workspace or memory
+    // (MUMPS 5 users' guide, section 8); PETSc's own allocations: error 55.
+    const bool memory = code == PETSC_ERR_MEM || mentions(why, "INFOG(1)=-9") || mentions(why, "INFOG(1)=-13") ||
+                        mentions(why, "INFOG(1)=-8") || mentions(why, "INFOG(1)=-19") ||
+                        mentions(why, "INFOG(1)=-20") || mentions(why, "INFOG(1)=-17") ||
+                        mentions(why, "INFOG(1)=-14") || mentions(why, "INFOG(1)=-11") ||
+                        mentions(why, "Memory requested") || mentions(why, "Out of memory");
+    if (memory) return coremodal::out_of_memory_text() + " [" + detail + "]";
+    if (code == PETSC_ERR_NOT_CONVERGED)
+        return "the eigensolver did not converge [" + detail +
+               "]; raise [analysis] max_iterations, or look in `coremodal check CASE` for a support or part far "
+               "stiffer or softer than the rest of the model";
+    constexpr int kArgumentErrors[] = {PETSC_ERR_ARG_SIZ,         PETSC_ERR_ARG_IDN,        PETSC_ERR_ARG_WRONG,
+                                       PETSC_ERR_ARG_OUTOFRANGE,  PETSC_ERR_ARG_CORRUPT,    PETSC_ERR_ARG_BADPTR,
+                                       PETSC_ERR_ARG_NOTSAMETYPE, PETSC_ERR_ARG_NOTSAMECOMM, PETSC_ERR_ARG_WRONGSTATE,
+                                       PETSC_ERR_ARG_INCOMP,      PETSC_ERR_ARG_NULL,       PETSC_ERR_ARG_UNKNOWN_TYPE,
+                                       PETSC_ERR_ARG_TYPENOTSET,  PETSC_ERR_USER_INPUT};
+    if (std::find(std::begin(kArgumentErrors), std::end(kArgumentErrors), code) != std::end(kArgumentErrors))
+        return "a solver option or a value handed to the solver is not valid [" + detail +
+               "]; check the PETSc options (-name value) given after the command, and the case's values "
+               "(`coremodal check CASE`)";
+    return "the solver library failed [" + detail +
+           "]; check the case (`coremodal check CASE`) for values far outside their plausible range and "
+           "rerun; if it persists, report it with the case file and this message";
+}
+
+int report_error(const char* kind, const std::string& what) {
     coremodal::wait_if_interrupted();  // an error the interrupt's clean-up caused is no news
     int mpi_up = 0;
     MPI_Initialized(&mpi_up);
-    if (!mpi_up || coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << e.what() << std::endl;
+    if (!mpi_up || coremodal::mpi_rank() == 0) std::cerr << "coremodal: " << kind << what << std::endl;
     return 1;
 }
 
@@ -101,16 +162,68 @@ int launched_rank() {
     return 0;
 }
 
-int run_guarded(const coremodal::Command& command) {
+int run_guarded(const coremodal::Command& command, const std::function<void()>& before = [] {}) {
     try {
+        before();
         return command.run();
     } catch (const coremodal::InputError& e) {
-        return report_error("error: ", e);
+        return report_error("error: ", e.what());
     } catch (const coremodal::SolveError& e) {
-        return report_error("solve failed: ", e);
+        return report_error("solve failed: ", e.what());
+    } catch (const std::bad_alloc&) {
+        return report_error("error: ", coremodal::out_of_memory_text());
     } catch (const std::exception& e) {
-        return report_error("", e);
+        const std::string what = e.what();
+        if (what.rfind("PETSc error ", 0) == 0) return report_error("solve failed: ", explain_petsc_error(what));
+        return report_error("", what);
     }
+}
+
+// Out of memory where no try block can catch it: gmsh's static initializers
+// allocate while the libraries load, before main(), and under a tight
+// address-space limit (ulimit -v) their std::bad_alloc would end in
+// std::terminate ("terminate called ...", exit 134); a thread's likewise.
+// The handler says what happened; installed from the executable's preinit
+// array, which runs before any library's initializers.
+[[noreturn]] void terminate_with_a_reason() {
+    // The exception's type without rethrowing it: a rethrow allocates, and
+    // memory is what is missing.
+    const std::type_info* type = abi::__cxa_current_exception_type();
+    if (type && (*type == typeid(std::bad_alloc) || *type == typeid(std::bad_array_new_length))) {
+        std::string text;
+        try {
+            text = "coremodal: error: " + coremodal::out_of_memory_text() + "\n";
+        } catch (...) {
+        }
+        static const char fallback[] =
+            "coremodal: error: out of memory while starting (loading gmsh, PETSc, MPI and OpenBLAS); raise the "
+            "address-space limit (ulimit -v) or the job's memory\n";
+        [[maybe_unused]] const ssize_t written =
+            text.empty() ? ::write(2, fallback, sizeof fallback - 1) : ::write(2, text.data(), text.size());
+        ::_exit(1);
+    }
+    std::abort();
+}
+
+extern "C" void install_terminate_handler(int, char**, char**) { std::set_terminate(terminate_with_a_reason); }
+__attribute__((section(".preinit_array"), used)) void (*const preinit_terminate_handler)(int, char**, char**) =
+    install_terminate_handler;
+
+// The least address space a run must have left once the libraries are up:
+// OpenBLAS takes a 128 MB buffer (and malloc a 64 MB arena for its thread) at
+// its first call and, when that allocation fails, retries it forever, a hang
+// at 100 % CPU (issue 33: case 08 under ulimit -v 600000). Measured: the
+// smallest case (tests' tiny tube) at the harmonic level peaks ~300 MB above
+// the address space mapped at start.
+constexpr double kLeastHeadroomMb = 400;
+
+// Refuses a run whose address-space limit leaves less than kLeastHeadroomMb.
+void require_address_space() {
+    const std::optional<coremodal::AddressSpace> space = coremodal::address_space_limit();
+    if (!space || space->headroom_mb() >= kLeastHeadroomMb) return;
+    throw coremodal::SolveError(coremodal::out_of_memory_text(
+        space->used_mb + kLeastHeadroomMb, "the libraries loaded (" + std::to_string(long(space->used_mb)) +
+                                               " MB) and the least a run takes beside them"));
 }
 
 }  // namespace
@@ -173,9 +286,9 @@ int main(int argc, char** argv) {
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     isolated.started();
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
-    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    PetscPushErrorHandler(remember_petsc_error, nullptr);
     coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
-    const int status = run_guarded(*chosen);
+    const int status = run_guarded(*chosen, require_address_space);
     coremodal::wait_if_interrupted();
     PetscPopErrorHandler();  // PETSc's -malloc_dump lists the handler's 32 bytes otherwise
     SlepcFinalize();

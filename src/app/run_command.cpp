@@ -31,6 +31,7 @@ int run_command(RunLine& line) {
         o.quiet = options.quiet;
         o.no_plots = line.no_plots;
         o.force = options.force;
+        o.keep_going = options.keep_going;
         return o;
     };
     if (const ResponseCase c = parse_response_case(options.case_file); c.response)
@@ -59,6 +60,10 @@ Command add_run_command(CLI::App& app) {
                   "with elastic chucks: also run rigid clamps over the expanding elements and list both mode "
                   "tables side by side (rigid_vs_elastic.csv)");
     cmd->add_flag("--no-plots", line->no_plots, "do not run python3 for the pictures in report.md");
+    cmd->add_flag("--keep-going", options.keep_going,
+                  "write the results even when the modes fail their verification (a residual not finite or "
+                  "above 1e-6, an incomplete count, a mass that does not match), marked as not verified; "
+                  "otherwise such a run exits non-zero and writes nothing");
     cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
                 "they override coremodal's solver defaults.");
     return {cmd, [line] { return run_command(*line); }, true};

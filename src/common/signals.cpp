@@ -91,6 +91,18 @@ void remove_folders(const std::vector<fs::path>& folders) {
 // registered now are all there are (the main thread may still remove one
 // itself as it unwinds). Children go first, because a python plot writes
 // into the partial folder that is removed next.
+// The signal's name, for the line that says why the run ended.
+const char* signal_name(int sig) {
+    switch (sig) {
+        case SIGINT: return "SIGINT";
+        case SIGTERM: return "SIGTERM";
+        case SIGHUP: return "SIGHUP";
+        case SIGQUIT: return "SIGQUIT";
+        case SIGPIPE: return "SIGPIPE";
+        default: return "a signal";
+    }
+}
+
 [[noreturn]] void handle_interrupt(int sig) {
     std::vector<fs::path> removed;
     {
@@ -98,16 +110,26 @@ void remove_folders(const std::vector<fs::path>& folders) {
         state().signal = sig;
         removed.assign(state().folders.begin(), state().folders.end());
     }
-    const size_t n_children = stop_children(sig);
+    // The children's stdout is not the closed pipe (python ignores SIGPIPE):
+    // they are stopped with SIGTERM.
+    const size_t n_children = stop_children(sig == SIGPIPE ? SIGTERM : sig);
     remove_folders(removed);
-    std::string line = std::string("coremodal: interrupted by ") + (sig == SIGINT ? "SIGINT" : "SIGTERM");
+    std::string line = std::string("coremodal: interrupted by ") + signal_name(sig);
     if (n_children) line += "; stopped " + std::to_string(n_children) + " child process(es)";
     for (const fs::path& f : removed) line += "; removed " + f.string();
-    std::fprintf(stderr, "%s\n", line.c_str());
+    // A reader that stopped reading (`coremodal run ... | head`) ends the run
+    // quietly, as it ends any program in a pipe: the clean-up, no message.
+    if (sig != SIGPIPE) std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stdout);
     std::fflush(stderr);
     ::_exit(128 + sig);
 }
+
+// The signals that end a run as Ctrl-C does: a terminal closed (HUP), the
+// quit key (QUIT, which would otherwise dump core), a reader gone from the pipe on
+// stdout (PIPE; a write to it then fails with EPIPE and the run ends here).
+// PETSc installs its own handler for all of them ("Caught signal", exit 59).
+constexpr int kInterrupts[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE};
 
 // The pipe from the signal handler to the interrupt thread.
 int signal_pipe[2] = {-1, -1};
@@ -136,9 +158,18 @@ void install_interrupt_handling() {
         return true;
     }();
     if (!started) return;  // no pipe: the signals keep their default action
-    for (int sig : {SIGINT, SIGTERM}) {
-        struct sigaction now {};
-        if (::sigaction(sig, nullptr, &now) != 0 || now.sa_handler == SIG_IGN) continue;
+    // Which were ignored when the program started, before PETSc put its
+    // handlers on them: those stay ignored.
+    static const std::set<int> ignored = [] {
+        std::set<int> out;
+        for (int sig : kInterrupts) {
+            struct sigaction now {};
+            if (::sigaction(sig, nullptr, &now) != 0 || now.sa_handler == SIG_IGN) out.insert(sig);
+        }
+        return out;
+    }();
+    for (int sig : kInterrupts) {
+        if (ignored.count(sig)) continue;
         struct sigaction ours {};
         ours.sa_handler = on_signal;
         sigemptyset(&ours.sa_mask);
@@ -170,7 +201,8 @@ void child_started(pid_t pid) {
     std::lock_guard<std::mutex> guard(state().lock);
     state().children.insert(pid);
     if (!state().signal) return;
-    ::kill(pid, state().signal);
+    const int sig = state().signal;
+    ::kill(pid, sig == SIGPIPE ? SIGTERM : sig);
     ++state().stopped_late;
 }
 

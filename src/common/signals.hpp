@@ -1,9 +1,13 @@
-// Interrupts: what coremodal does on SIGINT (Ctrl-C) and SIGTERM (kill, a
-// batch system's time limit). It stops the child processes it started
-// (python plots, study workers, batch cases), waits for them, removes the
-// folders it was still writing (a results folder's "<dir>.partial-<pid>", a
-// study's scratch folder) and exits 130 (SIGINT) or 143 (SIGTERM), the
-// shell's 128 + signal. A folder already complete is kept.
+// Interrupts: what coremodal does on SIGINT (Ctrl-C), SIGTERM (kill, a
+// batch system's time limit), SIGHUP (the terminal closed), SIGQUIT (the
+// quit key) and SIGPIPE (the reader of stdout gone: `coremodal run ... |
+// head`). It stops the child processes it started (python plots, study
+// workers, batch cases), waits for them, removes the folders it was still
+// writing (a results folder's "<dir>.partial-<pid>", a study's scratch
+// folder) and exits 128 + signal, the shell's convention (130 for SIGINT,
+// 143 for SIGTERM, 129, 131, 141), saying so on stderr, except after
+// SIGPIPE, which ends a program in a pipe quietly. A folder already
+// complete is kept.
 //
 // The signal handler does one async-signal-safe thing: it writes the
 // signal's number into a pipe (the self-pipe trick). A thread waiting on the
@@ -30,7 +34,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Installs the handler of SIGINT and SIGTERM (and, the first time, starts
+// Installs the handler of those signals (and, the first time, starts
 // the thread that waits for them). Call it first thing in main() and again
 // after PetscInitialize, which installs PETSc's own SIGTERM handler. A signal
 // that was ignored when the program started (a background job of a

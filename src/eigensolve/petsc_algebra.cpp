@@ -7,6 +7,8 @@
 #include "common/free_memory.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace coremodal {
@@ -40,12 +42,15 @@ namespace {
 // machine shared with other jobs).
 double memory_allowed_mb() {
     double allowed = free_memory_mb();
-    PetscReal users_cap = 0;
+    // Read as text: PETSc's own number reader answers "abc" with its error 63.
+    char text[256] = "";
     PetscBool given = PETSC_FALSE;
-    COREMODAL_PETSC(PetscOptionsGetReal(nullptr, nullptr, "-max_memory_mb", &users_cap, &given));
+    COREMODAL_PETSC(PetscOptionsGetString(nullptr, nullptr, "-max_memory_mb", text, sizeof text, &given));
     if (!given) return allowed;
-    if (!(users_cap > 0))
-        throw InputError("-max_memory_mb " + significant(users_cap) +
+    char* end = nullptr;
+    const double users_cap = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(users_cap > 0) || !std::isfinite(users_cap))
+        throw InputError("-max_memory_mb " + std::string(*text ? text : "(no value)") +
                          ": expected the memory this run may take, a positive number of MB (e.g. -max_memory_mb 6000)");
     return allowed > 0 ? std::min(allowed, double(users_cap)) : double(users_cap);
 }
@@ -59,7 +64,15 @@ void out_of_core_if_too_large(Mat F) {
     COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
     double allowed_mb = memory_allowed_mb();
     MPI_Bcast(&allowed_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
-    if (!factor_fits_in_memory(double(estimate_mb), allowed_mb)) COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+    if (factor_fits_in_memory(double(estimate_mb), allowed_mb)) return;
+    // Out of core needs less, INFOG(27) (MUMPS 5 users' guide, section 6.2):
+    // when even that does not fit, the factor would fail deep inside MUMPS
+    // (or the process be killed): say so before it starts.
+    PetscInt out_of_core_mb = 0;
+    COREMODAL_PETSC(MatMumpsGetInfog(F, 27, &out_of_core_mb));
+    if (!factor_fits_in_memory(double(out_of_core_mb), allowed_mb / kInCoreShare))
+        throw SolveError(out_of_memory_text(double(out_of_core_mb)));
+    COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
 }
 
 }  // namespace

@@ -68,6 +68,7 @@ Json point_json(const LimitsPoint& p) {
                              {"mode_frequency_hz", k.mode_frequency_hz}});
     Json t{{"diameter_mm", p.diameter_m * kMm},
            {"added_where_fast", p.added},
+           {"band_sampled", p.band_sampled},
            {"f1_hz", p.f1_hz},
            {"criteria", criteria},
            {"governing", criterion_id(criterion(p.governing))},

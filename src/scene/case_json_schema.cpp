@@ -277,6 +277,7 @@ constexpr TableTitle kTables[] = {
     {"modes", "[damping] modes: the relative damping of single modes at rest, { mode = 1, ratio = 0.02 }"},
     {"excitation", "[excitation]: what excites the spinning roll (docs/response.md)"},
     {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
+    {"limits", "[limits]: one verdict over the rest-roll diameters, for `coremodal limits` (docs/limits.md)"},
     {"traction", "[traction]: web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/traction.md)"},
 };
 

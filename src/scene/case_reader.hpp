@@ -82,6 +82,15 @@ std::string library_names();
 std::vector<std::string_view> library_name_list();
 std::vector<std::string_view> mesh_level_names();
 
+// The stiffness above which a spring of dimension `d` (stiffness,
+// rotational_stiffness, stiffness_per_area; any other: a line spring in N/m
+// per m of roll) on the roll of `core` is beyond rigid: kBeyondRigid times
+// the roll's own stiffness of that kind (case_reader_supports.cpp: the rule
+// and its reason). Infinite for a core with no stiffness to compare with.
+double beyond_rigid(const CoreSpec& core, Dimension d);
+// "the roll's own 4.4 MN/m (its core's axial E_z A / L)" for messages.
+std::string beyond_rigid_reason(const CoreSpec& core, Dimension d);
+
 // Reads one case file's TOML document into a Scene, table by table; every
 // failure is an InputError pointing at the value's line and column.
 class CaseReader {
@@ -217,6 +226,10 @@ private:
     ContactKind read_contact(const Section& s, bool expanded) const;
 
     BearingSpec read_bearing(const Section& chuck, const std::string& name, Scene& scene) const;
+
+    // Fails at `key` when a spring of `stiffness` (of the key's dimension) is
+    // beyond rigid for the roll of `core` (beyond_rigid below).
+    void check_not_beyond_rigid(const Section& s, std::string_view key, double stiffness, const CoreSpec& core) const;
 
     ClampInput read_clamp(const Section& zone) const;
 

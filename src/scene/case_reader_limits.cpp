@@ -7,9 +7,16 @@
 #include "scene/case_table.hpp"
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "scene/toml_text.hpp"
 
 namespace coremodal::case_reading {
+namespace {
+
+// Rest-roll diameters in the unit people give them in.
+std::string mm(double m) { return significant(m * 1e3, 5) + " mm"; }
+
+}  // namespace
 
 std::optional<LimitsSpec> CaseReader::read_limits(const Section& top, const Scene& scene) const {
     const std::optional<Section> limits = section(top, "limits", "limits");
@@ -40,13 +47,12 @@ void CaseReader::read_limits_diameters(const Section& limits, const Scene& scene
     // The diameters are compared at the precision they are printed with.
     constexpr double kSlack = 1e-9;
     if (largest > roll + kSlack)
-        fail(*array.get(0), what + ": " + format_quantity(largest, Dimension::length) + " is beyond the case's roll; " +
-                                "expected at most the rest paper's outer diameter " +
-                                format_quantity(roll, Dimension::length) + " (raise [rest_paper] thickness instead)");
+        fail(*array.get(0), what + ": " + mm(largest) + " is beyond the case's roll; " +
+                                "expected at most the rest paper's outer diameter " + mm(roll) +
+                                " (raise [rest_paper] thickness instead)");
     if (smallest < core - kSlack)
-        fail(*array.get(1), what + ": " + format_quantity(smallest, Dimension::length) + " is below the core; " +
-                                "expected at least the core's outer diameter " +
-                                format_quantity(core, Dimension::length));
+        fail(*array.get(1), what + ": " + mm(smallest) + " is below the core; " +
+                                "expected at least the core's outer diameter " + mm(core));
     if (!(largest > smallest))
         fail(node, what +
                        ": expected [largest, smallest] with the largest first "

@@ -6,6 +6,7 @@
 #include "scene/chuck_contact.hpp"
 
 #include <cmath>
+#include <limits>
 #include <cstring>
 
 namespace coremodal::case_reading {
@@ -199,6 +200,7 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     const ContactLaw& law = contact_law();
     if (kn) {
         f.normal_stiffness = *quantity(s, "normal_stiffness");
+        check_not_beyond_rigid(s, "normal_stiffness", f.normal_stiffness, scene.core);
     } else {
         const double pressure = !f.expanded ? 0.0 : quantity(s, "expansion_pressure").value_or(law.default_pressure);
         if (f.expanded) f.expansion_pressure = pressure;
@@ -218,6 +220,7 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     }
     if (kt) {
         f.tangential_stiffness = *quantity(s, "tangential_stiffness");
+        check_not_beyond_rigid(s, "tangential_stiffness", f.tangential_stiffness, scene.core);
     } else {
         f.tangential_stiffness = contact_tangential_ratio(law) * f.normal_stiffness;
         scene.assumptions.push_back("chuck " + chuck + ": interface tangential stiffness " +
@@ -226,6 +229,75 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     }
     if (one_sided) scene.assumptions.push_back(one_sided_contact_assumption(chuck));
     return f;
+}
+
+namespace {
+
+// Beyond rigid. A spring k in series with a roll of stiffness k_roll holds it
+// as a rigid support would to k_roll / k: at k = 1e12 k_roll to 1e-12, far
+// below any tolerance a run reports. A stiffer spring adds nothing to the
+// physics and takes digits from the solve: the eigenvalues of a symmetric
+// K, M are computed to about eps ||K|| (Golub and Van Loan, Matrix
+// Computations, 4th ed., 2013, section 8.1.2, Weyl's theorem; eps = 2.2e-16),
+// so a spring 1e12 times the roll's stiffness leaves the roll's own
+// eigenvalues about four digits, and 1e300 none (issue 33: residual inf).
+constexpr double kBeyondRigid = 1e12;
+
+// The roll's own stiffness of the kind a spring of dimension `d` has, from
+// its core (the part every support holds): for a force per displacement its
+// axial E_z A / L (its stiffest deformation as a whole: bending and shear
+// are softer), for a moment per rotation E_z I / L, per unit area of a layer
+// on the bore E_r / wall, per unit length of a line on its surface
+// E_z A / L^2.
+double roll_stiffness(const CoreSpec& core, Dimension d) {
+    const double ro = core.outer_diameter / 2, ri = core.inner_diameter / 2, L = core.length;
+    const double area = M_PI * (ro * ro - ri * ri), inertia = M_PI / 4 * (std::pow(ro, 4) - std::pow(ri, 4));
+    const double E_z = core.material.E_z;
+    switch (d) {
+        case Dimension::stiffness: return E_z * area / L;
+        case Dimension::rotational_stiffness: return E_z * inertia / L;
+        case Dimension::stiffness_per_area: return core.material.E_r / (ro - ri);
+        default: return E_z * area / (L * L);  // a line spring, N/m per m of roll
+    }
+}
+
+}  // namespace
+
+double beyond_rigid(const CoreSpec& core, Dimension d) {
+    const double roll = roll_stiffness(core, d);
+    return roll > 0 ? kBeyondRigid * roll : std::numeric_limits<double>::infinity();
+}
+
+std::string beyond_rigid_reason(const CoreSpec& core, Dimension d) {
+    const bool spring = d == Dimension::stiffness || d == Dimension::rotational_stiffness || d == Dimension::stiffness_per_area;
+    const char* how = d == Dimension::stiffness              ? "axial E_z A / L"
+                      : d == Dimension::rotational_stiffness ? "E_z I / L"
+                      : d == Dimension::stiffness_per_area   ? "wall's E_r / wall"
+                                                             : "E_z A / L^2 per unit length";
+    return "the roll's own " +
+           format_quantity(roll_stiffness(core, d), spring ? d : Dimension::pressure) + " (its core's " + how + ")";
+}
+
+void CaseReader::check_not_beyond_rigid(const Section& s, std::string_view key, double stiffness,
+                                        const CoreSpec& core) const {
+    const Dimension d = find_key(s.schema, key)->dimension;
+    const double limit = beyond_rigid(core, d);
+    // The mirror image: a spring 1e12 times softer than the roll holds it as
+    // nothing would to 1e-12; its rigid-body motions then sit below the
+    // solvers' rigid line (eigensolve/tolerances.hpp) and f1 comes out 0.
+    const double loosest = limit / (kBeyondRigid * kBeyondRigid);
+    const std::string what = echo(s, key, *get(s, key));
+    if (stiffness < loosest)
+        fail(*get(s, key), what + " is beyond loose for this roll: less than 1e-12 times " + beyond_rigid_reason(core, d) +
+                               ", so it holds the roll no more than nothing would (to 1e-12); expected at least " +
+                               format_quantity(loosest, d) + ", or no support there");
+    if (stiffness <= limit) return;
+    fail(*get(s, key), what + " is beyond rigid for this roll: more than 1e12 times " + beyond_rigid_reason(core, d) +
+                           ", so it holds the roll as a rigid support would (to 1e-12) and a stiffer spring only "
+                           "costs the solve its precision; expected at most " + format_quantity(limit, d) +
+                           (d == Dimension::stiffness_per_area
+                                ? ", or interface = \"bonded\" for a chuck that does not slip or give"
+                                : ", or a rigid bearing (type = \"rigid\") for a support that does not give"));
 }
 
 BearingSpec CaseReader::read_bearing(const Section& chuck, const std::string& name, Scene& scene) const {
@@ -248,6 +320,9 @@ BearingSpec CaseReader::read_bearing(const Section& chuck, const std::string& na
                                    "the bearing's tilting stiffness, e.g. tilting_stiffness = \"1 MN*m/rad\"");
     b.frame_mass = quantity(*s, "frame_mass");
     b.frame_stiffness = quantity(*s, "frame_stiffness");
+    check_not_beyond_rigid(*s, "radial_stiffness", b.radial_stiffness, scene.core);
+    check_not_beyond_rigid(*s, "tilting_stiffness", b.tilting_stiffness, scene.core);
+    if (b.frame_stiffness) check_not_beyond_rigid(*s, "frame_stiffness", *b.frame_stiffness, scene.core);
     if (b.frame_mass && !b.frame_stiffness)
         fail(*get(*s, "frame_mass"), s->display + " frame_mass without frame_stiffness; expected the frame's "
                                                   "stiffness to ground too, e.g. frame_stiffness = \"50 kN/mm\"");

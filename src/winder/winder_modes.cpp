@@ -2,6 +2,7 @@
 
 #include "beam/network_modes.hpp"  // count_eigenvalues_below
 #include "common/error.hpp"
+#include "modes/verification_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +121,13 @@ WinderModes solve_winder_modes(const WinderModel& m, const WinderDamping& dampin
         throw SolveError("winder model: " + std::to_string(n) + " modes found below " +
                          std::to_string(to_hz(out.verification.check_shift)) + " Hz but the inertia of K - sigma M counts " +
                          std::to_string(out.verification.negative_pivots_at_shift) + "; this is a bug, please report it");
+    // Residuals: the winder file's stiffnesses are bounded at input
+    // (winder_scene.cpp), so a residual that fails is a solve that failed.
+    if (!(out.verification.max_relative_residual <= kMaxVerifiedResidual))
+        throw SolveError("winder model: the largest relative residual of its modes is " +
+                         std::to_string(out.verification.max_relative_residual) + ", not a finite number at most " +
+                         std::to_string(kMaxVerifiedResidual) +
+                         "; look in the winder file for a stiffness or mass far from the others");
     return out;
 }
 

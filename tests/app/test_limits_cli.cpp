@@ -77,7 +77,8 @@ TEST_CASE(
     refused("beyond.toml", kRoll + "[limits]\ndiameters = [\"300 mm\", \"106 mm\"]\n", "",
             "[limits] diameters = [\"300 mm\", \"106 mm\"]: 300 mm is beyond the "
             "case's roll");
-    refused("below.toml", kRoll + "[limits]\ndiameters = [\"126 mm\", \"90 mm\"]\n", "", "90 mm is below the core");
+    refused("below.toml", kRoll + "[limits]\ndiameters = [\"126 mm\", \"90 mm\"]\n", "",
+            "90 mm is below the core; expected at least the core's outer diameter 106 mm");
     refused("slow.toml", kRoll + "[limits]\nweb_speed = \"-3 m/s\"\n", "", "[limits] web_speed");
     refused("speed.toml", kRoll, "--speed -3", "--speed = -3 m/s: the target web speed must be above 0");
     std::string free = kRoll;

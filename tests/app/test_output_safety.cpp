@@ -273,6 +273,43 @@ TEST_CASE("SIGINT while writing stops python, removes the partial folder, exits 
     CHECK_FALSE(fs::exists(dir.path / "out"));
 }
 
+TEST_CASE("SIGHUP and SIGQUIT while writing end the run as SIGINT does, exit 128 + signal", "[app][output_safety][signals]") {
+    // Issue 33, item 10: PETSc's "Caught signal" dump (exit 59), the partial
+    // folder and the python child left behind.
+    const auto [sig, name] = GENERATE(std::pair{SIGHUP, "SIGHUP"}, std::pair{SIGQUIT, "SIGQUIT"});
+    TempDir dir("safety");
+    dir.write("tiny.toml", kTinyCase);
+    const auto writing = [&](pid_t) { return !sleeping_pythons(dir).empty() && any_partial(dir.path); };
+    const Run r = interrupted(dir, "run tiny.toml -o out", writing, 120, sig);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.exit_code == 128 + sig);
+    CHECK(contains(r.err, std::string("coremodal: interrupted by ") + name +
+                              "; stopped 1 child process(es); removed out.partial-"));
+    CHECK_FALSE(contains(r.err, "Caught signal"));
+    CHECK(process_gone(sleeping_pythons(dir).at(0).first));
+    CHECK_FALSE(any_partial(dir.path));
+    CHECK_FALSE(fs::exists(dir.path / "out"));
+}
+
+TEST_CASE("A reader that stops reading (run | head -2) ends the run quietly with 141", "[app][output_safety][signals]") {
+    TempDir dir("safety");
+    dir.write("tiny.toml", kTinyCase);
+    // The shell's pipe: head takes the first two progress lines and leaves;
+    // coremodal's next line meets a closed pipe. ${PIPESTATUS[0]}: its status.
+    // SIGPIPE as a shell gives it (the test binary may have it ignored).
+    const std::string command = coremodal_command(dir, "run tiny.toml -o out --no-plots", "--default-signal=PIPE");
+    const std::string piped = command.substr(0, command.rfind(" >stdout.txt")) + " 2>stderr.txt | head -2 >stdout.txt";
+    const std::string script = dir.path.string() + "/piped.sh";
+    dir.write("piped.sh", piped + "\necho ${PIPESTATUS[0]} > '" + dir.path.string() + "/status.txt'\n");
+    REQUIRE(std::system(("bash '" + script + "'").c_str()) == 0);
+    const std::string err = slurp(dir.path / "stderr.txt");
+    INFO("stderr: " << err);
+    CHECK(std::stoi(slurp(dir.path / "status.txt")) == 128 + SIGPIPE);
+    CHECK(err.empty());  // quietly: no dump, no message
+    CHECK_FALSE(any_partial(dir.path));
+    CHECK_FALSE(fs::exists(dir.path / "out" / "summary.json"));
+}
+
 TEST_CASE("SIGTERM during the solve exits 143 and writes nothing", "[app][output_safety][signals]") {
     TempDir dir("safety");
     dir.write("slow.toml", slow_case());
@@ -570,4 +607,35 @@ TEST_CASE("A full disk is a clean error: no crash, no partial folder, and the ne
         CHECK(slurp(disk.dir / "b" / "batch.csv").size() > 0);
     }
     CHECK(slurp(disk.dir / "notes.txt") == "the user's notes");
+}
+
+TEST_CASE("A study killed with SIGKILL takes its workers with it; the next study sweeps its scratch folder",
+          "[app][output_safety][signals]") {
+    // Issue 33, item 10: after SIGKILL the workers ran on as orphans and
+    // /tmp/coremodal-study-PID stayed.
+    TempDir dir("safety");
+    dir.write("study.toml", slow_case() + kStudyTable);
+    std::vector<pid_t> workers;
+    fs::path scratch;
+    const auto both_running = [&](pid_t study) {
+        workers = workers_of(study);
+        scratch = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(study));
+        return workers.size() == 2;
+    };
+    interrupted(dir, "study study.toml --jobs 2 -o out", both_running, 180, SIGKILL);
+    // The kernel passes the study's death on as SIGTERM; a worker removes
+    // what it wrote and ends within its grace.
+    for (pid_t worker : workers) CHECK(wait_until([&] { return process_gone(worker); }, 20));
+    REQUIRE(fs::exists(scratch));  // SIGKILL: the study could not remove it
+    // The scratch folder of a live coremodal (this test binary's own number)
+    // is not touched.
+    const fs::path live = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(::getpid()));
+    fs::create_directories(live);
+    dir.write("tiny-study.toml", kTinyCase + kStudyTable);
+    const Run r = run_coremodal(dir, "study tiny-study.toml --jobs 2 -o next -q --no-plots");
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK_FALSE(fs::exists(scratch));
+    CHECK(fs::exists(live));
+    fs::remove_all(live);
 }

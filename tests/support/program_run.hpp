@@ -97,15 +97,14 @@ struct Started {
 inline Started start_coremodal(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
     std::string shell = "/bin/sh", flag = "-c", command = coremodal_command(dir, args, prefix);
     char* argv[] = {shell.data(), flag.data(), command.data(), nullptr};
-    // SIGINT and SIGTERM as a program started from a terminal has them (a
-    // test binary started in the background may have inherited SIGINT ignored).
+    // The interrupts as a program started from a terminal has them (a test
+    // binary started in the background may have inherited SIGINT ignored).
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
-    sigset_t both;
-    sigemptyset(&both);
-    sigaddset(&both, SIGINT);
-    sigaddset(&both, SIGTERM);
-    posix_spawnattr_setsigdefault(&attributes, &both);
+    sigset_t interrupts;
+    sigemptyset(&interrupts);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&interrupts, sig);
+    posix_spawnattr_setsigdefault(&attributes, &interrupts);
     posix_spawnattr_setpgroup(&attributes, 0);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETPGROUP);
     pid_t pid = -1;

@@ -136,7 +136,10 @@ private:
 }  // namespace
 
 std::optional<ModeKey> parse_mode_label(const std::string& text) {
-    static const std::regex pattern(R"(^\s*([a-z_]+)\s+n\s*=\s*(\d+)\s+m\s*=\s*(\d+)\s*(?:#\s*(\d+))?\s*$)");
+    // At most six digits each: std::stoi of a longer number throws out_of_range
+    // (the fuzzer's find); no mode has a wave number or an occurrence that high.
+    static const std::regex pattern(
+        R"(^\s*([a-z_]+)\s+n\s*=\s*(\d{1,6})\s+m\s*=\s*(\d{1,6})\s*(?:#\s*(\d{1,6}))?\s*$)");
     std::smatch match;
     if (!std::regex_match(text, match, pattern)) return std::nullopt;
     ModeKey key{match[1].str(), std::stoi(match[2].str()), std::stoi(match[3].str()), 1};

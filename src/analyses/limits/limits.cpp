@@ -81,6 +81,14 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     return p;
 }
 
+// The traction line of a case without [traction].
+CriterionSpeed no_roller() {
+    CriterionSpeed s;
+    s.criterion = Criterion::traction;
+    s.note = "no [traction] roller in the case";
+    return s;
+}
+
 // Step 4 at one point: the lowest limiting criterion given, and the safe
 // speed's band from the samples' own verdicts.
 void govern(LimitsPoint& p) {
@@ -89,6 +97,52 @@ void govern(LimitsPoint& p) {
         throw SolveError("no criterion gives a web speed at rest-roll diameter " + significant(p.diameter_m * 1e3, 5) +
                          " mm; expected at least I-5 from the first bending mode");
     p.safe_m_s = p.criteria[p.governing].web_speed_m_s;
+}
+
+// Between two points whose bands were sampled: the band of `p` relative to
+// its point values, interpolated linearly in the diameter.
+double relative_at(double d, double da, double ra, double db, double rb) {
+    return da == db ? ra : ra + (rb - ra) * (d - da) / (db - da);
+}
+
+void interpolate_bands(std::vector<LimitsPoint>& points) {  // largest diameter first
+    for (size_t i = 0; i < points.size(); ++i) {
+        LimitsPoint& p = points[i];
+        if (p.band_sampled) continue;
+        const LimitsPoint* a = nullptr;
+        const LimitsPoint* b = nullptr;
+        for (size_t j = i; j-- > 0;)
+            if (points[j].band_sampled) {
+                a = &points[j];
+                break;
+            }
+        for (size_t j = i + 1; j < points.size(); ++j)
+            if (points[j].band_sampled) {
+                b = &points[j];
+                break;
+            }
+        if (!a) a = b;
+        if (!b) b = a;
+        if (!a) return;
+        const auto ratio = [](double band, double value) { return value > 0 ? band / value : 1.0; };
+        for (size_t k = 0; k < p.criteria.size(); ++k) {
+            CriterionSpeed& c = p.criteria[k];
+            if (!c.given) continue;
+            const CriterionSpeed &ca = a->criteria[k], &cb = b->criteria[k];
+            const double la = ca.given ? ratio(ca.band_low_m_s, ca.web_speed_m_s) : 1.0;
+            const double lb = cb.given ? ratio(cb.band_low_m_s, cb.web_speed_m_s) : 1.0;
+            const double ha = ca.given ? ratio(ca.band_high_m_s, ca.web_speed_m_s) : 1.0;
+            const double hb = cb.given ? ratio(cb.band_high_m_s, cb.web_speed_m_s) : 1.0;
+            c.band_low_m_s = c.web_speed_m_s * relative_at(p.diameter_m, a->diameter_m, la, b->diameter_m, lb);
+            c.band_high_m_s = c.web_speed_m_s * relative_at(p.diameter_m, a->diameter_m, ha, b->diameter_m, hb);
+        }
+        const double low = relative_at(p.diameter_m, a->diameter_m, ratio(a->safe_low_m_s, a->safe_m_s), b->diameter_m,
+                                       ratio(b->safe_low_m_s, b->safe_m_s));
+        const double high = relative_at(p.diameter_m, a->diameter_m, ratio(a->safe_high_m_s, a->safe_m_s),
+                                        b->diameter_m, ratio(b->safe_high_m_s, b->safe_m_s));
+        p.safe_low_m_s = std::min(p.safe_m_s, p.safe_m_s * low);
+        p.safe_high_m_s = std::max(p.safe_m_s, p.safe_m_s * high);
+    }
 }
 
 // Step 1: one pass of midpoints where the verdict changes fast.
@@ -128,7 +182,10 @@ RollChange roll_change(const std::vector<LimitsPoint>& points, double target) {
 
 Verdict the_verdict(const LimitsResult& r) {
     Verdict v;
-    const double change = r.change ? r.change->diameter_m : r.points.back().diameter_m;
+    // A target out of reach already at the full roll changes nothing: the
+    // verdict is then the whole unwind's, and the line says the target's margin.
+    const bool changes = r.change && r.change->needed && !r.change->never_safe;
+    const double change = changes ? r.change->diameter_m : r.points.back().diameter_m;
     v.diameter_m = change;
     const LimitsPoint* lowest = nullptr;
     for (const LimitsPoint& p : r.points)
@@ -199,31 +256,49 @@ std::vector<std::string> limits_notes(const LimitsResult& r) {
             "factor, 0.55 for a large core), the order-1 critical speeds "
             "(backward and forward whirl), the order-2 one "
             "where an order-2 load acts (ovality with gravity), and the "
-            "amplitude limit; I-5 at 0.8 is reported",
+            "amplitude limit and, with [traction], the web's slip on its first idler "
+            "(Rice & Gans); I-5 at 0.8 is reported",
             "the band: each uncertain input at each end of its range, one at a "
-            "time, with the forced response re-solved; "
-            "the critical speeds of a sample are the point's scaled by the "
-            "sample's f1 (they follow f1 within the "
-            "gyroscopic shift, a few per cent); the safe speed's band is the "
-            "range of the samples' own verdicts",
-            "not included: the core's strength and fatigue (durability), the "
-            "web's slip on its idlers (traction), rotating "
+            "time, with the forced response re-solved, at every " +
+                std::to_string(kBandStride) +
+                "th diameter and the last; between them interpolated relative to the point values; "
+                "the critical speeds of a sample are the point's scaled by the "
+                "sample's f1 (they follow f1 within the "
+                "gyroscopic shift, a few per cent); the safe speed's band is the "
+                "range of the samples' own verdicts",
+            std::string("not included: the core's strength and fatigue (durability), ") +
+                (r.points.empty() || !r.points.front().at(Criterion::traction).given
+                     ? "the web's slip on its idlers (give [traction]: Rice & Gans), "
+                     : "") +
+                "rotating "
             "(internal) damping, the contact opening at large amplitude, the "
             "rest paper's own out-of-roundness"};
 }
 
 }  // namespace
 
+CriterionSpeed traction_slip_criterion(const TractionSpec& spec) {
+    CriterionSpeed s;
+    s.criterion = Criterion::traction;
+    s.given = true;
+    s.web_speed_m_s = spec.tension_difference ? slip_speed(spec, *spec.tension_difference) : zero_traction_speed(spec);
+    s.band_low_m_s = s.band_high_m_s = s.web_speed_m_s;
+    s.note = spec.tension_difference
+                 ? "the roller can no longer carry [traction] tension_difference (Rice & Gans, eqs. 12-13)"
+                 : "traction vanishes (Rice & Gans, P* = 1); give [traction] tension_difference for the slip speed";
+    return s;
+}
+
 const char* criterion_id(Criterion c) {
-    static const char* ids[] = {"i5_0.7",         "i5_0.8", "koenig",         "order1_backward",
-                                "order1_forward", "order2", "amplitude_limit"};
+    static const char* ids[] = {"i5_0.7",         "i5_0.8", "koenig",          "order1_backward",
+                                "order1_forward", "order2", "amplitude_limit", "traction_slip"};
     return ids[static_cast<int>(c)];
 }
 
 const char* criterion_name(Criterion c) {
     static const char* names[] = {
         "I-5 x0.7",         "I-5 x0.8",       "Koenig K-1/K-2", "order-1 critical BW", "order-1 critical FW",
-        "order-2 critical", "amplitude limit"};
+        "order-2 critical", "amplitude limit", "web slip (traction)"};
     return names[static_cast<int>(c)];
 }
 
@@ -302,18 +377,22 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     const double smallest = request.spec.smallest_diameter_m.value_or(scene.core.outer_diameter);
     const int n = largest > smallest ? request.spec.points : 1;
     const std::vector<double> diameters = n > 1 ? spaced(largest, smallest, n) : std::vector<double>{largest};
-    auto solve = [&](double d, bool added) {
+    auto solve = [&](double d, bool added, bool sample_band) {
         LimitsPoint p = solve_point(scene, base, d, r);
+        p.criteria.push_back(request.traction.value_or(no_roller()));
         p.added = added;
-        if (r.band) propagate_band(scene, base, r.inputs, p, r.n_solves);
+        p.band_sampled = r.band && sample_band;
+        if (p.band_sampled) propagate_band(scene, base, r.inputs, p, r.n_solves);
         govern(p);
-        if (!r.band) p.safe_low_m_s = p.safe_high_m_s = p.safe_m_s;
+        if (!p.band_sampled) p.safe_low_m_s = p.safe_high_m_s = p.safe_m_s;
         return p;
     };
-    for (double d : diameters) r.points.push_back(solve(d, false));
-    for (double d : midpoints(r.points)) r.points.push_back(solve(d, true));
+    for (int i = 0; i < static_cast<int>(diameters.size()); ++i)
+        r.points.push_back(solve(diameters[i], false, i % kBandStride == 0 || i + 1 == n));
+    for (double d : midpoints(r.points)) r.points.push_back(solve(d, true, false));
     std::sort(r.points.begin(), r.points.end(),
               [](const LimitsPoint& a, const LimitsPoint& b) { return a.diameter_m > b.diameter_m; });
+    if (r.band) interpolate_bands(r.points);
     // 4. The roll change.
     const std::optional<double> target =
         request.target_web_speed_m_s ? request.target_web_speed_m_s : request.spec.target_web_speed_m_s;
@@ -327,16 +406,19 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
 
 std::string verdict_line(const LimitsResult& r) {
     const Verdict& v = r.verdict;
-    std::string at = r.change && r.change->needed ? "at roll change, D = " : "down to D = ";
-    if (r.change && r.change->never_safe) at = "below the target already at the full roll, D = ";
-    std::string line = "safe up to " + formatted("%.2f", v.speed_m_s) + " m/s " + at +
-                       formatted("%.1f", v.diameter_m * 1e3) + " mm; governed by " + v.governed_by + " at " +
-                       formatted("%.1f", v.at_diameter_m * 1e3) + " mm; band " + formatted("%.2f", v.band_low_m_s) +
-                       "-" + formatted("%.2f", v.band_high_m_s) + " m/s";
-    if (r.change)
-        line += "; target " + formatted("%.2f", r.change->target_m_s) + " m/s, margin at the full roll " +
-                formatted("%+.2f", r.change->margin_m_s) + " m/s";
-    return line;
+    const bool changes = r.change && r.change->needed && !r.change->never_safe;
+    std::string line = "safe up to " + formatted("%.2f", v.speed_m_s) + " m/s " +
+                       (changes ? "at roll change, D = " : "down to D = ") + formatted("%.1f", v.diameter_m * 1e3) +
+                       " mm; governed by " + v.governed_by + " at " + formatted("%.1f", v.at_diameter_m * 1e3) +
+                       " mm; band " + formatted("%.2f", v.band_low_m_s) + "-" + formatted("%.2f", v.band_high_m_s) +
+                       " m/s";
+    if (!r.change) return line;
+    line += "; target " + formatted("%.2f", r.change->target_m_s) + " m/s";
+    if (r.change->never_safe)
+        return line + " is above the safe speed already at the full roll (margin " +
+               formatted("%+.2f", r.change->margin_m_s) + " m/s)";
+    return line + (changes ? "" : " holds down to the smallest diameter") + ", margin at the full roll " +
+           formatted("%+.2f", r.change->margin_m_s) + " m/s";
 }
 
 }  // namespace coremodal

@@ -28,6 +28,7 @@
 #include "scene/limits_spec.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/scene.hpp"
+#include "traction/traction_model.hpp"
 
 #include <optional>
 #include <string>
@@ -47,13 +48,20 @@ constexpr double kFastChange = 0.10;
 // resonance, whose forward whirl stiffens a few per cent.
 constexpr double kRangeTop = 1.3;
 constexpr double kRangeBottom = 0.05;
+// The band is sampled at every kBandStride-th diameter and the last; between
+// them each criterion's band, relative to its point value, is interpolated
+// linearly in the diameter (the ranges move the speeds by similar fractions
+// along one unwind; docs/limits.md, "The band").
+constexpr int kBandStride = 4;
 // Speeds of the forced response's grid and of the Campbell sweep per diameter.
 constexpr int kResponsePoints = 121;
 constexpr int kCampbellPoints = 14;
 
 // The criteria, in the order every table lists them.
-enum class Criterion { i5_low, i5_high, koenig, order1_backward, order1_forward, order2, amplitude };
-constexpr int kCriteria = 7;
+// `traction` is the web's slip on its first idler roller (Rice & Gans,
+// traction/), given when the case has a [traction] table.
+enum class Criterion { i5_low, i5_high, koenig, order1_backward, order1_forward, order2, amplitude, traction };
+constexpr int kCriteria = 8;
 const char* criterion_id(Criterion c);    // "i5_0.7", ... (summary.json, CSV)
 const char* criterion_name(Criterion c);  // "I-5 x0.7", ... (people)
 
@@ -70,6 +78,7 @@ struct CriterionSpeed {
 struct LimitsPoint {
     double diameter_m = 0;               // the rest roll's outer diameter (the core's when bare)
     bool added = false;                  // a midpoint of step 1
+    bool band_sampled = false;  // the band sampled here, or interpolated from the sampled neighbours
     double f1_hz = 0;                    // first bending at rest, the scene's level
     std::optional<double> chuck_factor;  // k = f1 / f2 (chucks only)
     double f2_hz = 0;
@@ -138,7 +147,16 @@ struct LimitsRequest {
     // (limits_band.hpp). A narrower range (a measured damping, a fitted
     // contact stiffness) narrows the band.
     std::optional<std::vector<UncertainInput>> inputs;
+    // The web speed at which the web slips on its first idler roller (the
+    // case's [traction], traction_slip_criterion), or none without a roller.
+    std::optional<CriterionSpeed> traction;
 };
+
+// The traction criterion of a roller: the speed at which it can no longer
+// carry the tension difference it is given ([traction] tension_difference),
+// else the speed at which traction vanishes altogether (docs/traction.md).
+// It does not depend on the rest roll's diameter nor on the band's inputs.
+CriterionSpeed traction_slip_criterion(const TractionSpec& spec);
 
 // The verdict for a scene held in its stand. `response`: the case's
 // [damping]/[excitation]/[response] (their damping, excitation, limit and

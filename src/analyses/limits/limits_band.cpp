@@ -226,7 +226,9 @@ void propagate_band(const Scene& scene, const ResponseSetup& base, const std::ve
             const ResponseResult r = run_forced_response(s, setup);
             ++n_solves;
             const double ratio = point.f1_hz > 0 ? r.speeds_at_rest.f1_hz / point.f1_hz : 1.0;
-            const std::vector<CriterionSpeed> sample = criteria_of(r, critical, ratio);
+            std::vector<CriterionSpeed> sample = criteria_of(r, critical, ratio);
+            // The criteria the roll's inputs do not move (traction) as they are.
+            for (size_t i = sample.size(); i < point.criteria.size(); ++i) sample.push_back(point.criteria[i]);
             for (size_t i = 0; i < sample.size(); ++i) {
                 if (!sample[i].given) continue;
                 CriterionSpeed& c = point.criteria[i];

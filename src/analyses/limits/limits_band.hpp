@@ -19,8 +19,8 @@ struct CriticalSpeeds {
 
 // The criteria from a forced response at one diameter and the critical
 // speeds, those scaled by `f1_ratio` (a band sample's f1 over the point's).
-// Issue 38 (traction): the web's slip speed on its first idler joins here as
-// one more Criterion (limits.hpp), limiting like the others.
+// The web's slip on its idler (Criterion::traction) is appended by the
+// verdict: it does not depend on the roll.
 std::vector<CriterionSpeed> criteria_of(const ResponseResult& response, const CriticalSpeeds& critical,
                                         double f1_ratio);
 

@@ -7,6 +7,7 @@
 #include "analyses/response/response_loads.hpp"
 #include "analyses/response/response_sweep.hpp"
 #include "beam/rotating_modes.hpp"
+#include "modes/verification_check.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
 
@@ -118,6 +119,9 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     const ResponseRange& range = setup.response;
     // 1. At rest.
     const BeamModelResult rest = solve_beam_model(scene, options);
+    // A response in modes that are not verified is no response (modes/verification_check.hpp).
+    require_verified("the modes at rest of " + scene.name + " (beam level)",
+                     verification_failures({}, rest.verification, scene.analysis.tolerance), false);
     const double f1 = first_bending_hz(rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     // 2. The lateral problem, its modes, their damping and the loads.

@@ -8,6 +8,7 @@
 #include "models/choose.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
+#include "modes/verification_check.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +131,9 @@ ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup
     ResponseResult out = response_result_for(scene, setup, scene.model);
     out.solver = solver;
     rest = make_model_level(scene)->solve(scene, Printer{false});
+    // A response in modes that are not verified is no response: no --keep-going here.
+    require_verified("the modes at rest of " + scene.name + " (" + scene.model + " level)",
+                     verification_failures(rest.modes, rest.verification, scene.analysis.tolerance), false);
     const double f1 = first_bending_hz(rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     return out;

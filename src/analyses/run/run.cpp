@@ -7,6 +7,7 @@
 #include "common/stopwatch.hpp"
 #include "common/warnings.hpp"
 #include "models/choose.hpp"
+#include "modes/verification_check.hpp"
 #include "output/run_folder.hpp"
 #include "output/side_by_side.hpp"
 #include "output/summary.hpp"
@@ -43,6 +44,21 @@ RunReport level_report(Scene scene, ModelLevel& level, const Printer& say) {
                                     solved.assumptions.end());
     check_rigid_modes(report);
     return report;
+}
+
+// The end of step 6: modes that are not verified (a residual not finite or
+// too large, an incomplete count, a mass that does not match the
+// dimensions) end the run, or with keep_going become its warnings.
+void require_verified_report(RunReport& report, bool keep_going) {
+    std::vector<std::string> failures =
+        verification_failures(report.modes.modes, report.modes.verification, report.scene.analysis.tolerance);
+    if (!report.scene.mesh.file)
+        if (const auto mass = mass_mismatch(report.model.mass_kg, report.model.expected_mass_kg))
+            failures.push_back(*mass);
+    for (const std::string& w : require_verified("the modes of " + report.scene.name + " (" + report.scene.model +
+                                                     " level)",
+                                                 failures, keep_going))
+        warn_about_model(report.scene.name, w, report.warnings);
 }
 
 // Step 7: beam theory, the chuck factor, the rigid-clamp variant.
@@ -99,6 +115,7 @@ RunReport run_scene(Scene scene, const RunOptions& options) {
     Stopwatch total;
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     RunReport report = level_report(std::move(scene), *level, say);  // 2-6
+    require_verified_report(report, options.keep_going);
     compare(report, *level, options, say);                             // 7
     double peak = peak_memory_mb();
     MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
@@ -111,6 +128,7 @@ RunReport analyse_derived_scene(Scene scene) {
     scene.model = chosen_level(scene);
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     RunReport report = level_report(std::move(scene), *level, Printer{false});
+    require_verified_report(report, false);
     report.beam = compare_with_beam(report.scene, report.modes.modes);
     return report;
 }

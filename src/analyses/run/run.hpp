@@ -30,6 +30,9 @@ struct RunOptions {
     // report.md with pictures drawn by the python package (mode shapes,
     // spectrum); false: the report says they were switched off.
     bool plots = true;
+    // Modes that fail their verification (modes/verification_check.hpp) are
+    // written, marked as not verified, instead of ending the run non-zero.
+    bool keep_going = false;
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

@@ -8,6 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -201,12 +204,46 @@ struct Child {
     }
 };
 
+// The scratch folder of the study run by process `pid`.
+fs::path scratch_folder(pid_t pid) {
+    return fs::temp_directory_path() / ("coremodal-study-" + std::to_string(pid));
+}
+
+// Whether `pid` is a running coremodal (a process number the system has
+// given to another program since does not count).
+bool coremodal_running(pid_t pid) {
+    std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
+    std::string name;
+    return comm && std::getline(comm, name) && name.rfind("coremodal", 0) == 0;
+}
+
+// Removes the scratch folders of studies that were killed (SIGKILL cannot
+// be caught, so they could not remove their own): this user's
+// coremodal-study-<pid> whose process is gone or is no coremodal.
+void sweep_dead_studies() {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
+        const std::string name = entry.path().filename().string();
+        constexpr std::string_view prefix = "coremodal-study-";
+        if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size() ||
+            name.find_first_not_of("0123456789", prefix.size()) != std::string::npos)
+            continue;
+        struct stat st {};
+        if (::lstat(entry.path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::geteuid()) continue;
+        const long pid = std::stol(name.substr(prefix.size()));
+        if (pid == ::getpid() || coremodal_running(static_cast<pid_t>(pid))) continue;
+        std::error_code failed;
+        fs::remove_all(entry.path(), failed);
+    }
+}
+
 }  // namespace
 
 void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo, unsigned jobs,
                             const std::string& program, std::vector<StudyPoint>& points,
                             const std::function<void(int)>& finished) {
-    const fs::path folder = fs::temp_directory_path() / ("coremodal-study-" + std::to_string(::getpid()));
+    sweep_dead_studies();
+    const fs::path folder = scratch_folder(::getpid());
     remove_on_interrupt(folder);  // the workers' records: scratch, removed however the study ends
     fs::remove_all(folder);
     fs::create_directories(folder);
@@ -231,6 +268,14 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
 }
 
 int run_worker_point(const WorkerPoint& w) {
+    // A worker ends with its study: a study killed with SIGKILL cannot stop
+    // it, so the kernel sends it SIGTERM (common/signals.hpp) when the
+    // study's thread that started it is gone. If the study died before this
+    // line, the worker has a new parent already and stops at once.
+    const pid_t study = ::getppid();
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != study || !coremodal_running(study))
+        throw SolveError("the study that started this worker has ended");
     const CaseSweep sweep = CaseSweep::read(w.case_file, w.table, w.mesh_level).with_model(w.model);
     if (w.point < 0 || w.point >= sweep.n_points())
         throw InputError("--worker-point " + std::to_string(w.point) + " is not a point of " + w.case_file);
