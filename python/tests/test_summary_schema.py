@@ -252,3 +252,16 @@ def test_the_schema_refuses_the_old_keys_and_broken_rows(tmp_path: Path, validat
     both = copy.deepcopy(good)
     both["speeds"]["not_given"] = "no bending mode"
     assert errors(validator, both)
+
+
+def test_a_traction_summary_keeps_its_speeds_apart_from_the_i5_speeds(tmp_path: Path, validator) -> None:
+    """`speeds` is a roll's I-5 speeds in every summary: traction's
+    zero-traction and slip speeds are `traction_speeds`, and the old key fails."""
+    out = tmp_path / "traction"
+    run(["traction", str(REPO / "cases" / "19-grooved-idler-traction.toml"), "--output", str(out), "--no-plots",
+         "-q"], tmp_path)
+    good = written_json("traction", out)
+    assert errors(validator, good) == []
+    old = copy.deepcopy(good)
+    old["speeds"] = old.pop("traction_speeds")
+    assert errors(validator, old)
