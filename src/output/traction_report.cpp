@@ -274,6 +274,20 @@ void validity_section(std::ostringstream& md, const TractionSpec& spec, const Tr
     }
 }
 
+// The roller as TOML for a person (`coremodal check`): the keys of summary.json's
+// `roller`, numbers to 10 significant digits (88, not 87.99999999999999).
+void toml_lines(std::ostream& out, const Json& table, const std::string& prefix) {
+    for (const auto& [key, value] : table.items()) {
+        if (value.is_object()) continue;
+        out << key << " = " << (value.is_number_float() ? significant(value.get<double>(), 10) : value.dump()) << "\n";
+    }
+    for (const auto& [key, value] : table.items())
+        if (value.is_object()) {
+            out << "\n[" << prefix << key << "]\n";
+            toml_lines(out, value, prefix + key + ".");
+        }
+}
+
 }  // namespace
 
 void write_traction_tables(const std::filesystem::path& dir, const TractionCase& tc, const TractionSweep& sweep,
@@ -319,7 +333,7 @@ std::string traction_report_markdown(const TractionCase& tc, const TractionSweep
 std::string traction_check_text(const TractionCase& tc) {
     const TractionSpec& spec = tc.spec;
     std::ostringstream out;
-    out << json_text(roller_json(spec));
+    toml_lines(out, roller_json(spec), "");
     const EffectiveClearance h = effective_clearance(spec);
     out << "effective clearance h_eff " << um(h.clearance) << " (asperities " << um(h.asperity_height) << ")"
         << "; zero-traction speed " << speed(zero_traction_speed(spec));

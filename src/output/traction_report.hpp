@@ -28,7 +28,7 @@ std::string traction_report_markdown(const TractionCase& tc, const TractionSweep
                                      const std::vector<std::string>& pngs, const std::string& plot_problem);
 
 // What `coremodal check` says of a [traction] table: the resolved roller and
-// web (SI, as JSON), the clearance and the zero-traction speed, the defaults used.
+// web (SI), the clearance and the zero-traction speed, the defaults used.
 std::string traction_check_text(const TractionCase& tc);
 
 // The lines the command prints.
