@@ -331,16 +331,12 @@ TubeSection with_chucks_apart_from_bore(TubeSection s) {
 // it: edge nodes at the mean radius and angle, on the arc. The cell is then
 // r(xi) times the quadratic arc through three points of the unit circle: its
 // Jacobian is positive whatever the wall's thickness.
-// Below this a higher-order node is where it belongs (metres): round-off.
-constexpr double kNodePlacementTolerance = 1e-10;
-
 void place_tube_nodes_on_cylinders(const TubeSection& s, const PartVolumes& volumes) {
     std::vector<std::size_t> tags;
     std::vector<double> xyz, params;
     gmsh::model::mesh::getNodes(tags, xyz, params, -1, -1, true, false);
     const std::size_t max_tag = tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
-    std::vector<std::array<double, 3>> cylindrical(max_tag + 1), cartesian(max_tag + 1);  // by node tag
-    for (size_t k = 0; k < tags.size(); ++k) cartesian[tags[k]] = {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
+    std::vector<std::array<double, 3>> cylindrical(max_tag + 1);  // node tag -> (r, theta, z)
     for (size_t k = 0; k < tags.size(); ++k)
         cylindrical[tags[k]] = {std::hypot(xyz[3 * k], xyz[3 * k + 1]), std::atan2(xyz[3 * k + 1], xyz[3 * k]),
                                 xyz[3 * k + 2]};
@@ -380,14 +376,7 @@ void place_tube_nodes_on_cylinders(const TubeSection& s, const PartVolumes& volu
             }
         }
     }
-    // Nodes gmsh placed right (on the arcs of the boundary curves and
-    // surfaces) keep its coordinates to the bit: the misplaced ones are off
-    // by a sagitta, at least 2e-5 R even at 512 around.
-    for (const auto& [tag, x] : placed) {
-        const auto& old = cartesian[tag];
-        if (std::hypot(x[0] - old[0], x[1] - old[1], x[2] - old[2]) > kNodePlacementTolerance)
-            gmsh::model::mesh::setNode(tag, {x[0], x[1], x[2]}, {});
-    }
+    for (const auto& [tag, x] : placed) gmsh::model::mesh::setNode(tag, {x[0], x[1], x[2]}, {});
 }
 
 }  // namespace

@@ -190,7 +190,7 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
     } else if (deformation_share(shape) < kRigidMotionDeformationShare) {
         // The roll moving as a whole at a frequency of its own: n and m say
         // how (translation m = 0, rocking m = 1, axial or torsional n = 0).
-        label.type = held_ == BodyHeld::held ? "support" : "nutation";
+        label.type = held_ == BodyHeld::held ? "support" : "rigid";
     } else if (label.dominant_share < kMinDominantShare) {
         label.type = "mixed";
     } else if (best_n == 1) {

@@ -15,9 +15,8 @@
 // "support" (the roll swinging, bouncing or rocking on compliant chucks,
 // bearings or contact arcs; n and m say which: n = 1, m = 0 a sideways or
 // vertical translation, n = 1, m = 1 rocking, n = 0 axial or torsional),
-// on a free body "nutation" (the nutation or precession of a spinning free
-// body, at a frequency set by its speed). Not "rigid": that word means a
-// zero eigenvalue to the spinning levels, which report such modes at 0 Hz.
+// on a free body "rigid" (the nutation and whirl of a spinning free body,
+// at a frequency set by its speed).
 // m counts the sign changes along z of the dominant harmonic's amplitude,
 // projected on its principal circumferential phase (so both members of a
 // degenerate pair, arbitrarily rotated, get the same m).
@@ -46,7 +45,7 @@ constexpr int kMaxWaveNumber = 8;
 constexpr double kRigidMotionDeformationShare = 0.05;
 
 // Whether the body is held (supports, a web) or free: names rigid-body
-// motions at non-zero frequency "support" or "nutation".
+// motions at non-zero frequency "support" or "rigid".
 enum class BodyHeld { held, free };
 
 // The nodes the classifier looks at: those of the core and rest paper cells

@@ -10,7 +10,7 @@ namespace coremodal {
 namespace {
 
 bool is_elastic_family(const ModeLabel& label) {
-    return label.type != "rigid" && label.type != "support" && label.type != "nutation" && label.type != "mixed";
+    return label.type != "rigid" && label.type != "support" && label.type != "mixed";
 }
 
 bool same_family(const ModeLabel& a, const ModeLabel& b) { return a.type == b.type && a.n == b.n && a.m == b.m; }
@@ -43,7 +43,7 @@ std::optional<std::string> level_that_resolves(const MeshResolution& r, const Sc
         const int around = elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter);
         if (around <= n_around) continue;
         const double predicted = std::abs(r.error()) * std::pow(double(n_around) / around, kAroundConvergenceOrder);
-        if (predicted < kMeshResolvedError) return std::string(level.name);
+        if (predicted < kMeshWarnError) return std::string(level.name);
     }
     return std::nullopt;
 }
@@ -62,7 +62,7 @@ std::optional<std::string> mesh_resolution_text(const MeshResolution& r, const S
         text += "; expected --mesh " + *level + " or finer";
     } else {
         // The n_around the (n_around)^-p law needs, rounded up to a multiple of 4.
-        const double needed = mesh.n_around * std::pow(error / kMeshResolvedError, 1 / kAroundConvergenceOrder);
+        const double needed = mesh.n_around * std::pow(error / kMeshWarnError, 1 / kAroundConvergenceOrder);
         text += "; expected at least " + std::to_string(4 * static_cast<int>(std::ceil(needed / 4))) +
                 " elements around ([mesh] n_around), or model = \"harmonic\"";
     }

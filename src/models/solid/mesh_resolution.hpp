@@ -16,14 +16,9 @@
 
 namespace coremodal {
 
-// Above this the run warns: beyond what any named level promises (default:
-// f1 and the first ovalling mode within 1 %; coarse: ovalling 2-3 % stiff,
-// scene/mesh_levels.hpp), so that a coarse look at a standard core stays
-// quiet and a mesh that is wrong by more than its level's promise does not.
-constexpr double kMeshWarnError = 0.05;
-// The error the level a warning names must bring the mode under: the
-// default level's design target.
-constexpr double kMeshResolvedError = 0.01;
+// Above this the run warns: twice the 1 % the default level is chosen to
+// keep f1 and the first ovalling mode within (scene/mesh_levels.hpp).
+constexpr double kMeshWarnError = 0.02;
 // Above this the run fails, naming the mesh level it needs: 20 % in
 // frequency is 44 % in stiffness, beyond the spread of any input the model
 // takes (paperboard moduli are known to 10-15 %, which moves f by 5-8 %);
@@ -45,13 +40,13 @@ struct MeshResolution {
     double error() const { return compared ? solid_hz / harmonic_hz - 1 : 0.0; }
 };
 
-// Every elastic solid mode (not rigid, support, nutation or mixed) against the
+// Every elastic solid mode (not rigid, support or mixed) against the
 // harmonic mode of the same label nearest in frequency.
 MeshResolution compare_with_harmonic(const std::vector<Mode>& solid, const std::vector<Mode>& harmonic);
 
 // The first named mesh level whose count around (for this core) brings
-// `r`'s error under kMeshResolvedError by the (n_around)^-p law, or empty
-// when none does.
+// `r`'s error under kMeshWarnError by the (n_around)^-p law, or empty when
+// none does.
 std::optional<std::string> level_that_resolves(const MeshResolution& r, const Scene& scene);
 
 // The warning for a run, or empty when the mesh resolves every compared
