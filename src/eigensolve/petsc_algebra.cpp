@@ -66,11 +66,16 @@ void out_of_core_if_too_large(Mat F) {
     MPI_Bcast(&allowed_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
     if (factor_fits_in_memory(double(estimate_mb), allowed_mb)) return;
     // Out of core needs less, INFOG(27) (MUMPS 5 users' guide, section 6.2):
-    // when even that does not fit, the factor would fail deep inside MUMPS
-    // (or the process be killed): say so before it starts.
+    // when even that does not fit in the memory the machine or the job has,
+    // the factor would fail deep inside MUMPS (or the process be killed):
+    // say so before it starts.
     PetscInt out_of_core_mb = 0;
     COREMODAL_PETSC(MatMumpsGetInfog(F, 27, &out_of_core_mb));
-    if (!factor_fits_in_memory(double(out_of_core_mb), allowed_mb / kInCoreShare))
+    // Against the machine's or the job's memory, not a user's -max_memory_mb:
+    // that cap asks for the factor on disk, which is what follows.
+    double physical_mb = free_memory_mb();
+    MPI_Bcast(&physical_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
+    if (physical_mb > 0 && !factor_fits_in_memory(double(out_of_core_mb), physical_mb / kInCoreShare))
         throw SolveError(out_of_memory_text(double(out_of_core_mb)));
     COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
 }

@@ -76,7 +76,7 @@ TEST_CASE("Every usage error exits with EX_USAGE (64); --help with 0", "[app][cl
     }
 }
 
-TEST_CASE("--mesh and --no-plots are accepted by every command that writes results", "[app][cli]") {
+TEST_CASE("The options --mesh and --no-plots are accepted by every command that writes results", "[app][cli]") {
     TempDir dir;
     dir.write("spin.toml", kClampedTesterCore + "[rotation]\nspeeds = [\"0 rpm\", \"3000 rpm\"]\npoints = 3\n");
     dir.write("resp.toml", kClampedTesterCore + "[damping]\nratio = 0.01\n[excitation]\nunbalance = \"2 kg*mm\"\n"

@@ -52,7 +52,7 @@ TEST_CASE("Case 15 at the beam level with springs or a span beyond rigid is refu
     CHECK(contains(short_span.err, "expected a span of at least"));
 }
 
-TEST_CASE("--keep-going is an option of run and campbell; a verified run is unchanged by it",
+TEST_CASE("The option --keep-going belongs to run and campbell, and a verified run is unchanged by it",
           "[app][verify_gate]") {
     TempDir dir("verify");
     dir.write("ok.toml", case_15_on_bearing("\"200 kN/mm\"", "\"1 MN*m/rad\""));
@@ -65,7 +65,7 @@ TEST_CASE("--keep-going is an option of run and campbell; a verified run is unch
         CHECK(contains(run_coremodal(dir, std::string(command) + " --help").out, "--keep-going"));
 }
 
-TEST_CASE("-max_memory_mb abc is refused with what is expected, not PETSc's error 63", "[app][verify_gate]") {
+TEST_CASE("A -max_memory_mb of abc is refused with what is expected, not PETSc's error 63", "[app][verify_gate]") {
     TempDir dir("verify");
     dir.write("tiny.toml", kTinyCase);
     const Run r = run_coremodal(dir, "run tiny.toml --model harmonic -o out --no-plots -max_memory_mb abc");
