@@ -72,6 +72,8 @@ def test_there_are_files_of_every_kind() -> None:
 @pytest.mark.parametrize("path", INPUTS, ids=lambda p: str(p.relative_to(REPO)))
 def test_every_shipped_input_validates_against_the_schema_of_its_kind(validators, path: Path) -> None:
     document = load(path)
+    if "selection" in document:
+        pytest.skip("a core-selection file has no schema yet (docs/case-files.md, \"Editor support\")")
     assert errors(validators[kind_of(document)], document) == []
 
 
