@@ -10,7 +10,7 @@
 #include "output/results_folder.hpp"
 #include "output/selection_report.hpp"
 #include "output/text_file.hpp"
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include <filesystem>
 #include <iostream>

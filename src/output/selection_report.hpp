@@ -5,7 +5,7 @@
 // report.md.
 #pragma once
 
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include <filesystem>
 #include <string>
