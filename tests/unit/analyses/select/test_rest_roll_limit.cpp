@@ -100,3 +100,23 @@ TEST_CASE("select's width limit at the verdict's speed is the verdict's width", 
     // The verdict adds criteria to I-5 with I-7's f1, never removes one: its width is at most I-7's.
     CHECK(found <= i7_max_width(core, stand, s, v) * (1 + kCalibrationTolerance) + kWidthTolerance);
 }
+
+TEST_CASE("with I-5 at 0.8 König's critical speed limits the width, as his formula says", "[selection][limits]") {
+    SelectionScene s = read_selection_text(kOneCandidate, "s.toml");
+    Stand& stand = s.stands[0];
+    stand.safe_factor = 0.8;  // Ilomäki's upper factor: I-5 rises above König for this roll
+    const CoreGrade& core = s.cores[0];
+    RestRollVerdict at_limit;
+    const double found = max_width_for_speed(core, stand, s, 15.0, &at_limit);
+    REQUIRE(at_limit.governing == "Koenig K-1/K-2");
+    // König's K-1/K-2 on the roll's own section over the span between the chucks'
+    // inner ends (width - 2 x 110 mm), solved for 15 m/s by bisection.
+    const RestRollSection section{0.076, 0.100, 0.120, 4e9, 700, 5e9, 1350};
+    double lo = 0.5, hi = 5.0;
+    while (hi - lo > 1e-7) {
+        const double w = 0.5 * (lo + hi);
+        (koenig_critical_speed(section, w - 0.22, kKoenigExperience).speed.v_krit_m_s >= 15.0 ? lo : hi) = w;
+    }
+    CHECK(found == Approx(lo).margin(kWidthTolerance));
+    CHECK(found < i7_max_width(core, stand, s, 15.0) - 0.01);  // I-5 with I-7 alone allows more
+}
