@@ -197,6 +197,7 @@ void write_selection_tables(const std::filesystem::path& dir, const SelectionSce
 
 std::vector<std::string> selection_console_lines(const SelectionScene& s, const SelectionResult& r) {
     std::vector<std::string> lines;
+    for (const std::string& a : r.assumptions) lines.push_back("assumed: " + a);
     for (std::size_t i = 0; i < s.stands.size(); ++i) {
         const Stand& st = s.stands[i];
         lines.push_back("stand " + st.name + ": " + g(st.chuck_length * 1e3, 4) + " mm chucks (k = " +
@@ -239,7 +240,7 @@ std::string selection_report_markdown(const SelectionScene& s, const SelectionRe
        << " %, " << g(s.cycles) << " winding-unwinding cycle(s)\n"
        << "- reel weight from the stand's roll diameter, paper " << g(s.paper_density, 4)
        << " kg/m^3 (core included)\n"
-       << "- width limit: the widest reel whose rest roll passes the `coremodal limits` verdict against the web "
+       << "- width search: the widest reel whose rest roll passes the `coremodal limits` verdict against the web "
           "speed (bracketed to " << g(kWidthTolerance * 1e3, 2) << " mm); \"I-7 alone\" is I-5 with I-7 and k, "
           "the quick estimate\n"
        << "- weight limit: the core's reduced durability curve at the test chuck, times (stand chuck / test "

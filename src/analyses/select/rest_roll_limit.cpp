@@ -205,11 +205,13 @@ double max_width_for_speed(const CoreGrade& core, const Stand& stand, const Sele
                            ? std::min(p.width + 0.9 * kWidthTolerance, fail->width - 0.45 * kWidthTolerance)
                            : std::max(p.width - 0.9 * kWidthTolerance, pass->width + 0.45 * kWidthTolerance);
         } else {
-            // One side only: the slope -2 of f1 ~ 1/L^2 from the last probe, at least
-            // 0.1 % beyond it.
+            // One side only: a Newton step with the slope -2 of f1 ~ 1/L^2 from the
+            // last probe, and at least 0.9 tolerance beyond it: a probe on the root
+            // (I-5 governing at the I-7 width) is bracketed by the next one.
             const double x = log_span(p.width, stand) + p.log_ratio / 2;
             const double w = width_of(x, stand);
-            next = p.verdict.passes ? std::max(w, p.width * 1.001) : std::min(w, p.width / 1.001);
+            next = p.verdict.passes ? std::max(w, p.width + 0.9 * kWidthTolerance)
+                                    : std::min(w, p.width - 0.9 * kWidthTolerance);
             next = std::clamp(next, narrowest, kMaxSelectionWidth);
         }
     }
