@@ -304,9 +304,12 @@ private:
                 fail(r.get("diameter")->source(), "[[selection.reel]] diameter = " + mm(reel.diameter) +
                                                       " must be larger than core " + c.name +
                                                       "'s outer_diameter = " + mm(c.outer_diameter));
-        if (reel.width <= 2 * st.li)
+        // Both chucks inside the core, and I-7's free span between their li.
+        const double held = 2 * std::max(st.li, st.chuck_length);
+        if (reel.width <= held)
             fail(r.get("width")->source(), "[[selection.reel]] width = " + mm(reel.width) + " leaves no free span "
-                                           "between the chucks of stand " + st.name + " (2 li = " + mm(2 * st.li) + ")");
+                                           "between the chucks of stand " + st.name + " (2 x max(li, chuck_length) = " +
+                                           mm(held) + "); expected a wider reel");
         return reel;
     }
 };

@@ -160,6 +160,10 @@ TEST_CASE("a bad selection file is refused with its place and what is expected",
                Catch::Contains("give either durability = \"file.csv\" or b0"));
     CHECK_THAT(error_of(with("width = \"2.6 m\"", "width = \"0.1 m\"")),
                Catch::Contains("width = 100 mm leaves no free span between the chucks of stand news"));
+    // Wider than 2 li but narrower than the two 110 mm chucks.
+    CHECK_THAT(error_of(with("width = \"2.6 m\"", "width = \"0.2 m\"")),
+               Catch::Contains("width = 200 mm leaves no free span between the chucks of stand news "
+                               "(2 x max(li, chuck_length) = 220 mm)"));
     CHECK_THAT(error_of(with("chuck_factor = 0.85\nwinder", "chuck_factor = 1.2\nwinder")),
                Catch::Contains("chuck_factor = 1.2: out of range"));
     CHECK_THAT(error_of(with("cores = [\"thick\"]", "cores = [\"thik\"]")),
