@@ -44,7 +44,7 @@ double paper_roll_mass(const CoreGrade& core, double diameter, double width, dou
 
 SelectionResult select_cores(const SelectionScene& scene) {
     SelectionResult r;
-    r.assumptions = rest_roll_assumptions(scene);
+    r.assumptions = rest_roll_assumptions();
     for (const Stand& stand : scene.stands) {
         std::vector<CoreInStand> row;
         for (const CoreGrade& core : scene.cores) {

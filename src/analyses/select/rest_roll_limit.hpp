@@ -22,6 +22,7 @@
 #include "selection/selection_scene.hpp"
 
 #include <string>
+#include <vector>
 
 namespace coremodal {
 
@@ -71,6 +72,6 @@ double max_width_for_speed(const CoreGrade& core, const Stand& stand, const Sele
                            RestRollVerdict* at_limit = nullptr);
 
 // What the width verdict assumes, for the console and report.md.
-std::vector<std::string> rest_roll_assumptions(const SelectionScene& selection);
+std::vector<std::string> rest_roll_assumptions();
 
 }  // namespace coremodal
