@@ -9,7 +9,7 @@
 #include "scene/scene_description.hpp"
 #include "scene/traction_case.hpp"
 #include "scene/toml_text.hpp"
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 #include "traction/traction_sweep.hpp"
 #include "winder/winder_model.hpp"
 #include "winder/winder_modes.hpp"

@@ -1,16 +1,17 @@
 // `coremodal select SELECTION.toml`: which core grade carries which reel in
 // which stand — each core's largest roll weight from its durability, its
-// largest reel width from the rest roll's safe speed, the chart of the two
+// largest reel width from the rest roll's verdict (`limits` at the beam
+// level, calibrated to the stand's k), the chart of the two
 // (the form of Figs. 18–19 of M. Ilomäki, "On the durability of cores and
 // rest roll dynamics") and the verdict on each reel asked
-// (docs/durability.md, "Choosing a core"). Beam formulas only: no PETSc.
+// (docs/durability.md, "Choosing a core"). Beam level only (Eigen): no mesh.
 #include "app/commands.hpp"
 #include "common/stopwatch.hpp"
 #include "output/python_plots.hpp"
 #include "output/results_folder.hpp"
 #include "output/selection_report.hpp"
 #include "output/text_file.hpp"
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -51,7 +52,7 @@ Command add_select_command(CLI::App& app) {
     auto o = std::make_shared<SelectOptions>();
     CLI::App* cmd = app.add_subcommand(
         "select", "Core selection ([selection] file): each core grade's largest roll weight (durability, scaled to "
-                  "the stand's chuck and winder) and largest reel width (rest roll safe speed, I-5/I-7) per stand; "
+                  "the stand's chuck and winder) and largest reel width (the limits verdict of the rest roll at the beam level, calibrated to k) per stand; "
                   "the chart, the cores that pass each reel, the lightest and cheapest");
     cmd->add_option("case", o->case_file, "core-selection file (TOML), e.g. cases/18-core-selection.toml")->required();
     add_results_options(cmd, o->output, o->force, "-select");

@@ -5,7 +5,7 @@
 // report.md.
 #pragma once
 
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include <filesystem>
 #include <string>
@@ -20,7 +20,7 @@ void write_selection_tables(const std::filesystem::path& dir, const SelectionSce
 std::string selection_report_markdown(const SelectionScene& scene, const SelectionResult& r,
                                       const std::vector<std::string>& pngs, const std::string& plot_problem);
 
-// The console lines: one per stand and core, one per reel.
+// The console lines: the width verdict's assumptions, one per stand and core, one per reel.
 std::vector<std::string> selection_console_lines(const SelectionScene& scene, const SelectionResult& r);
 
 }  // namespace coremodal

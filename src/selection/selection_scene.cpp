@@ -34,7 +34,8 @@ const std::vector<std::string_view> kCoreKeys = {"name",    "inner_diameter", "o
 const std::vector<std::string_view> kStandKeys = {"name",         "chuck_length", "li",
                                                   "chuck_factor", "web_speed",    "safe_factor",
                                                   "winder",       "centre_winder_factor", "chuck_length_exponent",
-                                                  "rest_roll_diameter", "roll_diameter", "cores"};
+                                                  "rest_roll_diameter", "roll_diameter", "cores",
+                                                  "amplitude_limit"};
 const std::vector<std::string_view> kReelKeys = {"stand", "width", "diameter", "web_speed"};
 
 std::string shown(const toml::node& n) {
@@ -257,6 +258,8 @@ private:
         take(st, at, "web_speed", Dimension::speed, 0, kMaxSpeed, s.web_speed, "Figs. 18-19: 15 m/s");
         take(st, at, "safe_factor", Dimension::dimensionless, 0, 1, s.safe_factor,
              "I-5: 0.7 without a safety cage, keeps about +-5 mm");
+        take(st, at, "amplitude_limit", Dimension::length, 0, 0.1, s.amplitude_limit,
+             "Figs. 18-19: +-5 mm mid-span");
         if (const auto w = text(st, at, "winder")) {
             if (*w != "two-drum" && *w != "centre")
                 fail(st.get("winder")->source(), "[" + at + "] winder = \"" + *w + "\": expected \"two-drum\" or \"centre\"");
@@ -301,9 +304,12 @@ private:
                 fail(r.get("diameter")->source(), "[[selection.reel]] diameter = " + mm(reel.diameter) +
                                                       " must be larger than core " + c.name +
                                                       "'s outer_diameter = " + mm(c.outer_diameter));
-        if (reel.width <= 2 * st.li)
+        // Both chucks inside the core, and I-7's free span between their li.
+        const double held = 2 * std::max(st.li, st.chuck_length);
+        if (reel.width <= held)
             fail(r.get("width")->source(), "[[selection.reel]] width = " + mm(reel.width) + " leaves no free span "
-                                           "between the chucks of stand " + st.name + " (2 li = " + mm(2 * st.li) + ")");
+                                           "between the chucks of stand " + st.name + " (2 x max(li, chuck_length) = " +
+                                           mm(held) + "); expected a wider reel");
         return reel;
     }
 };

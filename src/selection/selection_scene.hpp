@@ -31,6 +31,8 @@ inline constexpr double kSelectionSafeFactor = 0.7;
 // Figs. 18–19: 15 m/s web speed, failure probability of order 1e-5.
 inline constexpr double kSelectionWebSpeed = 15.0;
 inline constexpr double kSelectionProbability = 1e-5;
+// Figs. 18-19: "±5 mm" mid-span vibration amplitude.
+inline constexpr double kSelectionAmplitudeLimit = 5e-3;  // m
 // One roll wound and unwound is one cycle (Fig. 13: a winding is half a cycle).
 inline constexpr double kSelectionCycles = 1.0;
 
@@ -55,6 +57,7 @@ struct Stand {
     double chuck_factor = 0;         // k of I-6 in this stand
     double web_speed = kSelectionWebSpeed;
     double safe_factor = kSelectionSafeFactor;
+    double amplitude_limit = kSelectionAmplitudeLimit;  // m, mid-span, of the width verdict
     std::string winder = "two-drum";  // or "centre"
     double centre_winder_factor = kCentreWinderFactor;
     double chuck_length_exponent = kChuckLengthExponent;

@@ -1,9 +1,10 @@
 // The core-selection chart's numbers against hand calculations: the weight
 // a core carries (durability curve, chuck scaling, winder), the widest rest
-// roll that meets the speed (I-5 with I-7 solved for the span in closed form),
+// roll by I-5 with I-7 (solved for the span in closed form), never narrower
+// than the limits verdict's width (tests/unit/analyses/select/test_rest_roll_limit.cpp),
 // a paper roll's mass, and which cores pass a reel.
 #include "common/error.hpp"
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -93,7 +94,7 @@ TEST_CASE("a core's weight limit is its reduced curve scaled by the chuck length
     CHECK(core_weight_limit(s.cores[1], flat, s).weight_n == Approx(at_test_chuck * 0.8));
 }
 
-TEST_CASE("the widest rest roll meeting the speed matches I-5 with I-7 solved for the span", "[selection]") {
+TEST_CASE("the I-7 width estimate is I-5 with I-7 solved for the span", "[selection]") {
     const SelectionScene s = read_selection_text(kSelection, "s.toml");
     const CoreGrade& c = s.cores[0];
     const Stand& st = s.stands[0];
@@ -104,11 +105,9 @@ TEST_CASE("the widest rest roll meeting the speed matches I-5 with I-7 solved fo
     const double ei = 4e9 * pi / 64 * (std::pow(d0, 4) - std::pow(di, 4)) +
                       5e9 * pi / 64 * (std::pow(dp, 4) - std::pow(d0, 4));
     const double rho_a = 700 * pi / 4 * (d0 * d0 - di * di) + 1350 * pi / 4 * (dp * dp - d0 * d0);
-    const double span = std::sqrt(0.7 * pi * dp * 0.85 * 22.373 / (2 * pi) * std::sqrt(ei / rho_a) / 15.0);
+    const double span = std::sqrt(0.7 * pi * dp * 0.85 * std::pow(4.730040744862704, 2) / (2 * pi) * std::sqrt(ei / rho_a) / 15.0);
     const double width = span + 2 * 0.055;  // li: the middle of the 110 mm chuck
-    CHECK(max_width_for_speed(c, st, s, 15.0) == Approx(width).margin(2 * kWidthTolerance));
-    CHECK(rest_roll_verdict(c, st, s, width - 0.01, 15.0).passes);
-    CHECK_FALSE(rest_roll_verdict(c, st, s, width + 0.01, 15.0).passes);
+    CHECK(i7_max_width(c, st, s, 15.0) == Approx(width).epsilon(1e-12));
 }
 
 TEST_CASE("a paper roll's mass is its core's and its paper's by hand", "[selection]") {
@@ -139,6 +138,9 @@ TEST_CASE("the reels' verdicts, the lightest and the cheapest core that pass", "
     for (const CoreInStand& c : r.table[0]) {
         CHECK(c.max_width_m == std::min(c.speed_width_m, c.weight_width_m));
         CHECK(c.max_mass_kg * kStandardGravityForWeight == Approx(c.weight.weight_n));
+        // The verdict's I-5 has I-7's f1 (the calibration) and other criteria beside it.
+        CHECK(c.speed_width_m <= c.i7_width_m * (1 + kCalibrationTolerance) + kWidthTolerance);
+        CHECK_FALSE(c.speed_verdict.governing.empty());
     }
 }
 
@@ -158,6 +160,10 @@ TEST_CASE("a bad selection file is refused with its place and what is expected",
                Catch::Contains("give either durability = \"file.csv\" or b0"));
     CHECK_THAT(error_of(with("width = \"2.6 m\"", "width = \"0.1 m\"")),
                Catch::Contains("width = 100 mm leaves no free span between the chucks of stand news"));
+    // Wider than 2 li but narrower than the two 110 mm chucks.
+    CHECK_THAT(error_of(with("width = \"2.6 m\"", "width = \"0.2 m\"")),
+               Catch::Contains("width = 200 mm leaves no free span between the chucks of stand news "
+                               "(2 x max(li, chuck_length) = 220 mm)"));
     CHECK_THAT(error_of(with("chuck_factor = 0.85\nwinder", "chuck_factor = 1.2\nwinder")),
                Catch::Contains("chuck_factor = 1.2: out of range"));
     CHECK_THAT(error_of(with("cores = [\"thick\"]", "cores = [\"thik\"]")),

@@ -1,4 +1,4 @@
-#include "selection/core_selection.hpp"
+#include "analyses/select/core_selection.hpp"
 
 #include "beam/formulas.hpp"
 #include "common/format.hpp"
@@ -37,28 +37,6 @@ WeightLimit core_weight_limit(const CoreGrade& core, const Stand& stand, const S
     return w;
 }
 
-RestRollVerdict rest_roll_verdict(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double width,
-                                  double web_speed) {
-    RestRollVerdict v;
-    const RestRollSection s = section(core, stand.rest_roll_diameter, scene.rest_paper_modulus, scene.rest_paper_density);
-    v.f1_hz = ilomaki_first_bending_hz(s, free_span(width, stand.li), stand.chuck_factor);  // I-7
-    v.safe_speed_m_s = safe_web_speed(v.f1_hz, s.Dp, stand.safe_factor);                   // I-5
-    v.passes = v.safe_speed_m_s >= web_speed;
-    return v;
-}
-
-double max_width_for_speed(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double web_speed) {
-    if (rest_roll_verdict(core, stand, scene, kMaxSelectionWidth, web_speed).passes) return kMaxSelectionWidth;
-    // The shortest roll with a free span passes: f1 grows without bound as the span shrinks.
-    double lo = 2 * stand.li * (1 + 1e-9) + 1e-9, hi = kMaxSelectionWidth;
-    if (!rest_roll_verdict(core, stand, scene, lo, web_speed).passes) return 0;
-    while (hi - lo > kWidthTolerance) {
-        const double mid = (lo + hi) / 2;
-        (rest_roll_verdict(core, stand, scene, mid, web_speed).passes ? lo : hi) = mid;
-    }
-    return lo;
-}
-
 double paper_roll_mass(const CoreGrade& core, double diameter, double width, double paper_density) {
     // The paper's own modulus does not enter a mass; 1 Pa keeps the section valid.
     return mass_per_length(section(core, diameter, 1.0, paper_density)) * width;
@@ -66,6 +44,7 @@ double paper_roll_mass(const CoreGrade& core, double diameter, double width, dou
 
 SelectionResult select_cores(const SelectionScene& scene) {
     SelectionResult r;
+    r.assumptions = rest_roll_assumptions();
     for (const Stand& stand : scene.stands) {
         std::vector<CoreInStand> row;
         for (const CoreGrade& core : scene.cores) {
@@ -77,7 +56,8 @@ SelectionResult select_cores(const SelectionScene& scene) {
             }
             c.weight = core_weight_limit(core, stand, scene);
             c.max_mass_kg = c.weight.weight_n / kStandardGravityForWeight;
-            c.speed_width_m = max_width_for_speed(core, stand, scene, stand.web_speed);
+            c.speed_width_m = max_width_for_speed(core, stand, scene, stand.web_speed, &c.speed_verdict);
+            c.i7_width_m = i7_max_width(core, stand, scene, stand.web_speed);
             c.weight_width_m = c.max_mass_kg / paper_roll_mass(core, stand.roll_diameter, 1.0, scene.paper_density);
             c.max_width_m = std::min(c.speed_width_m, c.weight_width_m);
             c.governing = c.speed_width_m <= c.weight_width_m ? "speed" : "weight";
@@ -106,6 +86,7 @@ SelectionResult select_cores(const SelectionScene& scene) {
             const RestRollVerdict speed = rest_roll_verdict(core, stand, scene, reel.width, check.web_speed);
             v.speed_ok = speed.passes;
             v.safe_speed_m_s = speed.safe_speed_m_s;
+            v.speed_governing = speed.governing;
             check.cores.push_back(v);
             if (!v.passes()) continue;
             const double mass = r.table[check.stand][i].core_mass_per_m;

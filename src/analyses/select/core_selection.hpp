@@ -7,6 +7,7 @@
 // verdict on each reel asked. docs/durability.md, "Choosing a core".
 #pragma once
 
+#include "analyses/select/rest_roll_limit.hpp"
 #include "selection/selection_scene.hpp"
 
 #include <optional>
@@ -25,24 +26,6 @@ struct WeightLimit {
 };
 WeightLimit core_weight_limit(const CoreGrade& core, const Stand& stand, const SelectionScene& scene);
 
-// The rest roll's verdict at one reel width: its first bending frequency
-// (I-7 with the stand's chuck factor k, free span = width - 2 li) and I-5's
-// safe speed safe · π · Dp · f1 against the web speed. This is the one place
-// a fuller verdict (the `limits` command's, or an FE f1) would come in.
-struct RestRollVerdict {
-    double f1_hz = 0;
-    double safe_speed_m_s = 0;
-    bool passes = false;
-};
-RestRollVerdict rest_roll_verdict(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double width,
-                                  double web_speed);
-
-// The largest reel width (m) at which rest_roll_verdict passes, by bisection
-// to kWidthTolerance; kMaxSelectionWidth when it passes even there.
-inline constexpr double kWidthTolerance = 1e-4;     // m
-inline constexpr double kMaxSelectionWidth = 20.0;  // m, wider than any paper machine
-double max_width_for_speed(const CoreGrade& core, const Stand& stand, const SelectionScene& scene, double web_speed);
-
 // A paper roll's mass (kg) from its diameter, width, paper density and core:
 // mass_per_length of beam/formulas.hpp times the width.
 double paper_roll_mass(const CoreGrade& core, double diameter, double width, double paper_density);
@@ -51,7 +34,9 @@ struct CoreInStand {
     bool fits = true;               // the stand's chucks take this core (else nothing below is set)
     WeightLimit weight;
     double max_mass_kg = 0;         // weight / standard gravity
-    double speed_width_m = 0;       // widest rest roll that meets the speed limit
+    double speed_width_m = 0;       // widest rest roll that meets the speed and amplitude limits (the verdict)
+    RestRollVerdict speed_verdict;  // the verdict at speed_width_m: its governing criterion
+    double i7_width_m = 0;          // I-5 with I-7 alone: the quick estimate, for comparison
     double weight_width_m = 0;      // widest reel of the stand's roll_diameter within the weight
     double max_width_m = 0;         // the smaller: the chart's corner
     std::string governing;          // "speed" or "weight"
@@ -63,6 +48,7 @@ struct ReelVerdict {
     double mass_kg = 0;      // per core (the core's own mass differs)
     bool weight_ok = false, speed_ok = false;
     double safe_speed_m_s = 0;
+    std::string speed_governing;  // the verdict's lowest criterion at the reel's width
     bool passes() const { return fits && weight_ok && speed_ok; }
 };
 struct ReelCheck {
@@ -76,6 +62,7 @@ struct ReelCheck {
 struct SelectionResult {
     std::vector<std::vector<CoreInStand>> table;  // [stand][core]
     std::vector<ReelCheck> reels;
+    std::vector<std::string> assumptions;  // of the width verdict (rest_roll_assumptions)
 };
 SelectionResult select_cores(const SelectionScene& scene);
 
