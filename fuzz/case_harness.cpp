@@ -9,7 +9,7 @@
 #include "scene/scene_description.hpp"
 #include "scene/traction_case.hpp"
 #include "scene/toml_text.hpp"
-#include "analyses/select/core_selection.hpp"
+#include "analyses/select/weight_limit.hpp"
 #include "traction/traction_sweep.hpp"
 #include "winder/winder_model.hpp"
 #include "winder/winder_modes.hpp"
@@ -143,14 +143,8 @@ Outcome run_fit_text(std::string_view text, const std::string& path) {
     return outcome;
 }
 
-// Which reader a fuzzed text is for, by its top-level tables: a winder file
-// has [winder], a fit's measurements file [[measurement]] or parameters, a
-// case file anything else (its reader says what is wrong). The inputs still
-// to come have their place here: durability data and traction tables
-// (being written in parallel, issue 33) each get a branch and a run_*_text.
 // A [selection] file: its reader (durability files named relative to
-// `path`), then every stand's weight and width limits and the reels'
-// verdicts, all finite.
+// `path`), then every stand's weight limit and the reels' masses, all finite.
 Outcome run_selection_text(std::string_view text, const std::string& path) {
     SelectionScene scene;
     try {
@@ -158,16 +152,22 @@ Outcome run_selection_text(std::string_view text, const std::string& path) {
     } catch (const InputError&) {
         return Outcome::invalid;
     }
+    // The weight limits and reel masses; the width limit runs the limits
+    // verdict (analyses/limits: the solver stack this project does not
+    // link), so it is left to the tests of analyses/select.
     try {
-        const SelectionResult r = select_cores(scene);
-        for (const auto& row : r.table)
-            for (const CoreInStand& c : row) {
-                if (!c.fits) continue;
-                check(std::isfinite(c.weight.weight_n) && c.weight.weight_n >= 0, "a weight limit that is not finite");
-                check(std::isfinite(c.max_width_m) && c.max_width_m >= 0, "a width limit that is not finite");
+        for (const Stand& stand : scene.stands)
+            for (const CoreGrade& core : scene.cores) {
+                if (!stand.takes(core.name)) continue;
+                const WeightLimit w = core_weight_limit(core, stand, scene);
+                check(std::isfinite(w.weight_n) && w.weight_n >= 0, "a weight limit that is not finite");
+                const double mass = paper_roll_mass(core, stand.roll_diameter, 1.0, scene.paper_density);
+                check(std::isfinite(mass) && mass > 0, "a roll mass per metre that is not finite and positive");
             }
-        for (const ReelCheck& reel : r.reels)
-            for (const ReelVerdict& v : reel.cores) check(std::isfinite(v.mass_kg), "a reel mass that is not finite");
+        for (const Reel& reel : scene.reels)
+            for (const CoreGrade& core : scene.cores)
+                check(std::isfinite(paper_roll_mass(core, reel.diameter, reel.width, scene.paper_density)),
+                      "a reel mass that is not finite");
     } catch (const InputError&) {
         return Outcome::not_solvable;
     }
@@ -208,6 +208,10 @@ bool is_traction_text(std::string_view text) {
     }
 }
 
+// Which reader a fuzzed text is for, by its top-level tables: a winder file
+// has [winder], a selection file [selection], a fit's measurements file
+// [[measurement]] or parameters, a traction file [traction] alone, a case
+// file anything else (its reader says what is wrong).
 enum class InputKind { case_file, winder, fit, selection, traction };
 
 InputKind kind_of(std::string_view text) {
