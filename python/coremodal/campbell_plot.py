@@ -79,9 +79,13 @@ def draw(folder: Path) -> Path:
         xs = [speeds[0], speeds[-1]]
         ax.plot(xs, [order * x / 60 for x in xs], ":", color="k", lw=1.0,
                 label="excitation f = k f_rot (k x)" if i == 0 else None)
+        # Named where the line leaves the axes: beside the right edge, or
+        # under the top edge inside: never on a mode's curve.
         end = min(speeds[-1], top * 60 / order)
+        right = end >= speeds[-1]
         labels.append(ax.annotate(f"{order}x", (end, order * end / 60), textcoords="offset points",
-                                  xytext=(-18, -12), fontsize=9))
+                                  xytext=(4, 0) if right else (-4, -4), ha="left" if right else "right",
+                                  va="center" if right else "top", fontsize=9))
     for i, c in enumerate(critical):  # labels alternate below and above: crossings of a split pair lie close
         x, y = float(c["speed_rpm"]), float(c["frequency_hz"])
         ax.plot([x], [y], "o", mfc="none", mec="k", ms=10, label="critical speed" if i == 0 else None)

@@ -93,6 +93,19 @@ def overlapping_texts(figure: Figure) -> list[tuple[str, str]]:
             if _overlap(boxes[i][1], boxes[j][1])]
 
 
+def _densified(pixels: np.ndarray, step_px: float = 2.0) -> np.ndarray:
+    """The points of a polyline every step_px pixels, so that a straight line
+    under a legend is seen even when none of its vertices is."""
+    pixels = pixels[np.isfinite(pixels).all(axis=1)]
+    if len(pixels) < 2:
+        return pixels
+    parts = [pixels[:1]]
+    for a, b in zip(pixels[:-1], pixels[1:]):
+        n = max(1, int(np.ceil(np.hypot(*(b - a)) / step_px)))
+        parts.append(a + np.outer(np.arange(1, n + 1) / n, b - a))
+    return np.concatenate(parts)
+
+
 def legends_over_data(figure: Figure) -> list[str]:
     """Legends with a drawn data point of any axes under them."""
     renderer = _renderer(figure)
@@ -107,7 +120,7 @@ def legends_over_data(figure: Figure) -> list[str]:
                 xy = line.get_xydata()
                 if not len(xy):
                     continue
-                pixels = line.get_transform().transform(np.asarray(xy, float))
+                pixels = _densified(line.get_transform().transform(np.asarray(xy, float)))
                 inside = ((pixels[:, 0] >= window.x0) & (pixels[:, 0] <= window.x1) &
                           (pixels[:, 1] >= window.y0) & (pixels[:, 1] <= window.y1))
                 under = ((pixels[:, 0] > box.x0) & (pixels[:, 0] < box.x1) &
@@ -142,7 +155,17 @@ def legend_outside(ax: Axes, **options) -> Legend | None:
     handles, labels = ax.get_legend_handles_labels()
     if not handles:
         return None
-    return ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **options)
+    legend = ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0, **options)
+    # Beyond a secondary axis on the right (m/min beside m/s): its tick labels
+    # and label are in pixels, the anchor in axes widths, and the layout moves
+    # the axes, so measure, place, and measure again.
+    right = [child for child in getattr(ax, "child_axes", [])]
+    for _ in range(3 if right else 0):
+        renderer = _renderer(ax.figure)
+        box = ax.get_window_extent(renderer)
+        edge = max(child.get_tightbbox(renderer).x1 for child in right)
+        legend.set_bbox_to_anchor((1.0 + (edge - box.x1 + 8) / box.width, 1.0), transform=ax.transAxes)
+    return legend
 
 
 def separate(figure: Figure, labels: Iterable[Annotation]) -> None:

@@ -284,7 +284,7 @@ def plot_point_value(study: Study, out: Path, column: str, name: str, ylabel: st
         if 1 < len(curves) <= MAX_LEGEND:
             legend_outside(ax, fontsize=7)
         ax.set_title(f"{study.case_name}: {ylabel} against {p.human_name}", fontsize=10)
-            path = out / f"{name}_vs_{file_stem(p.name)}.png"
+        path = out / f"{name}_vs_{file_stem(p.name)}.png"
         figure.savefig(path)
         paths.append(path)
     return paths
@@ -451,7 +451,7 @@ def draw_all(folder: Path) -> list[Path]:
     tracked = plot_tracked_modes(study, out)
     paths += [tracked] if tracked else []
     paths += plot_point_value(study, out, "f1_hz", "f1", "first bending frequency f1 [Hz]")
-    paths += plot_point_value(study, out, "k", "k", "chuck factor k = f1 / f_I-7(k = 1)")
+    paths += plot_point_value(study, out, "k", "k", "chuck factor k = f1 / f_I-7(k = 1) [-]")
     for extra in (plot_safe_speed(study, out), plot_response_safe_speed(study, out), plot_calibration(study, out)):
         if extra:
             paths.append(extra)
