@@ -131,3 +131,44 @@ def test_the_study_pictures_read_cleanly(tmp_path: Path, drawn: list[Figure]) ->
     assert len(drawn) >= 4
     for figure in drawn:
         assert_readable(figure)
+
+
+def test_the_other_folder_pictures_read_cleanly(tmp_path: Path, drawn: list[Figure]) -> None:
+    from coremodal import limits_plot, response_plot, traction_plot
+
+    from test_limits_plot import write_limits
+    from test_response_plot import write_response
+    from test_traction_plot import write_traction
+
+    limits_plot.draw(write_limits(tmp_path / "l"))
+    response_plot.draw(write_response(tmp_path / "r"))
+    traction_plot.draw(write_traction(tmp_path / "t"))
+    assert len(drawn) == 3
+    for figure in drawn:
+        assert_readable(figure)
+
+
+def test_the_run_pictures_read_cleanly(modes_h5: Path, tmp_path: Path, drawn: list[Figure]) -> None:
+    import shutil
+
+    from coremodal.run_plot import draw_run_plots
+
+    shutil.copy(modes_h5, tmp_path / "modes.h5")
+    draw_run_plots(tmp_path, [7, 9])
+    assert len(drawn) == 3  # the spectrum and two modes
+    for figure in drawn:
+        assert_readable(figure)
+
+
+def test_the_durability_and_selection_pictures_read_cleanly(tmp_path: Path, drawn: list[Figure]) -> None:
+    from coremodal import durability_plot, selection_plot
+
+    from test_durability_plot import run
+
+    run(["durability", str(REPO / "cases" / "18-core-durability-76x15.csv"), "-o", str(tmp_path / "d"), "-p", "1e-5"])
+    run(["select", str(REPO / "cases" / "18-core-selection.toml"), "-o", str(tmp_path / "s")])
+    durability_plot.draw_all(tmp_path / "d")
+    selection_plot.draw_all(tmp_path / "s")
+    assert len(drawn) >= 2
+    for figure in drawn:
+        assert_readable(figure)
