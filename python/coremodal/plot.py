@@ -275,6 +275,8 @@ def mode_figure(results: Results, index: int, scale: float | None = None, *,
         spans = support_spans(results.case)
         ring = section_ring(results.nodes, shape, where=where)
         _draw_side_view(side, side_view_data(results, index, shape, scale), spans)
+        if results.types[index - 1] == "torsion":  # its turn does not show in the outline
+            _draw_twist(side, results, index, shape)
         section = figure.add_subplot(grid[0, 1])
         _draw_section(section, ring)
         _draw_centreline(along, results, shape, centreline_curves(results.nodes, shape, where),
@@ -317,6 +319,16 @@ def _draw_side_view(axes, view: SideViewData, spans) -> None:
     axes.set_title(f"side view: displacement ×{view.scale:.3g} (largest = {view.drawn_fraction:.0%} "
                    "of the length), height not to scale")
     axes.grid(True, lw=0.3, alpha=0.5)
+
+
+def _draw_twist(axes, results: Results, index: int, shape: np.ndarray) -> None:
+    """A torsion mode's surface lines on the side view (coremodal.frames):
+    straight at rest, turned by the twist at a scale suited to rotations,
+    coloured by the signed u_θ."""
+    lines = frames.surface_lines(results, shape, frames.side_view(results, index, shape))
+    frames.draw_surface_lines(axes, lines, 1.0, unit=1e3,
+                              label=f"surface lines ×{lines.scale:.3g} (≤ {np.degrees(frames.TWIST_DRAWN_RAD):.0f}°), "
+                                    "colour ±u_θ")
 
 
 def _draw_centreline(axes, results: Results, shape: np.ndarray, curves: CentreLine,
