@@ -215,7 +215,8 @@ private:
         const std::string_view line = lines_[at_];
         const std::size_t level = line.find_first_not_of('#');
         if (level == 0 || level > 6 || level == std::string_view::npos || line[level] != ' ') return false;
-        const std::string tag = "h" + std::to_string(level);
+        std::string tag = "h";
+        tag += std::to_string(level);
         out_ << "<" << tag << ">" << inline_html(trimmed(line.substr(level))) << "</" << tag << ">\n";
         ++at_;
         return true;
@@ -287,7 +288,8 @@ private:
         std::size_t text_at = 0;
         while (at_ < lines_.size() && !trimmed(lines_[at_]).empty() && trimmed(lines_[at_]).front() != '|' &&
                lines_[at_].rfind("#", 0) != 0 && !(text.size() && list_item(lines_[at_], ordered, text_at))) {
-            text += (text.empty() ? "" : "\n") + std::string(trimmed(lines_[at_]));
+            if (!text.empty()) text += '\n';
+            text += trimmed(lines_[at_]);
             ++at_;
         }
         out_ << "<p>" << inline_html(text) << "</p>\n";
