@@ -1,4 +1,5 @@
-"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
+"""Command line, ``python3 -m coremodal`` or, installed (pip install ./python),
+``coremodal-plot``: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
 ``python3 -m coremodal run-plot RESULTS_DIR --modes ...``,
 ``python3 -m coremodal converge-plot CONVERGE_DIR``,
 ``python3 -m coremodal study-plot STUDY_FOLDER``,
@@ -8,7 +9,8 @@
 ``python3 -m coremodal response-plot RESPONSE_FOLDER`` and
 ``python3 -m coremodal traction-plot TRACTION_FOLDER``.
 ``python3 -m coremodal durability-plot DURABILITY_FOLDER`` and
-``python3 -m coremodal selection-plot SELECT_FOLDER``.
+``python3 -m coremodal selection-plot SELECT_FOLDER`` and
+``python3 -m coremodal limits-plot LIMITS_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -22,6 +24,11 @@
     python3 -m coremodal traction-plot results/19-grooved-idler-traction-traction  # traction.png
     python3 -m coremodal durability-plot results/18-core-B-durability  # durability.png
     python3 -m coremodal selection-plot results/18-core-selection-select  # selection_chart.png
+    python3 -m coremodal limits-plot results/16-limits-rotogravure-150x15.8-4320-limits  # limits.png
+
+The plot commands of a whole results folder (study-plot, winder-plot, ...)
+are one table, FOLDER_PLOTS: a new one is a row there. ``--version`` prints
+the package's version.
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for

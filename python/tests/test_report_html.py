@@ -51,6 +51,9 @@ web_speed = "15 m/s"
 band = false
 """
 
+# What each page's first table is, by its first two columns.
+FIRST_TABLE = {"run": ["result", "value"], "campbell": ["order", "speed"], "limits": ["D (mm)", "f1 (Hz)"]}
+
 # Opens report.html in a frame and writes what the browser saw into the
 # wrapper's DOM, which --dump-dom prints. Resource timing lists every fetch
 # the page started, allowed or blocked (a picture on disk, a font, a link).
@@ -136,9 +139,11 @@ def test_the_page_opens_offline_with_its_table_first_and_every_picture_decoded(f
                       .replace("&quot;", '"'))
     title = report_md.splitlines()[0].removeprefix("# ")
     assert seen["h1"] == title and seen["title"] == title
-    # The report's first table is the page's: the numbers before the prose.
+    # The answer first: the page's first table is the run's summary, the
+    # critical speeds, the limits verdict (report.md's first table, as drawn).
     first_header = re.search(r"^\|(.*)\|\s*$", report_md, re.M).group(1)
     assert seen["first_table_header"] == [cell.strip().replace("`", "") for cell in first_header.split("|")]
+    assert seen["first_table_header"][:2] == FIRST_TABLE[folder.name]
     assert seen["n_tables"] == len(re.findall(r"^\|[-:| ]+\|\s*$", report_md, re.M))
     # Every picture of report.md is in the page, carried inside it, and decodes.
     assert len(seen["images"]) == len(pictures)
