@@ -225,7 +225,7 @@ void summary_section(std::ostream& out, const RunReport& r) {
         out << "| safe web speed | not given: " << speeds.not_given << " |\n";
     }
     out << "| modes found | " << r.modes.modes.size() << ", "
-        << (r.modes.verification.complete ? "none missed (inertia count)" : "INCOMPLETE (see Model and verification)")
+        << (r.modes.verification.complete ? "none missed" : "INCOMPLETE") << " (see Model and verification)"
         << " |\n\n";
 }
 

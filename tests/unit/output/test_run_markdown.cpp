@@ -77,7 +77,7 @@ TEST_CASE("The run report opens with the answers: f1, the speeds and the mode co
     CHECK(md.find("| result | value |") < md.find("| part | dimensions | material |"));
     CHECK(contains(md, "| first bending frequency f1 (FE) | 200.0000 Hz |"));
     CHECK(contains(md, "| safe web speed | not given: the scene is free–free"));
-    CHECK(contains(md, "| modes found | 5, none missed (inertia count) |"));
+    CHECK(contains(md, "| modes found | 5, none missed (see Model and verification) |"));
     r.modes.verification.complete = false;
     CHECK(contains(run_report_markdown(r, RunPictures{}), "| modes found | 5, INCOMPLETE"));
 }
