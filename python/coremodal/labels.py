@@ -159,7 +159,7 @@ def legend_outside(ax: Axes, **options) -> Legend | None:
     # Beyond a secondary axis on the right (m/min beside m/s): its tick labels
     # and label are in pixels, the anchor in axes widths, and the layout moves
     # the axes, so measure, place, and measure again.
-    right = [child for child in getattr(ax, "child_axes", [])]
+    right = list(getattr(ax, "child_axes", []))
     for _ in range(3 if right else 0):
         renderer = _renderer(ax.figure)
         box = ax.get_window_extent(renderer)
