@@ -18,8 +18,9 @@ packages=(build-essential cmake pkg-config
           catch2 libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
           libboost-dev
           python3 python3-h5py python3-numpy python3-matplotlib python3-pytest
-          python3-pil python3-pip python3-setuptools
-          python3-jsonschema "$@")  # jsonschema: python/tests/test_case_schema.py
+          python3-pil python3-pip python3-setuptools python3-venv
+          python3-jsonschema  # python/tests/test_case_schema.py
+          chromium "$@")  # headless, opens report.html in python/tests/test_report_html.py (about 100 MB)
 if [ "${COREMODAL_PARAVIEW:-0}" = 1 ]; then
   packages+=(paraview python3-paraview xvfb)
 fi

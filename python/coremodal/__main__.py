@@ -1,4 +1,5 @@
-"""Command line: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
+"""Command line, ``python3 -m coremodal`` or, installed (pip install ./python),
+``coremodal-plot``: ``python3 -m coremodal table|plot RESULTS/modes.h5 ...``,
 ``python3 -m coremodal run-plot RESULTS_DIR --modes ...``,
 ``python3 -m coremodal converge-plot CONVERGE_DIR``,
 ``python3 -m coremodal study-plot STUDY_FOLDER``,
@@ -8,7 +9,8 @@
 ``python3 -m coremodal response-plot RESPONSE_FOLDER`` and
 ``python3 -m coremodal traction-plot TRACTION_FOLDER``.
 ``python3 -m coremodal durability-plot DURABILITY_FOLDER`` and
-``python3 -m coremodal selection-plot SELECT_FOLDER``.
+``python3 -m coremodal selection-plot SELECT_FOLDER`` and
+``python3 -m coremodal limits-plot LIMITS_FOLDER``.
 
     python3 -m coremodal table results/modes.h5
     python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png
@@ -22,6 +24,11 @@
     python3 -m coremodal traction-plot results/19-grooved-idler-traction-traction  # traction.png
     python3 -m coremodal durability-plot results/18-core-B-durability  # durability.png
     python3 -m coremodal selection-plot results/18-core-selection-select  # selection_chart.png
+    python3 -m coremodal limits-plot results/16-limits-rotogravure-150x15.8-4320-limits  # limits.png
+
+The plot commands of a whole results folder (study-plot, winder-plot, ...)
+are one table, FOLDER_PLOTS: a new one is a row there. ``--version`` prints
+the package's version.
 
 Exit status: 0 on success, 1 if the file cannot be read or the mode does not
 exist, or the folder holds no study (with a one-line message on stderr), 2 for
@@ -32,9 +39,40 @@ from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 
 from .results import ResultsFormatError, load
+
+
+@dataclass(frozen=True)
+class FolderPlot:
+    """A plot command that draws every picture of one command's results
+    folder: ``module.function(folder)`` returns the path(s) it wrote and
+    raises ``module.error`` on a folder it cannot read."""
+
+    command: str  # the coremodal command that writes the folder
+    pictures: str  # what it draws, for --help
+    module: str
+    function: str
+    error: str
+    when_empty: str = "nothing drawn"
+
+
+FOLDER_PLOTS = {
+    "study-plot": FolderPlot("study", "the PNG plots (of study.csv; calibrate's too)",
+                             "study_plot", "draw_all", "StudyFormatError", "no successful point"),
+    "winder-plot": FolderPlot("winder", "crossing_diagram.png and response.png", "winder_plot", "draw_all",
+                              "WinderFormatError"),
+    "campbell-plot": FolderPlot("campbell", "campbell.png", "campbell_plot", "draw", "CampbellFormatError"),
+    "response-plot": FolderPlot("response", "response.png", "response_plot", "draw", "ResponseFormatError"),
+    "traction-plot": FolderPlot("traction", "traction.png", "traction_plot", "draw", "TractionFormatError"),
+    "durability-plot": FolderPlot("durability", "durability.png", "durability_plot", "draw_all",
+                                  "DurabilityFormatError"),
+    "selection-plot": FolderPlot("select", "selection_chart.png", "selection_plot", "draw_all",
+                                 "SelectionFormatError"),
+    "limits-plot": FolderPlot("limits", "limits.png", "limits_plot", "draw", "LimitsFormatError"),
+}
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -47,10 +85,19 @@ def _size(text: str) -> tuple[int, int]:
     return width, height
 
 
+def _program_name() -> str:
+    """How the user called us: the console script (coremodal-plot) or python3 -m coremodal."""
+    called = Path(sys.argv[0]).name if sys.argv and sys.argv[0] else ""
+    return "python3 -m coremodal" if called in ("", "__main__.py", "-c") else called
+
+
 def _parser() -> argparse.ArgumentParser:
+    from . import __version__
+
     parser = argparse.ArgumentParser(
-        prog="python3 -m coremodal", description="Read coremodal results (modes.h5)."
+        prog=_program_name(), description="Read and draw the results of coremodal (its results folders)."
     )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
 
     table = commands.add_parser("table", help="print every mode as a table")
@@ -90,68 +137,10 @@ def _parser() -> argparse.ArgumentParser:
                     "--out PNG, --scale S, --size WxH, --frames [N], --gif GIF.")
     paraview.add_argument("script_args", nargs=argparse.REMAINDER,
                           help="RESULTS_DIR and the options of paraview_mode.py")
-    study = commands.add_parser(
-        "study-plot", help="draw the PNG plots of a study or calibration folder (study.csv, study.json)")
-    study.add_argument("folder", type=Path, help="results folder of coremodal study or coremodal calibrate")
-    winder = commands.add_parser(
-        "winder-plot", help="draw the crossing diagram and the response (PNG) of a `coremodal winder` folder")
-    winder.add_argument("folder", type=Path, help="results folder of coremodal winder")
-    campbell = commands.add_parser(
-        "campbell-plot", help="draw campbell.png of a `coremodal campbell` folder")
-    campbell.add_argument("folder", type=Path, help="results folder of coremodal campbell")
-    traction = commands.add_parser(
-        "traction-plot", help="draw traction.png of a `coremodal traction` folder")
-    traction.add_argument("folder", type=Path, help="results folder of coremodal traction")
-    response = commands.add_parser(
-        "response-plot", help="draw response.png of a `coremodal response` folder")
-    response.add_argument("folder", type=Path, help="results folder of coremodal response")
-    durability = commands.add_parser(
-        "durability-plot", help="draw durability.png of a `coremodal durability` folder")
-    durability.add_argument("folder", type=Path, help="results folder of coremodal durability")
-    selection = commands.add_parser(
-        "selection-plot", help="draw selection_chart.png of a `coremodal select` folder")
-    selection.add_argument("folder", type=Path, help="results folder of coremodal select")
-    limits = commands.add_parser(
-        "limits-plot", help="draw limits.png of a `coremodal limits` folder")
-    limits.add_argument("folder", type=Path, help="results folder of coremodal limits")
+    for name, drawing in FOLDER_PLOTS.items():
+        command = commands.add_parser(name, help=f"draw {drawing.pictures} of a `coremodal {drawing.command}` folder")
+        command.add_argument("folder", type=Path, help=f"results folder of coremodal {drawing.command}")
     return parser
-
-
-def _drawn(draw, errors: tuple) -> int:
-    """Run a drawing function; print the paths it wrote, or its error (exit 1)."""
-    try:
-        paths = draw()
-    except errors as error:
-        print(f"coremodal: error: {error}", file=sys.stderr)
-        return 1
-    _print("\n".join(str(p) for p in paths))
-    return 0
-
-
-def _campbell_plot(folder: Path) -> int:
-    from . import campbell_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: [campbell_plot.draw(folder)],
-                  (campbell_plot.CampbellFormatError, KeyError, ValueError, OSError))
-
-
-def _response_plot(folder: Path) -> int:
-    from . import response_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: [response_plot.draw(folder)],
-                  (response_plot.ResponseFormatError, KeyError, ValueError, OSError))
-
-
-def _traction_plot(folder: Path) -> int:
-    from . import traction_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: [traction_plot.draw(folder)],
-                  (traction_plot.TractionFormatError, KeyError, ValueError, OSError))
-def _limits_plot(folder: Path) -> int:
-    from . import limits_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: [limits_plot.draw(folder)],
-                  (limits_plot.LimitsFormatError, KeyError, ValueError, OSError))
 
 
 def _converge_plot(args: argparse.Namespace) -> int:
@@ -169,32 +158,21 @@ def _converge_plot(args: argparse.Namespace) -> int:
     return 0
 
 
-def _study_plot(folder: Path) -> str:
-    from . import study_plot  # matplotlib only when drawing
+def _folder_plot(plot: "FolderPlot", folder: Path) -> int:
+    """Draw a folder's pictures with its module's draw function; print the
+    paths written, or the error (exit 1)."""
+    import importlib
 
-    paths = study_plot.draw_all(folder)
-    return "\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot (no successful point)"
-
-
-def _winder_plot(folder: Path) -> int:
-    from . import winder_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: winder_plot.draw_all(folder),
-                  (winder_plot.WinderFormatError, KeyError, ValueError, OSError))
-
-
-def _durability_plot(folder: Path) -> int:
-    from . import durability_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: durability_plot.draw_all(folder),
-                  (durability_plot.DurabilityFormatError, KeyError, ValueError, OSError, StopIteration))
-
-
-def _selection_plot(folder: Path) -> int:
-    from . import selection_plot  # matplotlib only when drawing
-
-    return _drawn(lambda: selection_plot.draw_all(folder),
-                  (selection_plot.SelectionFormatError, KeyError, ValueError, OSError))
+    module = importlib.import_module(f".{plot.module}", __package__)  # matplotlib only when drawing
+    errors = (getattr(module, plot.error), KeyError, ValueError, OSError, StopIteration)
+    try:
+        drawn = getattr(module, plot.function)(folder)
+    except errors as error:
+        print(f"coremodal: error: {error}", file=sys.stderr)
+        return 1
+    paths = drawn if isinstance(drawn, list) else [drawn]
+    _print("\n".join(str(p) for p in paths) if paths else f"{folder}: nothing to plot ({plot.when_empty})")
+    return 0
 
 
 def _run_plot(args: argparse.Namespace) -> int:
@@ -231,30 +209,8 @@ def main(argv: list[str] | None = None) -> int:
         return _run_plot(args)
     if args.command == "converge-plot":
         return _converge_plot(args)
-    if args.command == "winder-plot":
-        return _winder_plot(args.folder)
-    if args.command == "campbell-plot":
-        return _campbell_plot(args.folder)
-    if args.command == "response-plot":
-        return _response_plot(args.folder)
-    if args.command == "traction-plot":
-        return _traction_plot(args.folder)
-    if args.command == "durability-plot":
-        return _durability_plot(args.folder)
-    if args.command == "selection-plot":
-        return _selection_plot(args.folder)
-    if args.command == "limits-plot":
-        return _limits_plot(args.folder)
-    if args.command == "study-plot":
-        from .study_plot import StudyFormatError
-
-        try:
-            output = _study_plot(args.folder)
-        except (StudyFormatError, OSError) as error:
-            print(f"coremodal: error: {error}", file=sys.stderr)
-            return 1
-        _print(output)
-        return 0
+    if args.command in FOLDER_PLOTS:
+        return _folder_plot(FOLDER_PLOTS[args.command], args.folder)
     try:
         if args.results.is_dir():  # a results folder: its modes.h5
             if not (args.results / "modes.h5").is_file():

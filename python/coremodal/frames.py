@@ -43,6 +43,10 @@ GIF_WIDTH_PX = 800
 DPI = 100
 
 
+def _is_torsion(results: Results, view: SideView) -> bool:
+    return view.index > 0 and list(getattr(results, "types", []))[view.index - 1:view.index] == ["torsion"]
+
+
 @dataclass(frozen=True)
 class SideView:
     """What the side view draws of one shape: node planes and directions."""
@@ -51,6 +55,7 @@ class SideView:
     n_planes: int
     across: int  # 0 (x) or 1 (y): the direction drawn upwards
     scale: float  # exaggeration of the shape
+    index: int = 0  # the mode (1-based), 0 if not known
 
 
 def side_view(results: Results, index: int, shape: np.ndarray) -> SideView:
@@ -60,7 +65,92 @@ def side_view(results: Results, index: int, shape: np.ndarray) -> SideView:
     where = stations(results.nodes[:, 2])
     across = 0 if float(np.sum(shape[:, 0] ** 2)) >= float(np.sum(shape[:, 1] ** 2)) else 1
     return SideView(plane=where.index, n_planes=where.count, across=across,
-                    scale=float(results.warp_scales[index - 1]))
+                    scale=float(results.warp_scales[index - 1]), index=index)
+
+
+#: A torsion mode's surface lines turn by at most this angle (20 degrees) in
+#: the pictures: a rotation drawn as a rotation, whatever the warp scale of
+#: its displacements (which, for a thin wall's torsion, would turn the lines
+#: by a few degrees or by several turns).
+TWIST_DRAWN_RAD = np.radians(20.0)
+#: Surface lines (generators of the outer surface) on the half of the roll
+#: that faces the viewer, from -75 to +75 degrees about the line of sight.
+SURFACE_LINES = 9
+SURFACE_LINE_SPREAD_RAD = np.radians(75.0)
+
+
+@dataclass(frozen=True)
+class SurfaceLines:
+    """Straight lines along the outer surface at rest, as a torsion mode
+    turns them: at each node plane, the angle each line has turned through
+    per unit of the shape (u_theta / R of the outer nodes there)."""
+
+    z: np.ndarray  # (P,) mean z of each node plane, m
+    angle: np.ndarray  # (L,) angle of each line at rest about the axis, rad (atan2(y, x))
+    turn: np.ndarray  # (P, L) u_theta / R at each plane and line, rad per unit of the shape
+    radius: float  # outer radius, m
+    centre: np.ndarray  # (2,) x, y of the axis
+    across: int  # the direction drawn upwards (SideView.across)
+    scale: float  # the largest turn drawn is TWIST_DRAWN_RAD
+
+
+def surface_lines(results: Results, shape: np.ndarray, view: SideView) -> SurfaceLines:
+    """The surface lines of ``shape`` on the side facing the viewer, who
+    looks along the transverse axis that is not ``view.across``."""
+    nodes = results.nodes
+    centre = (nodes[:, :2].min(axis=0) + nodes[:, :2].max(axis=0)) / 2
+    x, y = (nodes[:, :2] - centre).T
+    radius, theta = np.hypot(x, y), np.arctan2(y, x)
+    outer = radius >= (1 - 1e-3) * radius.max()
+    u_theta = -np.sin(theta) * shape[:, 0] + np.cos(theta) * shape[:, 1]
+    facing = 0.0 if view.across == 1 else np.pi / 2  # the line of sight's angle: x or y towards the viewer
+    angle = facing + np.linspace(-SURFACE_LINE_SPREAD_RAD, SURFACE_LINE_SPREAD_RAD, SURFACE_LINES)
+    r_out = float(radius[outer].mean())
+    z, turn = [], []
+    for plane in range(view.n_planes):
+        ring = np.flatnonzero(outer & (view.plane == plane))
+        if len(ring) < 3:
+            continue
+        z.append(float(nodes[ring, 2].mean()))
+        turn.append(np.interp(angle, theta[ring], u_theta[ring] / r_out, period=2 * np.pi))
+    turn = np.array(turn)
+    largest = float(np.abs(turn).max()) if turn.size else 0.0
+    return SurfaceLines(z=np.array(z), angle=angle, turn=turn, radius=r_out, centre=centre,
+                        across=view.across, scale=TWIST_DRAWN_RAD / largest if largest > 0 else 0.0)
+
+
+def surface_line_heights(lines: SurfaceLines, amplitude: float) -> np.ndarray:
+    """(P, L) the height of each line at each plane, in the side view's
+    upward direction (m), turned by amplitude * scale * turn."""
+    turned = lines.angle[None, :] + amplitude * lines.scale * lines.turn
+    along = np.cos(turned) if lines.across == 0 else np.sin(turned)
+    return lines.centre[lines.across] + lines.radius * along
+
+
+def draw_surface_lines(axes, lines: SurfaceLines, amplitude: float, unit: float = 1.0, label: str | None = None):
+    """The surface lines at ``amplitude`` of the swing, coloured by the
+    signed turn (red one way, blue the other; grey at rest): the lines twist
+    one way at +1 and the other way at -1. Heights in metres times ``unit``."""
+    from matplotlib.collections import LineCollection
+
+    heights = unit * surface_line_heights(lines, amplitude)
+    segments, turns = [], []
+    for k in range(len(lines.angle)):
+        points = np.column_stack([lines.z, heights[:, k]])
+        segments += [points[i:i + 2] for i in range(len(points) - 1)]
+        turns += list(amplitude * (lines.turn[:-1, k] + lines.turn[1:, k]) / 2)
+    largest = float(np.abs(lines.turn).max()) or 1.0
+    collection = LineCollection(segments, cmap="coolwarm", norm=_symmetric_norm(largest), linewidths=1.3,
+                                label=label, zorder=3)
+    collection.set_array(np.array(turns))
+    axes.add_collection(collection)
+    return collection
+
+
+def _symmetric_norm(largest: float):
+    from matplotlib.colors import Normalize
+
+    return Normalize(vmin=-largest, vmax=largest)
 
 
 def outline(results: Results, shape: np.ndarray, view: SideView, amplitude: float):
@@ -84,6 +174,8 @@ def _draw_frame(axes, results: Results, shape: np.ndarray, view: SideView, ampli
     axes.fill_between(rest_z, rest_low, rest_high, color="0.85", lw=0)
     axes.fill_between(z, low, high, color="C0", alpha=0.85, lw=0)
     axes.plot(z, (low + high) / 2, color="C3", lw=1.0)  # the section centres
+    if _is_torsion(results, view):  # a turn does not show in the outline: the surface lines do
+        draw_surface_lines(axes, surface_lines(results, shape, view), amplitude)
     axes.set_xlim(limits[0], limits[1])
     axes.set_ylim(limits[2], limits[3])
     axes.set_aspect("equal")
@@ -126,10 +218,15 @@ def frame_strip_figure(results: Results, index: int, amplitudes: tuple[float, ..
         axes.tick_params(labelbottom=axes is rows[-1])
     rows[-1].set_xlabel("z (m)")
     name = results.case_name or results.path.parent.name
+    turned = ""
+    if _is_torsion(results, view):
+        turned = (f"\nsurface lines turned x{surface_lines(results, shape, view).scale:.3g} (largest "
+                  f"{np.degrees(TWIST_DRAWN_RAD):.0f}°), red and blue: u_θ one way and the other")
     figure.suptitle(f"{name} — {results.label(index)}\nside view, {'xy'[view.across]} up, "
                     f"displacement x{view.scale:.3g} (largest = {_drawn_fraction(results, shape, view):.0%} "
-                    "of the model's length)", fontsize=10)
-    figure.subplots_adjust(left=0.05, right=0.95, top=1 - 70 / size_px[1], bottom=45 / size_px[1])
+                    f"of the model's length){turned}", fontsize=10)
+    title_px = 70 + (18 if turned else 0)  # a third line for a torsion mode's surface lines
+    figure.subplots_adjust(left=0.05, right=0.95, top=1 - title_px / size_px[1], bottom=45 / size_px[1])
     return figure
 
 

@@ -39,6 +39,8 @@ DEFAULT_FRAMES = 12
 GIF_FRAME_MS = 100
 #: The undeformed roll, drawn faintly behind the warped one.
 UNDEFORMED_OPACITY = 0.15
+#: Every text of the picture (labels, scalar bar, orientation axes) on its white background.
+DARK_TEXT = (0.1, 0.1, 0.1)
 #: The side view looks down on the plane of motion by atan(0.2) = 11 degrees:
 #: enough to see the roll is round, little enough to keep the deflection true.
 CAMERA_ELEVATION = 0.2
@@ -131,6 +133,9 @@ def build_scene(reader, mode: int, scale: float | None, size: tuple[int, int], l
     view.ViewTime = mode
     view.OrientationAxesVisibility = 1
     view.Background = [1.0, 1.0, 1.0]
+    # The orientation axes' X, Y, Z are white by default: dark on the white background.
+    view.OrientationAxesLabelColor = list(DARK_TEXT)
+    view.OrientationAxesOutlineColor = list(DARK_TEXT)
     try:  # ParaView 5.10+ takes the background from the colour palette unless told not to
         view.UseColorPaletteForBackground = 0
     except AttributeError:
@@ -153,7 +158,7 @@ def build_scene(reader, mode: int, scale: float | None, size: tuple[int, int], l
     bar = simple.GetScalarBar(lut, view)
     bar.Title = "displacement magnitude (mass-normalised)"
     bar.ComponentTitle = ""
-    bar.TitleColor = bar.LabelColor = [0.1, 0.1, 0.1]
+    bar.TitleColor = bar.LabelColor = list(DARK_TEXT)
     bar.Orientation = "Horizontal"
     bar.WindowLocation = "Lower Center"
     shown.SetScalarBarVisibility(view, True)
@@ -163,7 +168,7 @@ def build_scene(reader, mode: int, scale: float | None, size: tuple[int, int], l
     text_display.WindowLocation = "Upper Left Corner"
     text_display.Justification = "Left"
     text_display.FontSize = 14
-    text_display.Color = [0.1, 0.1, 0.1]
+    text_display.Color = list(DARK_TEXT)
 
     _side_camera(view, reader, scale, size)
     return view, warp, scale

@@ -275,10 +275,13 @@ def mode_figure(results: Results, index: int, scale: float | None = None, *,
         spans = support_spans(results.case)
         ring = section_ring(results.nodes, shape, where=where)
         _draw_side_view(side, side_view_data(results, index, shape, scale), spans)
-        _draw_section(figure.add_subplot(grid[0, 1]), ring)
+        if results.types[index - 1] == "torsion":  # its turn does not show in the outline
+            _draw_twist(side, results, index, shape)
+        section = figure.add_subplot(grid[0, 1])
+        _draw_section(section, ring)
         _draw_centreline(along, results, shape, centreline_curves(results.nodes, shape, where),
                          ring, spans)
-        _draw_legend(figure.add_subplot(grid[1, 1]), [side, along])
+        _draw_legend(figure.add_subplot(grid[1, 1]), [side, along, section])
         name = results.case_name or results.path.stem
         figure.suptitle(f"{name} — {results.label(index)}", fontsize=font + 3)
     return figure
@@ -318,6 +321,16 @@ def _draw_side_view(axes, view: SideViewData, spans) -> None:
     axes.grid(True, lw=0.3, alpha=0.5)
 
 
+def _draw_twist(axes, results: Results, index: int, shape: np.ndarray) -> None:
+    """A torsion mode's surface lines on the side view (coremodal.frames):
+    straight at rest, turned by the twist at a scale suited to rotations,
+    coloured by the signed u_θ."""
+    lines = frames.surface_lines(results, shape, frames.side_view(results, index, shape))
+    frames.draw_surface_lines(axes, lines, 1.0, unit=1e3,
+                              label=f"surface lines ×{lines.scale:.3g} (≤ {np.degrees(frames.TWIST_DRAWN_RAD):.0f}°), "
+                                    "colour ±u_θ")
+
+
 def _draw_centreline(axes, results: Results, shape: np.ndarray, curves: CentreLine,
                      ring: SectionRing, spans) -> None:
     """Section translation, axial displacement and twist versus z, divided by
@@ -340,15 +353,15 @@ def _draw_centreline(axes, results: Results, shape: np.ndarray, curves: CentreLi
     axes.set_ylim(-top, top)
     axes.xaxis.set_major_locator(MaxNLocator(nbins=SIDE_VIEW_Z_TICKS))
     axes.set_xlabel("z (m)")
-    axes.set_ylabel("plane mean / max |u|")
+    axes.set_ylabel("plane mean / max |u| [-]")
     axes.set_title("along the roll, at every node plane" if curves.planes else
                    "along the roll, in bins of z")
     axes.grid(True, lw=0.3, alpha=0.5)
 
 
 def _draw_legend(axes, sources) -> None:
-    """One legend for the side view and the curves, in the panel beside
-    the curves, where it covers nothing."""
+    """One legend for the side view, the curves and the cross-section, in
+    the panel beside the curves, where it covers nothing."""
     handles, labels = [], []
     for source in sources:
         for handle, label in zip(*source.get_legend_handles_labels()):
@@ -367,16 +380,17 @@ def _draw_section(axes, ring: SectionRing) -> None:
     mm = 1e3
     close = lambda a: mm * np.vstack([a, a[:1]])  # noqa: E731
     rest, moved = close(ring.xy - ring.centre), close(ring.deformed - ring.centre)
-    axes.plot(rest[:, 0], rest[:, 1], "--", color="0.5", lw=1.0, label="undeformed")
-    axes.plot(moved[:, 0], moved[:, 1], "-", color="C3", lw=1.8, label="deformed")
+    axes.plot(rest[:, 0], rest[:, 1], "--", color="0.5", lw=1.0, label="section: outer ring at rest")
+    axes.plot(moved[:, 0], moved[:, 1], "-", color="C3", lw=1.8, label="section: outer ring deformed")
     step = max(1, len(ring.theta) // 16)
     base = mm * (ring.xy[::step] - ring.centre)
     arrows = mm * ring.scale * ring.displacement[::step]
     axes.quiver(base[:, 0], base[:, 1], arrows[:, 0], arrows[:, 1], angles="xy", scale_units="xy",
-                scale=1.0, color="C0", alpha=0.8, width=0.005)
+                scale=1.0, color="C0", alpha=0.8, width=0.005, label="section: node displacement")
     # A spoke to the first node shows a rotation of the section (torsion).
-    axes.plot([0, rest[0, 0]], [0, rest[0, 1]], "--", color="0.5", lw=0.8)
-    axes.plot([0, moved[0, 0]], [0, moved[0, 1]], "-", color="C3", lw=1.0)
+    axes.plot([0, rest[0, 0]], [0, rest[0, 1]], "--", color="0.5", lw=0.8, label="section: spoke at rest")
+    axes.plot([0, moved[0, 0]], [0, moved[0, 1]], "-", color="C3", lw=1.0,
+              label="section: spoke moved (turns with torsion)")
     axes.plot([0], [0], "+", color="0.3")
     limit = 1.4 * mm * ring.radius
     axes.set_xlim(-limit, limit)
@@ -389,4 +403,4 @@ def _draw_section(axes, ring: SectionRing) -> None:
     # A ring that hardly moves in its plane (an axial mode's breathing) says so.
     share = "" if ring.in_plane_share > 0.5 else f"\nin-plane motion: {ring.in_plane_share:.0%} of the largest"
     axes.set_title(f"cross-section at z = {ring.z:.3g} m, ×{ring.scale:.3g}{share}")
-    axes.legend(loc="upper right", framealpha=0.8)
+    # Its entries are in the shared legend beside the curves (_draw_legend): none on the ring.

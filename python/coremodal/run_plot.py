@@ -80,7 +80,7 @@ def spectrum_figure(results: Results, size_px: tuple[int, int] = SPECTRUM_SIZE_P
         colour = TYPE_COLOURS.get(kind, "k")
         axes.vlines(index[take], 0.0, results.frequencies_hz[take], colors=colour, lw=1.2)
         axes.plot(index[take], results.frequencies_hz[take], "o", color=colour, label=kind)
-    axes.set_xlabel("mode")
+    axes.set_xlabel("mode number [-]")
     axes.set_ylabel("frequency (Hz)")
     axes.set_xlim(0.3, results.n_modes + 0.7)
     axes.set_ylim(bottom=0.0)

@@ -37,6 +37,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from .key_names import human_name, written_unit
+from .labels import legend_outside, separate
 
 #: Picture size in pixels at DPI.
 SIZE_PX = (1100, 750)
@@ -156,7 +157,9 @@ def axis_label(p: Parameter) -> str:
     """"roll width [m]": the parameter's human name and the unit its values
     were written in (coremodal.key_names)."""
     unit = p.shown_unit[0]
-    return f"{p.human_name} [{unit}]" if unit else p.human_name
+    if not p.numeric:
+        return p.human_name  # names, not numbers
+    return f"{p.human_name} [{unit or '-'}]"  # [-]: a ratio
 
 
 def change_diameters(diameter: np.ndarray, v_safe: np.ndarray, web_speed: float) -> list[float]:
@@ -190,7 +193,8 @@ def _group_label(study: Study, key: tuple, leave_out: set[str]) -> str:
 
 
 def _new_figure(rows: int = 1, cols: int = 1) -> tuple[Figure, Any]:
-    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI)
+    # Constrained layout: the legends beside the axes get their room.
+    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI, layout="constrained")
     FigureCanvasAgg(figure)
     axes = figure.subplots(rows, cols, squeeze=False)
     return figure, axes
@@ -244,13 +248,12 @@ def plot_tracked_modes(study: Study, out: Path) -> Path | None:
         ax.set_title(title or "tracked modes", fontsize=9)
         ax.grid(True, alpha=0.3)
         if len(elastic) <= MAX_LEGEND:
-            ax.legend(fontsize=6, loc="best")
+            legend_outside(ax, fontsize=6)
     for j in range(len(keys), rows_n * cols):
         axes[j // cols][j % cols].set_visible(False)
     note = "" if len(panels) <= MAX_PANELS else f" (first {MAX_PANELS} of {len(panels)} combinations)"
     figure.suptitle(f"{study.case_name}: modes tracked by MAC; red rings: ambiguous steps{note}",
                     fontsize=10)
-    figure.tight_layout()
     path = out / f"modes_vs_{file_stem(x_par.name)}.png"
     figure.savefig(path)
     return path
@@ -279,9 +282,8 @@ def plot_point_value(study: Study, out: Path, column: str, name: str, ylabel: st
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
         if 1 < len(curves) <= MAX_LEGEND:
-            ax.legend(fontsize=7)
+            legend_outside(ax, fontsize=7)
         ax.set_title(f"{study.case_name}: {ylabel} against {p.human_name}", fontsize=10)
-        figure.tight_layout()
         path = out / f"{name}_vs_{file_stem(p.name)}.png"
         figure.savefig(path)
         paths.append(path)
@@ -301,6 +303,7 @@ def plot_safe_speed(study: Study, out: Path) -> Path | None:
     figure, axes = _new_figure()
     ax = axes[0][0]
     web = study.web_speed_m_s
+    changes = []
     for key, rs in curves.items():
         d = np.array([number(r["diameter_m"]) for r in rs]) * 1e3
         v = np.array([number(r["v_safe_m_s"]) for r in rs])
@@ -310,8 +313,9 @@ def plot_safe_speed(study: Study, out: Path) -> Path | None:
         if web is not None:
             for dc in change_diameters(d, v, web):
                 ax.plot([dc], [web], marker="v", markersize=10, color=line.get_color())
-                ax.annotate(f"change at {dc:.0f} mm", (dc, web), textcoords="offset points", xytext=(4, 8),
-                            fontsize=8, color=line.get_color(), rotation=45)
+                # Level text, moved clear of the other labels (coremodal.labels.separate).
+                changes.append(ax.annotate(f"change at {dc:.0f} mm", (dc, web), textcoords="offset points",
+                                           xytext=(4, 8), fontsize=8, color=line.get_color()))
     if web is not None:
         ax.axhline(web, color="black", linestyle="--", linewidth=1)
         ax.annotate(f"web speed {web:g} m/s ({web * 60:.0f} m/min)", (0.01, web), xycoords=("axes fraction", "data"),
@@ -319,13 +323,13 @@ def plot_safe_speed(study: Study, out: Path) -> Path | None:
     ax.set_xlabel("rest roll diameter D [mm]")
     ax.set_ylabel("safe web speed v_safe [m/s]")
     secondary = ax.secondary_yaxis("right", functions=(lambda v: v * 60, lambda v: v / 60))
-    secondary.set_ylabel("[m/min]")
+    secondary.set_ylabel("web speed [m/min]")
     ax.grid(True, alpha=0.3)
     if len(curves) <= MAX_LEGEND:
-        ax.legend(fontsize=8, loc="lower right")
+        legend_outside(ax, fontsize=8)
     ax.set_title(f"{study.case_name}: safe web speed v_safe = {study.safe_factor:g} pi D f1 (I-5); "
                  "change the roll where its curve falls below the web speed", fontsize=9)
-    figure.tight_layout()
+    separate(figure, changes)
     path = out / "safe_speed.png"
     figure.savefig(path)
     return path
@@ -388,13 +392,12 @@ def plot_response_safe_speed(study: Study, out: Path) -> Path | None:
     ax.set_xlabel(xlabel)
     ax.set_ylabel("web speed [m/s]")
     secondary = ax.secondary_yaxis("right", functions=(lambda v: v * 60, lambda v: v / 60))
-    secondary.set_ylabel("[m/min]")
+    secondary.set_ylabel("web speed [m/min]")
     ax.grid(True, alpha=0.3)
     if 4 * len(curves) <= MAX_LEGEND:
-        ax.legend(fontsize=7, loc="best")
+        legend_outside(ax, fontsize=7)
     ax.set_title(f"{study.case_name}: safe web speed from the forced response (±{limit_mm:g} mm) "
                  "beside I-5 and König", fontsize=9)
-    figure.tight_layout()
     path = out / "response_safe_speed.png"
     figure.savefig(path)
     return path
@@ -429,12 +432,11 @@ def plot_calibration(study: Study, out: Path) -> Path | None:
                         label=f"stated error ±{100 * stated:g} %")
     ax.plot(k_fe[~held], k_fit[~held], "o", label="fitted points")
     ax.plot(k_fe[held], k_fit[held], "s", markerfacecolor="none", markersize=8, label="held-out points")
-    ax.set_xlabel("k from the FE run (f1 / f_I-7(k = 1))")
-    ax.set_ylabel("k from the fitted law")
+    ax.set_xlabel("k from the FE run, f1 / f_I-7(k = 1) [-]")
+    ax.set_ylabel("k from the fitted law [-]")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+    legend_outside(ax, fontsize=8)
     ax.set_title(f"{study.case_name}: calibrated chuck factor", fontsize=10)
-    figure.tight_layout()
     path = out / "calibration.png"
     figure.savefig(path)
     return path
@@ -449,7 +451,7 @@ def draw_all(folder: Path) -> list[Path]:
     tracked = plot_tracked_modes(study, out)
     paths += [tracked] if tracked else []
     paths += plot_point_value(study, out, "f1_hz", "f1", "first bending frequency f1 [Hz]")
-    paths += plot_point_value(study, out, "k", "k", "chuck factor k = f1 / f_I-7(k = 1)")
+    paths += plot_point_value(study, out, "k", "k", "chuck factor k = f1 / f_I-7(k = 1) [-]")
     for extra in (plot_safe_speed(study, out), plot_response_safe_speed(study, out), plot_calibration(study, out)):
         if extra:
             paths.append(extra)

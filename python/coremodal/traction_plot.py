@@ -19,6 +19,8 @@ from typing import Any
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from .labels import legend_outside
+
 #: Picture size in pixels at DPI.
 SIZE_PX = (1000, 800)
 DPI = 100
@@ -58,7 +60,7 @@ def draw(folder: Path) -> Path:
     folder = Path(folder)
     summary, rows = load(folder)
     v = column(rows, "web_speed_m_s")
-    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI)
+    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI, layout="constrained")
     FigureCanvasAgg(figure)
     top = figure.add_subplot(2, 1, 1)
     bottom = figure.add_subplot(2, 1, 2, sharex=top)
@@ -91,10 +93,11 @@ def draw(folder: Path) -> Path:
     top.set_ylabel("traction ΔT [N/m]")
     bottom.set_ylabel("effective friction f_e [-]")
     bottom.set_xlabel("web speed V_w [m/s]")
+    top.tick_params(labelbottom=False)  # the shared speed axis is read on the lower panel
     top.set_title(f"{summary['case']['name']}: web-to-roller traction (Rice & Gans), "
                   f"h_eff = {1e6 * summary['clearance']['effective_clearance_m']:.4g} µm")
-    top.legend(fontsize=8, loc="upper right")
-    bottom.legend(fontsize=8, loc="upper right")
+    legend_outside(top, fontsize=8)  # beside the curves, not on them (coremodal.labels)
+    legend_outside(bottom, fontsize=8)
     out = folder / "traction.png"
     figure.savefig(out)
     return out

@@ -10,7 +10,12 @@ and draws into that folder:
   f_k = k v / (pi d) dashed, the crossings ringed and numbered by harmonic,
   and the drum-frequency estimate (symmetric, antisymmetric) dotted;
 - ``response.png``: |X/F| at the drum's centre at each harmonic against the
-  roll diameter (log scale), the crossings' resonance values marked.
+  roll diameter (log scale), the crossings' resonance values marked on
+  their curves (each curve passes through the resonances solved at their own
+  diameters).
+
+Legends stand beside the axes and no label prints over another
+(coremodal.labels).
 """
 
 from __future__ import annotations
@@ -25,6 +30,8 @@ from typing import Any
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+
+from .labels import legend_outside, separate
 
 #: Picture size in pixels at DPI.
 SIZE_PX = (1100, 750)
@@ -87,7 +94,7 @@ def load_winder(folder: Path) -> WinderResults:
 
 
 def _figure() -> tuple[Figure, Any]:
-    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI)
+    figure = Figure(figsize=(SIZE_PX[0] / DPI, SIZE_PX[1] / DPI), dpi=DPI, layout="constrained")
     FigureCanvasAgg(figure)
     return figure, figure.add_subplot(1, 1, 1)
 
@@ -108,6 +115,7 @@ def draw_crossing_diagram(results: WinderResults, out: Path) -> Path:
             colour, width = STYLE.get(kind, ("grey", 0.8))
             ax.plot([d0, d1], [f0, f1], color=colour, linewidth=width, zorder=2 if kind == "drum" else 1)
     diameters = sorted({float(r["roll_diameter_m"]) for r in results.modes})
+    harmonic_labels = []
     d = np.linspace(diameters[0], diameters[-1], 200)
     for k in range(1, results.harmonics + 1):
         f = k * results.web_speed / (math.pi * d)
@@ -115,17 +123,22 @@ def draw_crossing_diagram(results: WinderResults, out: Path) -> Path:
         inside = np.nonzero(f <= results.max_frequency)[0]
         if inside.size:
             i = inside[0]
-            ax.annotate(f"{k}x", (1e3 * d[i], f[i]), textcoords="offset points", xytext=(4, 2), fontsize=9)
+            harmonic_labels.append(ax.annotate(f"{k}x", (1e3 * d[i], f[i]), textcoords="offset points",
+                                               xytext=(4, 2), fontsize=9))
     points = results.summary.get("points", [])
     # Dots, not lines: the estimate's drum root jumps where it veers with the rolls' bounce.
     for family, colour in (("symmetric", "navy"), ("antisymmetric", "c")):
         xs = [1e3 * p["roll_diameter_m"] for p in points]
         ys = [p["estimate"][family]["estimate_hz"] for p in points]
         ax.plot(xs, ys, ".", color=colour, markersize=3, label=f"drum estimate, {family}")
+    labels = []
     for c in results.crossings:
         x, y = 1e3 * float(c["roll_diameter_m"]), float(c["mode_frequency_hz"])
         ax.plot(x, y, "o", markersize=10, markerfacecolor="none", markeredgecolor="red", zorder=3)
-        ax.annotate(c["harmonic"], (x, y), textcoords="offset points", xytext=(6, -12), color="red", fontsize=9)
+        labels.append(ax.annotate(f"{c['harmonic']}x", (x, y), textcoords="offset points", xytext=(6, -12),
+                                  color="red", fontsize=9))
+    ax.plot([], [], "o", markersize=10, markerfacecolor="none", markeredgecolor="red",
+            label="crossing (k x: the harmonic)")
     for kind, (colour, width) in STYLE.items():
         ax.plot([], [], color=colour, linewidth=width, label=f"{kind}-dominated mode")
     ax.plot([], [], "k--", linewidth=0.9, label="roll rotation harmonics k v / (pi d)")
@@ -135,7 +148,8 @@ def draw_crossing_diagram(results: WinderResults, out: Path) -> Path:
     ax.set_ylabel("frequency [Hz]")
     ax.set_title(f"{results.summary['case']['name']}: crossing diagram at {results.web_speed * 60:.0f} m/min")
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="upper right", fontsize=8)
+    legend_outside(ax, fontsize=8)
+    separate(figure, harmonic_labels + labels)
     path = out / "crossing_diagram.png"
     figure.savefig(path)
     return path
@@ -144,9 +158,15 @@ def draw_crossing_diagram(results: WinderResults, out: Path) -> Path:
 def draw_response(results: WinderResults, out: Path) -> Path:
     figure, ax = _figure()
     for k in range(1, results.harmonics + 1):
-        rows = [r for r in results.response if int(r["harmonic"]) == k]
-        ax.semilogy([1e3 * float(r["roll_diameter_m"]) for r in rows], [float(r["x_over_f_m_per_n"]) for r in rows],
-                    label=f"harmonic {k}")
+        # The sweep's diameters and each resonance of this harmonic at its own
+        # diameter (crossings.csv, solved there): the curve reaches its peaks,
+        # and the resonance markers lie on it.
+        points = [(float(r["roll_diameter_m"]), float(r["x_over_f_m_per_n"])) for r in results.response
+                  if int(r["harmonic"]) == k]
+        points += [(float(c["roll_diameter_m"]), float(c["x_over_f_m_per_n"])) for c in results.crossings
+                   if int(c["harmonic"]) == k]
+        points.sort()
+        ax.semilogy([1e3 * d for d, _ in points], [x for _, x in points], label=f"harmonic {k}")
     for c in results.crossings:
         ax.semilogy(1e3 * float(c["roll_diameter_m"]), float(c["x_over_f_m_per_n"]), "rv", markersize=7)
     ax.semilogy([], [], "rv", label="resonance at a crossing")
@@ -155,7 +175,7 @@ def draw_response(results: WinderResults, out: Path) -> Path:
     ax.set_ylabel(f"|X/F| at the {sweep['response_drum']} drum's centre, {sweep['response_direction']} [m/N]")
     ax.set_title("response to each roll rotation harmonic as the rolls grow")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    legend_outside(ax, fontsize=8)
     path = out / "response.png"
     figure.savefig(path)
     return path

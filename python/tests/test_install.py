@@ -1,5 +1,6 @@
 """Installing: `pip install ./python` (pyproject.toml, no network) gives an
-importable package, and `cmake --install` gives a program that runs outside
+importable package and, in a venv as README.md says, the coremodal-plot
+command; and `cmake --install` gives a program that runs outside
 the source tree and draws its pictures with the installed package."""
 
 from __future__ import annotations
@@ -53,6 +54,40 @@ def test_pip_installs_the_package_without_network(tmp_path: Path, modes_h5: Path
     where, text = used.stdout.splitlines()
     assert Path(where).is_relative_to(target)
     assert text.startswith("<coremodal run tiny: solid3d, 10 modes")
+
+
+def test_the_install_of_the_readme_gives_the_coremodal_plot_command(tmp_path: Path) -> None:
+    # README.md's recipe, as written: a venv that sees Debian's numpy, h5py
+    # and matplotlib, and pip without network or build isolation.
+    if subprocess.run([sys.executable, "-m", "venv", "--help"], capture_output=True).returncode != 0:
+        pytest.skip("the venv module is missing (apt install python3-venv)")
+    source = tmp_path / "python"
+    shutil.copytree(PYTHON_DIR, source, ignore=shutil.ignore_patterns("tests", "__pycache__", "build",
+                                                                       "*.egg-info"))
+    venv = tmp_path / "venv"
+    made = subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)],
+                          capture_output=True, text=True, timeout=INSTALL_TIMEOUT_S)
+    assert made.returncode == 0, made.stdout + made.stderr
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PIP_INDEX_URL")}
+    done = subprocess.run([str(venv / "bin" / "pip"), "install", "--no-deps", "--no-build-isolation",
+                           "--no-index", str(source)],
+                          capture_output=True, text=True, env=env, cwd=tmp_path, timeout=INSTALL_TIMEOUT_S)
+    assert done.returncode == 0, done.stdout + done.stderr
+    command = venv / "bin" / "coremodal-plot"
+    assert command.is_file()
+    version = subprocess.run([str(command), "--version"], capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert version.returncode == 0, version.stderr
+    assert version.stdout.strip() == f"coremodal-plot {coremodal.__version__}"
+    helped = subprocess.run([str(command), "--help"], capture_output=True, text=True, env=env, cwd=tmp_path)
+    assert helped.returncode == 0, helped.stderr
+    assert helped.stdout.startswith("usage: coremodal-plot")
+    for name in ("run-plot", "campbell-plot", "limits-plot", "study-plot"):
+        assert name in helped.stdout
+    # A usage error is argparse's exit 2, a folder it cannot read exit 1 with one line.
+    wrong = subprocess.run([str(command), "campbell-plot", str(tmp_path / "nowhere")], capture_output=True,
+                           text=True, env=env, cwd=tmp_path)
+    assert wrong.returncode == 1 and wrong.stderr.startswith("coremodal: error: "), wrong.stderr
+    assert subprocess.run([str(command), "no-such-command"], capture_output=True, env=env).returncode == 2
 
 
 def test_cmake_install_gives_a_program_that_draws_with_the_installed_package(tmp_path: Path) -> None:

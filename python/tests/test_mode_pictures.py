@@ -157,3 +157,54 @@ def test_the_mode_figure_shades_chucks_expanding_elements_and_bearings(
     labels = [t.get_text() for a in figure.axes if a.get_legend() for t in a.get_legend().get_texts()]
     for kind in ("chuck body", "expanding element", "bearing"):
         assert kind in labels
+
+
+def twisted_tube() -> tuple[np.ndarray, np.ndarray]:
+    """The graded tube in its first torsion mode: every section turns
+    rigidly by phi(z) = sin(pi z / L) (per unit of the shape)."""
+    nodes = graded_tube()
+    phi = np.sin(np.pi * nodes[:, 2] / LENGTH)
+    return nodes, np.column_stack([-nodes[:, 1] * phi, nodes[:, 0] * phi, np.zeros(len(nodes))])
+
+
+def test_a_torsion_mode_is_drawn_as_surface_lines_that_turn_one_way_then_the_other() -> None:
+    from matplotlib.collections import LineCollection
+    from matplotlib.figure import Figure
+
+    from coremodal import frames
+
+    nodes, shape = twisted_tube()
+    # A thin-walled torsion's warp scale would turn the lines by a sliver: the lines have their own scale.
+    fake = SimpleNamespace(nodes=nodes, warp_scales=np.array([1e-3]), types=["torsion"])
+    view = frames.side_view(fake, 1, shape)
+    lines = frames.surface_lines(fake, shape, view)
+    # u_theta / R of a section turned rigidly by phi is phi, at every line.
+    np.testing.assert_allclose(lines.turn, np.sin(np.pi * lines.z / LENGTH)[:, None] * np.ones(frames.SURFACE_LINES),
+                               atol=1e-12)
+    assert lines.scale * np.abs(lines.turn).max() == pytest.approx(np.radians(20.0))
+    rest, plus, minus = (frames.surface_line_heights(lines, a) for a in (0.0, 1.0, -1.0))
+    assert np.ptp(rest, axis=0) == pytest.approx(np.zeros(frames.SURFACE_LINES), abs=1e-12)  # straight at rest
+    middle = int(np.argmax(np.abs(lines.turn[:, 0])))
+    # At the plane that turns most, each line has turned by +-20 degrees: the +1 and -1 frames differ.
+    up = 0 if view.across == 0 else 1
+    angle_plus = lines.angle + np.radians(20.0)
+    expected = lines.centre[up] + lines.radius * (np.cos(angle_plus) if up == 0 else np.sin(angle_plus))
+    np.testing.assert_allclose(plus[middle], expected, rtol=1e-9)
+    assert np.abs(plus[middle] - minus[middle]).max() > 0.1 * lines.radius
+    # The frames draw them, coloured by the signed turn; a bending mode's do not.
+    for types, drawn in ((["torsion"], True), (["bending"], False)):
+        axes = Figure().add_subplot()
+        fake.types = types
+        frames._draw_frame(axes, fake, shape, view, -1.0, frames._limits(fake, shape, view))
+        collections = [c for c in axes.collections if isinstance(c, LineCollection)]
+        assert bool(collections) == drawn
+        if drawn:
+            assert collections[0].get_array().max() <= 0 < -collections[0].get_array().min()
+
+
+def test_the_mode_picture_of_a_torsion_mode_names_its_surface_lines(results: coremodal.Results) -> None:
+    types = list(results.types)
+    types[6] = "torsion"  # mode 7's picture drawn as a torsion mode's
+    figure = mode_figure(dataclasses.replace(results, types=types), 7, size_px=(800, 600))
+    labels = [t.get_text() for a in figure.axes if a.get_legend() for t in a.get_legend().get_texts()]
+    assert any(label.startswith("surface lines ×") and "(≤ 20°), colour ±u_θ" in label for label in labels)

@@ -77,6 +77,18 @@ def test_the_rendered_mode_is_a_picture_not_a_blank(rendered: tuple[Path, str]) 
     assert drawn > 0.05, f"only {drawn:.1%} of the pixels are drawn"
 
 
+def test_the_orientation_axes_are_labelled_dark_on_white(rendered: tuple[Path, str]) -> None:
+    import matplotlib.image
+
+    out, _ = rendered
+    image = (matplotlib.image.imread(out / "mode_07.png")[:, :, :3] * 255).round().astype(int)
+    corner = image[-100:, :100]  # the orientation axes, lower left
+    # Their X, Y, Z: grey to black pixels (the axes themselves are red, yellow, green).
+    # ParaView's default labels are white on the white background: 3 such pixels there, 25 drawn dark.
+    grey = (np.ptp(corner, axis=2) < 40) & (corner.max(axis=2) < 170)
+    assert grey.sum() > 12, f"{grey.sum()} dark pixels in the orientation axes' corner"
+
+
 def test_the_animation_frames_differ_and_join_into_a_gif(rendered: tuple[Path, str]) -> None:
     import matplotlib.image
 

@@ -124,7 +124,7 @@ def test_xdmf_is_a_temporal_collection_pointing_at_existing_datasets(
         assert int(topology.get("NumberOfElements")) == results.n_cells
         assert grid.get("Name").startswith(f"mode_{index:02d}_")
         point = {a.get("Name") for a in grid.findall("Attribute") if a.get("Center") == "Node"}
-        assert point == {"displacement", "u_r", "u_theta", "u_z"}
+        assert point == {"displacement", "display_displacement", "u_r", "u_theta", "u_z"}
         fields = {a.get("Name"): a.find("DataItem").text.split()
                   for a in grid.findall("Attribute") if a.get("Center") == "Grid"}
         i = index - 1
@@ -134,6 +134,12 @@ def test_xdmf_is_a_temporal_collection_pointing_at_existing_datasets(
         assert "".join(chr(int(c)) for c in fields["type"]) == results.types[i]
         assert float(fields["warp_scale"][0]) == pytest.approx(results.warp_scales[i], rel=1e-15)
 
+    # Play in ParaView at scale 1: the display array is the shape times its warp scale.
+    with h5py.File(modes_h5, "r") as f:
+        for index in range(1, results.n_modes + 1):
+            np.testing.assert_allclose(f[f"modes/display/mode_{index:04d}"][()],
+                                       results.warp_scales[index - 1] * results.shape(index), rtol=1e-6,
+                                       atol=1e-6 * results.warp_scales[index - 1] * np.abs(results.shape(index)).max())
     with h5py.File(modes_h5, "r") as f:
         for item in root.iter("DataItem"):
             if item.get("Format") != "HDF":

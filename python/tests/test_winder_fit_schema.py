@@ -1,9 +1,10 @@
-"""`coremodal schema --winder` and `coremodal schema --fit`: the JSON Schemas
-of the two input files the case schema does not describe, a two-drum winder
-file ([winder], src/winder/winder_scene.cpp) and a fit's measurements file
-(parameters, [[measurement]], src/analyses/fit/measurements.cpp). Every
+"""`coremodal schema --winder`, `--fit` and `--selection`: the JSON Schemas
+of the three input files the case schema does not describe, a two-drum winder
+file ([winder], src/winder/winder_scene.cpp), a fit's measurements file
+(parameters, [[measurement]], src/analyses/fit/measurements.cpp) and a
+core-selection file ([selection], src/selection/selection_scene.cpp). Every
 shipped file of each kind validates against its own schema (case 11, the fit
-files of cases/validation; the other files there against the case schema),
+files of cases/validation, case 18; the other files against the case schema),
 and broken copies do not.
 
 Needs COREMODAL_BIN (the program) and the jsonschema package; skipped
@@ -33,6 +34,8 @@ def load(path: Path) -> dict:
 
 
 def kind_of(document: dict) -> str:
+    if "selection" in document:
+        return "selection"
     if "winder" in document:
         return "winder"
     if "measurement" in document:
@@ -47,7 +50,7 @@ def schema_of(kind: str) -> dict:
     binary = os.environ.get("COREMODAL_BIN")
     if not binary:
         pytest.skip("COREMODAL_BIN is not set: run through ctest (python_pytest)")
-    flag = {"case": [], "winder": ["--winder"], "fit": ["--fit"]}[kind]
+    flag = {"case": [], "winder": ["--winder"], "fit": ["--fit"], "selection": ["--selection"]}[kind]
     done = subprocess.run([binary, "schema", *flag], capture_output=True, text=True, timeout=60)
     assert done.returncode == 0, done.stderr
     schema = json.loads(done.stdout)
@@ -57,7 +60,7 @@ def schema_of(kind: str) -> dict:
 
 @pytest.fixture(scope="module")
 def validators() -> dict:
-    return {kind: jsonschema.Draft7Validator(schema_of(kind)) for kind in ("case", "winder", "fit")}
+    return {kind: jsonschema.Draft7Validator(schema_of(kind)) for kind in ("case", "winder", "fit", "selection")}
 
 
 def errors(validator, document: dict) -> list[str]:
@@ -67,18 +70,18 @@ def errors(validator, document: dict) -> list[str]:
 def test_there_are_files_of_every_kind() -> None:
     kinds = [kind_of(load(p)) for p in INPUTS]
     assert kinds.count("winder") >= 1 and kinds.count("fit") >= 2 and kinds.count("case") >= 10
+    assert kinds.count("selection") >= 1
 
 
 @pytest.mark.parametrize("path", INPUTS, ids=lambda p: str(p.relative_to(REPO)))
 def test_every_shipped_input_validates_against_the_schema_of_its_kind(validators, path: Path) -> None:
     document = load(path)
-    if "selection" in document:
-        pytest.skip("a core-selection file has no schema yet (docs/case-files.md, \"Editor support\")")
     assert errors(validators[kind_of(document)], document) == []
 
 
 WINDER = REPO / "cases" / "11-two-drum-winder.toml"
 FIT = REPO / "cases" / "validation" / "ilomaki-table1.toml"
+SELECTION = REPO / "cases" / "18-core-selection.toml"
 
 
 def changed(path: Path, change) -> dict:
@@ -103,6 +106,18 @@ BROKEN = [
     ("fit", FIT, lambda d: d["measurement"][0].pop("case"), "'case' is a required property"),
     ("fit", FIT, lambda d: d["measurement"][0].update(model="solid"), "solid"),
     ("fit", FIT, lambda d: d["parameters"].append({"key": "core.length", "minimum": "1 m"}), "minimum"),
+    ("selection", SELECTION, lambda d: d["selection"].update(paper_densty="750 kg/m^3"), "paper_densty"),
+    ("selection", SELECTION, lambda d: d["selection"].pop("paper_density"), "'paper_density' is a required"),
+    ("selection", SELECTION, lambda d: d["selection"]["core"][0].update(outer_diameter="102 kg"), "outer_diameter"),
+    ("selection", SELECTION, lambda d: d["selection"]["core"][0].update(density=-700), "density"),
+    ("selection", SELECTION, lambda d: d["selection"]["core"][2].update(durability="x.csv"), "valid under"),
+    ("selection", SELECTION, lambda d: d["selection"]["core"][2].pop("s_log"), "valid under"),
+    ("selection", SELECTION, lambda d: d["selection"]["core"][2].update(b0=45000), "b0"),
+    ("selection", SELECTION, lambda d: d["selection"]["stand"][0].update(winder="center"), "center"),
+    ("selection", SELECTION, lambda d: d["selection"]["stand"][0].update(chuck_factor=1.2), "chuck_factor"),
+    ("selection", SELECTION, lambda d: d["selection"]["stand"][1].update(cores=[]), "cores"),
+    ("selection", SELECTION, lambda d: d["selection"]["reel"][0].update(widht="1.6 m"), "widht"),
+    ("selection", SELECTION, lambda d: d["selection"].update(core=[]), "core"),
 ]
 
 
@@ -118,3 +133,6 @@ def test_a_winder_file_is_not_a_case_file_and_a_fit_file_neither(validators) -> 
     assert errors(validators["case"], load(WINDER))
     assert errors(validators["case"], load(FIT))
     assert errors(validators["winder"], load(FIT))
+    assert errors(validators["case"], load(SELECTION))
+    assert errors(validators["selection"], load(WINDER))
+    assert errors(validators["selection"], load(FIT))

@@ -1,7 +1,9 @@
-// `coremodal schema [--winder | --fit]`: print the JSON Schema (draft-07) of
-// the case file, generated from the key table (scene/case_json_schema.hpp),
-// of a two-drum winder file (winder/winder_scene.hpp) or of a fit's
-// measurements file (analyses/fit/measurements.hpp), for editors with TOML
+// `coremodal schema [--winder | --fit | --selection]`: print the JSON Schema
+// (draft-07) of the case file, generated from the key table
+// (scene/case_json_schema.hpp), of a two-drum winder file
+// (winder/winder_scene.hpp), of a fit's measurements file
+// (analyses/fit/measurements.hpp) or of a core-selection file
+// (selection/selection_scene.hpp), for editors with TOML
 // support; docs/case-files.md, "Editor support: the JSON Schema", says how
 // to use it. Stdout, or the file named by --output (that file only), under
 // the rules of results folders (output/results_folder.hpp): an earlier
@@ -13,6 +15,7 @@
 #include "common/error.hpp"
 #include "analyses/fit/measurements.hpp"
 #include "scene/case_json_schema.hpp"
+#include "selection/selection_scene.hpp"
 #include "winder/winder_scene.hpp"
 
 #include <fcntl.h>
@@ -29,6 +32,7 @@
 #include <iterator>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace coremodal {
 namespace {
@@ -40,7 +44,7 @@ namespace fs = std::filesystem;
 }
 
 // A schema coremodal wrote: JSON with a "$schema" and a title that starts
-// "coremodal " (the case file's, the winder file's and the fit file's).
+// "coremodal " (the case file's, the winder, fit and selection files').
 bool written_by_coremodal(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
@@ -89,20 +93,27 @@ void write_complete(const fs::path& path, const std::string& text) {
 
 struct SchemaOptions {
     std::string output;
-    bool winder = false, fit = false;
+    bool winder = false, fit = false, selection = false;
 };
+
+// Which file the schema describes, in words, and the schema.
+std::pair<std::string, std::string> chosen_schema(const SchemaOptions& o) {
+    if (o.winder) return {"winder file", winder_json_schema()};
+    if (o.fit) return {"measurements file", fit_json_schema()};
+    if (o.selection) return {"core-selection file", selection_json_schema()};
+    return {"case-file", case_json_schema()};
+}
 
 int print_schema(const SchemaOptions& o) {
     const std::string& output = o.output;
-    const std::string schema = o.winder ? winder_json_schema() : o.fit ? fit_json_schema() : case_json_schema();
+    const auto [what, schema] = chosen_schema(o);
     if (output.empty()) {
         std::cout << schema;
         return std::cout ? 0 : 1;
     }
     check_schema_target(output);
     write_complete(output, schema);
-    std::cout << "wrote the " << (o.winder ? "winder file" : o.fit ? "measurements file" : "case-file")
-              << " JSON Schema to " << output << "\n";
+    std::cout << "wrote the " << what << " JSON Schema to " << output << "\n";
     return 0;
 }
 
@@ -116,8 +127,12 @@ Command add_schema_command(CLI::App& app) {
                     "write it to this file instead of stdout (a new file, or one coremodal schema wrote before; "
                     "never another file or through a symbolic link)");
     CLI::Option* winder = cmd->add_flag("--winder", o->winder, "the schema of a two-drum winder file ([winder])");
-    cmd->add_flag("--fit", o->fit, "the schema of a fit's measurements file (parameters, [[measurement]])")
-        ->excludes(winder);
+    CLI::Option* fit =
+        cmd->add_flag("--fit", o->fit, "the schema of a fit's measurements file (parameters, [[measurement]])")
+            ->excludes(winder);
+    cmd->add_flag("--selection", o->selection, "the schema of a core-selection file ([selection], coremodal select)")
+        ->excludes(winder)
+        ->excludes(fit);
     return {cmd, [o] { return print_schema(*o); }, false};
 }
 

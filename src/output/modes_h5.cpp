@@ -349,6 +349,21 @@ void write_cylindrical(const Writer& w, hid_t modes_group, const Mesh& mesh,
     }
 }
 
+// Every mode times its warp scale (float32, (N, 3)): what ParaView warps by
+// at scale 1, so that Play steps through every mode drawn at a readable size
+// (a bending mode's largest displacement 10 % of the length) without the
+// scale being set mode by mode; /modes/shapes keeps the mass-normalised shape.
+void write_display(const Writer& w, hid_t modes_group, const Mesh& mesh, const std::vector<Mode>& modes) {
+    Handle display = w.group(modes_group, "display");
+    for (size_t k = 0; k < modes.size(); ++k) {
+        const std::string path = modes_h5_component_dataset("display", static_cast<int>(k) + 1);
+        const double scale = suggested_warp_scale(mesh, modes[k].shape, modes[k].label.type);
+        std::vector<float> scaled(modes[k].shape.size());
+        for (size_t i = 0; i < scaled.size(); ++i) scaled[i] = static_cast<float>(scale * modes[k].shape[i]);
+        w.dataset(display, path.substr(path.rfind('/') + 1), {scaled.size() / 3, 3}, scaled.data());
+    }
+}
+
 void write_modes(const Writer& w, hid_t file, const Mesh& mesh, const std::vector<Mode>& modes) {
     Handle group = w.group(file, "modes");
     std::vector<double> frequency, eigenvalue, residual, share, effective_mass, warp_scale;
@@ -383,6 +398,7 @@ void write_modes(const Writer& w, hid_t file, const Mesh& mesh, const std::vecto
         w.dataset(shapes, name, {modes[k].shape.size() / 3, 3}, modes[k].shape.data());
     }
     write_cylindrical(w, group, mesh, modes);
+    write_display(w, group, mesh, modes);
 }
 
 void write_file(const std::string& path, const Mesh& mesh, const std::vector<Mode>& modes,

@@ -1,5 +1,7 @@
 #include "output/results_folder.hpp"
 
+#include "output/report_html.hpp"
+
 #include "common/error.hpp"
 #include "common/signals.hpp"
 
@@ -593,6 +595,8 @@ std::string ResultsFolder::file(const std::string& name) const { return (partial
 void ResultsFolder::commit() {
     // Under unless_interrupted: an interrupt waits for the renames, or
     // stops them before the first (the partial folder is then removed).
+    // Every report.md goes out with its page one can send (output/report_html.hpp).
+    write_report_html(partial_);
     try {
         const std::vector<std::string> contents = listing(partial_);
         write_marker(partial_, &contents);  // what is coremodal's in the folder

@@ -206,6 +206,29 @@ void iso_section(std::ostream& out, const IsoFlexuralTest& t) {
     for (const std::string& n : t.notes) out << "Note: " << n << ".\n\n";
 }
 
+// The answers first (report.html shows this table at the top): f1, k, the
+// safe speeds and whether the mode count is proven; the sections below say
+// how each was found.
+void summary_section(std::ostream& out, const RunReport& r) {
+    const RollSpeeds speeds = report_speeds(r);
+    out << "## Summary\n\n| result | value |\n|---|---:|\n";
+    out << "| first bending frequency f1 (FE) | "
+        << (r.beam.fe_found() ? hz(r.beam.fe_first_bending_hz) + " Hz" : std::string("none found (see Beam theory)"))
+        << " |\n";
+    if (r.chuck && r.chuck->chuck_factor > 0)
+        out << "| chuck factor k = f1/f2 (FE) | " << formatted("%.4f", r.chuck->chuck_factor) << " |\n";
+    if (speeds.given()) {
+        for (const SafeSpeed& v : speeds.safe)
+            out << "| safe web speed, I-5 with safe = " << significant(v.safe) << " | " << speed(v.v_safe_m_s) << " |\n";
+        if (speeds.koenig) out << "| König's critical speed v_krit | " << speed(speeds.koenig->speed.v_krit_m_s) << " |\n";
+    } else {
+        out << "| safe web speed | not given: " << speeds.not_given << " |\n";
+    }
+    out << "| modes found | " << r.modes.modes.size() << ", "
+        << (r.modes.verification.complete ? "none missed" : "INCOMPLETE") << " (see Model and verification)"
+        << " |\n\n";
+}
+
 void speed_section(std::ostream& out, const RunReport& r) {
     const Scene& s = r.scene;
     const RollSpeeds speeds = report_speeds(r);
@@ -302,6 +325,7 @@ std::string run_report_markdown(const RunReport& r, const RunPictures& pictures)
     if (!r.scene.description.empty()) out << r.scene.description << "\n\n";
     out << "coremodal " COREMODAL_VERSION " run of `" << r.scene.source_file << "`; every number below is also in "
         << "summary.json, modes.csv and modes.h5.\n\n";
+    summary_section(out, r);
     scene_section(out, r.scene);
     model_section(out, r);
     mode_section(out, r);

@@ -109,7 +109,8 @@ void write_mesh_items(std::ostream& x, const std::string& h5, const Mesh& mesh) 
 }
 
 // One time step: mode `number` on the shared mesh, its displacement vector,
-// its cylindrical components and its numbers as field data.
+// the same scaled for display, its cylindrical components and its numbers
+// as field data.
 void write_mode_grid(std::ostream& x, const std::string& h5, const Mesh& mesh, const Mode& mode, int number,
                      int n_modes) {
     const std::string n_nodes = std::to_string(mesh.n_nodes());
@@ -124,6 +125,10 @@ void write_mode_grid(std::ostream& x, const std::string& h5, const Mesh& mesh, c
     x << "        <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
       << "          " << hdf_item(h5, modes_h5_shape_dataset(number), n_nodes + " 3", "Float", 8) << "\n"
       << "        </Attribute>\n";
+    // Scaled for display (modes.h5 /modes/display): Warp By Vector at scale 1.
+    x << "        <Attribute Name=\"display_displacement\" AttributeType=\"Vector\" Center=\"Node\">\n"
+      << "          " << hdf_item(h5, modes_h5_component_dataset("display", number), n_nodes + " 3", "Float", 4)
+      << "\n        </Attribute>\n";
     for (const char* component : {"u_r", "u_theta", "u_z"})
         x << "        <Attribute Name=\"" << component << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
           << "          " << hdf_item(h5, modes_h5_component_dataset(component, number), n_nodes, "Float", 4)

@@ -3,16 +3,20 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/join.hpp"
+#include "scene/case_json_schema.hpp"
 #include "scene/case_schema.hpp"  // did_you_mean_or_choices
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
 
+#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace coremodal {
 namespace {
@@ -315,6 +319,89 @@ private:
 };
 
 }  // namespace
+
+std::string selection_json_schema() {
+    using Json = nlohmann::ordered_json;
+    // A quantity as the reader takes it: a plain number in SI within
+    // (min, max], or a string with a unit of its dimension.
+    const auto quantity = [](Dimension d, double min, double max) {
+        Json number{{"type", "number"}, {"exclusiveMinimum", min}, {"maximum", max}};
+        Json out{{"anyOf", Json::array({number, Json{{"type", "string"}, {"pattern", quantity_pattern(d, false)}}})}};
+        if (d != Dimension::dimensionless) out["description"] = std::string("plain numbers in ") + si_unit(d);
+        return out;
+    };
+    const Json text{{"type", "string"}};
+    const Json length = quantity(Dimension::length, 0, kMaxDiameter);
+    const Json modulus = quantity(Dimension::pressure, 0, 1e11);
+    const Json density = quantity(Dimension::density, 0, 3000);
+    const Json speed = quantity(Dimension::speed, 0, kMaxSpeed);
+    const Json share = quantity(Dimension::dimensionless, 0, 1);
+    const Json weight{{"type", "string"},
+                      {"pattern", R"(^[+]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)? (N|kN|kg|t)$)"},
+                      {"description", "a weight with its unit: N, kN, kg or t, e.g. \"28 kN\""}};
+    const std::map<std::string_view, Json> types = {
+        {"name", text},
+        {"description", text},
+        {"failure_probability", quantity(Dimension::dimensionless, 0, 0.5)},
+        {"confidence", quantity(Dimension::dimensionless, 0.5, 1)},
+        {"cycles", quantity(Dimension::dimensionless, 0.5 - 1e-12, 1e9)},
+        {"paper_density", density},
+        {"rest_paper_modulus", modulus},
+        {"rest_paper_density", density},
+        {"inner_diameter", length},
+        {"outer_diameter", length},
+        {"flexural_modulus", modulus},
+        {"density", density},
+        {"price_per_m", quantity(Dimension::dimensionless, 0, 1e9)},
+        {"durability", Json{{"type", "string"}, {"description", "simulator results (CSV), relative to this file"}}},
+        {"b0", weight},
+        {"b1", quantity(Dimension::dimensionless, -10, 10)},
+        {"s_log", quantity(Dimension::dimensionless, 0, 2)},
+        {"test_chuck_length", quantity(Dimension::length, 0, kMaxWidth)},
+        {"chuck_length", quantity(Dimension::length, 0, kMaxChuck)},
+        {"li", quantity(Dimension::length, 0, kMaxChuck)},
+        {"chuck_factor", share},
+        {"web_speed", speed},
+        {"safe_factor", share},
+        {"winder", Json{{"enum", Json::array({"two-drum", "centre"})}}},
+        {"centre_winder_factor", share},
+        {"chuck_length_exponent", quantity(Dimension::dimensionless, -1e-12, 2)},
+        {"rest_roll_diameter", length},
+        {"roll_diameter", length},
+        {"cores", Json{{"type", "array"}, {"minItems", 1}, {"items", text}}},
+        {"stand", text},
+        {"width", quantity(Dimension::length, 0, kMaxWidth)},
+        {"diameter", length},
+    };
+    // A table of the reader's keys (its key lists above), so that the schema
+    // and the reader cannot disagree on which keys exist.
+    const auto table = [&](const std::vector<std::string_view>& keys, std::vector<std::string> required,
+                           std::map<std::string_view, Json> own = {}) {
+        Json properties = Json::object();
+        for (std::string_view k : keys) {
+            const auto& where = own.count(k) ? own : types;
+            if (!where.count(k)) throw std::logic_error("selection_json_schema: no type for key " + std::string(k));
+            properties[std::string(k)] = where.at(k);
+        }
+        return Json{{"type", "object"}, {"additionalProperties", false}, {"required", required}, {"properties", properties}};
+    };
+    const auto list_of = [](const Json& item, int min_items) {
+        return Json{{"type", "array"}, {"minItems", min_items}, {"items", item}};
+    };
+    Json core = table(kCoreKeys, {"name", "inner_diameter", "outer_diameter", "flexural_modulus", "density"});
+    // The durability: a data file, or the four numbers of a fit made elsewhere, not both.
+    core["oneOf"] = Json::array({Json{{"required", Json::array({"durability"})}},
+                                 Json{{"required", Json::array({"b0", "b1", "s_log", "test_chuck_length"})}}});
+    const Json selection = table(kSelectionKeys, {"paper_density", "rest_paper_modulus", "rest_paper_density", "core", "stand"},
+                                 {{"core", list_of(core, 1)},
+                                  {"stand", list_of(table(kStandKeys, {"name", "chuck_length", "chuck_factor",
+                                                                      "rest_roll_diameter", "roll_diameter"}), 1)},
+                                  {"reel", list_of(table(kReelKeys, {"stand", "width", "diameter"}), 0)}});
+    Json root = table(kTopKeys, {"selection"}, {{"selection", selection}});
+    root["$schema"] = kJsonSchemaDraft;
+    root["title"] = "coremodal core-selection file ([selection], docs/durability.md)";
+    return root.dump(2) + "\n";
+}
 
 SelectionScene read_selection_text(const std::string& text, const std::string& path) {
     const toml::table root = parse_toml_input(text, path, "a valid TOML core-selection file (docs/durability.md)");

@@ -96,4 +96,10 @@ struct SelectionScene {
 SelectionScene read_selection_file(const std::string& path);
 SelectionScene read_selection_text(const std::string& text, const std::string& path);
 
+// The JSON Schema (draft-07) of a core-selection file, for `coremodal schema
+// --selection` and editors: the reader's keys, their types, units and the
+// ranges of plain numbers; what it cannot say (a stand's cores among the
+// grades, a reel wider than its chucks) is the reader's.
+std::string selection_json_schema();
+
 }  // namespace coremodal

@@ -87,6 +87,12 @@ void check_file_matches(const std::string& path, const Mesh& mesh,
             CHECK(read<float>(file, dataset, H5T_NATIVE_FLOAT, {N}) ==
                   std::vector<float>(values->begin(), values->end()));
         }
+        // The display array: the shape times its warp scale, in float32, for ParaView at scale 1.
+        const std::string display = modes_h5_component_dataset("display", number);
+        check_file_type(file, display, H5T_IEEE_F32LE);
+        std::vector<float> scaled;
+        for (double u : modes[k].shape) scaled.push_back(static_cast<float>(warp_scale[k] * u));
+        CHECK(read<float>(file, display, H5T_NATIVE_FLOAT, {N, 3}) == scaled);
     }
 }
 

@@ -69,6 +69,19 @@ TEST_CASE("A free scene's report gives no speeds and says why there are no pictu
     CHECK(contains(md, "## Warnings\n\n- part 'chuck_left' is not held\n"));
 }
 
+TEST_CASE("The run report opens with the answers: f1, the speeds and the mode count", "[output][report]") {
+    RunReport r = free_tube();
+    r.modes.verification.complete = true;
+    const std::string md = run_report_markdown(r, RunPictures{});
+    // The first table of the report (report.html shows it first) is the summary.
+    CHECK(md.find("| result | value |") < md.find("| part | dimensions | material |"));
+    CHECK(contains(md, "| first bending frequency f1 (FE) | 200.0000 Hz |"));
+    CHECK(contains(md, "| safe web speed | not given: the scene is free–free"));
+    CHECK(contains(md, "| modes found | 5, none missed (see Model and verification) |"));
+    r.modes.verification.complete = false;
+    CHECK(contains(run_report_markdown(r, RunPictures{}), "| modes found | 5, INCOMPLETE"));
+}
+
 TEST_CASE("The report embeds the pictures it is given and lists the rigid comparison", "[output][report]") {
     RunReport r = free_tube();
     r.rigid_comparison = {{"bending", 1, 0, 2, 3, 190.0, 200.0}, {"torsion", 0, 0, 5, 0, 900.0, 0.0}};

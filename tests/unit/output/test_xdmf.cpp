@@ -124,15 +124,17 @@ TEST_CASE("write_modes_xdmf writes the modes as time steps pointing into modes.h
         CHECK_THAT(text, Catch::Contains("Name=\"mode_02_48.80Hz_bending_n1_m2\""));
         CHECK_THAT(text, Catch::Contains("Value=\"mode 2: 48.80 Hz, bending, n=1, m=2\""));
         CHECK_THAT(text, Catch::Contains("modes.h5:/modes/shapes/mode_0002"));
+        CHECK_THAT(text, Catch::Contains("Name=\"display_displacement\" AttributeType=\"Vector\"") &&
+                             Catch::Contains("modes.h5:/modes/display/mode_0002"));
         for (const char* component : {"u_r", "u_theta", "u_z"})
             CHECK_THAT(text, Catch::Contains(std::string("Name=\"") + component + "\"") &&
                                  Catch::Contains("modes.h5:" + modes_h5_component_dataset(component, 2)));
         // "bending" as character codes: b=98 e=101 n=110 d=100 i=105 n=110 g=103.
         CHECK_THAT(text, Catch::Contains(">98 101 110 100 105 110 103</DataItem>"));
 
-        // Every grid: part, displacement, u_r, u_theta, u_z and 6 field values.
+        // Every grid: part, displacement, display_displacement, u_r, u_theta, u_z and 6 field values.
         check_with_python(xdmf, "len(r.findall(\"./Domain/Grid/Grid\")) == 2 and "
-                                "all(len(g.findall(\"Attribute\")) == 11 for g in r.iter(\"Grid\") if g.find(\"Time\") is not None) and "
+                                "all(len(g.findall(\"Attribute\")) == 12 for g in r.iter(\"Grid\") if g.find(\"Time\") is not None) and "
                                 "[g.find(\"Time\").get(\"Value\") for g in r.findall(\"./Domain/Grid/Grid\")] == [\"1\", \"2\"]");
     }
 }
