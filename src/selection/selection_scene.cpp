@@ -366,6 +366,7 @@ std::string selection_json_schema() {
         {"winder", Json{{"enum", Json::array({"two-drum", "centre"})}}},
         {"centre_winder_factor", share},
         {"chuck_length_exponent", quantity(Dimension::dimensionless, -1e-12, 2)},
+        {"amplitude_limit", quantity(Dimension::length, 0, 0.1)},
         {"rest_roll_diameter", length},
         {"roll_diameter", length},
         {"cores", Json{{"type", "array"}, {"minItems", 1}, {"items", text}}},
