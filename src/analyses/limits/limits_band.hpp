@@ -15,29 +15,26 @@ namespace coremodal {
 
 // The critical web speeds of the Campbell sweep (m/s), lowest of each kind.
 struct CriticalSpeeds {
-  std::optional<double> order1_backward, order1_forward, order2;
+    std::optional<double> order1_backward, order1_forward, order2;
 };
 
 // The criteria from a forced response at one diameter and the critical
 // speeds, those scaled by `f1_ratio` (a band sample's f1 over the point's).
 // The web's slip on its idler (Criterion::traction) is appended by the
 // verdict: it does not depend on the roll.
-std::vector<CriterionSpeed> criteria_of(const ResponseResult &response,
-                                        const CriticalSpeeds &critical,
+std::vector<CriterionSpeed> criteria_of(const ResponseResult& response, const CriticalSpeeds& critical,
                                         double f1_ratio);
 
 // The index of the lowest limiting criterion given, or -1.
-int lowest_limiting(const std::vector<CriterionSpeed> &criteria);
+int lowest_limiting(const std::vector<CriterionSpeed>& criteria);
 
 // The case's response setup with the verdict's speeds at this diameter:
 // kResponsePoints from kRangeBottom to kRangeTop times pi Dp f1.
-ResponseSetup setup_for_range(const ResponseSetup &base, const Scene &at,
-                              double f1_estimate_hz);
+ResponseSetup setup_for_range(const ResponseSetup& base, const Scene& at, double f1_estimate_hz);
 
 // The uncertain inputs of this scene at its level, with their ranges and
 // sources, and why an input does not apply.
-std::vector<UncertainInput> uncertain_inputs(const Scene &scene,
-                                             const ResponseSetup &base);
+std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseSetup& base);
 
 // The ranges a fit narrows (docs/limits.md, "Narrowing the band"): a fitted
 // chuck contact stiffness (supports.*.normal_stiffness or
@@ -47,19 +44,15 @@ std::vector<UncertainInput> uncertain_inputs(const Scene &scene,
 // fitted values (FittedCase::calibrated_text): the ranges are factors about
 // them. Returns the inputs narrowed, in words for the output.
 constexpr double kFitSigmas = 2.0;
-std::vector<std::string> narrow_by_fit(std::vector<UncertainInput> &inputs,
-                                       const FitOutcome &fit,
-                                       const std::string &measurements_file);
+std::vector<std::string> narrow_by_fit(std::vector<UncertainInput>& inputs, const FitOutcome& fit,
+                                       const std::string& measurements_file);
 
 // Every applying input at both ends: the criteria's bands and the safe
 // speed's (each sample's own lowest limiting criterion) on `point`.
-void propagate_band(const Scene &scene, const ResponseSetup &base,
-                    const std::vector<UncertainInput> &inputs,
-                    LimitsPoint &point, int &n_solves);
+void propagate_band(const Scene& scene, const ResponseSetup& base, const std::vector<UncertainInput>& inputs,
+                    LimitsPoint& point, int& n_solves);
 
 // What the verdict assumed beyond the file, each with its source.
-std::vector<std::string> limits_assumptions(const Scene &scene,
-                                            bool case_response,
-                                            const ResponseSetup &base);
+std::vector<std::string> limits_assumptions(const Scene& scene, bool case_response, const ResponseSetup& base);
 
-} // namespace coremodal
+}  // namespace coremodal
