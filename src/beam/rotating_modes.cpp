@@ -359,7 +359,7 @@ std::optional<std::vector<PlaneCrossing>> plane_critical_speeds(const BeamNetwor
         return std::nullopt;
     const NetworkMatrices plane = std::move(assemble_problems(network, {xz}).front());
     const Eigen::SparseMatrix<double> G = plane_gyroscopic(network, plane);
-    const Eigen::MatrixXd K(plane.K), M(plane.M), Gd(G);
+    const Eigen::MatrixXd K(plane.K);
     const double max_spin = 2 * M_PI * max_speed_hz;
     std::vector<PlaneCrossing> out;
     for (int order : orders)
@@ -367,16 +367,16 @@ std::optional<std::vector<PlaneCrossing>> plane_critical_speeds(const BeamNetwor
             // (order^2 M -+ order G) a = mu K a, mu = 1 / Omega^2: the lowest
             // speeds are the largest mu.
             const double sign = whirl == Whirl::forward ? -1.0 : 1.0;
-            const Eigen::MatrixXd A = double(order * order) * M + sign * order * Gd;
+            const Eigen::SparseMatrix<double> As = double(order * order) * plane.M + sign * order * G;
+            const Eigen::MatrixXd A(As);
             const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(A, K, Eigen::EigenvaluesOnly);
             if (solver.info() != Eigen::Success) return std::nullopt;  // K not positive definite
             for (Eigen::Index k = solver.eigenvalues().size(); k-- > 0;) {
                 const double mu = solver.eigenvalues()(k);
                 if (!(mu > 0) || 1 / std::sqrt(mu) > max_spin) break;
                 const double spin = 1 / std::sqrt(mu);
-                // The shape: one step of inverse iteration on the nearly singular
-                // K - s A (s a hair off Omega^2), from the load A 1.
-                const Eigen::SparseMatrix<double> As = double(order * order) * plane.M + sign * order * G;
+                // The shape (for its label): two steps of inverse iteration on the
+                // nearly singular K - s A (s a hair off Omega^2), from the load A 1.
                 Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(Eigen::SparseMatrix<double>(plane.K - spin * spin * (1 + 1e-9) * As));
                 Eigen::VectorXd a = Eigen::VectorXd::Ones(plane.K.rows());
                 for (int step = 0; step < 2 && lu.info() == Eigen::Success; ++step) {
