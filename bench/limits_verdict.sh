@@ -8,7 +8,8 @@
 #
 #   bash bench/limits_verdict.sh [REPEATS] [extra coremodal options]
 #
-# LEVELS chooses the levels (default "beam harmonic").
+# LEVELS chooses the levels (default "beam harmonic"), CASES the case files
+# (default case 16; case 17 is the news stand).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats=${1:-3}
@@ -16,8 +17,8 @@ shift || true
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-case=cases/16-limits-rotogravure-150x15.8-4320.toml
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+for case in ${CASES:-cases/16-limits-rotogravure-150x15.8-4320.toml}; do
 for level in ${LEVELS:-beam harmonic}; do
     walls=() cpus=()
     for ((r = 1; r <= repeats; ++r)); do
@@ -27,8 +28,9 @@ for level in ${LEVELS:-beam harmonic}; do
         read -r wall user sys < "$work/time"
         cpu=$(echo "$user + $sys" | bc)
         walls+=("$wall") cpus+=("$cpu")
-        echo "$level run $r: wall ${wall} s, cpu ${cpu} s"
+        echo "$(basename "$case") $level run $r: wall ${wall} s, cpu ${cpu} s"
     done
     tail -n 1 "$work/log"
-    echo "$level: median of $repeats: wall $(median "${walls[@]}") s, cpu $(median "${cpus[@]}") s"
+    echo "$(basename "$case") $level: median of $repeats: wall $(median "${walls[@]}") s, cpu $(median "${cpus[@]}") s"
+done
 done

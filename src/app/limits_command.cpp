@@ -3,6 +3,7 @@
 // verdict over the rest-roll diameters with the criterion that governs and its
 // band (analyses/limits, docs/limits.md). The console ends with the verdict
 // line, also under -q.
+#include "analyses/fit/fit.hpp"
 #include "analyses/limits/limits.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
@@ -19,16 +20,33 @@ namespace {
 struct LimitsOptions {
     FolderCaseOptions folder;
     std::optional<double> speed_m_s;  // --speed, overrides [limits] web_speed
+    std::string fit_file;             // --fit: measured frequencies that narrow the band
 };
 
+// --fit: the measurements fitted (`coremodal fit`), the case read with its
+// fitted values. Throws InputError when the measurements do not name the case.
+LimitsCase fitted_case(const LimitsOptions& o, std::optional<FitOutcome>& fit) {
+    fit = run_fit(read_fit_input(o.fit_file));
+    for (const FittedCase& f : fit->cases) {
+        std::error_code ec;
+        if (std::filesystem::equivalent(f.case_file, o.folder.case_file, ec))
+            return parse_limits_case_text(f.calibrated_text, o.folder.case_file);
+    }
+    throw InputError("--fit " + o.fit_file + ": no [[measurement]] names " + o.folder.case_file +
+                     "; expected case = the stand's case file (the measured first resonance of this roll in its "
+                     "stand, docs/limits.md)");
+}
+
 int run_limits_case(const LimitsOptions& o) {
-    LimitsCase c = parse_limits_case(o.folder.case_file);
+    std::optional<FitOutcome> fit;
+    LimitsCase c = o.fit_file.empty() ? parse_limits_case(o.folder.case_file) : fitted_case(o, fit);
     Scene& scene = c.scene;
     require_one_process(o.folder, "the limits verdict");
     apply_level_options(o.folder, scene);
     LimitsRequest request;
     request.spec = c.limits.value_or(LimitsSpec{});
     request.target_web_speed_m_s = o.speed_m_s;
+    request.fit = fit, request.fit_file = o.fit_file;
     // The web's first idler, when the stand scene names one (docs/traction.md).
     if (const std::optional<TractionCase> roller = read_traction_case(o.folder.case_file))
         request.traction = traction_slip_criterion(roller->spec);
@@ -67,6 +85,11 @@ Command add_limits_command(CLI::App& app) {
                     "target web speed in m/s (overrides [limits] web_speed): the "
                     "rest-roll diameter where the roll "
                     "must be changed, and the margin");
+    cmd->add_option("--fit", o->fit_file,
+                    "measurements file of `coremodal fit` naming this case (the roll's first resonance measured "
+                    "in its stand): the verdict on the fitted case, the band's contact and E_z ranges narrowed "
+                    "to the fit's uncertainty (docs/limits.md)")
+        ->check(CLI::ExistingFile);
     cmd->footer(
         "Exit status 0 on success, 1 when the input is wrong (nothing is "
         "written then). docs/limits.md.");

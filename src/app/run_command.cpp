@@ -1,11 +1,15 @@
 // `coremodal run CASE.toml`: the main job.
+#include "analyses/limits/limits.hpp"
 #include "analyses/run/run.hpp"
 #include "app/commands.hpp"
 #include "app/folder_case.hpp"
+#include "common/petsc_handle.hpp"
 #include "output/results_folder.hpp"
 #include "scene/case_file.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/rotation_spec.hpp"
+
+#include <iostream>
 
 namespace coremodal {
 namespace {
@@ -16,6 +20,13 @@ struct RunLine {
     std::string output, mesh_level, model;
     bool no_plots = false;
 };
+
+// The verdict line of `coremodal limits` for a roll in its stand (issue 36),
+// also under -q; nothing for a free scene.
+void print_stand_verdict(const std::string& case_file) {
+    if (mpi_rank() != 0) return;
+    if (const std::string line = stand_verdict_line(case_file); !line.empty()) std::cout << line << std::endl;
+}
 
 int run_command(RunLine& line) {
     RunOptions& options = line.options;
@@ -34,15 +45,19 @@ int run_command(RunLine& line) {
         o.keep_going = options.keep_going;
         return o;
     };
+    const auto with_verdict = [&](int code) {
+        if (code == 0) print_stand_verdict(options.case_file);
+        return code;
+    };
     if (const ResponseCase c = parse_response_case(options.case_file); c.response)
-        return run_response_case(folder_case(c.scene));
+        return with_verdict(run_response_case(folder_case(c.scene)));
     if (const RotatingCase c = parse_rotating_case(options.case_file); c.rotation)
-        return run_rotating_case(folder_case(c.scene));
+        return with_verdict(run_rotating_case(folder_case(c.scene)));
     // The results folder is checked before any work (its default needs the case's name).
     options.output_dir = output_of(parse_case_file(options.case_file).name).string();
     claim_output(*options.output_dir, options.force);
     run_case(options);
-    return 0;
+    return with_verdict(0);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "eigensolve/tolerances.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
@@ -346,6 +347,55 @@ std::vector<RotatingMode> RotatingNetwork::modes_at(double speed_hz, int max_mod
     if (candidates.size() > static_cast<size_t>(max_modes)) candidates.resize(max_modes);
     std::vector<RotatingMode> out;
     for (const Candidate& c : candidates) out.push_back(finish(c, omega_spin));
+    return out;
+}
+
+std::optional<std::vector<PlaneCrossing>> plane_critical_speeds(const BeamNetwork& network, double lambda_scale,
+                                                                const std::vector<int>& orders, double max_speed_hz) {
+    const FamilySet xz = family_bit(MotionFamily::bending_xz), yz = family_bit(MotionFamily::bending_yz);
+    const std::vector<FamilySet> sets = independent_family_sets(network);
+    if (!bending_planes_alike(network) || std::count(sets.begin(), sets.end(), xz) != 1 ||
+        std::count(sets.begin(), sets.end(), yz) != 1)
+        return std::nullopt;
+    const NetworkMatrices plane = std::move(assemble_problems(network, {xz}).front());
+    const Eigen::SparseMatrix<double> G = plane_gyroscopic(network, plane);
+    const Eigen::MatrixXd K(plane.K);
+    const double max_spin = 2 * M_PI * max_speed_hz;
+    std::vector<PlaneCrossing> out;
+    for (int order : orders)
+        for (const Whirl whirl : {Whirl::forward, Whirl::backward}) {
+            // (order^2 M -+ order G) a = mu K a, mu = 1 / Omega^2: the lowest
+            // speeds are the largest mu.
+            const double sign = whirl == Whirl::forward ? -1.0 : 1.0;
+            const Eigen::SparseMatrix<double> As = double(order * order) * plane.M + sign * order * G;
+            const Eigen::MatrixXd A(As);
+            const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(A, K, Eigen::EigenvaluesOnly);
+            if (solver.info() != Eigen::Success) return std::nullopt;  // K not positive definite
+            for (Eigen::Index k = solver.eigenvalues().size(); k-- > 0;) {
+                const double mu = solver.eigenvalues()(k);
+                if (!(mu > 0) || 1 / std::sqrt(mu) > max_spin) break;
+                const double spin = 1 / std::sqrt(mu);
+                // The shape (for its label): two steps of inverse iteration on the
+                // nearly singular K - s A (s a hair off Omega^2), from the load A 1.
+                Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(Eigen::SparseMatrix<double>(plane.K - spin * spin * (1 + 1e-9) * As));
+                Eigen::VectorXd a = Eigen::VectorXd::Ones(plane.K.rows());
+                for (int step = 0; step < 2 && lu.info() == Eigen::Success; ++step) {
+                    a = lu.solve(Eigen::VectorXd(As * a));
+                    a /= a.norm();
+                }
+                Eigen::VectorXd shape = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(network.held.size()));
+                Eigen::VectorXd mass_shape = shape;
+                const Eigen::VectorXd Ma = plane.M * a;
+                for (size_t r = 0; r < plane.free_dofs.size(); ++r) {
+                    shape(plane.free_dofs[r]) = a(static_cast<Eigen::Index>(r));
+                    mass_shape(plane.free_dofs[r]) = Ma(static_cast<Eigen::Index>(r));
+                }
+                const double omega = order * spin;
+                out.push_back({order, whirl, spin / (2 * M_PI),
+                               label_beam_mode(network, shape, mass_shape, omega * omega, lambda_scale)});
+            }
+        }
+    std::sort(out.begin(), out.end(), [](const PlaneCrossing& a, const PlaneCrossing& b) { return a.speed_hz < b.speed_hz; });
     return out;
 }
 

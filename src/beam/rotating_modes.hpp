@@ -31,6 +31,7 @@
 
 #include <Eigen/Dense>
 
+#include <optional>
 #include <vector>
 
 namespace coremodal {
@@ -139,6 +140,26 @@ private:
     long n_free_dofs_ = 0;
     std::vector<Problem> problems_;
 };
+
+// The critical speeds of a network whose bending planes are alike, exactly
+// and without a sweep: where the excitation line f = order f_rot meets a
+// forward (omega = +order Omega) or backward (omega = -order Omega) whirl,
+// the plane problem K a - omega^2 M a + omega Omega G a = 0 becomes the
+// symmetric pencil
+//     K a = Omega^2 (order^2 M -+ order G) a,
+// one dense generalized eigensolve per order and whirl (K positive
+// definite: a roll held in its stand). Every crossing of the Campbell
+// diagram up to max_speed_hz, ascending, each labelled from its shape
+// (label_beam_mode of the planar snapshot). std::nullopt when the planes
+// differ (the sweep then) or K is singular (rigid modes).
+struct PlaneCrossing {
+    int order = 1;
+    Whirl whirl = Whirl::forward;
+    double speed_hz = 0;  // f_rot
+    ModeLabel label;
+};
+std::optional<std::vector<PlaneCrossing>> plane_critical_speeds(const BeamNetwork& network, double lambda_scale,
+                                                                const std::vector<int>& orders, double max_speed_hz);
 
 // |x^H y|^2 / (|x|^2 |y|^2): the MAC of two complex shapes (1: the same
 // mode up to a complex factor).

@@ -105,3 +105,47 @@ TEST_CASE(
     REQUIRE(given.exit_code == 0);
     CHECK(given.out.find("k = 1 assumed") == std::string::npos);
 }
+
+TEST_CASE("coremodal run on a roll in its stand ends with the verdict line, also under -q", "[app][limits]") {
+    TempDir dir("limits_run");
+    dir.write("roll.toml", kRoll);
+    const Run r = run_coremodal(dir, "run roll.toml --output out -q --no-plots");
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(last_line(r.out).rfind("verdict at the case's roll (beam level, no band", 0) == 0);
+    CHECK(last_line(r.out).find("safe up to ") != std::string::npos);
+    CHECK(last_line(r.out).find("governed by") != std::string::npos);
+}
+
+TEST_CASE("coremodal limits --fit narrows the band with a measured first resonance; a file that does not name "
+          "the case is refused",
+          "[app][limits][fit]") {
+    TempDir dir("limits_fit");
+    dir.write("roll.toml", kRoll + "[limits]\npoints = 2\n");
+    // The roll's first resonance as the model has it, measured to +-0.1 Hz:
+    // E_z is then known to about +-1 %, narrower than the band's +-15 %.
+    const Run plain = run_coremodal(dir, "limits roll.toml --output plain -q --no-plots");
+    INFO(plain.err);
+    REQUIRE(plain.exit_code == 0);
+    const std::string summary = slurp(dir.path / "plain" / "summary.json");
+    const size_t at = summary.find("\"f1_hz\": ");
+    REQUIRE(at != std::string::npos);
+    const double f1 = std::stod(summary.substr(at + 9));
+    dir.write("measured.toml", "parameters = [\"core.material.E_z\"]\n[[measurement]]\ncase = \"roll.toml\"\n"
+                               "mode = \"bending n=1 m=0\"\nfrequency = \"" + std::to_string(f1) +
+                                   " Hz\"\nuncertainty = \"0.1 Hz\"\n");
+    const Run fitted = run_coremodal(dir, "limits roll.toml --fit measured.toml --output fitted -q --no-plots");
+    INFO(fitted.err);
+    REQUIRE(fitted.exit_code == 0);
+    CHECK(last_line(fitted.out).rfind("safe up to ", 0) == 0);
+    const std::string narrowed = slurp(dir.path / "fitted" / "summary.json");
+    CHECK(narrowed.find("fitted: core.material.E_z") != std::string::npos);
+    // Not this case: refused before any work, nothing written.
+    dir.write("other.toml", kRoll);
+    dir.write("elsewhere.toml", "parameters = [\"core.material.E_z\"]\n[[measurement]]\ncase = \"other.toml\"\n"
+                                "mode = \"bending n=1 m=0\"\nfrequency = \"40 Hz\"\n");
+    const Run refused = run_coremodal(dir, "limits roll.toml --fit elsewhere.toml --output refused -q");
+    CHECK(refused.exit_code == 1);
+    CHECK(refused.err.find("--fit elsewhere.toml: no [[measurement]] names roll.toml") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path / "refused"));
+}

@@ -8,9 +8,12 @@
 #include "common/format.hpp"
 #include "common/join.hpp"
 #include "common/stopwatch.hpp"
+#include "effects/rotation.hpp"
 #include "models/choose.hpp"
 #include "modes/tracking.hpp"
+#include "scene/limits_spec.hpp"
 #include "scene/rotation_spec.hpp"
+#include "scene/traction_case.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,16 +27,42 @@ std::vector<double> spaced(double first, double last, int n) {
     return out;
 }
 
-// f1 at the beam level (Eigen only, milliseconds): the speed range of the
-// level's own solves is set from it.
-double beam_first_bending_hz(const Scene& scene) {
+// The scene at the beam level (Eigen only, milliseconds): its f1 sets the
+// speed range of the level's own solves.
+BeamModelResult beam_level(const Scene& scene) {
     Scene beam = scene;
     beam.model = "beam";
-    for (const BeamMode& m : solve_beam_model(beam).modes)
+    return solve_beam_model(beam);
+}
+
+double first_bending_hz(const Scene& scene, const BeamModelResult& beam) {
+    for (const BeamMode& m : beam.modes)
         if (m.label.type == "bending") return m.frequency_hz;
     throw SolveError(scene.name + ": no bending mode among the lowest " + std::to_string(scene.analysis.n_modes) +
                      " modes at rest; expected [analysis] modes to include the "
                      "first bending mode");
+}
+
+// Step 2 at the beam level with both bending planes alike: the same
+// crossings, exactly, from the plane problem's pencils
+// (beam/rotating_modes.hpp, plane_critical_speeds; tests/unit/analyses/limits
+// hold them against the Campbell sweep), in a few milliseconds instead of a
+// sweep with refined crossings; none where the planes differ.
+std::optional<CriticalSpeeds> pencil_speeds(const BeamModelResult& beam, double dp, double f1_estimate_hz,
+                                            std::string& mode) {
+    const std::optional<std::vector<PlaneCrossing>> crossings =
+        plane_critical_speeds(beam.network, beam.lambda_scale, {1, 2}, kRangeTop * f1_estimate_hz);
+    if (!crossings) return std::nullopt;
+    CriticalSpeeds out;
+    for (const PlaneCrossing& c : *crossings) {  // ascending speed
+        std::optional<double>& slot = c.order == 2                ? out.order2
+                                      : c.whirl == Whirl::forward ? out.order1_forward
+                                                                  : out.order1_backward;
+        if (slot) continue;
+        slot = web_speed(c.speed_hz, dp);
+        if (c.order == 1 && mode.empty()) mode = label_text(c.label);
+    }
+    return out;
 }
 
 // Step 2: the critical web speeds of the spinning roll, by the level's
@@ -60,14 +89,23 @@ CriticalSpeeds campbell_speeds(const Scene& scene, double f1_estimate_hz, std::s
 }
 
 // Step 2 at one diameter: the point values.
+// The forced response checks its superposition once per verdict, at the
+// first diameter solved (the case's roll); every other diameter and band
+// sample is the same computation on a changed scene.
 LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d, LimitsResult& result) {
     LimitsPoint p;
     p.diameter_m = d;
     const Scene at = scene_at_diameter(scene, d);
-    const double f1_estimate = beam_first_bending_hz(at);
+    const BeamModelResult beam = beam_level(at);
+    const double f1_estimate = first_bending_hz(at, beam);
     const ResponseSetup setup = setup_for_range(base, at, f1_estimate);
-    const ResponseResult response = run_forced_response(at, setup);
-    const CriticalSpeeds critical = campbell_speeds(at, f1_estimate, p.order1_mode);
+    const bool check = result.check_response && !result.checks;
+    const ResponseResult response =
+        run_forced_response(at, setup, {}, check ? ResponseChecking::full : ResponseChecking::none);
+    if (check) result.checks = LimitsChecks{d, response.checks};
+    std::optional<CriticalSpeeds> critical;
+    if (at.model == "beam") critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
+    if (!critical) critical = campbell_speeds(at, f1_estimate, p.order1_mode);
     result.n_solves += 2;
     p.f1_hz = response.speeds_at_rest.f1_hz;
     if (at.supports.kind == SupportKind::chucks && p.f1_hz > 0) {
@@ -75,7 +113,7 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
         p.chuck_factor = k.chuck_factor > 0 ? k.chuck_factor : k.chuck_factor_beam;
         p.f2_hz = k.f2_fe_hz > 0 ? k.f2_fe_hz : k.f2_beam_hz;
     }
-    p.criteria = criteria_of(response, critical, 1.0);
+    p.criteria = criteria_of(response, *critical, 1.0);
     p.peaks = response.peaks;
     for (const ResponsePoint& r : response.points) p.amplitude.emplace_back(r.web_speed_m_s, r.probes.at(0).total_m);
     return p;
@@ -220,7 +258,8 @@ void warn(LimitsResult& r) {
                              "little more bow or less damping moves it "
                              "anywhere below the peak: do not run near it (I-5's "
                              "factor keeps away from it)");
-    // Criteria that disagree beyond their bands, at the case's roll: I-5 against the others.
+    // Criteria that disagree beyond their bands, at the case's roll: I-5 against
+    // the others.
     const LimitsPoint& first = r.points.front();
     const CriterionSpeed& i5 = first.at(Criterion::i5_low);
     const auto range = [](const CriterionSpeed& c) {
@@ -236,7 +275,8 @@ void warn(LimitsResult& r) {
         r.warnings.push_back("criteria disagree beyond their bands at " + significant(first.diameter_m * 1e3, 4) +
                              " mm: " + criterion_name(Criterion::i5_low) + " " + range(i5) + " against " +
                              join(apart, ", ") +
-                             ": they answer different questions; the verdict takes the lowest (docs/limits.md, "
+                             ": they answer different questions; the verdict takes "
+                             "the lowest (docs/limits.md, "
                              "\"Warnings\")");
     for (size_t i = 0; i + 1 < r.points.size(); ++i) {
         const LimitsPoint &a = r.points[i], &b = r.points[i + 1];
@@ -247,32 +287,49 @@ void warn(LimitsResult& r) {
     }
 }
 
+// The forced response's self-check, once per verdict (docs/limits.md, "Speed").
+std::string checks_note(const LimitsChecks& c) {
+    const ResponseChecks& k = c.checks;
+    return "the forced response's superposition checked once, at " + significant(c.diameter_m * 1e3, 5) + " mm (" +
+           std::to_string(k.speeds_checked) + " speeds): the truncated sum against " +
+           (k.complete_basis
+                ? "the complete basis " + significant(k.truncation_max_relative, 2) +
+                      ", the complete basis against the direct solve " + significant(k.direct_max_relative, 2)
+                : "the direct solve " + significant(k.direct_max_relative, 2)) +
+           " (relative); every other diameter and band sample is the same "
+           "computation on a changed scene, with the "
+           "modes up to the cutoff only";
+}
+
 std::vector<std::string> limits_notes(const LimitsResult& r) {
-    return {"every criterion at the " + r.level +
-                " level; a criterion's web speed is pi Dp f_rot at that "
-                "rest-roll diameter",
-            "limiting: I-5 at 0.7 (Ilomaki, without a safety cage), Koenig's "
-            "critical speed (K-1/K-2 with his experience "
-            "factor, 0.55 for a large core), the order-1 critical speeds "
-            "(backward and forward whirl), the order-2 one "
-            "where an order-2 load acts (ovality with gravity), and the "
-            "amplitude limit and, with [traction], the web's slip on its first idler "
-            "(Rice & Gans); I-5 at 0.8 is reported",
-            "the band: each uncertain input at each end of its range, one at a "
-            "time, with the forced response re-solved, at every " +
-                std::to_string(kBandStride) +
-                "th diameter and the last; between them interpolated relative to the point values; "
-                "the critical speeds of a sample are the point's scaled by the "
-                "sample's f1 (they follow f1 within the "
-                "gyroscopic shift, a few per cent); the safe speed's band is the "
-                "range of the samples' own verdicts",
-            std::string("not included: the core's strength and fatigue (durability), ") +
-                (r.points.empty() || !r.points.front().at(Criterion::traction).given
-                     ? "the web's slip on its idlers (give [traction]: Rice & Gans), "
-                     : "") +
-                "rotating "
-            "(internal) damping, the contact opening at large amplitude, the "
-            "rest paper's own out-of-roundness"};
+    std::vector<std::string> out = {"every criterion at the " + r.level +
+                                        " level; a criterion's web speed is pi Dp f_rot at that "
+                                        "rest-roll diameter",
+                                    "limiting: I-5 at 0.7 (Ilomaki, without a safety cage), Koenig's "
+                                    "critical speed (K-1/K-2 with his experience "
+                                    "factor, 0.55 for a large core), the order-1 critical speeds "
+                                    "(backward and forward whirl), the order-2 one "
+                                    "where an order-2 load acts (ovality with gravity), and the "
+                                    "amplitude limit and, with [traction], the web's slip on its first idler "
+                                    "(Rice & Gans); I-5 at 0.8 is reported",
+                                    "the band: each uncertain input at each end of its range, one at a "
+                                    "time, with the forced response re-solved, at every " +
+                                        std::to_string(kBandStride) +
+                                        "th diameter and the last; between them interpolated relative to the "
+                                        "point values; "
+                                        "the critical speeds of a sample are the point's scaled by the "
+                                        "sample's f1 (they follow f1 within the "
+                                        "gyroscopic shift, a few per cent); the safe speed's band is the "
+                                        "range of the samples' own verdicts",
+                                    std::string("not included: the core's strength and fatigue (durability), ") +
+                                        (r.points.empty() || !r.points.front().at(Criterion::traction).given
+                                             ? "the web's slip on its idlers (give [traction]: Rice & Gans), "
+                                             : "") +
+                                        "rotating "
+                                        "(internal) damping, the contact opening at large amplitude, the "
+                                        "rest paper's own out-of-roundness"};
+    if (r.checks) out.push_back(checks_note(*r.checks));
+    return out;
 }
 
 }  // namespace
@@ -283,9 +340,10 @@ CriterionSpeed traction_slip_criterion(const TractionSpec& spec) {
     s.given = true;
     s.web_speed_m_s = spec.tension_difference ? slip_speed(spec, *spec.tension_difference) : zero_traction_speed(spec);
     s.band_low_m_s = s.band_high_m_s = s.web_speed_m_s;
-    s.note = spec.tension_difference
-                 ? "the roller can no longer carry [traction] tension_difference (Rice & Gans, eqs. 12-13)"
-                 : "traction vanishes (Rice & Gans, P* = 1); give [traction] tension_difference for the slip speed";
+    s.note = spec.tension_difference ? "the roller can no longer carry [traction] tension_difference "
+                                       "(Rice & Gans, eqs. 12-13)"
+                                     : "traction vanishes (Rice & Gans, P* = 1); give [traction] "
+                                       "tension_difference for the slip speed";
     return s;
 }
 
@@ -297,7 +355,7 @@ const char* criterion_id(Criterion c) {
 
 const char* criterion_name(Criterion c) {
     static const char* names[] = {
-        "I-5 x0.7",         "I-5 x0.8",       "Koenig K-1/K-2", "order-1 critical BW", "order-1 critical FW",
+        "I-5 x0.7",         "I-5 x0.8",        "Koenig K-1/K-2",     "order-1 critical BW", "order-1 critical FW",
         "order-2 critical", "amplitude limit", "web slip (traction)"};
     return names[static_cast<int>(c)];
 }
@@ -365,6 +423,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     LimitsResult r;
     r.level = scene.model;
     r.band = request.spec.band;
+    r.check_response = request.check_response;
     r.limit_m = request.spec.limit_m.value_or(response ? response->response.limit_m : kDefaultAmplitudeLimit);
     ResponseSetup base = response.value_or(default_limits_setup(scene, r.limit_m));
     base.response.limit_m = r.limit_m;
@@ -372,6 +431,13 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     r.bow_m = base.excitation.bow_m;
     r.assumptions = limits_assumptions(scene, response.has_value(), base);
     r.inputs = request.inputs.value_or(uncertain_inputs(scene, base));
+    if (request.fit) {
+        const std::vector<std::string> narrowed = narrow_by_fit(r.inputs, *request.fit, request.fit_file);
+        r.assumptions.push_back("the case's keys fitted to the measured frequencies of " + request.fit_file +
+                                " (coremodal fit): " +
+                                (narrowed.empty() ? std::string("no range of the band is narrower for it")
+                                                  : "the band's ranges narrowed: " + join(narrowed, "; ")));
+    }
     // 1. The diameters.
     const double largest = request.spec.largest_diameter_m.value_or(roll_outer_diameter(scene));
     const double smallest = request.spec.smallest_diameter_m.value_or(scene.core.outer_diameter);
@@ -419,6 +485,30 @@ std::string verdict_line(const LimitsResult& r) {
                formatted("%+.2f", r.change->margin_m_s) + " m/s)";
     return line + (changes ? "" : " holds down to the smallest diameter") + ", margin at the full roll " +
            formatted("%+.2f", r.change->margin_m_s) + " m/s";
+}
+
+std::string stand_verdict_line(const std::string& case_file) {
+    const LimitsCase c = parse_limits_case(case_file);
+    if (c.scene.supports.kind == SupportKind::free) return "";
+    Scene scene = c.scene;
+    scene.model = "beam";
+    LimitsRequest request;
+    request.spec = c.limits.value_or(LimitsSpec{});
+    const double d = roll_outer_diameter(scene);
+    request.spec.largest_diameter_m = request.spec.smallest_diameter_m = d;
+    request.spec.band = false;
+    request.check_response = false;
+    if (const std::optional<TractionCase> roller = read_traction_case(case_file))
+        request.traction = traction_slip_criterion(roller->spec);
+    const std::string what =
+        "verdict at the case's roll (beam level, no band; "
+        "`coremodal limits` for the unwind and "
+        "its band): ";
+    try {
+        return what + verdict_line(verdict(scene, c.response, request));
+    } catch (const std::exception& e) {  // InputError, SolveError: the run itself stands
+        return what + "not given: " + e.what();
+    }
 }
 
 }  // namespace coremodal

@@ -24,6 +24,7 @@
 //    a mode whose label changes along the unwind.
 #pragma once
 
+#include "analyses/fit/fit.hpp"
 #include "analyses/response/response.hpp"
 #include "scene/limits_spec.hpp"
 #include "scene/response_spec.hpp"
@@ -78,7 +79,8 @@ struct CriterionSpeed {
 struct LimitsPoint {
     double diameter_m = 0;               // the rest roll's outer diameter (the core's when bare)
     bool added = false;                  // a midpoint of step 1
-    bool band_sampled = false;  // the band sampled here, or interpolated from the sampled neighbours
+    bool band_sampled = false;           // the band sampled here, or interpolated from the
+                                         // sampled neighbours
     double f1_hz = 0;                    // first bending at rest, the scene's level
     std::optional<double> chuck_factor;  // k = f1 / f2 (chucks only)
     double f2_hz = 0;
@@ -123,6 +125,13 @@ struct Verdict {
     double at_diameter_m = 0;  // where the lowest point is
 };
 
+// The forced response's checks (response.hpp), run once per verdict at the
+// first diameter solved.
+struct LimitsChecks {
+    double diameter_m = 0;
+    ResponseChecks checks;
+};
+
 struct LimitsResult {
     std::string level;                // the model level of every criterion
     std::vector<LimitsPoint> points;  // largest diameter first
@@ -134,7 +143,9 @@ struct LimitsResult {
     std::optional<RollChange> change;
     Verdict verdict;
     std::vector<std::string> warnings, assumptions, notes;
-    int n_solves = 0;  // forced responses and Campbell sweeps
+    std::optional<LimitsChecks> checks;
+    bool check_response = true;  // as asked (LimitsRequest)
+    int n_solves = 0;            // forced responses and Campbell sweeps
     double seconds = 0;
 };
 
@@ -150,7 +161,22 @@ struct LimitsRequest {
     // The web speed at which the web slips on its first idler roller (the
     // case's [traction], traction_slip_criterion), or none without a roller.
     std::optional<CriterionSpeed> traction;
+    // A fit of the scene to measured frequencies (`coremodal fit`; the scene
+    // holds its fitted values): the ranges it narrows (narrow_by_fit), and
+    // the measurements file for the output.
+    std::optional<FitOutcome> fit;
+    std::string fit_file;
+    // Check the forced response's superposition once, at the first diameter
+    // (LimitsResult::checks); `run`'s verdict line leaves it to `limits`.
+    bool check_response = true;
 };
+
+// `coremodal run` on a roll held in its stand ends with the verdict line too
+// (also under -q): at the beam level and the case's roll only, without the
+// band (milliseconds; `coremodal limits` gives the unwind and the band).
+// Empty for a free scene; the reason instead of the line where the verdict
+// cannot be had at the beam level.
+std::string stand_verdict_line(const std::string& case_file);
 
 // The traction criterion of a roller: the speed at which it can no longer
 // carry the tension difference it is given ([traction] tension_difference),

@@ -202,6 +202,41 @@ std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseS
     return out;
 }
 
+namespace {
+
+// The input a fitted key narrows, or "".
+std::string input_of_key(const std::string& key) {
+    const bool chuck = key.rfind("supports.", 0) == 0 && (key.find(".normal_stiffness") != std::string::npos ||
+                                                          key.find(".expansion_pressure") != std::string::npos);
+    if (chuck) return "chuck contact stiffness";
+    if (key == "core.material.E_z") return "core E_z";
+    return "";
+}
+
+}  // namespace
+
+std::vector<std::string> narrow_by_fit(std::vector<UncertainInput>& inputs, const FitOutcome& fit,
+                                       const std::string& measurements_file) {
+    std::vector<std::string> out;
+    for (const FitParameter& p : fit.parameters) {
+        const std::string name = input_of_key(p.key);
+        if (name.empty() || !p.uncertainty || !(p.value > 0)) continue;
+        for (UncertainInput& i : inputs) {
+            if (i.name != name || !i.applies) continue;
+            // ln p is what the fit estimates: its standard uncertainty is u / p.
+            const double spread = std::exp(kFitSigmas * *p.uncertainty / p.value);
+            if (1 / spread <= i.low && spread >= i.high) continue;  // no narrower than the documented range
+            i.low = std::max(i.low, 1 / spread), i.high = std::min(i.high, spread);
+            i.range = "x" + significant(i.low, 3) + " - x" + significant(i.high, 3);
+            i.source = "fitted: " + p.key + " = " + significant(p.value, 4) + " (SI), standard uncertainty " +
+                       significant(*p.uncertainty, 2) + ", from the measured frequencies of " + measurements_file +
+                       " (coremodal fit); the range is +-" + significant(kFitSigmas, 1) + " of them";
+            out.push_back(name + " " + i.range + " (" + p.key + " fitted)");
+        }
+    }
+    return out;
+}
+
 void propagate_band(const Scene& scene, const ResponseSetup& base, const std::vector<UncertainInput>& inputs,
                     LimitsPoint& point, int& n_solves) {
     const Scene at = scene_at_diameter(scene, point.diameter_m);
@@ -223,7 +258,7 @@ void propagate_band(const Scene& scene, const ResponseSetup& base, const std::ve
             Scene s = at;
             ResponseSetup setup = setup_for_range(base, at, f1_estimate);
             apply(s, setup, v);
-            const ResponseResult r = run_forced_response(s, setup);
+            const ResponseResult r = run_forced_response(s, setup, {}, ResponseChecking::none);  // checked once
             ++n_solves;
             const double ratio = point.f1_hz > 0 ? r.speeds_at_rest.f1_hz / point.f1_hz : 1.0;
             std::vector<CriterionSpeed> sample = criteria_of(r, critical, ratio);

@@ -4,6 +4,7 @@
 // band"), each input at each end of its range, one at a time.
 #pragma once
 
+#include "analyses/fit/fit.hpp"
 #include "analyses/limits/limits.hpp"
 
 #include <optional>
@@ -34,6 +35,17 @@ ResponseSetup setup_for_range(const ResponseSetup& base, const Scene& at, double
 // The uncertain inputs of this scene at its level, with their ranges and
 // sources, and why an input does not apply.
 std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseSetup& base);
+
+// The ranges a fit narrows (docs/limits.md, "Narrowing the band"): a fitted
+// chuck contact stiffness (supports.*.normal_stiffness or
+// expansion_pressure) replaces the contact's range by its fitted value +-
+// kFitSigmas standard uncertainties, a fitted core.material.E_z the core's
+// E_z range; each only where that is narrower. The scene must hold the
+// fitted values (FittedCase::calibrated_text): the ranges are factors about
+// them. Returns the inputs narrowed, in words for the output.
+constexpr double kFitSigmas = 2.0;
+std::vector<std::string> narrow_by_fit(std::vector<UncertainInput>& inputs, const FitOutcome& fit,
+                                       const std::string& measurements_file);
 
 // Every applying input at both ends: the criteria's bands and the safe
 // speed's (each sample's own lowest limiting criterion) on `point`.

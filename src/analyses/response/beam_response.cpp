@@ -3,6 +3,7 @@
 // at rest, so that the truncated sum is checked against the complete basis
 // and the complete basis against the direct dense solve.
 #include "analyses/response/lateral_response.hpp"
+#include "analyses/response/modal_response_model.hpp"  // highest_order
 #include "analyses/response/response_levels.hpp"
 #include "analyses/response/response_loads.hpp"
 #include "analyses/response/response_sweep.hpp"
@@ -60,6 +61,8 @@ public:
         return a;
     }
 
+    bool has_complete_basis() const override { return lateral_.complete(); }
+
     AnsweringMode answering_mode(size_t order_index, double speed_hz) const override {
         const int j = answering_index(loads_.orders[order_index], speed_hz);
         const double frequency_hz = lateral_.mode_frequency_hz(j);
@@ -110,9 +113,27 @@ Eigen::VectorXd first_bending_shape(const BeamModelResult& rest) {
     throw SolveError("the roll has no bending mode among the modes at rest; expected [analysis] modes to include one");
 }
 
+// The lateral problem's modes: every one (a run that checks its sum against
+// the complete basis and the direct solve), or those up to the cutoff of the
+// highest order the excitation can load, when the caller checks elsewhere
+// (lateral_response.hpp); the complete basis where the truncated one cannot
+// be had.
+LateralResponse lateral_basis(const BeamModelResult& rest, const ResponseSetup& setup, ResponseChecking checking,
+                              double tolerance) {
+    if (checking == ResponseChecking::none) {
+        const double cutoff_hz =
+            kTruncationFactor * highest_order(setup.excitation) * setup.response.speeds_hz.back();
+        if (std::optional<LateralResponse> truncated =
+                LateralResponse::truncated(rest.network, rest.lambda_scale, 2 * M_PI * cutoff_hz, tolerance))
+            return std::move(*truncated);
+    }
+    return LateralResponse(rest.network, rest.lambda_scale);
+}
+
 }  // namespace
 
-ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options) {
+ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
+                                 ResponseChecking checking) {
     Stopwatch clock;
     ResponseResult out = response_result_for(scene, setup, "beam");
     out.solver = "modal superposition in the modes at rest (gyroscopic coupling projected), checked by a direct dense solve";
@@ -125,7 +146,7 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     const double f1 = first_bending_hz(rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     // 2. The lateral problem, its modes, their damping and the loads.
-    LateralResponse lateral(rest.network, rest.lambda_scale);
+    LateralResponse lateral = lateral_basis(rest, setup, checking, scene.analysis.tolerance);
     const LateralDampingPlan damping = plan_damping(setup.damping, rest, lateral);
     lateral.set_damping(damping.rayleigh, damping.zeta);
     out.n_dofs = lateral.matrices().K.rows();
@@ -145,13 +166,13 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     // 3-5. The sweep with the modes up to kTruncationFactor times the highest
     // load frequency, the peaks, the speed at the limit, the checks.
     const double top_hz = out.orders.back() * range.speeds_hz.back();
-    out.checks.n_modes_all = lateral.n_modes();
+    out.checks.n_modes_all = lateral.n_all_modes();
     out.checks.cutoff_hz = kTruncationFactor * top_hz;
     const int n_used = std::max(std::min(2, lateral.n_modes()), lateral.modes_below(2 * M_PI * out.checks.cutoff_hz));
     out.checks.n_modes_used = n_used;
     out.mode_damping.assign(damping.modes.begin(), damping.modes.begin() + n_used);
     const BeamResponseModel model(rest, lateral, loads, probes, n_used);
-    sweep_response(model, range, f1, out.roll_outer_diameter, out);
+    sweep_response(model, range, f1, out.roll_outer_diameter, out, checking);
     out.assumptions.push_back(kept_modes_assumption(out.checks, "lateral modes at rest"));
     out.solve_seconds = clock.lap();
     return out;

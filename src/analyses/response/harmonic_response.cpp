@@ -57,7 +57,7 @@ Eigen::VectorXd first_bending_mode(const ModalBasis& basis, const std::vector<Mo
 
 }  // namespace
 
-ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSetup& setup) {
+ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
     scene.model = "harmonic";  // "auto" resolved
@@ -93,7 +93,7 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
     }
     // 3-5. The sweep, the peaks, the speed at the limit, the checks.
     finish_modal_response({response, damping, loads, probes, labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
-                          range, out.speeds_at_rest.f1_hz, out);
+                          range, out.speeds_at_rest.f1_hz, out, checking);
     out.solve_seconds = clock.lap();
     return out;
 }

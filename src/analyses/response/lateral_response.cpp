@@ -2,6 +2,7 @@
 
 #include "analyses/response/modal_equations.hpp"
 
+#include "beam/network_modes.hpp"
 #include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "effects/damping.hpp"
@@ -13,23 +14,107 @@ namespace coremodal {
 
 using cd = std::complex<double>;
 
-LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta)
-    : network_(&network), lambda_scale_(lambda_scale) {
+namespace {
+
+using KFactor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+
+// K factored once for the static part of the modes left out; none where K
+// is singular or not positive definite (rigid modes: a free rotor).
+std::shared_ptr<const KFactor> positive_definite_factor(const Eigen::SparseMatrix<double>& K) {
+    auto factor = std::make_shared<KFactor>(K);
+    if (factor->info() != Eigen::Success || !(factor->vectorD().array() > 0).all()) return nullptr;
+    return factor;
+}
+
+// K^-1 f for a complex f, by the real factor.
+Eigen::VectorXcd solve_static(const KFactor& factor, const Eigen::VectorXcd& f) {
+    const Eigen::VectorXd re = factor.solve(Eigen::VectorXd(f.real())), im = factor.solve(Eigen::VectorXd(f.imag()));
+    Eigen::VectorXcd out(f.size());
+    out.real() = re, out.imag() = im;
+    return out;
+}
+
+// A real matrix times a complex vector, without a complex copy of the matrix
+// (the sweep's thousand products).
+template <class Matrix>
+Eigen::VectorXcd times(const Matrix& A, const Eigen::VectorXcd& v) {
+    Eigen::VectorXcd out(A.rows());
+    out.real() = A * v.real();
+    out.imag() = A * v.imag();
+    return out;
+}
+
+// The share of a network vector's M-norm that lies on the lateral rows.
+double lateral_share(const NetworkMatrices& m, const Eigen::VectorXd& shape) {
+    Eigen::VectorXd rows(static_cast<Eigen::Index>(m.free_dofs.size()));
+    for (size_t r = 0; r < m.free_dofs.size(); ++r) rows(static_cast<Eigen::Index>(r)) = shape(m.free_dofs[r]);
+    return rows.dot(m.M * rows);
+}
+
+}  // namespace
+
+LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale, NetworkMatrices lateral)
+    : network_(&network), lambda_scale_(lambda_scale), m_(std::move(lateral)) {
+    G_ = assemble_gyroscopic(network, {m_}).front();
+    K_factor_ = positive_definite_factor(m_.K);
+}
+
+namespace {
+NetworkMatrices lateral_problem(const BeamNetwork& network) {
     const FamilySet lateral = lateral_family_set(network);
     if (!lateral) throw SolveError("the beam network has no bending DOF: no lateral response to compute");
-    m_ = std::move(assemble_problems(network, {lateral}).front());
-    G_ = assemble_gyroscopic(network, {m_}).front();
+    return std::move(assemble_problems(network, {lateral}).front());
+}
+}  // namespace
+
+LateralResponse::LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta)
+    : LateralResponse(network, lambda_scale, lateral_problem(network)) {
     DenseModes modes = dense_modes_at_rest(m_, lambda_scale);
     Phi_ = std::move(modes.Phi);
     lambda_ = std::move(modes.lambda);
-    Ghat_ = Phi_.transpose() * (G_ * Phi_);
+    project_gyroscopic();
     set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(lambda_.size()), zeta));
 }
+
+std::optional<LateralResponse> LateralResponse::truncated(const BeamNetwork& network, double lambda_scale,
+                                                          double omega_cut, double tolerance) {
+    LateralResponse out(network, lambda_scale, lateral_problem(network));
+    if (!out.K_factor_) return std::nullopt;
+    // Every mode of the network up to the cutoff (all families; the band
+    // request is proven complete by the inertia count), then the lateral ones.
+    NetworkSolveRequest request;
+    request.lambda_min = -lambda_scale;
+    request.lambda_max = omega_cut * omega_cut;
+    request.lambda_scale = lambda_scale;
+    request.tolerance = tolerance;
+    const NetworkModes modes = solve_network_modes(network, request);
+    if (!modes.verification.complete) return std::nullopt;
+    std::vector<int> kept;
+    for (size_t j = 0; j < modes.shapes.size(); ++j)
+        if (lateral_share(out.m_, modes.shapes[j]) > 0.5) kept.push_back(static_cast<int>(j));
+    if (kept.size() < 2) return std::nullopt;
+    const Eigen::Index n = static_cast<Eigen::Index>(kept.size());
+    out.Phi_.resize(out.m_.K.rows(), n);
+    out.lambda_.resize(n);
+    for (Eigen::Index c = 0; c < n; ++c) {
+        const Eigen::VectorXd& shape = modes.shapes[static_cast<size_t>(kept[static_cast<size_t>(c)])];
+        for (size_t r = 0; r < out.m_.free_dofs.size(); ++r)
+            out.Phi_(static_cast<Eigen::Index>(r), c) = shape(out.m_.free_dofs[r]);
+        out.lambda_(c) = modes.eigenvalues[static_cast<size_t>(kept[static_cast<size_t>(c)])];
+    }
+    out.complete_ = false;
+    out.project_gyroscopic();
+    out.set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(n), 0.0));
+    return out;
+}
+
+void LateralResponse::project_gyroscopic() { Ghat_ = Phi_.transpose() * (G_ * Phi_); }
 
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     modal_damping_ = modal_damping_coefficients(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
     Eigen::VectorXd own(lambda_.size());  // c_j less Rayleigh's part: what the matrix form adds in the modes
     for (Eigen::Index j = 0; j < lambda_.size(); ++j) own(j) = modal_damping_(j) - rayleigh.coefficient(lambda_(j));
+    if (!complete_) return;  // no direct solve: the damping matrix would need every mode
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
     D_ = MPhi * own.asDiagonal() * MPhi.transpose();
     if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
@@ -70,30 +155,40 @@ Eigen::VectorXd LateralResponse::mode_mass_shape(int j) const {
 Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, double omega_spin, double omega,
                                                     int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
-    const Eigen::VectorXcd load = Phi_.leftCols(n).transpose().cast<cd>() * f;
+    const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
     return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>(), lambda_,
                                  modal_damping_, omega, load);
 }
 
 Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
                                             bool static_correction) const {
-    Eigen::VectorXcd x = Phi_.leftCols(n).cast<cd>() * modal_coordinates(f, omega_spin, omega, n);
-    if (static_correction && n < n_modes()) {
-        const Eigen::Index rest = n_modes() - n;
-        const Eigen::MatrixXd& Phi_r = Phi_.rightCols(rest);
-        const Eigen::VectorXcd load = Phi_r.transpose().cast<cd>() * f;
-        x += Phi_r.cast<cd>() * (load.array() / lambda_.tail(rest).array().cast<cd>()).matrix();
+    Eigen::VectorXcd x = times(Phi_.leftCols(n), modal_coordinates(f, omega_spin, omega, n));
+    if (!static_correction || (complete_ && n == n_modes())) return x;
+    // The static part of the modes left out: K^-1 f less the kept modes'
+    // static part (one sparse solve), or without a factor (a free rotor,
+    // complete basis) their own sum.
+    if (K_factor_) {
+        const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
+        return x + solve_static(*K_factor_, f) -
+               times(Phi_.leftCols(n), (load.array() / lambda_.head(n).array().cast<cd>()).matrix());
     }
+    COREMODAL_ASSERT(complete_);
+    const Eigen::Index rest = n_modes() - n;
+    const Eigen::MatrixXd& Phi_r = Phi_.rightCols(rest);
+    const Eigen::VectorXcd load = Phi_r.transpose().cast<cd>() * f;
+    x += Phi_r.cast<cd>() * (load.array() / lambda_.tail(rest).array().cast<cd>()).matrix();
     return x;
 }
 
 Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
+    COREMODAL_ASSERT(complete_);
     const Eigen::MatrixXd K(m_.K), M(m_.M), G(G_);
     const Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
     return A.partialPivLu().solve(f);
 }
 
 Eigen::VectorXd LateralResponse::static_response(const Eigen::VectorXd& f) const {
+    if (K_factor_) return K_factor_->solve(f);
     const Eigen::VectorXd load = Phi_.transpose() * f;
     return Phi_ * (load.array() / lambda_.array()).matrix();
 }

@@ -22,6 +22,15 @@
 //    M Phi Dh Phi^T M when ratios do).
 // With the complete basis both are the same linear system in other
 // coordinates: they agree to round-off (tests/unit/analyses/response).
+//
+// A truncated basis (the second constructor: only the modes up to a cutoff,
+// from the network's own Krylov solver, complete below it by the inertia
+// count) gives the same truncated sums in milliseconds instead of a dense
+// eigensolve of every mode: the static part of the modes left out is then
+// K^-1 f - Phi_n Lambda_n^-1 Phi_n^T f, the same sum in other terms (K factored
+// once, sparse). Neither the complete sum nor the direct solve exists then:
+// a run that checks the superposition uses the complete basis (the verdict
+// of `coremodal limits` checks once per run, analyses/limits).
 #pragma once
 
 #include "beam/beam_network.hpp"
@@ -30,6 +39,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -41,6 +51,16 @@ public:
     // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode
     // (set_damping replaces it). Throws SolveError when the network has no bending DOF.
     LateralResponse(const BeamNetwork& network, double lambda_scale, double zeta = 0);
+    // The truncated basis: every lateral mode up to omega_cut (rad/s), and at
+    // least the lowest two; std::nullopt where the network's solver cannot
+    // prove it complete or K is singular (a free rotor: rigid modes), for
+    // the caller to take the complete basis.
+    static std::optional<LateralResponse> truncated(const BeamNetwork& network, double lambda_scale, double omega_cut,
+                                                    double tolerance);
+    // false: the truncated basis (no complete sum, no direct solve).
+    bool complete() const { return complete_; }
+    // The lateral problem's size: every mode it has, kept or not.
+    int n_all_modes() const { return static_cast<int>(m_.K.rows()); }
 
     // The damping: Rayleigh's alpha M + beta K for every mode whose zeta[j]
     // is empty, 2 zeta[j] omega_j for the others (0 for a rigid mode, which
@@ -76,13 +96,18 @@ public:
     Eigen::VectorXd static_response(const Eigen::VectorXd& f) const;
 
 private:
+    LateralResponse(const BeamNetwork& network, double lambda_scale, NetworkMatrices lateral);
+    void project_gyroscopic();
+
     const BeamNetwork* network_;
     double lambda_scale_;
     NetworkMatrices m_;
     Eigen::SparseMatrix<double> G_;  // per unit Omega (rad/s)
     Eigen::MatrixXd Phi_, Ghat_;
     Eigen::VectorXd lambda_, modal_damping_;  // lambda_j; c_j = Phi_j^T D Phi_j
-    Eigen::MatrixXd D_;                        // the damping matrix, for the direct solve
+    Eigen::MatrixXd D_;                        // the damping matrix, for the direct solve (complete basis)
+    bool complete_ = true;
+    std::shared_ptr<const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> K_factor_;  // truncated basis
 };
 
 }  // namespace coremodal

@@ -90,7 +90,8 @@ private:
 
 }  // namespace
 
-void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& range, double f1_hz, ResponseResult& out) {
+void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& range, double f1_hz, ResponseResult& out,
+                           ResponseChecking checking) {
     COREMODAL_ASSERT(!parts.loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
     const ModalResponse& response = parts.response;
     out.n_dofs = response.n_dofs();
@@ -106,7 +107,7 @@ void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& ra
     out.checks.n_modes_used = n_used;
     out.mode_damping.assign(parts.damping.modes.begin(), parts.damping.modes.begin() + n_used);
     const ModalResponseModel model(parts, n_used);
-    sweep_response(model, range, f1_hz, out.roll_outer_diameter, out);
+    sweep_response(model, range, f1_hz, out.roll_outer_diameter, out, checking);
     out.assumptions.push_back(kept_modes_assumption(out.checks, parts.modes_words) + " (K^-1 f less the kept modes' part)");
 }
 

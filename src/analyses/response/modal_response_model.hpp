@@ -54,7 +54,8 @@ struct ModalLevelParts {
     int min_kept = 2;
     std::string modes_words;
 };
-void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& range, double f1_hz, ResponseResult& out);
+void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& range, double f1_hz, ResponseResult& out,
+                           ResponseChecking checking = ResponseChecking::full);
 
 // Step 1 of the harmonic and solid levels (scene.model resolved): one
 // process, the result's level-independent fields and `solver`, the level's

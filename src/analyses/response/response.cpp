@@ -124,12 +124,13 @@ void require_response_level(const Scene& scene) {
                          "(docs/rotation.md); expected full bands, no [mesh] file and expanded chucks");
 }
 
-ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options) {
+ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
+                                   ResponseChecking checking) {
     require_response_level(scene);
     const std::string level = chosen_level(scene);
-    if (level == "beam") return run_beam_response(scene, setup, options);
-    if (level == "harmonic") return run_harmonic_response(scene, setup);
-    return run_solid_response(scene, setup);
+    if (level == "beam") return run_beam_response(scene, setup, options, checking);
+    if (level == "harmonic") return run_harmonic_response(scene, setup, checking);
+    return run_solid_response(scene, setup, checking);
 }
 
 }  // namespace coremodal

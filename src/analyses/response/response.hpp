@@ -109,10 +109,20 @@ struct ResponseResult {
     std::vector<std::string> effects, notes, assumptions;
 };
 
+// Whether a run checks its superposition (step 5). `none` is for a caller
+// that runs the same scene many times over and checks once (the verdict of
+// `coremodal limits`: at the case's roll, not at every diameter and band
+// sample); the beam level then keeps only the modes up to the cutoff
+// (lateral_response.hpp), which is the same truncated sum without a dense
+// eigensolve of every mode. ResponseChecks then holds no differences
+// (speeds_checked = 0).
+enum class ResponseChecking { full, none };
+
 // At the scene's level ("auto" resolved as models/choose does): beam,
 // harmonic or solid. Throws InputError for a scene the level cannot take;
 // SolveError from the solvers.
-ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {});
+ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {},
+                                   ResponseChecking checking = ResponseChecking::full);
 
 // InputError, before any work, when the scene's level cannot take it: the
 // harmonic and solid levels need a body of revolution.

@@ -17,8 +17,9 @@ ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setu
 // words for its modes, e.g. "lateral modes at rest").
 std::string kept_modes_assumption(const ResponseChecks& checks, const std::string& modes_words);
 
-ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options);
-ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup);
-ResponseResult run_solid_response(const Scene& scene, const ResponseSetup& setup);
+ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
+                                 ResponseChecking checking);
+ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking);
+ResponseResult run_solid_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking);
 
 }  // namespace coremodal

@@ -52,7 +52,8 @@ public:
 // differences): the sweep over range.speeds_hz, peaks, the speed at
 // range.limit_m, the checks. f1_hz: the first bending frequency at rest
 // (I-5's implied factor); dp: the roll's outer diameter (web speeds).
+// checking = none leaves the checks out (response.hpp).
 void sweep_response(const ResponseModel& model, const ResponseRange& range, double f1_hz, double dp,
-                    ResponseResult& out);
+                    ResponseResult& out, ResponseChecking checking = ResponseChecking::full);
 
 }  // namespace coremodal

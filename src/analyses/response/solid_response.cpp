@@ -58,7 +58,7 @@ Eigen::MatrixXd first_bending_pair(const ModalBasis& basis, const std::vector<Mo
 
 }  // namespace
 
-ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup& setup) {
+ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
     scene.model = "solid";
@@ -92,7 +92,7 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
     for (const ResponseRange::Probe& p : range.probes) probes.push_back(solid_section_probe(model, p.z_m));
     // 3-5. The sweep, the peaks, the speed at the limit, the checks.
     finish_modal_response({response, damping, loads, probes, labels, kMinModesKept, "modes of the solid at rest solved"},
-                          range, out.speeds_at_rest.f1_hz, out);
+                          range, out.speeds_at_rest.f1_hz, out, checking);
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -68,9 +68,15 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model) {
     k.free_span_m = scene.core.length - k.li_left_m - k.li_right_m;
     k.f1_hz = f1;
     if (by_model) {
-        k.f2_fe_hz = analyse_derived_scene(free_span_scene(scene, k.free_span_m)).beam.fe_first_bending_hz;
+        // The derived scene's own beam comparison is the same Timoshenko beam
+        // (the section, free-free over the free span): taken from it, not
+        // solved twice.
+        const BeamComparison free = analyse_derived_scene(free_span_scene(scene, k.free_span_m)).beam;
+        k.f2_fe_hz = free.fe_first_bending_hz;
+        k.f2_beam_hz = free.timoshenko_hz;
+    } else {
+        k.f2_beam_hz = timoshenko_bending_hz(beam_section(scene), k.free_span_m, BeamEnds::free_free, 1).at(0);
     }
-    k.f2_beam_hz = timoshenko_bending_hz(beam_section(scene), k.free_span_m, BeamEnds::free_free, 1).at(0);
     k.chuck_factor = k.f2_fe_hz > 0 ? f1 / k.f2_fe_hz : 0;
     k.chuck_factor_beam = f1 / k.f2_beam_hz;
     return k;

@@ -5,11 +5,15 @@
 // interpolation of the governing speeds; the band holds the point value and
 // narrows with an input's range; the knife edge of case 13 is flagged.
 #include "analyses/campbell/campbell.hpp"
+#include "analyses/fit/fit.hpp"
 #include "analyses/limits/limits.hpp"
 #include "analyses/limits/limits_band.hpp"
 #include "analyses/response/response.hpp"
 #include "analyses/run/run.hpp"
+#include "beam/beam_model.hpp"
+#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
+#include "modes/tracking.hpp"
 #include "scene/limits_spec.hpp"
 #include "scene/toml_text.hpp"
 #include "scene/traction_case.hpp"
@@ -19,6 +23,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -269,4 +274,109 @@ TEST_CASE("A [traction] roller joins the verdict as the web's slip speed, the st
         CHECK(p.safe_low_m_s == Approx(slip).epsilon(1e-12));  // no input of the roll's band moves the roller
         CHECK(r.verdict.governed_by == std::string("web slip (traction)"));
     }
+}
+
+TEST_CASE("The pencils' critical speeds are the Campbell sweep's refined crossings", "[limits][speed]") {
+    // Case 13 at the beam level: its bending planes are alike, so the verdict
+    // takes the order-1 and order-2 crossings from the plane problem's pencils
+    // (beam/rotating_modes.hpp) instead of the sweep; the sweep refines its
+    // crossings to 1e-6 of the speed (kCrossingSpeedTolerance).
+    const LimitsCase c = parse_limits_case(kCase13);
+    const BeamModelResult beam = solve_beam_model(c.scene);
+    const double top_hz = 40;
+    const std::optional<std::vector<PlaneCrossing>> pencil =
+        plane_critical_speeds(beam.network, beam.lambda_scale, {1, 2}, top_hz);
+    REQUIRE(pencil);
+    RotationSpec rotation;
+    for (int i = 0; i <= 20; ++i) rotation.speeds_hz.push_back(top_hz * i / 20);
+    rotation.excitation_orders = {1, 2};
+    const CampbellResult campbell = run_campbell(c.scene, rotation);
+    for (int order : {1, 2})
+        for (Whirl whirl : {Whirl::forward, Whirl::backward}) {
+            INFO("order " << order << " " << whirl_name(whirl));
+            const auto same = [&](const auto& x) { return x.order == order && x.whirl == whirl; };
+            const auto p = std::find_if(pencil->begin(), pencil->end(), same);
+            const auto s = std::find_if(campbell.critical.begin(), campbell.critical.end(), same);
+            REQUIRE(p != pencil->end());
+            REQUIRE(s != campbell.critical.end());
+            CHECK(p->speed_hz == Approx(s->speed_hz).epsilon(2 * kCrossingSpeedTolerance));
+            CHECK(label_text(p->label) == label_text(s->label));
+        }
+}
+
+TEST_CASE("A forced response that leaves its checks to the caller gives the checked run's numbers",
+          "[limits][speed]") {
+    // ResponseChecking::none keeps only the modes up to the cutoff (the
+    // network's Krylov solver) and the static part of the others as K^-1 f less
+    // the kept modes' part: the same truncated sum as the complete basis gives.
+    const ResponseCase c = parse_response_case(kCase13);
+    const ResponseResult full = run_forced_response(c.scene, *c.response);
+    const ResponseResult fast = run_forced_response(c.scene, *c.response, {}, ResponseChecking::none);
+    CHECK(full.checks.speeds_checked > 0);
+    CHECK(fast.checks.speeds_checked == 0);
+    CHECK(fast.checks.n_modes_used == full.checks.n_modes_used);
+    REQUIRE(fast.points.size() == full.points.size());
+    for (size_t i = 0; i < full.points.size(); ++i)
+        CHECK(fast.points[i].probes[0].total_m == Approx(full.points[i].probes[0].total_m).epsilon(1e-8));
+    REQUIRE(fast.safe.reached == full.safe.reached);
+    CHECK(fast.safe.web_speed_m_s == Approx(full.safe.web_speed_m_s).epsilon(1e-8));
+    REQUIRE(fast.peaks.size() == full.peaks.size());
+    for (size_t i = 0; i < full.peaks.size(); ++i)
+        CHECK(fast.peaks[i].amplitude_m == Approx(full.peaks[i].amplitude_m).epsilon(1e-8));
+}
+
+TEST_CASE("A measured first resonance narrows the band through fit, around the fitted point value",
+          "[limits][band][fit]") {
+    // Case 16's measurements file (cases/16-limits-measured-f1.toml): the first
+    // resonance of the full roll in its stand; the fit sets the chucks' contact
+    // stiffness, the verdict at the full roll runs on the fitted case.
+    const std::string measurements = std::string(COREMODAL_SOURCE_DIR) + "/cases/16-limits-measured-f1.toml";
+    const std::string case16 = std::string(COREMODAL_SOURCE_DIR) + "/cases/16-limits-rotogravure-150x15.8-4320.toml";
+    const FitOutcome fit = run_fit(read_fit_input(measurements));
+    REQUIRE(fit.converged);
+    REQUIRE(fit.cases.size() == 1);
+    REQUIRE(fit.parameters.at(0).uncertainty);
+    CHECK(fit.measurements.at(0).model_hz == Approx(21.2).margin(0.05));  // the fit reproduces the measurement
+    const LimitsCase fitted = parse_limits_case_text(fit.cases[0].calibrated_text, case16);
+    const LimitsCase original = parse_limits_case(case16);
+    const double d = roll_outer_diameter(original.scene);
+    const LimitsRequest wide = diameters(d, d, 1, true);
+    LimitsRequest narrow = wide;
+    narrow.fit = fit, narrow.fit_file = measurements;
+    const LimitsResult before = verdict(original.scene, original.response, wide);
+    const LimitsResult after = verdict(fitted.scene, fitted.response, narrow);
+    const LimitsPoint &p = before.points.at(0), &q = after.points.at(0);
+    // The model now has the measured f1.
+    CHECK(q.f1_hz == Approx(fit.measurements[0].model_hz).epsilon(1e-6));
+    // The contact's range is the fit's, narrower than x1/3 - x3.
+    const auto contact = std::find_if(after.inputs.begin(), after.inputs.end(),
+                                      [](const UncertainInput& i) { return i.name == "chuck contact stiffness"; });
+    REQUIRE(contact != after.inputs.end());
+    CHECK(contact->low > 1 / 3.0);
+    CHECK(contact->high < 3.0);
+    CHECK(contact->source.rfind("fitted: ", 0) == 0);
+    // The band holds the point value and is narrower than before.
+    CHECK(q.safe_low_m_s <= q.safe_m_s);
+    CHECK(q.safe_m_s <= q.safe_high_m_s);
+    CHECK(q.safe_high_m_s - q.safe_low_m_s < p.safe_high_m_s - p.safe_low_m_s);
+    for (const CriterionSpeed& s : q.criteria) {
+        if (!s.given) continue;
+        INFO(criterion_name(s.criterion));
+        CHECK(s.band_low_m_s <= s.web_speed_m_s);
+        CHECK(s.web_speed_m_s <= s.band_high_m_s);
+    }
+}
+
+TEST_CASE("run's verdict line is the limits verdict at the case's roll, at the beam level", "[limits]") {
+    const LimitsCase c = parse_limits_case(kCase13);
+    const std::string line = stand_verdict_line(kCase13);
+    REQUIRE(line.find("safe up to ") != std::string::npos);
+    LimitsRequest request = diameters(roll_outer_diameter(c.scene), roll_outer_diameter(c.scene), 1, false);
+    request.check_response = false;
+    const LimitsResult r = verdict(c.scene, c.response, request);
+    CHECK(line.substr(line.find("safe up to ")) == verdict_line(r));
+    CHECK_FALSE(r.checks);  // left to `limits` and `response`
+    // A free scene has no stand: no line.
+    const std::string free_case = std::string(COREMODAL_SOURCE_DIR) + "/cases/01-iso-free-free-76x15.toml";
+    CHECK(stand_verdict_line(free_case).empty());
 }
