@@ -33,7 +33,8 @@ Scene free_span_scene(const Scene& scene, double span) {
     const MeshLevel& coarse = *find_mesh_level("coarse");
     free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
     free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
-    free.mesh.n_around = std::min(scene.mesh.n_around, coarse.n_around);
+    free.mesh.n_around = std::min(scene.mesh.n_around,
+                                  elements_around(coarse, free.core.inner_diameter, free.core.outer_diameter));
     free.mesh.n_along = std::min(
         static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)),
         elements_along(span, free.core.outer_diameter,
@@ -46,6 +47,12 @@ Scene free_span_scene(const Scene& scene, double span) {
 // In words, for the console, report.md and summary.json.
 std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<Mode>& modes) {
     const long rigid = std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "rigid"; });
+    const long bending =
+        std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "bending"; });
+    if (bending > 0)
+        return "the " + std::to_string(bending) + " bending modes found are all in the horizontal plane (f1 is the "
+               "first bending mode in the vertical plane, docs/chucks.md); " +
+               (analysis.f_max_hz ? "widen the band" : "ask for more modes");
     if (analysis.f_max_hz) {
         const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
                                  significant(*analysis.f_max_hz) + " Hz";
@@ -55,6 +62,29 @@ std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<
     }
     return "no bending mode among the " + std::to_string(modes.size()) + " modes found (" + std::to_string(rigid) +
            " rigid); ask for more modes";
+}
+
+// f1, and with it k = f1 / f2, is the roll's first bending mode in the
+// vertical plane (y-z; gravity acts along -y), docs/chucks.md: a stand
+// whose chucks hold the roll less stiffly sideways than vertically (a chuck
+// not expanded sits on its contact arc) has a lower horizontal bending mode,
+// and a k that took whichever came first would change plane from scene to
+// scene. The plane is the one the mode's effective mass is in: y at least x.
+// A mode with no translational effective mass (an antisymmetric one, or a
+// level that gives none) has no plane to tell; when no bending mode has one,
+// the first bending mode is f1. Modes in which the roll moves rigidly on its
+// supports are "support", not bending (modes/classify.hpp).
+const Mode* first_vertical_bending(const std::vector<Mode>& modes) {
+    const Mode* first = nullptr;
+    bool any_plane = false;
+    for (const auto& m : modes) {
+        if (m.label.type != "bending") continue;
+        if (!first) first = &m;
+        const double x = m.effective_mass.x, y = m.effective_mass.y;
+        any_plane = any_plane || x + y > 0;
+        if (x + y > 0 && y >= x) return &m;
+    }
+    return any_plane ? nullptr : first;
 }
 
 }  // namespace
@@ -85,14 +115,13 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
     b.euler_bernoulli_hz = euler_bernoulli_first_bending_hz(section, b.span_m);
     b.timoshenko_hz =
         timoshenko_bending_hz(section, b.span_m, free ? BeamEnds::free_free : BeamEnds::clamped_clamped, 1).at(0);
-    for (const auto& m : modes)
-        if (m.label.type == "bending") {
-            b.fe_first_bending_hz = m.frequency_hz;
-            b.fe_mode_index = m.index;
-            b.fe_over_timoshenko = m.frequency_hz / b.timoshenko_hz;
-            b.fe_over_euler_bernoulli = m.frequency_hz / b.euler_bernoulli_hz;
-            return b;
-        }
+    if (const Mode* m = first_vertical_bending(modes)) {
+        b.fe_first_bending_hz = m->frequency_hz;
+        b.fe_mode_index = m->index;
+        b.fe_over_timoshenko = m->frequency_hz / b.timoshenko_hz;
+        b.fe_over_euler_bernoulli = m->frequency_hz / b.euler_bernoulli_hz;
+        return b;
+    }
     b.fe_missing = why_no_bending_mode(scene.analysis, modes);
     return b;
 }
