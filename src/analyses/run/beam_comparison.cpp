@@ -44,14 +44,20 @@ Scene free_span_scene(const Scene& scene, double span) {
     return free;
 }
 
+// A lateral resonance of the roll: its first circumferential harmonic
+// (n = 1), whether the roll bends in it ("bending") or moves almost as a body
+// on compliant chucks, bearings or contact arcs ("support",
+// modes/classify.hpp). Where a roll on soft supports crosses from one label
+// to the other is a threshold of the classifier, not physics: both count.
+bool is_lateral(const Mode& m) { return m.label.n == 1 && (m.label.type == "bending" || m.label.type == "support"); }
+
 // In words, for the console, report.md and summary.json.
 std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<Mode>& modes) {
     const long rigid = std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "rigid"; });
-    const long bending =
-        std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "bending"; });
-    if (bending > 0)
-        return "the " + std::to_string(bending) + " bending modes found are all in the horizontal plane (f1 is the "
-               "first bending mode in the vertical plane, docs/chucks.md); " +
+    const long lateral = std::count_if(modes.begin(), modes.end(), is_lateral);
+    if (lateral > 0)
+        return "the " + std::to_string(lateral) + " lateral (n = 1) modes found are all in the horizontal plane (f1 is "
+               "the first in the vertical plane, docs/chucks.md); " +
                (analysis.f_max_hz ? "widen the band" : "ask for more modes");
     if (analysis.f_max_hz) {
         const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
@@ -64,25 +70,36 @@ std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<
            " rigid); ask for more modes";
 }
 
-// f1, and with it k = f1 / f2, is the roll's first bending mode in the
-// vertical plane (y-z; gravity acts along -y), docs/chucks.md: a stand
-// whose chucks hold the roll less stiffly sideways than vertically (a chuck
-// not expanded sits on its contact arc) has a lower horizontal bending mode,
-// and a k that took whichever came first would change plane from scene to
-// scene. The plane is the one the mode's effective mass is in: y at least x.
-// A mode with no translational effective mass (an antisymmetric one, or a
-// level that gives none) has no plane to tell; when no bending mode has one,
-// the first bending mode is f1. Modes in which the roll moves rigidly on its
-// supports are "support", not bending (modes/classify.hpp).
-const Mode* first_vertical_bending(const std::vector<Mode>& modes) {
+// Below this share of the largest sideways effective mass of any mode (a
+// rigid translation's, on a free body) a mode has no plane of its own:
+// effective masses that vanish by symmetry (antisymmetric modes, a free
+// body's bending) come out of the products as round-off, 1e-20 of a
+// symmetric mode's (case 07: 3.7e-20 kg against 72 kg).
+constexpr double kNoPlaneFraction = 1e-9;
+
+// f1, and with it k = f1 / f2, is the roll's first lateral resonance in the
+// vertical plane (y-z; gravity acts along -y), docs/chucks.md: a stand whose
+// chucks hold the roll less stiffly sideways than vertically (a chuck not
+// expanded sits on its contact arc) has a lower horizontal one, and a k that
+// took whichever came first would change plane from scene to scene. The plane
+// is the one the mode's effective mass is in: y at least x. Its label does
+// not matter (is_lateral): a label must never change k. A mode with no
+// translational effective mass (an antisymmetric one, or a level that gives
+// none) has no plane to tell; when no lateral mode has one, the first lateral
+// mode is f1.
+const Mode* first_vertical_lateral(const std::vector<Mode>& modes) {
+    double largest = 0;
+    for (const auto& m : modes) largest = std::max(largest, m.effective_mass.x + m.effective_mass.y);
+    const auto has_plane = [&](const Mode& m) {
+        return m.effective_mass.x + m.effective_mass.y > kNoPlaneFraction * largest;
+    };
     const Mode* first = nullptr;
     bool any_plane = false;
     for (const auto& m : modes) {
-        if (m.label.type != "bending") continue;
+        if (!is_lateral(m)) continue;
         if (!first) first = &m;
-        const double x = m.effective_mass.x, y = m.effective_mass.y;
-        any_plane = any_plane || x + y > 0;
-        if (x + y > 0 && y >= x) return &m;
+        any_plane = any_plane || has_plane(m);
+        if (has_plane(m) && m.effective_mass.y >= m.effective_mass.x) return &m;
     }
     return any_plane ? nullptr : first;
 }
@@ -115,7 +132,7 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
     b.euler_bernoulli_hz = euler_bernoulli_first_bending_hz(section, b.span_m);
     b.timoshenko_hz =
         timoshenko_bending_hz(section, b.span_m, free ? BeamEnds::free_free : BeamEnds::clamped_clamped, 1).at(0);
-    if (const Mode* m = first_vertical_bending(modes)) {
+    if (const Mode* m = first_vertical_lateral(modes)) {
         b.fe_first_bending_hz = m->frequency_hz;
         b.fe_mode_index = m->index;
         b.fe_over_timoshenko = m->frequency_hz / b.timoshenko_hz;

@@ -74,13 +74,26 @@ TEST_CASE("Bending shapes stay bending: the rigid fit leaves far more than 5 % o
     const Mesh& mesh = core_mesh();
     const ModeClassifier held(mesh, roll_nodes(mesh), BodyHeld::held);
     // A pinned half sine keeps 1 - 8 / pi^2 = 19 % of its mean square off
-    // the best translation; the free-free first mode (cosh/cos form, here its
-    // polynomial stand-in with zero mean and zero moment) keeps all of it.
+    // the best translation when the mean is taken along the length. The fit
+    // weighs every looked-at node alike, and a hex20 mesh has more nodes on
+    // its corner planes than on its mid planes, so the truth here is the
+    // same fit by hand over the nodes: share = 1 - (sum s)^2 / (N sum s^2)
+    // (a rotation cannot help: the shape is symmetric in z and around the
+    // axis, so its moments about the centroid vanish). 24 % on this mesh.
     const auto half_sine = [](const std::array<double, 3>& x) -> std::array<double, 3> {
         return {0, std::sin(M_PI * x[2] / kLength), 0};
     };
     const std::vector<double> pinned = shape_of(mesh, half_sine);
-    CHECK(held.deformation_share(pinned) == Approx(1 - 8 / (M_PI * M_PI)).epsilon(0.05));
+    double sum = 0, sum_of_squares = 0;
+    const std::vector<int> nodes = roll_nodes(mesh);
+    for (int n : nodes) {
+        const double s = std::sin(M_PI * mesh.nodes[n][2] / kLength);
+        sum += s;
+        sum_of_squares += s * s;
+    }
+    const double by_hand = 1 - sum * sum / (double(nodes.size()) * sum_of_squares);
+    CHECK(by_hand > 1 - 8 / (M_PI * M_PI));  // the corner planes weigh the ends, where s is small
+    CHECK(held.deformation_share(pinned) == Approx(by_hand).epsilon(1e-9));
     const ModeLabel label = held.classify(pinned, kLambda, kLambdaScale);
     CHECK(label.type == "bending");
     CHECK(label.n == 1);
