@@ -310,8 +310,7 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
 
     // 6. Name every mode and compute its effective masses.
     say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
-    out.modes = solid_modes(mesh, dofs, system, solved, request,
-                            scene.supports.kind == SupportKind::free && !scene.web ? BodyHeld::free : BodyHeld::held);
+    out.modes = solid_modes(mesh, dofs, system, solved, request, body_held(scene));
     check_mesh_resolution(scene, harmonic, out);
     out.timing.classify = stage.lap();
     return out;
