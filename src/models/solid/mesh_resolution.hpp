@@ -25,10 +25,11 @@ constexpr double kMeshWarnError = 0.02;
 // the mode is then the mesh's, not the roll's.
 constexpr double kMeshGrossError = 0.20;
 // The error around the circumference falls as (n_around)^-p: p = 4 in the
-// limit (quadratic cells, eigenvalue error of order h^4); measured 3.6 from
-// 16 to 32 and 3.8 from 32 to 48 around on the ovalling modes of a steel
-// ring (docs/accuracy-vs-cost.md, "Does the mesh resolve the band"). The
-// lower value keeps the level named for a fix on the safe side.
+// limit (quadratic cells, eigenvalue error of order h^4); measured on the
+// n = 2 ovalling mode 3.7 from 16 to 24 and 3.8 from 24 to 32 around on a
+// 76 x 3 mm steel tube, 3.8 from 32 to 48 on a steel ring of 0.5 m radius
+// and 20 mm wall (docs/accuracy-vs-cost.md, "Thin walls"). The lower value
+// keeps the level named for a fix on the safe side.
 constexpr double kAroundConvergenceOrder = 3.5;
 
 // The worst-resolved solid mode against the harmonic level.
@@ -41,7 +42,8 @@ struct MeshResolution {
 };
 
 // Every elastic solid mode (not rigid, support or mixed) against the
-// harmonic mode of the same label nearest in frequency.
+// harmonic mode of the same label at or just below it (the highest such; the
+// nearest when none lies below).
 MeshResolution compare_with_harmonic(const std::vector<Mode>& solid, const std::vector<Mode>& harmonic);
 
 // The first named mesh level whose count around (for this core) brings
