@@ -34,10 +34,12 @@ struct MeshLevel {
 // 1982). With s = 2 pi R / n_around, s^2 / (R t) = 1 / c^2 where c =
 // n_around / (2 pi sqrt(R / t)). Measured on the n = 2 ovalling mode against
 // the harmonic level (exact around; docs/accuracy-vs-cost.md, "Thin walls"):
-// c = 0.5: +43 %, 0.58: +24 %, 0.82: +6.7 %, 1.0: +3.9 %, 1.5: +0.8 %, the
-// same on steel rings and paperboard cores. The per-level c keeps every
-// shipped case's count (76 x 15 mm: 2 pi sqrt(R / t) = 10.9; 150 x 15.8 mm:
-// 14.4) and raises it for thin walls (a 76 mm core with a 0.5 mm wall: 55).
+// a steel ring of 0.5 m radius and 20 mm wall at c = 0.51: +45 %, 0.76:
+// +10.8 %, 1.02: +3.7 %, 1.53: +0.8 %; a 76 x 3 mm steel tube at c = 0.70:
+// +15 %, 1.05: +3.4 %, 1.40: +1.1 %. The per-level c keeps every shipped
+// case's count (76 x 15 mm: 2 pi sqrt(R / t) = 10.9; 150 x 15.8 mm: 14.4)
+// and raises it for thin walls (a 76 mm core with a 0.5 mm wall: 84 at
+// `default`).
 inline constexpr std::array<MeshLevel, 4> kMeshLevels = {{
     {"coarse", 2, 1, 16, 4.0, 1.0},
     {"default", 3, 2, 32, 3.0, 1.5},
@@ -49,7 +51,7 @@ inline constexpr std::array<MeshLevel, 4> kMeshLevels = {{
 // resolve the first bending modes of a free-free or clamped tube.
 inline constexpr int kMinElementsAlong = 8;
 // The most elements around a thin wall gets from its level (a film core of
-// 0.1 mm on a 152 mm bore asks for 230 at `default`); beyond, the run's
+// 0.1 mm on a 152 mm bore asks for 260 at `default`); beyond, the run's
 // mesh check says how far its modes are off (models/solid/mesh_resolution.hpp).
 // The mode classifier resolves angles down to 2 pi / 1024 (modes/classify.cpp).
 inline constexpr int kMaxElementsAround = 512;
