@@ -317,6 +317,68 @@ TubeSection with_chucks_apart_from_bore(TubeSection s) {
     return s;
 }
 
+// gmsh puts the higher-order node of an edge (and of a face, and the centre
+// of a hex27) that lies inside a plane surface or a volume half-way between
+// its corners in Cartesian space: on the chord of an arc. On the core and
+// rest paper every circumferential edge is an arc, and the chord's midpoint
+// lies the sagitta r (1 - cos(pi / n_around)) inside it: 0.73 mm on a 76 mm
+// bore with 16 elements around, more than a 1 mm wall split in two. Such a
+// cell folds over (negative Jacobian) and a thicker one is kinked and far too
+// stiff in ring bending (issue 33: a 0.5 m ring at 130 Hz for 51 Hz). The
+// tube's cells are boxes in (r, theta, z) (structured annuli extruded along
+// z: every corner lies exactly on its ring), so each higher-order node is
+// placed where the trilinear map of its cell's corners in (r, theta, z) puts
+// it: edge nodes at the mean radius and angle, on the arc. The cell is then
+// r(xi) times the quadratic arc through three points of the unit circle: its
+// Jacobian is positive whatever the wall's thickness.
+void place_tube_nodes_on_cylinders(const TubeSection& s, const PartVolumes& volumes) {
+    std::vector<std::size_t> tags;
+    std::vector<double> xyz, params;
+    gmsh::model::mesh::getNodes(tags, xyz, params, -1, -1, true, false);
+    const std::size_t max_tag = tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
+    std::vector<std::array<double, 3>> cylindrical(max_tag + 1);  // node tag -> (r, theta, z)
+    for (size_t k = 0; k < tags.size(); ++k)
+        cylindrical[tags[k]] = {std::hypot(xyz[3 * k], xyz[3 * k + 1]), std::atan2(xyz[3 * k + 1], xyz[3 * k]),
+                                xyz[3 * k + 2]};
+    std::map<std::size_t, std::array<double, 3>> placed;  // higher-order node tag -> (x, y, z)
+    for (const RadialLayer& layer : s.layers) {
+        const auto it = volumes.find(layer.part);
+        if (it == volumes.end()) continue;
+        for (int volume : it->second) {
+            std::vector<int> types;
+            std::vector<std::vector<std::size_t>> element_tags, node_tags;
+            gmsh::model::mesh::getElements(types, element_tags, node_tags, 3, volume);
+            for (size_t t = 0; t < types.size(); ++t) {
+                std::string name;
+                int dim, order, n_nodes, n_corners;
+                std::vector<double> local;  // reference hexahedron [-1, 1]^3, gmsh's node order
+                gmsh::model::mesh::getElementProperties(types[t], name, dim, order, n_nodes, local, n_corners);
+                COREMODAL_ASSERT(n_corners == 8);
+                for (size_t c = 0; c < element_tags[t].size(); ++c) {
+                    const std::size_t* cell = &node_tags[t][c * n_nodes];
+                    std::array<std::array<double, 3>, 8> corner{};
+                    for (int a = 0; a < 8; ++a) {
+                        corner[a] = cylindrical[cell[a]];
+                        // Angles measured from corner 0's, so a cell across theta = pi stays whole.
+                        corner[a][1] = corner[0][1] + std::remainder(corner[a][1] - corner[0][1], 2 * M_PI);
+                    }
+                    for (int a = 8; a < n_nodes; ++a) {
+                        const double* xi = &local[3 * a];
+                        std::array<double, 3> p{};  // (r, theta, z) by the trilinear map
+                        for (int b = 0; b < 8; ++b) {
+                            const double* xb = &local[3 * b];
+                            const double w = (1 + xi[0] * xb[0]) * (1 + xi[1] * xb[1]) * (1 + xi[2] * xb[2]) / 8;
+                            for (int k = 0; k < 3; ++k) p[k] += w * corner[b][k];
+                        }
+                        placed[cell[a]] = {p[0] * std::cos(p[1]), p[0] * std::sin(p[1]), p[2]};
+                    }
+                }
+            }
+        }
+    }
+    for (const auto& [tag, x] : placed) gmsh::model::mesh::setNode(tag, {x[0], x[1], x[2]}, {});
+}
+
 }  // namespace
 
 void build_tube_model(const TubeSection& section, const std::vector<ClampSpec>& clamps,
@@ -332,6 +394,7 @@ void build_tube_model(const TubeSection& section, const std::vector<ClampSpec>& 
     // Incomplete second order = 20-node serendipity hexahedra; complete = 27-node.
     gmsh::option::setNumber("Mesh.SecondOrderIncomplete", element == "hex27" ? 0 : 1);
     gmsh::model::mesh::generate(3);
+    place_tube_nodes_on_cylinders(s, volumes);
 }
 
 }  // namespace coremodal

@@ -40,4 +40,8 @@ Mode numbered_mode(int index, double lambda, double relative_residual) {
     return mode;
 }
 
+BodyHeld body_held(const Scene& scene) {
+    return scene.supports.kind == SupportKind::free && !scene.web ? BodyHeld::free : BodyHeld::held;
+}
+
 }  // namespace coremodal

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "eigensolve/modal_solver.hpp"
+#include "modes/classify.hpp"
 #include "modes/mode_set.hpp"
 #include "scene/scene.hpp"
 
@@ -22,6 +23,11 @@ std::string shift_scale_text(const Scene& scene);
 // ("" for the whole model, or which of its independent problems).
 SolvedModes solve_for_case(const Scene& scene, const OperatorSet& operators, const SolveRequest& request,
                            const Progress& progress, const std::string& problem);
+
+// Whether the roll is held (supports or a web) or a free body: the mode
+// classifier names a rigid-body motion at a frequency of its own "support"
+// or "rigid" by it (modes/classify.hpp).
+BodyHeld body_held(const Scene& scene);
 
 // A mode with its index (from 1), eigenvalue, frequency and residual.
 Mode numbered_mode(int index, double lambda, double relative_residual);

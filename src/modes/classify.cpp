@@ -102,12 +102,18 @@ int ModeClassifier::distinct_angles(const std::vector<int>& nodes) const {
     return count;
 }
 
-ModeClassifier::ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes) {
+ModeClassifier::ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes, BodyHeld held) : held_(held) {
     std::vector<int> looked_at = nodes;
     if (looked_at.empty()) {
         looked_at.resize(mesh.n_nodes());
         std::iota(looked_at.begin(), looked_at.end(), 0);
     }
+    std::array<double, 3> centroid{};
+    for (int n : looked_at)
+        for (int k = 0; k < 3; ++k) centroid[k] += mesh.nodes[n][k] / double(looked_at.size());
+    nodes_ = looked_at;
+    for (int n : looked_at)
+        offset_.push_back({mesh.nodes[n][0] - centroid[0], mesh.nodes[n][1] - centroid[1], mesh.nodes[n][2] - centroid[2]});
     double z_min = 1e300, z_max = -1e300;
     for (int n : looked_at) {
         z_min = std::min(z_min, mesh.nodes[n][2]);
@@ -122,6 +128,30 @@ ModeClassifier::ModeClassifier(const Mesh& mesh, const std::vector<int>& nodes) 
         stations_[std::min(kStations - 1, int((x[2] - z_min) / width))].push_back(n);
     }
     std::erase_if(stations_, [](const auto& s) { return s.empty(); });
+}
+
+double ModeClassifier::deformation_share(const std::vector<double>& shape) const {
+    // Normal equations of u_i = t + w x r_i: per node the 3 x 6 block [I, -[r_i]x].
+    Eigen::Matrix<double, 6, 6> AtA = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> Atu = Eigen::Matrix<double, 6, 1>::Zero();
+    double total = 0;
+    for (size_t k = 0; k < nodes_.size(); ++k) {
+        const auto& r = offset_[k];
+        Eigen::Matrix<double, 3, 6> A;
+        A << 1, 0, 0, 0, r[2], -r[1],  //
+            0, 1, 0, -r[2], 0, r[0],   //
+            0, 0, 1, r[1], -r[0], 0;
+        const Eigen::Vector3d u(shape[3 * nodes_[k]], shape[3 * nodes_[k] + 1], shape[3 * nodes_[k] + 2]);
+        AtA += A.transpose() * A;
+        Atu += A.transpose() * u;
+        total += u.squaredNorm();
+    }
+    if (total <= 0) return 1;
+    // Rotation about the axis of a body of revolution is one freedom of
+    // six; a pseudo-inverse copes with nodes all on one line (a beam).
+    const Eigen::Matrix<double, 6, 1> p = AtA.completeOrthogonalDecomposition().solve(Atu);
+    // Least squares: the residual's square is |u|^2 minus the fit's projection.
+    return std::clamp((total - p.dot(Atu)) / total, 0.0, 1.0);
 }
 
 ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lambda, double lambda_scale) const {
@@ -157,6 +187,10 @@ ModeLabel ModeClassifier::classify(const std::vector<double>& shape, double lamb
 
     if (std::abs(lambda) < kRigidEigenvalueFraction * lambda_scale) {
         label = {"rigid", 0, 0, 1.0};  // any mix of rigid motions: n and m mean nothing
+    } else if (deformation_share(shape) < kRigidMotionDeformationShare) {
+        // The roll moving as a whole at a frequency of its own: n and m say
+        // how (translation m = 0, rocking m = 1, axial or torsional n = 0).
+        label.type = held_ == BodyHeld::held ? "support" : "rigid";
     } else if (label.dominant_share < kMinDominantShare) {
         label.type = "mixed";
     } else if (best_n == 1) {

@@ -51,7 +51,7 @@ MeshSpec CaseReader::read_mesh(const Section& top, const Scene& scene) const {
     spec.level = level.name;
     spec.n_wall = level.n_wall;
     spec.n_rest_paper = level.n_rest_paper;
-    spec.n_around = level.n_around;
+    spec.n_around = elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter);
     if (mesh) apply_mesh_overrides(*mesh, spec);
     if (mesh && get(*mesh, "along")) return spec;
     const std::optional<int> along = elements_along(

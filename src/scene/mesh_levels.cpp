@@ -17,6 +17,14 @@ const MeshLevel* find_mesh_level(std::string_view name) {
     return nullptr;
 }
 
+int elements_around(const MeshLevel& level, double inner_diameter, double outer_diameter) {
+    const double mean_radius = (inner_diameter + outer_diameter) / 4, wall = (outer_diameter - inner_diameter) / 2;
+    const double wanted = level.around_per_slenderness * 2 * std::numbers::pi * std::sqrt(mean_radius / wall);
+    // Written so that NaN (a wall the case reader refuses) keeps the level's count.
+    if (!(wall > 0) || !(wanted > level.n_around)) return level.n_around;
+    return 4 * static_cast<int>(std::ceil(std::min<double>(wanted, kMaxElementsAround) / 4));
+}
+
 std::optional<int> elements_along(double length, double outer_diameter, int n_around,
                                   double axial_aspect) {
     const double circumferential = std::numbers::pi * outer_diameter / n_around;
@@ -36,12 +44,13 @@ void apply_mesh_level(Scene& scene, std::string_view level_name) {
     if (scene.mesh.file)
         throw InputError("--mesh " + std::string(level_name) + ": the case uses the mesh file " + *scene.mesh.file +
                          "; a mesh level applies only to generated meshes");
-    const auto along = elements_along(scene.core.length, scene.core.outer_diameter, level->n_around, level->axial_aspect);
+    const int around = elements_around(*level, scene.core.inner_diameter, scene.core.outer_diameter);
+    const auto along = elements_along(scene.core.length, scene.core.outer_diameter, around, level->axial_aspect);
     if (!along) throw InputError("--mesh " + std::string(level_name) + ": too many elements along the core");
     scene.mesh.level = std::string(level->name);
     scene.mesh.n_wall = level->n_wall;
     scene.mesh.n_rest_paper = level->n_rest_paper;
-    scene.mesh.n_around = level->n_around;
+    scene.mesh.n_around = around;
     scene.mesh.n_along = *along;
 }
 

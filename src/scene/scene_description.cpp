@@ -1,6 +1,8 @@
 #include "scene/scene_description.hpp"
 
+#include "common/format.hpp"
 #include "scene/chuck_contact.hpp"
+#include "scene/mesh_levels.hpp"
 
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
@@ -269,7 +271,16 @@ private:
             };
             count("through_wall", m.n_wall);
             if (scene_.rest_paper) count("through_rest_paper", m.n_rest_paper);
-            count("around", m.n_around);
+            const MeshLevel* named = find_mesh_level(m.level);
+            if (named && m.n_around > named->n_around && origin("mesh.around", from_level) == from_level) {
+                // A thin wall: the level's count is raised so that cells do not lock (mesh_levels.hpp).
+                add("[mesh] around", std::to_string(m.n_around),
+                    from_level + ": its " + std::to_string(named->n_around) + " raised for the thin wall (" +
+                        significant(named->around_per_slenderness, 2) +
+                        " x 2 pi sqrt(R / t), docs/accuracy-vs-cost.md, \"Thin walls\")");
+            } else {
+                count("around", m.n_around);
+            }
             count("along", m.n_along);
         }
         add("[mesh] element", quoted(m.element), origin("mesh.element"));

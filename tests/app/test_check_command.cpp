@@ -129,6 +129,20 @@ TEST_CASE("coremodal check shows every default it filled in, with its origin", "
         CHECK(has_line(coarse.out, {"[mesh] level = \"coarse\"", "command line"}));
         CHECK(has_line(coarse.out, {"[mesh] around = 16", "command line (--mesh)"}));
     }
+    SECTION("a thin wall's count around is raised, and says why") {
+        // 76 x 1.52 mm (hard case 01): R = 38.76 mm, t = 1.52 mm, 2 pi sqrt(R / t)
+        // = 31.7; the default level's 1.5 of it is 47.6, up to a multiple of 4: 48.
+        std::string thin = kBareCore;
+        thin.replace(thin.find("wall = \"15 mm\""), std::string("wall = \"15 mm\"").size(), "wall = \"1.52 mm\"");
+        dir.write("thin.toml", thin);
+        const Run t = run_coremodal(dir, "check thin.toml");
+        INFO("stdout: " << t.out << "\nstderr: " << t.err);
+        REQUIRE(t.exit_code == 0);
+        CHECK(has_line(t.out, {"[mesh] around = 48", "from the level: its 32 raised for the thin wall (1.5 x 2 pi "
+                                                     "sqrt(R / t), docs/accuracy-vs-cost.md, \"Thin walls\")"}));
+        const Run coarse = run_coremodal(dir, "check thin.toml --mesh coarse");
+        CHECK(has_line(coarse.out, {"[mesh] around = 32", "command line (--mesh): its 16 raised for the thin wall"}));
+    }
 }
 
 TEST_CASE("coremodal check lists a chuck scene's effects and explains model = auto", "[app][cli][check]") {

@@ -21,7 +21,11 @@ using namespace coremodal::testing;
 
 namespace {
 
-// A clamped steel tube 76 x 15 mm, 0.5 m, 792 DOFs: a second to solve.
+// A clamped steel tube 76 x 15 mm, 0.5 m, 3,168 DOFs: a second or two to
+// solve. 16 around, so that the run has nothing to warn about: at 8 around
+// its first ovalling pair was 14 % above the harmonic level's (exact around)
+// and the run said so; at 16 it is 1.2 % above (docs/accuracy-vs-cost.md,
+// "Does the mesh resolve the band"). Seven modes end on that complete pair.
 const std::string kClampedTube = R"(name = "clamped-tube"
 description = "A short clamped steel tube"
 
@@ -38,10 +42,10 @@ type = "clamped"
 length = "40 mm"
 
 [analysis]
-modes = 8
+modes = 7
 
 [mesh]
-around = 8
+around = 16
 along = 8
 through_wall = 1
 )";
@@ -83,7 +87,7 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
 
     SECTION("The mode table has a row per mode with the frequency of summary.json") {
         const std::vector<double> f = json_numbers(summary, "frequency_hz");
-        REQUIRE(f.size() == 8);
+        REQUIRE(f.size() == 7);
         for (size_t i = 0; i < f.size(); ++i) {
             INFO("mode " << i + 1);
             CHECK(contains(report, "\n| " + std::to_string(i + 1) + " | " + formatted("%.4f", f[i]) + " | "));

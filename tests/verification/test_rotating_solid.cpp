@@ -89,7 +89,15 @@ TEST_CASE("A free ring whose rest solve makes LAPACK refuse TOAR's reordering is
     const double bryan = (first(spin, "ovalling", 2, Whirl::forward).frequency_hz -
                           first(spin, "ovalling", 2, Whirl::backward).frequency_hz) / 0.2;
     CHECK(bryan == Approx(1.2).epsilon(5e-3));
-    CHECK(solid.max_relative_residual() < 1e-8);
+    // The solver accepts 1e-6. Measured 5.6e-9 with gmsh's higher-order nodes
+    // and 1.13e-8 with them placed on their arcs from (r, theta, z) (issue 33,
+    // geometry/tube_model.cpp): on this mesh, whose every higher-order node
+    // lies on the surface, the two placements differ by 4e-10 m (round-off in
+    // gmsh's curve parameter), and the ovalling pair by 3e-9: the residual of
+    // this nearly defective problem (the rigid modes' double zeros) moves by
+    // its own size under round-off. 1e-7 is about nine times the larger and
+    // a tenth of what the solver accepts.
+    CHECK(solid.max_relative_residual() < 1e-7);
 }
 
 TEST_CASE("A spinning clamped tube whirls at the solid level as at the harmonic level", "[rotation][solid][long]") {

@@ -38,7 +38,7 @@ std::vector<ModeLabel> basis_labels(const Scene& scene, const HarmonicPlane& pla
     RevolvedMesh revolved = revolve_section(plane.section, std::min(scene.mesh.n_around, kMaxDisplayAround));
     add_frame_nodes(scene, revolved.mesh);
     const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved.mesh);
-    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
+    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh), body_held(scene));
     std::vector<ModeLabel> out;
     for (Eigen::Index j = 0; j < basis.Phi.cols(); ++j) {
         const std::vector<double> mode(basis.Phi.col(j).data(), basis.Phi.col(j).data() + basis.Phi.rows());

@@ -30,8 +30,9 @@ namespace {
 constexpr int kMinModesKept = 2;
 
 // Each basis mode named on the mesh with the solid run's classifier.
-std::vector<ModeLabel> solid_labels(const SolidResponseModel& m, const ModalBasis& basis, double lambda_scale) {
-    const ModeClassifier classifier(m.mesh, roll_nodes(m.mesh));
+std::vector<ModeLabel> solid_labels(const SolidResponseModel& m, const ModalBasis& basis, double lambda_scale,
+                                    BodyHeld held) {
+    const ModeClassifier classifier(m.mesh, roll_nodes(m.mesh), held);
     std::vector<ModeLabel> out;
     std::vector<double> field(3 * m.mesh.nodes.size());
     for (Eigen::Index j = 0; j < basis.Phi.cols(); ++j) {
@@ -78,7 +79,7 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
     const ModalBasis basis =
         modal_basis_below(scene, assemble_petsc(model.mesh, model.materials, model.dofs, model.chucks.couplings),
                           out.checks.cutoff_hz, kMinModesKept, "the solid's modes at rest (the forced response): ");
-    const std::vector<ModeLabel> labels = solid_labels(model, basis, lambda_scale);
+    const std::vector<ModeLabel> labels = solid_labels(model, basis, lambda_scale, body_held(scene));
     ModalResponse response(model.K, model.M, model.G, kTwoPlanes, basis, lambda_scale);
     // Every mode of the solid below the cutoff is in the response.
     const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, basis, labels, lambda_scale,

@@ -33,7 +33,8 @@ Scene free_span_scene(const Scene& scene, double span) {
     const MeshLevel& coarse = *find_mesh_level("coarse");
     free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
     free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
-    free.mesh.n_around = std::min(scene.mesh.n_around, coarse.n_around);
+    free.mesh.n_around = std::min(scene.mesh.n_around,
+                                  elements_around(coarse, free.core.inner_diameter, free.core.outer_diameter));
     free.mesh.n_along = std::min(
         static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)),
         elements_along(span, free.core.outer_diameter,
@@ -43,9 +44,21 @@ Scene free_span_scene(const Scene& scene, double span) {
     return free;
 }
 
+// A lateral resonance of the roll: its first circumferential harmonic
+// (n = 1), whether the roll bends in it ("bending") or moves almost as a body
+// on compliant chucks, bearings or contact arcs ("support",
+// modes/classify.hpp). Where a roll on soft supports crosses from one label
+// to the other is a threshold of the classifier, not physics: both count.
+bool is_lateral(const Mode& m) { return m.label.n == 1 && (m.label.type == "bending" || m.label.type == "support"); }
+
 // In words, for the console, report.md and summary.json.
 std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<Mode>& modes) {
     const long rigid = std::count_if(modes.begin(), modes.end(), [](const Mode& m) { return m.label.type == "rigid"; });
+    const long lateral = std::count_if(modes.begin(), modes.end(), is_lateral);
+    if (lateral > 0)
+        return "the " + std::to_string(lateral) + " lateral (n = 1) modes found are all in the horizontal plane (f1 is "
+               "the first in the vertical plane, docs/chucks.md); " +
+               (analysis.f_max_hz ? "widen the band" : "ask for more modes");
     if (analysis.f_max_hz) {
         const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
                                  significant(*analysis.f_max_hz) + " Hz";
@@ -55,6 +68,40 @@ std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<
     }
     return "no bending mode among the " + std::to_string(modes.size()) + " modes found (" + std::to_string(rigid) +
            " rigid); ask for more modes";
+}
+
+// Below this share of the largest sideways effective mass of any mode (a
+// rigid translation's, on a free body) a mode has no plane of its own:
+// effective masses that vanish by symmetry (antisymmetric modes, a free
+// body's bending) come out of the products as round-off, 1e-20 of a
+// symmetric mode's (case 07: 3.7e-20 kg against 72 kg).
+constexpr double kNoPlaneFraction = 1e-9;
+
+// f1, and with it k = f1 / f2, is the roll's first lateral resonance in the
+// vertical plane (y-z; gravity acts along -y), docs/chucks.md: a stand whose
+// chucks hold the roll less stiffly sideways than vertically (a chuck not
+// expanded sits on its contact arc) has a lower horizontal one, and a k that
+// took whichever came first would change plane from scene to scene. The plane
+// is the one the mode's effective mass is in: y at least x. Its label does
+// not matter (is_lateral): a label must never change k. A mode with no
+// translational effective mass (an antisymmetric one, or a level that gives
+// none) has no plane to tell; when no lateral mode has one, the first lateral
+// mode is f1.
+const Mode* first_vertical_lateral(const std::vector<Mode>& modes) {
+    double largest = 0;
+    for (const auto& m : modes) largest = std::max(largest, m.effective_mass.x + m.effective_mass.y);
+    const auto has_plane = [&](const Mode& m) {
+        return m.effective_mass.x + m.effective_mass.y > kNoPlaneFraction * largest;
+    };
+    const Mode* first = nullptr;
+    bool any_plane = false;
+    for (const auto& m : modes) {
+        if (!is_lateral(m)) continue;
+        if (!first) first = &m;
+        any_plane = any_plane || has_plane(m);
+        if (has_plane(m) && m.effective_mass.y >= m.effective_mass.x) return &m;
+    }
+    return any_plane ? nullptr : first;
 }
 
 }  // namespace
@@ -91,14 +138,13 @@ BeamComparison compare_with_beam(const Scene& scene, const std::vector<Mode>& mo
     b.euler_bernoulli_hz = euler_bernoulli_first_bending_hz(section, b.span_m);
     b.timoshenko_hz =
         timoshenko_bending_hz(section, b.span_m, free ? BeamEnds::free_free : BeamEnds::clamped_clamped, 1).at(0);
-    for (const auto& m : modes)
-        if (m.label.type == "bending") {
-            b.fe_first_bending_hz = m.frequency_hz;
-            b.fe_mode_index = m.index;
-            b.fe_over_timoshenko = m.frequency_hz / b.timoshenko_hz;
-            b.fe_over_euler_bernoulli = m.frequency_hz / b.euler_bernoulli_hz;
-            return b;
-        }
+    if (const Mode* m = first_vertical_lateral(modes)) {
+        b.fe_first_bending_hz = m->frequency_hz;
+        b.fe_mode_index = m->index;
+        b.fe_over_timoshenko = m->frequency_hz / b.timoshenko_hz;
+        b.fe_over_euler_bernoulli = m->frequency_hz / b.euler_bernoulli_hz;
+        return b;
+    }
     b.fe_missing = why_no_bending_mode(scene.analysis, modes);
     return b;
 }

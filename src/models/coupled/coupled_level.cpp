@@ -472,7 +472,7 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     say("[5/7] classifying the modes");
     const bool root = mpi_rank() == 0;
     const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved_->mesh);
-    const ModeClassifier classifier(revolved_->mesh, roll_nodes(revolved_->mesh));
+    const ModeClassifier classifier(revolved_->mesh, roll_nodes(revolved_->mesh), body_held(scene));
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, revolved_->mesh) : std::nullopt;
     const std::vector<double> w = wanted(*current, scene, request);

@@ -233,7 +233,7 @@ std::vector<Mode> named_modes(const Scene& scene, const SolveRequest& request,
                               const std::vector<HarmonicModes>& harmonics, const RevolvedMesh& revolved) {
     const bool root = mpi_rank() == 0, band = request.lambda_max.has_value();
     const std::vector<int> frame_nodes = frame_nodes_of(scene, revolved.mesh);
-    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh));
+    const ModeClassifier classifier(revolved.mesh, roll_nodes(revolved.mesh), body_held(scene));
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, revolved.mesh) : std::nullopt;
     std::vector<Mode> modes;

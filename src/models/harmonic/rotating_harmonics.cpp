@@ -102,7 +102,7 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
       revolved_(revolve_section(section_, std::min(scene.mesh.n_around, kMaxDisplayAround))) {
     add_frame_nodes(scene, revolved_.mesh);
     frame_nodes_ = frame_nodes_of(scene, revolved_.mesh);
-    classifier_ = std::make_unique<ModeClassifier>(revolved_.mesh, roll_nodes(revolved_.mesh));
+    classifier_ = std::make_unique<ModeClassifier>(revolved_.mesh, roll_nodes(revolved_.mesh), body_held(scene));
     const std::vector<PartMaterial> materials = part_materials(scene, section_.part_names, "generated section");
     const SolveRequest request = solve_request(scene);
     lambda_scale_ = request.lambda_scale;

@@ -89,7 +89,7 @@ RotatingSolid::RotatingSolid(const Scene& scene, int window, SolidSpinOptions op
     dofs_ = solid_dofs(scene, mesh_, chucks, summary);
     assemble(scene, chucks, options.centrifugal_stiffening);
     roll_nodes_ = roll_nodes(mesh_);
-    classifier_ = std::make_unique<ModeClassifier>(mesh_, roll_nodes_);
+    classifier_ = std::make_unique<ModeClassifier>(mesh_, roll_nodes_, body_held(scene));
     signature_ = std::make_unique<ModeSignatureSampler>(mesh_);
     lambda_scale_ = solve_request(scene).lambda_scale;
     if (frame_ == SpinFrame::rotating) {

@@ -16,6 +16,7 @@
 #include "models/harmonic/harmonic_level.hpp"
 #include "models/part_materials.hpp"
 #include "models/solid/gravity_contact.hpp"
+#include "models/solid/mesh_resolution.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
@@ -114,9 +115,9 @@ std::string processes_hint(int n_dofs) {
 // Step 6: every eigenvector in the request's band expanded to the mesh's
 // nodes, named, with its effective masses and signature.
 std::vector<Mode> solid_modes(const Mesh& mesh, const DofMap& dofs, const OperatorSet& system,
-                              const SolvedModes& solved, const SolveRequest& request) {
+                              const SolvedModes& solved, const SolveRequest& request, BodyHeld held) {
     const bool root = mpi_rank() == 0;
-    const ModeClassifier classifier(mesh, roll_nodes(mesh));
+    const ModeClassifier classifier(mesh, roll_nodes(mesh), held);
     const std::optional<ModeSignatureSampler> signature =
         root ? std::optional<ModeSignatureSampler>(std::in_place, mesh) : std::nullopt;
     const EffectiveMassCalculator effective_mass(system.M(), mesh, dofs);
@@ -161,24 +162,28 @@ constexpr int kPredictedExtraModes = 6;
 // the negative shift and the separate count.
 constexpr bool kPredictBandEdge = true;
 
-// The lowest eigenvalues of the same scene at the harmonic level, when the
-// scene is a held body of revolution: the same section, exact in theta, one 2D
-// problem per wave number (under a second for a rest roll). The solve places
-// its one LDL^T factor in the gap they predict above the wanted modes
-// (eigensolve/modal_solver.hpp); none for a band, or a scene the harmonic level
-// cannot take (the solve then uses a negative shift and a second factor
-// for the count).
-std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest& request, const Printer& say) {
-    // A free body's rigid modes keep the solver on its negative shift
-    // (modal_solver.cpp, predicted_shift): no prediction is needed there.
-    if (!kPredictBandEdge || request.lambda_max || scene.supports.kind == SupportKind::free ||
-        why_not_axisymmetric(scene))
-        return {};
+// The same scene at the harmonic level, when it is a body of revolution on a
+// generated mesh: the same section, exact in theta, one 2D problem per wave
+// number (under a second for a rest roll). Its modes serve twice: their
+// eigenvalues predict the band edge where the solve places its one LDL^T
+// factor (eigensolve/modal_solver.hpp; held scenes asking for a count of
+// modes), and their frequencies tell how well the solid's mesh resolves its
+// modes around (mesh_resolution.hpp). Empty for a scene the harmonic level
+// cannot take, or when it fails (the solve then uses a negative shift and a
+// second factor for the count, and the mesh goes unchecked).
+std::vector<Mode> harmonic_counterparts(const Scene& scene, const SolveRequest& request, const Printer& say) {
+    if (why_not_axisymmetric(scene)) return {};
     Scene axisymmetric = scene;
     axisymmetric.model = "harmonic";
-    axisymmetric.analysis.n_modes = request.n_modes + kPredictedExtraModes;
+    if (request.lambda_max) {
+        // A band: the solid's modes lie at or above their exact frequencies,
+        // so the counterparts of those in the band lie in it or below it.
+        if (axisymmetric.analysis.f_min_hz) *axisymmetric.analysis.f_min_hz /= 2;
+    } else {
+        axisymmetric.analysis.n_modes = request.n_modes + kPredictedExtraModes;
+    }
     Stopwatch watch;
-    std::vector<double> lambdas;
+    std::vector<Mode> modes;
     // A stage of its own in -log_view, apart from the solid's solve.
     static PetscLogStage stage = [] {
         PetscLogStage s;
@@ -188,16 +193,51 @@ std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest
     PetscLogStagePush(stage);
     try {
         HarmonicLevel level;
-        for (const Mode& mode : level.solve(axisymmetric, Printer{false}).modes) lambdas.push_back(mode.eigenvalue);
+        modes = level.solve(axisymmetric, Printer{false}).modes;
     } catch (const std::exception& e) {
         PetscLogStagePop();
-        say(std::string("      no prediction of the band edge from the harmonic level: ") + e.what());
+        say(std::string("      no solve at the harmonic level (band edge, mesh check): ") + e.what());
         return {};
     }
     PetscLogStagePop();
-    say("      band edge predicted by the harmonic level (" + std::to_string(lambdas.size()) + " modes, " +
-        std::to_string(watch.lap()) + " s)");
+    say("      the harmonic level's " + std::to_string(modes.size()) + " modes (" + std::to_string(watch.lap()) +
+        " s): band edge, mesh check");
+    return modes;
+}
+
+// The eigenvalues that predict the band edge: none for a band, or for a free
+// body, whose rigid modes keep the solver on its negative shift
+// (modal_solver.cpp, predicted_shift).
+std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest& request,
+                                          const std::vector<Mode>& harmonic) {
+    if (!kPredictBandEdge || request.lambda_max || scene.supports.kind == SupportKind::free) return {};
+    std::vector<double> lambdas;
+    for (const Mode& mode : harmonic) lambdas.push_back(mode.eigenvalue);
     return lambdas;
+}
+
+// Rank 0's text on every rank.
+std::string broadcast(std::string text) {
+    int size = static_cast<int>(text.size());
+    MPI_Bcast(&size, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+    text.resize(size);
+    MPI_Bcast(text.data(), size, MPI_CHAR, 0, PETSC_COMM_WORLD);
+    return text;
+}
+
+// Step 6b: the solid's modes against the harmonic level's (labels are on
+// rank 0), a warning when the mesh does not resolve them (issue 33).
+void check_mesh_resolution(const Scene& scene, const std::vector<Mode>& harmonic, LevelModes& out) {
+    if (harmonic.empty()) return;
+    std::string text;
+    if (mpi_rank() == 0) {
+        const MeshResolution r = compare_with_harmonic(out.modes, harmonic);
+        text = mesh_resolution_text(r, scene).value_or("");
+        if (!text.empty() && std::abs(r.error()) > kMeshGrossError)
+            text = "GROSSLY UNRESOLVED: " + text + "; this mode's frequency is the mesh's, not the roll's";
+    }
+    text = broadcast(text);
+    if (!text.empty()) warn_about_model(scene.source_file, text, out.warnings);
 }
 
 }  // namespace
@@ -261,7 +301,8 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     // Which factors: the solver's progress lines say (one LDL^T at a
     // predicted band edge, or a negative shift and a second factor to count).
     say("[4/7] solving the eigenproblem (shift-and-invert)");
-    request.predicted_eigenvalues = predicted_eigenvalues(scene, request, say);
+    const std::vector<Mode> harmonic = scene.mesh.file ? std::vector<Mode>{} : harmonic_counterparts(scene, request, say);
+    request.predicted_eigenvalues = predicted_eigenvalues(scene, request, harmonic);
     say(shift_scale_text(scene));
     const SolvedModes solved = solve_for_case(scene, system, request, say, "");
     out.verification = solved.verification;
@@ -269,7 +310,8 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
 
     // 6. Name every mode and compute its effective masses.
     say("[5/7] classifying " + std::to_string(solved.eigenvalues.size()) + " modes");
-    out.modes = solid_modes(mesh, dofs, system, solved, request);
+    out.modes = solid_modes(mesh, dofs, system, solved, request, body_held(scene));
+    check_mesh_resolution(scene, harmonic, out);
     out.timing.classify = stage.lap();
     return out;
 }
