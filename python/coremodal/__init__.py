@@ -2,7 +2,7 @@
 
     import coremodal
     run = coremodal.load("results/02-clamped-76x15")   # a run's folder
-    run                                  # <coremodal run 02-clamped-76x15: solid3d, 20 modes, f1 = ... Hz (bending)>
+    run                                  # <coremodal run 02-clamped-76x15: solid, 20 modes, f1 = ... Hz (bending)>
     run.modes.to_pandas()                # the mode table (pandas optional)
     r = run.results                      # modes.h5: coremodal.load("results/.../modes.h5") also works
     r.frequencies_hz, r.shape(7), r.cylindrical(7), r.warp_scales

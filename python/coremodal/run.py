@@ -117,7 +117,7 @@ class Run(Folder):
 
     @property
     def level(self) -> str:
-        """solid3d, harmonic or beam."""
+        """solid, harmonic, coupled or beam (the case's [analysis] model names)."""
         return str(self.summary.get("model", {}).get("level", ""))
 
     @cached_property

@@ -53,7 +53,7 @@ def test_pip_installs_the_package_without_network(tmp_path: Path, modes_h5: Path
     assert used.returncode == 0, used.stderr
     where, text = used.stdout.splitlines()
     assert Path(where).is_relative_to(target)
-    assert text.startswith("<coremodal run tiny: solid3d, 10 modes")
+    assert text.startswith("<coremodal run tiny: solid, 10 modes")
 
 
 def test_the_install_of_the_readme_gives_the_coremodal_plot_command(tmp_path: Path) -> None:

@@ -35,7 +35,7 @@ def test_a_run_folder_opens_as_a_run_with_a_short_repr(run: coremodal.Run,
     assert isinstance(run, coremodal.Run)
     text = repr(run)
     first = next(i for i, t in enumerate(results.types) if t != "rigid")
-    assert text == (f"<coremodal run {results.case_name}: solid3d, {results.n_modes} modes, "
+    assert text == (f"<coremodal run {results.case_name}: solid, {results.n_modes} modes, "
                     f"f1 = {results.frequencies_hz[first]:.2f} Hz ({results.types[first]})>")
     assert "\n" not in repr(results) and len(repr(results)) < 300
     assert repr(results).startswith(f"<coremodal.Results {results.case_name}")

@@ -217,7 +217,7 @@ def test_a_solid_run_and_the_beam_formulas_follow_the_scheme(tmp_path: Path, val
          "--no-plots", "-q"], tmp_path)
     summary = written_json("run", out)
     assert errors(validator, summary) == []
-    assert summary["model"]["level"] == "solid3d"
+    assert summary["model"]["level"] == "solid"
     assert summary["speeds"] == {"not_given": summary["speeds"]["not_given"]}  # free-free: no stand
     beam = json.loads(run(["beam", str(REPO / "cases" / "03-rest-roll-150x15.8-4320.toml"), "--json"], tmp_path).stdout)
     assert errors(validator, beam) == []

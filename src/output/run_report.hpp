@@ -14,7 +14,7 @@
 namespace coremodal {
 
 struct ModelInfo {
-    std::string level = "solid3d";
+    std::string level = "solid";
     std::string element;
     long n_dofs = 0;
     long n_nodes = 0;

@@ -155,7 +155,7 @@ TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, e
     // Bonded pads (ties over arcs): the solid.
     for (ChuckSpec& c : scene.supports.chucks) c.interface.kind = InterfaceKind::bonded;
     const RunReport solid = solve_quietly(scene);
-    CHECK(solid.model.level == "solid3d");
+    CHECK(solid.model.level == "solid");
     CHECK(solid.scene.model == "solid");
 }
 

@@ -79,7 +79,7 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
     // order, which the measured factor times were taken on.
     DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties,
                                mpi_size() > 1 ? slab_node_order(mesh) : std::vector<int>{});
-    out.info = {.level = "solid3d",
+    out.info = {.level = "solid",
                 .element = cell_type_name(mesh.cell_type),
                 .n_dofs = dofs.n_dofs,
                 .n_nodes = mesh.n_nodes(),

@@ -70,10 +70,13 @@ LimitsRequest diameters(double largest, double smallest, int points, bool band) 
 
 }  // namespace
 
+// [long] here and below: 3-8 s each at -O2, over 1,000 s for two of them
+// under the sanitizers on a loaded machine (scripts/sanitize.sh leaves [long]
+// out of CI); the band, refusal and traction tests run the verdict there.
 TEST_CASE(
     "Each criterion of the verdict is the standalone analysis' number on "
     "the same scene and diameter",
-    "[limits]") {
+    "[limits][long]") {
     const LimitsCase c = parse_limits_case(kCase13);
     REQUIRE(c.response);
     const LimitsResult r = verdict(c.scene, c.response, diameters(0.2021, 0.1921, 2, false));
@@ -123,7 +126,7 @@ TEST_CASE(
 TEST_CASE(
     "The roll change is where the governing speed crosses the target, "
     "interpolated between diameters",
-    "[limits]") {
+    "[limits][long]") {
     const LimitsCase c = parse_limits_case(kCase13);
     LimitsRequest request = diameters(0.2021, 0.1921, 2, false);
     const LimitsResult plain = verdict(c.scene, c.response, request);
@@ -200,7 +203,7 @@ TEST_CASE(
 TEST_CASE(
     "Case 13 as shipped sits on a knife edge: its amplitude limit is 0.2 "
     "% below the resonance peak",
-    "[limits]") {
+    "[limits][long]") {
     const LimitsCase c = parse_limits_case(kCase13);
     const LimitsResult r = verdict(c.scene, c.response, diameters(0.2021, 0.2021, 1, false));
     bool knife = false;
@@ -276,7 +279,7 @@ TEST_CASE("A [traction] roller joins the verdict as the web's slip speed, the st
     }
 }
 
-TEST_CASE("The pencils' critical speeds are the Campbell sweep's refined crossings", "[limits][speed]") {
+TEST_CASE("The pencils' critical speeds are the Campbell sweep's refined crossings", "[limits][speed][long]") {
     // Case 13 at the beam level: its bending planes are alike, so the verdict
     // takes the order-1 and order-2 crossings from the plane problem's pencils
     // (beam/rotating_modes.hpp) instead of the sweep; the sweep refines its
@@ -326,7 +329,7 @@ TEST_CASE("A forced response that leaves its checks to the caller gives the chec
 }
 
 TEST_CASE("A measured first resonance narrows the band through fit, around the fitted point value",
-          "[limits][band][fit]") {
+          "[limits][band][fit][long]") {
     // Case 16's measurements file (cases/16-limits-measured-f1.toml): the first
     // resonance of the full roll in its stand; the fit sets the chucks' contact
     // stiffness, the verdict at the full roll runs on the fitted case.

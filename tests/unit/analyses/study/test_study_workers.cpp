@@ -9,7 +9,7 @@ TEST_CASE("A point's record reads back exactly, failed or not", "[app][study]") 
     StudyPoint p;
     p.ok = true;
     p.time_s = 8.125;
-    p.model_level = "solid3d";
+    p.model_level = "solid";
     p.n_dofs = 24000;
     p.f1_hz = 32.366101234567891;
     ModeSummary bending;
@@ -28,7 +28,7 @@ TEST_CASE("A point's record reads back exactly, failed or not", "[app][study]") 
     read_point_record(point_record(p), q);
     CHECK(q.ok);
     CHECK(q.time_s == p.time_s);
-    CHECK(q.model_level == "solid3d");
+    CHECK(q.model_level == "solid");
     CHECK(q.n_dofs == 24000);
     CHECK(*q.f1_hz == *p.f1_hz);
     REQUIRE(q.modes.size() == 2);
