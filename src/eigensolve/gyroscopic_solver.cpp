@@ -300,6 +300,31 @@ std::string indefinite_stiffness_text(double spin, long n_negative) {
     return s.str();
 }
 
+namespace {
+
+// neg Q(omega_0) / 2, the modes below the rigid line, after the count's
+// premise K(Omega) + omega_0^2 M >= 0: free where nothing is below the
+// rigid line (header), one count of the set's size otherwise.
+long modes_below_rigid_line(const SpinningOperators& op, double spin, double rigid_omega) {
+    const long below_rigid = embedded_negative_count(op, rigid_omega) / 2;
+    if (below_rigid > 0 && spin > 0) {
+        const long soft = stiffness_negative_count(op, rigid_omega);
+        if (soft > 0) throw SolveError(indefinite_stiffness_text(spin, soft));
+    }
+    return below_rigid;
+}
+
+// The verified modes, refused when a residual exceeds what the solver accepts.
+GyroscopicModes converged(GyroscopicModes out) {
+    if (out.verification.max_relative_residual > kMaxAcceptedResidual)
+        throw SolveError("the quadratic problem's modes did not converge: largest relative residual " +
+                         std::to_string(out.verification.max_relative_residual) +
+                         "; raise [analysis] max_iterations or lower [analysis] tolerance");
+    return out;
+}
+
+}  // namespace
+
 double gyroscopic_rigid_omega(const SolveRequest& request) {
     return kQuadraticRigidFrequencyFraction * std::sqrt(request.lambda_scale);
 }
@@ -324,13 +349,7 @@ GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, cons
     const double rigid_omega = gyroscopic_rigid_omega(request);
     const int wanted = std::min<int>(request.n_modes, n_dofs);
     int nev = std::min<int>(2 * n_dofs, 2 * (wanted + std::max(kMinExtraModes, wanted / 4)));
-    const long below_rigid = embedded_negative_count(op, rigid_omega) / 2;
-    // The count's premise, K(Omega) + omega_0^2 M >= 0: free where nothing
-    // is below the rigid line (header), one count of the set's size otherwise.
-    if (below_rigid > 0 && spin > 0) {
-        const long soft = stiffness_negative_count(op, rigid_omega);
-        if (soft > 0) throw SolveError(indefinite_stiffness_text(spin, soft));
-    }
+    const long below_rigid = modes_below_rigid_line(op, spin, rigid_omega);
     for (int attempt = 0;; ++attempt) {
         progress("factorising P(tau) = K + tau Omega G + tau^2 M and solving the quadratic problem for " +
                  std::to_string(nev) + " eigenvalues");
@@ -356,14 +375,7 @@ GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, cons
         // machine's round-off) would shift every mode after it.
         const long rigid_found = n_report - found;
         const bool rigid_complete = rigid_found >= std::min<long>(below_rigid, wanted);
-        if (counted == found && rigid_complete) {
-            GyroscopicModes out = verified(op, c, n_report, rigid_omega, check, counted);
-            if (out.verification.max_relative_residual > kMaxAcceptedResidual)
-                throw SolveError("the quadratic problem's modes did not converge: largest relative residual " +
-                                 std::to_string(out.verification.max_relative_residual) +
-                                 "; raise [analysis] max_iterations or lower [analysis] tolerance");
-            return out;
-        }
+        if (counted == found && rigid_complete) return converged(verified(op, c, n_report, rigid_omega, check, counted));
         if (!rigid_complete) {
             if (attempt >= kMaxRetries) throw SolveError(rigid_mismatch_text(below_rigid, rigid_found));
             progress("the inertia says " + std::to_string(below_rigid) + " rigid modes, " +
