@@ -298,9 +298,11 @@ int main(int argc, char** argv) {
     auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
-    coremodal::IsolatedMpiSingleton isolated;  // common/mpi_start.hpp: why
+    coremodal::IsolatedMpiSingleton isolated;          // common/mpi_start.hpp: why
+    coremodal::MpiSharedMemoryFolder shared_memory;    // ... and why
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     isolated.started();
+    shared_memory.started();
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(remember_petsc_error, nullptr);
     coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
