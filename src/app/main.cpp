@@ -5,6 +5,7 @@
 // are applied after coremodal's defaults, so an expert can override any
 // solver setting.
 #include "common/argv.hpp"
+#include "common/blas_threads.hpp"
 #include "app/commands.hpp"
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
@@ -205,10 +206,6 @@ int run_guarded(const coremodal::Command& command, const std::function<void()>& 
     std::abort();
 }
 
-extern "C" void install_terminate_handler(int, char**, char**) { std::set_terminate(terminate_with_a_reason); }
-__attribute__((section(".preinit_array"), used)) void (*const preinit_terminate_handler)(int, char**, char**) =
-    install_terminate_handler;
-
 // The least address space a run must have left once the libraries are up:
 // OpenBLAS takes a 128 MB buffer (and malloc a 64 MB arena for its thread) at
 // its first call and, when that allocation fails, retries it forever, a hang
@@ -217,8 +214,27 @@ __attribute__((section(".preinit_array"), used)) void (*const preinit_terminate_
 // the address space mapped at start.
 constexpr double kLeastHeadroomMb = 400;
 
-// Refuses a run whose address-space limit leaves less than kLeastHeadroomMb.
+// What the libraries' initializers, MPI and PETSc add to the address space
+// between the preinit array and the first check (require_address_space), on
+// one BLAS thread. Measured (case 01, no limit): VmSize 255 MB at preinit,
+// 374 MB at the check.
+constexpr double kStartupMb = 120;
+
+// Before any library's initializer (the executable's preinit array): the
+// terminate handler above, and no more OpenBLAS threads than the address-space
+// limit affords (common/blas_threads.hpp: why).
+extern "C" void before_libraries_start(int, char** argv, char** envp) {
+    std::set_terminate(terminate_with_a_reason);
+    coremodal::fit_blas_threads_to_address_space(argv, envp, kStartupMb + kLeastHeadroomMb);
+}
+__attribute__((section(".preinit_array"), used)) void (*const preinit_before_libraries)(int, char**, char**) =
+    before_libraries_start;
+
+// Refuses a run whose address-space limit leaves less than kLeastHeadroomMb;
+// says when the limit took BLAS threads away.
 void require_address_space() {
+    if (const std::string note = coremodal::blas_threads_note(); !note.empty() && coremodal::mpi_rank() == 0)
+        std::cerr << "coremodal: note: " << note << std::endl;
     const std::optional<coremodal::AddressSpace> space = coremodal::address_space_limit();
     if (!space || space->headroom_mb() >= kLeastHeadroomMb) return;
     throw coremodal::SolveError(coremodal::out_of_memory_text(
@@ -272,7 +288,10 @@ int main(int argc, char** argv) {
                 std::cerr << "coremodal: error: `coremodal " << chosen->cli->get_name() << "` runs in one process ("
                           << launched_processes() << " MPI ranks would each run it and write the same output); run "
                           << "it without mpirun" << std::endl;
-            return 1;
+            // Only rank 0 exits 1 (the job's status): mpirun ends the whole
+            // job at the first non-zero exit, which could stop rank 0 before
+            // it has said why (seen in scripts/failure_injection.sh --quick).
+            return launched_rank() == 0 ? 1 : 0;
         }
         const int status = run_guarded(*chosen);
         coremodal::wait_if_interrupted();
@@ -282,9 +301,11 @@ int main(int argc, char** argv) {
     auto petsc = coremodal::c_strings(args.petsc);
     int petsc_argc = static_cast<int>(args.petsc.size());
     char** petsc_argv = petsc.data();
-    coremodal::IsolatedMpiSingleton isolated;  // common/mpi_start.hpp: why
+    coremodal::IsolatedMpiSingleton isolated;          // common/mpi_start.hpp: why
+    coremodal::MpiSharedMemoryFolder shared_memory;    // ... and why
     if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
     isolated.started();
+    shared_memory.started();
     // PETSc errors become exceptions with coremodal's message; no tracebacks.
     PetscPushErrorHandler(remember_petsc_error, nullptr);
     coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place

@@ -13,6 +13,7 @@
 // sees the user's environment.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,36 @@ public:
     void started();           // after: the variables set are unset again
 private:
     std::vector<std::string> set_;
+};
+
+
+// Open MPI's shared-memory transport (btl vader) keeps one file per rank in
+// /dev/shm (vader_segment.<host>.<uid>.<job>.<rank>, 4 MB each) and removes
+// them at MPI_Finalize, or mpirun does when it sees a rank die; a job killed
+// whole with SIGKILL (a batch system's hard limit, kill -9 of the process
+// group) leaves them, named by no process (issue 33, item 10: two 4 MB files
+// after `kill -9` of `mpirun -n 2 coremodal run ...`). Under a launcher, each
+// rank puts its file in a folder of its own, /dev/shm/coremodal-mpi-<pid>
+// (OMPI_MCA_btl_vader_backing_directory; its peers find the file by the path
+// MPI tells them), removed when the rank ends or is interrupted; and every
+// coremodal that starts MPI first removes such folders of processes that are
+// gone (common/process_folders.hpp). Without a launcher there is no peer and
+// no file; a backing directory the user has set is left as it is.
+class MpiSharedMemoryFolder {
+public:
+    MpiSharedMemoryFolder();   // before MPI_Init / SlepcInitialize
+    void started();            // after: the variable is unset again
+    ~MpiSharedMemoryFolder();  // after MPI_Finalize / SlepcFinalize: the folder removed
+    MpiSharedMemoryFolder(const MpiSharedMemoryFolder&) = delete;
+    MpiSharedMemoryFolder& operator=(const MpiSharedMemoryFolder&) = delete;
+
+    // Where the folders are ("/dev/shm") and their names' prefix.
+    static constexpr const char* kParent = "/dev/shm";
+    static constexpr const char* kPrefix = "coremodal-mpi-";
+
+private:
+    std::filesystem::path folder_;  // empty: none made
+    bool variable_set_ = false;
 };
 
 }  // namespace coremodal

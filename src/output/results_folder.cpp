@@ -4,203 +4,29 @@
 
 #include "common/error.hpp"
 #include "common/signals.hpp"
+#include "output/results_lock.hpp"
+#include "output/results_marker.hpp"
+#include "output/results_paths.hpp"
 
-#include <fcntl.h>
 #include <mpi.h>
 #include <signal.h>
-#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
-#include <fstream>
-#include <map>
-#include <set>
-#include <sstream>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace coremodal {
 namespace fs = std::filesystem;
+using namespace results_lock;
+using namespace results_marker;
+using namespace results_paths;
 
 namespace {
-
-// The marker's first line: what makes a folder coremodal's.
-constexpr const char* kMarkerHeader = "coremodal results folder";
-
-// The output path as given, without a trailing separator ("out/" is "out";
-// a partial folder "out/.partial-1" would be inside it) or "." and "..".
-fs::path clean(const fs::path& p) {
-    fs::path q = p.lexically_normal();
-    if (!q.has_filename() && q.has_relative_path()) q = q.parent_path();
-    return q;
-}
-
-fs::path suffixed(const fs::path& p, const std::string& suffix) {
-    fs::path q = p;
-    q += suffix;
-    return q;
-}
-
-// A path in a message: 'out/tiny'.
-std::string quoted(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
-
-fs::path parent_folder(const fs::path& p) { return p.has_parent_path() ? p.parent_path() : fs::path("."); }
-
-bool exists_here(const fs::path& p) {  // without following a symbolic link
-    std::error_code ec;
-    return fs::exists(fs::symlink_status(p, ec));
-}
-
-fs::path resolved(const fs::path& p) {
-    std::error_code ec;
-    const fs::path absolute = fs::absolute(p, ec);
-    const fs::path real = fs::weakly_canonical(absolute, ec);
-    return ec ? absolute.lexically_normal() : real;
-}
-
-std::string host_name() {
-    char name[256] = {};
-    ::gethostname(name, sizeof name - 1);
-    return name;
-}
-
-// This process's command line, as /proc/self/cmdline holds it.
-std::string command_line() {
-    std::ifstream in("/proc/self/cmdline", std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    while (!text.empty() && text.back() == '\0') text.pop_back();
-    for (char& c : text)
-        if (c == '\0' || c == '\n') c = ' ';
-    return text;
-}
-
-// The line before the list of what coremodal wrote, and each entry's prefix.
-constexpr const char* kContentsLine = "contents";
-constexpr const char* kWrote = "wrote ";
-
-// The marker; with `contents`, the list of what coremodal wrote. Closed and
-// checked: a full disk must not leave a marker of 0 bytes behind.
-void write_marker(const fs::path& folder, const std::vector<std::string>* contents = nullptr) {
-    const fs::path path = folder / kResultsMarker;
-    std::ofstream f(path, std::ios::binary | std::ios::trunc);
-    f << kMarkerHeader << "\nversion " COREMODAL_VERSION "\ncommand " << command_line() << "\nhost " << host_name()
-      << "\n";
-    if (contents) {
-        f << kContentsLine << "\n";
-        for (const std::string& entry : *contents) f << kWrote << entry << "\n";
-    }
-    f.close();
-    if (!f) throw InputError("cannot write " + path.string() + " (" + std::strerror(errno) + ")");
-}
-
-// What a folder holds, as paths relative to it ('/' separated), the marker
-// left out: the list its marker gets.
-std::vector<std::string> listing(const fs::path& folder) {
-    std::vector<std::string> entries;
-    for (const auto& entry : fs::recursive_directory_iterator(folder)) {
-        const std::string relative = entry.path().lexically_relative(folder).generic_string();
-        if (relative != kResultsMarker) entries.push_back(relative);
-    }
-    std::sort(entries.begin(), entries.end());
-    return entries;
-}
-
-// The marker's lines, if `folder` is a folder (not a link) holding one.
-std::optional<std::vector<std::string>> marker_lines(const fs::path& folder) {
-    std::error_code ec;
-    if (!fs::is_directory(fs::symlink_status(folder, ec))) return std::nullopt;
-    std::ifstream in(folder / kResultsMarker);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    if (lines.empty() || lines.front() != kMarkerHeader) return std::nullopt;
-    return lines;
-}
-
-// What a marker says coremodal wrote; `listed` is false for a marker of an
-// earlier version, which has no list.
-struct WrittenHere {
-    bool listed = false;
-    std::set<std::string> paths;
-};
-
-WrittenHere written_here(const std::vector<std::string>& marker) {
-    WrittenHere w;
-    for (const std::string& line : marker) {
-        if (line == kContentsLine) w.listed = true;
-        if (w.listed && line.rfind(kWrote, 0) == 0) w.paths.insert(line.substr(std::strlen(kWrote)));
-    }
-    return w;
-}
-
-// "x" for what a run left of the entry x: its partial folder, the folder an
-// old result was moved to, its lock (a batch's case killed mid-write).
-std::string leftover_of(const std::string& relative) {
-    const size_t cut = relative.find_last_of('.');
-    if (cut == std::string::npos || cut == 0) return "";
-    const std::string tail = relative.substr(cut + 1);
-    if (tail == "lock" || tail == "previous") return relative.substr(0, cut);
-    for (const char* kind : {"partial-", "old-"}) {
-        const std::string prefix = kind;
-        if (tail.rfind(prefix, 0) == 0 && tail.size() > prefix.size() &&
-            tail.find_first_not_of("0123456789", prefix.size()) == std::string::npos)
-            return relative.substr(0, cut);
-    }
-    return "";
-}
-
-// What `folder` (a results folder, `marker` its lines) holds that coremodal
-// did not write into it, each as it is shown in a refusal: a file or folder
-// not in the marker's list, a results folder nested in it (another run's,
-// the user's as far as this folder is concerned). With no list (an earlier
-// version's marker) only nested results folders count.
-std::vector<std::string> not_written_here(const fs::path& folder, const std::vector<std::string>& marker) {
-    const WrittenHere w = written_here(marker);
-    const auto whole = [&](const std::string& p) { return w.paths.count(p + "/") > 0; };
-    std::vector<std::string> found;
-    std::error_code ec;
-    fs::recursive_directory_iterator it(folder, ec);
-    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        const std::string relative = it->path().lexically_relative(folder).generic_string();
-        if (relative == kResultsMarker) continue;
-        std::error_code ignored;
-        const bool is_folder = fs::is_directory(it->symlink_status(ignored));
-        const bool nested = is_folder && is_results_folder(it->path());
-        const std::string left = leftover_of(relative);
-        if (whole(relative) || (!left.empty() && (whole(left) || w.paths.count(left)))) {
-            it.disable_recursion_pending();  // all in it is coremodal's
-            continue;
-        }
-        if (w.listed ? w.paths.count(relative) > 0 : !nested) continue;
-        found.push_back("'" + relative + (is_folder ? "/'" : "'") + (nested ? " (a results folder of its own)" : ""));
-        it.disable_recursion_pending();
-    }
-    if (ec) found.push_back("what cannot be read in it (" + ec.message() + ")");
-    return found;
-}
-
-// The first few of `found`, for a message.
-std::string first_few(const std::vector<std::string>& found) {
-    constexpr size_t kShown = 4;
-    std::string text;
-    for (size_t i = 0; i < found.size() && i < kShown; ++i) text += (i ? ", " : "") + found[i];
-    if (found.size() > kShown) text += " and " + std::to_string(found.size() - kShown) + " more";
-    return text;
-}
-
-// What in a results folder keeps it from being replaced ("" if nothing).
-std::string in_the_way(const fs::path& folder) {
-    const auto marker = marker_lines(folder);
-    return marker ? first_few(not_written_here(folder, *marker)) : "";
-}
 
 // What may be replaced: a results folder coremodal wrote that holds nothing
 // else, or an empty folder (nothing in it to lose; `mkdir out` before a run
@@ -210,10 +36,6 @@ bool replaceable(const fs::path& folder) {
     std::error_code ec;
     return (is_results_folder(folder) && in_the_way(folder).empty()) ||
            (fs::is_directory(fs::symlink_status(folder, ec)) && fs::is_empty(folder, ec) && !ec);
-}
-
-[[noreturn]] void refuse(const fs::path& output, const std::string& why, const std::string& what_to_do) {
-    throw InputError("output folder " + quoted(output) + " " + why + ": " + what_to_do);
 }
 
 const std::string kChooseAnother = "choose another folder (a new one, or an earlier coremodal result)";
@@ -298,123 +120,6 @@ bool process_running(int pid) {
 }
 
 
-// ---- the lock: one writer per output ------------------------------------
-
-fs::path lock_path(const fs::path& output) { return suffixed(output, ".lock"); }
-
-std::string utc_now() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", &utc);
-    return text;
-}
-
-// Who holds a lock, from its file: "pid 41872 on lab-pc, since ..., `coremodal run ...`".
-std::string holder(int fd) {
-    std::string text(4096, '\0');
-    const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
-    text.resize(n > 0 ? static_cast<size_t>(n) : 0);
-    std::map<std::string, std::string> field;
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        const size_t space = line.find(' ');
-        if (space != std::string::npos) field[line.substr(0, space)] = line.substr(space + 1);
-    }
-    if (field["pid"].empty()) return "a process that has not said who it is yet";
-    return "pid " + field["pid"] + " on " + field["host"] + ", since " + field["started"] + ", `" + field["command"] +
-           "`";
-}
-
-// The locks this process holds, released (their files removed, the folders
-// made for them removed if still empty) when it ends. An interrupt's
-// _exit skips that: the kernel releases the lock, the file stays and the
-// next run takes it over.
-class HeldLocks {
-public:
-    struct Held {
-        int fd = -1;
-        fs::path file;
-        std::vector<fs::path> made;  // folders created for the lock file, deepest first
-    };
-    ~HeldLocks() {
-        for (auto& [key, held] : held_) release(held);
-    }
-    bool holds(const std::string& key) const { return held_.count(key) > 0; }
-    void add(const std::string& key, Held held) { held_[key] = std::move(held); }
-    void release(const std::string& key) {
-        const auto it = held_.find(key);
-        if (it == held_.end()) return;
-        release(it->second);
-        held_.erase(it);
-    }
-
-private:
-    static void release(Held& held) {
-        ::unlink(held.file.c_str());  // while holding it: a waiter then finds its file gone and retries
-        ::close(held.fd);
-        for (const fs::path& folder : held.made) ::rmdir(folder.c_str());
-    }
-    std::map<std::string, Held> held_;
-};
-
-HeldLocks& held_locks() {
-    static HeldLocks locks;
-    return locks;
-}
-
-std::string lock_key(const fs::path& output) { return resolved(lock_path(output)).string(); }
-
-// Takes the lock of `output` (a checked output path) unless this process
-// holds it already; returns whether it was taken now. Throws InputError
-// naming the holder when another process holds it.
-bool take_lock(const fs::path& output) {
-    const std::string key = lock_key(output);
-    if (held_locks().holds(key)) return false;
-    HeldLocks::Held held;
-    held.file = lock_path(output);
-    std::error_code ec;
-    for (fs::path p = fs::absolute(parent_folder(output), ec); !ec && !exists_here(p); p = p.parent_path())
-        held.made.push_back(p);
-    fs::create_directories(parent_folder(output), ec);
-    if (ec) refuse(output, "cannot be written", "its folder cannot be created (" + ec.message() + ")");
-    // A lock file removed by its holder between our open and flock is not
-    // the lock any more: try again with the new one.
-    for (int attempt = 0; attempt < 10; ++attempt) {
-        const int fd = ::open(held.file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-        if (fd < 0)
-            refuse(output, "cannot be locked",
-                   "its lock file " + quoted(held.file) + " cannot be opened (" + std::strerror(errno) +
-                       "); if it is yours, move it away");
-        if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-            const int error = errno;
-            const std::string who = holder(fd);
-            ::close(fd);
-            if (error == EWOULDBLOCK)
-                refuse(output, "is being written by another coremodal run (" + who + ")",
-                       "wait until it has finished, or choose another folder");
-            refuse(output, "cannot be locked", std::string("flock on ") + quoted(held.file) + ": " +
-                                                   std::strerror(error) + "; choose a folder on a local disk");
-        }
-        struct stat opened {}, named {};
-        if (::fstat(fd, &opened) != 0 || ::stat(held.file.c_str(), &named) != 0 || opened.st_ino != named.st_ino ||
-            opened.st_dev != named.st_dev) {
-            ::close(fd);
-            continue;
-        }
-        const std::string who = "pid " + std::to_string(::getpid()) + "\nhost " + host_name() + "\nstarted " +
-                                utc_now() + "\ncommand " + command_line() + "\n";
-        // Who holds it is a courtesy to the next run: a full disk does not stop this one here.
-        [[maybe_unused]] const bool noted =
-            ::ftruncate(fd, 0) == 0 && ::pwrite(fd, who.data(), who.size(), 0) == static_cast<ssize_t>(who.size());
-        held.fd = fd;
-        held_locks().add(key, held);
-        return true;
-    }
-    refuse(output, "cannot be locked", "its lock file " + quoted(held.file) + " keeps changing; try again");
-}
-
 // Whether this process is the one that writes: rank 0, or the only process.
 bool writing_rank() {
     int up = 0, down = 0;
@@ -446,16 +151,6 @@ std::string from_rank_zero(std::string message) {
 }
 
 }  // namespace
-
-bool is_results_folder(const fs::path& folder) { return marker_lines(folder).has_value(); }
-
-std::optional<std::string> marker_host(const fs::path& folder) {
-    const auto lines = marker_lines(folder);
-    if (!lines) return std::nullopt;
-    for (const std::string& line : *lines)
-        if (line.rfind("host ", 0) == 0) return line.substr(5);
-    return std::nullopt;
-}
 
 fs::path previous_path(const fs::path& output) { return suffixed(clean(output), ".previous"); }
 
@@ -576,7 +271,7 @@ ResultsFolder::ResultsFolder(fs::path final_path, bool force) : final_(clean(fin
         std::error_code ignored;
         fs::remove_all(partial_, ignored);
         keep_on_interrupt(partial_);
-        if (own_lock_) held_locks().release(lock_key(final_));
+        if (own_lock_) release_lock(final_);
         throw;
     }
 }
@@ -587,7 +282,7 @@ ResultsFolder::~ResultsFolder() {
         fs::remove_all(partial_, ignored);
     }
     keep_on_interrupt(partial_);
-    if (own_lock_) held_locks().release(lock_key(final_));
+    if (own_lock_) release_lock(final_);
 }
 
 std::string ResultsFolder::file(const std::string& name) const { return (partial_ / name).string(); }

@@ -20,12 +20,14 @@
 // carries its own marker), keeps it from being rotated or removed; the
 // refusal names what is in the way. A marker without the list (written by
 // an earlier version) is trusted, except for results folders nested in it.
+// The marker's writing and reading: output/results_marker.hpp.
 //
 // One writer. Every command takes a lock on its output before any work
 // (flock on "<path>.lock" next to it, with the holder's pid, host, command
 // and start time in it) and keeps it until the process ends; a second run
 // into the same output is refused with who holds it. The kernel releases
-// the lock when its process dies, so a killed run never blocks the next.
+// the lock when its process dies, so a killed run never blocks the next
+// (output/results_lock.hpp).
 //
 // Complete or not at all. ResultsFolder writes into "<path>.partial-<pid>"
 // and renames it into place in commit(); a run that fails or is interrupted

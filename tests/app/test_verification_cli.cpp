@@ -7,7 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <cstdlib>
 #include <string>
+#include <thread>
 
 namespace fs = std::filesystem;
 using namespace coremodal::testing;
@@ -79,10 +81,13 @@ TEST_CASE("A -max_memory_mb of abc is refused with what is expected, not PETSc's
 TEST_CASE("Out of memory under an address-space limit is a clear error, no crash, no hang", "[app][verify_gate]") {
     // Case 08 on the coarse mesh: under 600 MB OpenBLAS retried a failed
     // allocation forever (97 % CPU); under 400 MB gmsh's std::bad_alloc
-    // ended the program before main (exit 134).
+    // ended the program before main (exit 134), then, with that caught, the
+    // error was said and the program hung at exit: OpenBLAS's second thread,
+    // started as the library loaded, retried its 128 MB buffer forever and
+    // OpenBLAS's exit handler waited for it (common/blas_threads.hpp).
     TempDir dir("verify");
     const std::string case_08 = "run '" COREMODAL_SOURCE_DIR "/cases/08-news-chucks-76x15-2200.toml' --mesh coarse -o out --no-plots";
-    for (const long limit_kb : {600000L}) {
+    for (const long limit_kb : {400000L, 600000L}) {
         INFO("ulimit -v " << limit_kb);
         Started started = start_coremodal(dir, case_08, "prlimit --as=" + std::to_string(limit_kb * 1024));
         const std::optional<Run> r = finish_coremodal(dir, started, 60);
@@ -95,4 +100,23 @@ TEST_CASE("Out of memory under an address-space limit is a clear error, no crash
         CHECK_FALSE(contains(r->err, "terminate called"));
         CHECK_FALSE(fs::exists(dir.path / "out"));
     }
+}
+
+TEST_CASE("Under an address-space limit that affords one BLAS thread a run completes on one and says so",
+          "[app][verify_gate]") {
+    // 850 MB: room for the libraries (255 MB), their start (120 MB), a run's
+    // least headroom (400 MB) and one BLAS thread; not for a second thread's
+    // 200 MB (common/blas_threads.hpp). Before: that thread retried its
+    // buffer forever, at 100 % CPU, and the program hung at exit.
+    TempDir dir("verify");
+    dir.write("tiny.toml", kTinyCase);
+    Started started = start_coremodal(dir, "run tiny.toml -o out -q --no-plots", "prlimit --as=" + std::to_string(850000L * 1024));
+    const std::optional<Run> r = finish_coremodal(dir, started, 120);
+    REQUIRE(r);  // no hang
+    INFO("stdout: " << r->out << "\nstderr: " << r->err);
+    CHECK(r->exit_code == 0);
+    CHECK(fs::exists(dir.path / "out" / "summary.json"));
+    // The note only where OpenBLAS would have started more than one thread.
+    if (std::thread::hardware_concurrency() > 1 && !std::getenv("OPENBLAS_NUM_THREADS") && !std::getenv("OMP_NUM_THREADS"))
+        CHECK(contains(r->err, "BLAS on 1 thread instead of"));
 }

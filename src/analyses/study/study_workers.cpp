@@ -3,6 +3,7 @@
 #include "common/child_process.hpp"
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
+#include "common/process_folders.hpp"
 #include "common/signals.hpp"
 #include "output/text_file.hpp"
 
@@ -10,7 +11,6 @@
 
 #include <signal.h>
 #include <sys/prctl.h>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -25,6 +25,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 
@@ -204,45 +205,17 @@ struct Child {
     }
 };
 
-// The scratch folder of the study run by process `pid`.
-fs::path scratch_folder(pid_t pid) {
-    return fs::temp_directory_path() / ("coremodal-study-" + std::to_string(pid));
-}
-
-// Whether `pid` is a running coremodal (a process number the system has
-// given to another program since does not count).
-bool coremodal_running(pid_t pid) {
-    std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
-    std::string name;
-    return comm && std::getline(comm, name) && name.rfind("coremodal", 0) == 0;
-}
-
-// Removes the scratch folders of studies that were killed (SIGKILL cannot
-// be caught, so they could not remove their own): this user's
-// coremodal-study-<pid> whose process is gone or is no coremodal.
-void sweep_dead_studies() {
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(fs::temp_directory_path(), ec)) {
-        const std::string name = entry.path().filename().string();
-        constexpr std::string_view prefix = "coremodal-study-";
-        if (name.rfind(prefix, 0) != 0 || name.size() == prefix.size() ||
-            name.find_first_not_of("0123456789", prefix.size()) != std::string::npos)
-            continue;
-        struct stat st {};
-        if (::lstat(entry.path().c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::geteuid()) continue;
-        const long pid = std::stol(name.substr(prefix.size()));
-        if (pid == ::getpid() || coremodal_running(static_cast<pid_t>(pid))) continue;
-        std::error_code failed;
-        fs::remove_all(entry.path(), failed);
-    }
-}
+// The scratch folder of the study run by process `pid`, and the prefix of
+// every study's: a killed study's is removed by the next (common/process_folders.hpp).
+constexpr std::string_view kScratchPrefix = "coremodal-study-";
+fs::path scratch_folder(pid_t pid) { return process_folder(fs::temp_directory_path(), kScratchPrefix, pid); }
 
 }  // namespace
 
 void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo, unsigned jobs,
                             const std::string& program, std::vector<StudyPoint>& points,
                             const std::function<void(int)>& finished) {
-    sweep_dead_studies();
+    remove_folders_of_dead_processes(fs::temp_directory_path(), kScratchPrefix);
     const fs::path folder = scratch_folder(::getpid());
     remove_on_interrupt(folder);  // the workers' records: scratch, removed however the study ends
     fs::remove_all(folder);
