@@ -2,7 +2,8 @@
 // does, then say what `run` would simulate — every resolved value and where
 // it came from, the effects, the model level and why — without meshing,
 // solving or starting PETSc. Exit 0: valid; 1: the error `run` would give.
-#include "analyses/batch/batch.hpp"  // is_winder_file, is_selection_file
+#include "analyses/batch/batch.hpp"  // is_winder_file, is_selection_file, is_fit_file
+#include "analyses/fit/measurements.hpp"
 #include "app/commands.hpp"
 #include "models/choose.hpp"  // level_choice_text, require_axisymmetric
 #include "common/warnings.hpp"
@@ -18,6 +19,7 @@
 #include "winder/winder_scene.hpp"
 
 #include <iostream>
+#include <set>
 
 namespace coremodal {
 namespace {
@@ -69,9 +71,22 @@ int check_selection(const CheckOptions& options) {
     return 0;
 }
 
+// A fit's measurements file (docs/calibration.md, "Fitting the model"): its
+// own reader; the cases it names are checked by `coremodal check` on each.
+int check_fit(const CheckOptions& options) {
+    const FitInput in = read_fit_input(options.case_file);
+    std::cout << options.case_file << ": valid fit measurements file: " << in.parameters.size() << " parameter(s), "
+              << in.measurements.size() << " measurement(s); run it with `coremodal fit`\n\nmeasured cases:\n";
+    std::set<std::string> cases;
+    for (const Measurement& m : in.measurements) cases.insert(m.case_file);
+    for (const std::string& c : cases) std::cout << "  " << c << "\n";
+    return 0;
+}
+
 int check_case(const CheckOptions& options) {
     if (is_winder_file(options.case_file)) return check_winder(options);
     if (is_selection_file(options.case_file)) return check_selection(options);
+    if (is_fit_file(options.case_file)) return check_fit(options);
     const std::optional<TractionCase> traction = read_traction_case(options.case_file);
     if (traction && !traction->has_roll) return check_traction(options, *traction);
     // The same reading as run_case's step 1, so that the same errors come out.

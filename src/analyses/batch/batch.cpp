@@ -52,16 +52,18 @@ std::string program_name(const std::string& program) {
 void run_one(BatchCase& c, const BatchOptions& o, std::vector<std::string>& env) {
     const bool winder = is_winder_file(c.file), selection = is_selection_file(c.file);
     const bool traction = !winder && !selection && is_traction_file(c.file);
-    const char* command = winder ? "winder" : selection ? "select" : traction ? "traction" : "run";
+    const bool fit = !winder && !selection && !traction && is_fit_file(c.file);
+    const char* command = winder ? "winder" : selection ? "select" : traction ? "traction" : fit ? "fit" : "run";
     std::vector<std::string> args = {program_name(o.program), command, c.file, "--output", c.result_dir, "--quiet"};
     if (!o.plots) args.push_back("--no-plots");
     if (winder) c.note = "a two-drum winder (coremodal winder): its frequencies and crossings are in its report.md";
     if (selection) c.note = "a core selection (coremodal select): its chart and verdicts are in its report.md";
     if (traction) c.note = "a roller's traction (coremodal traction): its speeds are in its report.md";
+    if (fit) c.note = "a fit's measurements (coremodal fit): the fitted parameters are in its report.md";
     if (o.mesh_level) {
-        if (winder || selection || traction)
-            c.note += std::string("; ") + (traction ? "closed forms" : "a beam model") + ": --mesh " + *o.mesh_level +
-                      " not applied";
+        if (winder || selection || traction || fit)
+            c.note += std::string("; ") + (traction ? "closed forms" : fit ? "the measured cases' own meshes" : "a beam model") +
+                      ": --mesh " + *o.mesh_level + " not applied";
         else if (case_has_mesh_file(c.file))
             c.note = "own mesh file: --mesh " + *o.mesh_level + " not applied";
         else
@@ -166,6 +168,11 @@ bool is_winder_file(const std::string& case_file) { return case_table_or_empty(c
 
 bool is_selection_file(const std::string& case_file) {
     return case_table_or_empty(case_file).contains("selection");
+}
+
+bool is_fit_file(const std::string& case_file) {
+    const toml::table t = case_table_or_empty(case_file);
+    return !t.contains("core") && (t.contains("measurement") || t.contains("parameters"));
 }
 
 bool is_traction_file(const std::string& case_file) {

@@ -63,6 +63,9 @@ bool is_selection_file(const std::string& case_file);
 // Whether the file is for `coremodal traction` alone: [traction] and no roll
 // ([core]) (docs/traction.md); batch runs it with that command.
 bool is_traction_file(const std::string& case_file);
+// Whether the file is a fit's measurements file ([[measurement]] or
+// parameters, and no roll; docs/calibration.md): batch runs it with `coremodal fit`.
+bool is_fit_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.
