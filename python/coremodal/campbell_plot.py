@@ -9,7 +9,8 @@ grey), the excitation lines f = k f_rot dotted, and the critical speeds (the
 crossings) ringed and numbered by order. The top axis gives the same speed as
 web speed v = pi Dp f_rot at the roll's outer diameter Dp; the legend, beside
 the axes, lists only what is drawn; no label prints over another
-(coremodal.labels).
+(coremodal.labels). The case's operating range ([rotation] operating_speeds),
+when the summary has one, is a light band.
 """
 
 from __future__ import annotations
@@ -91,6 +92,9 @@ def draw(folder: Path) -> Path:
         ax.plot([x], [y], "o", mfc="none", mec="k", ms=10, label="critical speed" if i == 0 else None)
         labels.append(ax.annotate(f"{c['order']}x {c['whirl']}: {x:.0f} rpm", (x, y), textcoords="offset points",
                                   xytext=(6, -14 if i % 2 == 0 else 8), fontsize=8))
+    operating = summary["rotation"].get("operating_speeds_rpm")
+    if operating:  # [rotation] operating_speeds: the speeds the machine runs at
+        ax.axvspan(operating[0], operating[1], color="tab:green", alpha=0.12, lw=0, label="operating range")
     ax.set_xlim(speeds[0], speeds[-1] if speeds[-1] > speeds[0] else speeds[0] + 1)
     ax.set_ylim(0, top)
     ax.set_xlabel("rotation speed (rpm)")

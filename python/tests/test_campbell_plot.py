@@ -66,3 +66,38 @@ def test_a_pencil_crossing_beyond_the_sweep_is_drawn(tmp_path: Path) -> None:
         "2,1500,25,50,8.3,1,BW,bending n=1 m=0,true,1500,sweep\n"
         "1,5200,86.7,86.7,28.9,0,FW,bending n=1 m=0,true,5200,pencil\n")
     assert draw(folder).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def drawn_axes(folder: Path, monkeypatch: pytest.MonkeyPatch):
+    """The axes of campbell.png as drawn (the figure caught at savefig)."""
+    from matplotlib.figure import Figure
+    caught = []
+    save = Figure.savefig
+    monkeypatch.setattr(Figure, "savefig", lambda fig, *a, **k: (caught.append(fig), save(fig, *a, **k))[1])
+    draw(folder)
+    return caught[0].axes[0]
+
+
+def test_the_operating_range_is_shaded_when_the_summary_has_it(tmp_path: Path, monkeypatch) -> None:
+    folder = write_campbell(tmp_path / "c")
+    summary = json.loads((folder / "summary.json").read_text())
+    summary["rotation"]["operating_speeds_rpm"] = [1000.0, 4000.0]
+    (folder / "summary.json").write_text(json.dumps(summary))
+    ax = drawn_axes(folder, monkeypatch)
+    bands = [p for p in ax.patches if p.get_label() == "operating range"]
+    assert len(bands) == 1
+    xs = [x for x, _ in bands[0].get_xy()]  # axvspan: x in data coordinates
+    assert min(xs) == pytest.approx(1000.0) and max(xs) == pytest.approx(4000.0)
+    legend = fig_legend_texts(ax)
+    assert "operating range" in legend
+
+
+def test_no_band_without_an_operating_range(tmp_path: Path, monkeypatch) -> None:
+    ax = drawn_axes(write_campbell(tmp_path / "c"), monkeypatch)
+    assert not [p for p in ax.patches if p.get_label() == "operating range"]
+    assert "operating range" not in fig_legend_texts(ax)
+
+
+def fig_legend_texts(ax) -> list[str]:
+    legends = [ax.get_legend()] + list(ax.figure.legends)
+    return [t.get_text() for lg in legends if lg is not None for t in lg.get_texts()]

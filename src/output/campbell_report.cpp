@@ -46,27 +46,30 @@ std::string critical_rows(const CampbellResult& r) {
     return out;
 }
 
-Json critical_json(const WhirlCrossing& c) {
-    return Json{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
+Json critical_json(const WhirlCrossing& c, const CampbellResult& r) {
+    Json t{{"order", c.order},          {"speed_rpm", c.speed_hz * kRpmPerHz},
                        {"speed_hz", c.speed_hz},    {"frequency_hz", c.frequency_hz},
                        {"web_speed_m_s", c.web_speed_m_s}, {"track", c.track},
                        {"whirl", whirl_word(c.whirl)}, {"label", label_text(c.label)},
                        {"refined", c.refined}, {"interpolated_speed_rpm", c.interpolated_speed_hz * kRpmPerHz},
                        {"source", crossing_source_name(c.source)}};
+    if (r.operating_hz)
+        t["inside_operating_range"] = c.speed_hz >= (*r.operating_hz)[0] && c.speed_hz <= (*r.operating_hz)[1];
+    return t;
 }
 
 // I-5 at rest in the shape every summary uses, and the first order-1 critical speed.
 Json speeds_json(const CampbellResult& r) {
     Json t = safe_web_speed_json(r.speeds_at_rest);
     if (!r.speeds_at_rest.given()) return t;
-    if (const WhirlCrossing* c = r.first_order_one()) t["first_order_1_critical"] = critical_json(*c);
+    if (const WhirlCrossing* c = r.first_order_one()) t["first_order_1_critical"] = critical_json(*c, r);
     return t;
 }
 
 std::string summary_json(const Scene& scene, const RotationSpec& rotation, const CampbellResult& r) {
     Json speeds = Json::array(), critical = Json::array(), orders = Json::array();
     for (const CampbellPoint& p : r.points) speeds.push_back(p.speed_hz * kRpmPerHz);
-    for (const WhirlCrossing& c : r.critical) critical.push_back(critical_json(c));
+    for (const WhirlCrossing& c : r.critical) critical.push_back(critical_json(c, r));
     for (int k : r.excitation_orders) orders.push_back(k);
     Json t = summary_head("campbell", scene.name, scene.source_file, scene.description);
     t["model"] = Json{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}};
@@ -78,6 +81,8 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
                          {"from_web_speed", r.from_web_speed},
                          {"centrifugal_stiffening_requested", rotation.centrifugal_stiffening},
                          {"sweep_end", r.sweep_end}};
+    if (r.operating_hz)
+        t["rotation"]["operating_speeds_rpm"] = Json{(*r.operating_hz)[0] * kRpmPerHz, (*r.operating_hz)[1] * kRpmPerHz};
     t["critical_speeds"] = critical;
     t["speeds"] = speeds_json(r);
     t["verification"] =
@@ -87,6 +92,25 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
 }
 
 std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
+
+// "critical speed X rpm inside the operating range" for each one there, or
+// that none is; nothing without an operating range.
+std::string operating_range_lines(const CampbellResult& r) {
+    if (!r.operating_hz) return "";
+    const auto [low, high] = *r.operating_hz;
+    const std::string range = rpm(low) + " to " + rpm(high);
+    std::string out;
+    for (const WhirlCrossing* c : r.inside_operating_range())
+        out += "- WARNING: critical speed " + rpm(c->speed_hz) + " inside the operating range " + range + " (order " +
+               std::to_string(c->order) + ", " + significant(c->frequency_hz, 5) + " Hz" +
+               (c->whirl == Whirl::none ? "" : " " + whirl_word(c->whirl)) + ")\n";
+    if (out.empty()) out = "- no critical speed inside the operating range " + range + "\n";
+    // The sweep may stop short (sweep_end): above its last speed nothing is known.
+    if (r.points.back().speed_hz < high)
+        out += "- the sweep ends at " + rpm(r.points.back().speed_hz) + ", below the operating range's top: critical "
+               "speeds above it are not known\n";
+    return out;
+}
 
 bool from_sweep(const WhirlCrossing& c) { return c.source == CrossingSource::sweep; }
 
@@ -157,6 +181,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     out << (r.level == "beam" ? "Beam" : r.level == "harmonic" ? "Harmonic" : "Solid") << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
         << " to " << rpm(r.points.back().speed_hz) << "; excitation orders";
     for (int k : r.excitation_orders) out << " " << k;
+    if (r.operating_hz) out << "; operating range " << rpm((*r.operating_hz)[0]) << " to " << rpm((*r.operating_hz)[1]);
     out << "; Dp = " << significant(r.roll_outer_diameter * 1e3, 4) << " mm. Effects:";
     for (const std::string& e : r.effects) out << " " << e;
     out << ".\n\n";
@@ -164,7 +189,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     out << "\n## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
            "(between the sweep's speeds, refined by solving inside the bracket; in co-rotating coordinates also the exact "
            "speeds of zero rotating-frame frequency, \"pencil\"), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
-        << critical_table(r) << "\n" << safe_speed_lines(r) << "\n";
+        << critical_table(r) << "\n" << operating_range_lines(r) << safe_speed_lines(r) << "\n";
     out << "## Modes at " << rpm(r.points.back().speed_hz) << "\n\n" << last_speed_table(r) << "\n";
     out << "## Diagram\n\n";
     for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
@@ -188,7 +213,7 @@ std::string campbell_console_summary(const Scene& scene, const CampbellResult& r
             << significant(c.frequency_hz, 5) << " Hz " << whirl_word(c.whirl) << " " << label_text(c.label)
             << (from_sweep(c) ? "" : " (pencil, exact)") << "\n";
     if (!r.sweep_end.empty()) out << "  " << r.sweep_end << "\n";
-    out << safe_speed_lines(r);
+    out << operating_range_lines(r) << safe_speed_lines(r);
     return out.str();
 }
 

@@ -127,6 +127,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"rotation", "points", "none: speeds is a list", "number of equally spaced speeds from the first to the last of speeds (or web_speeds)"},
         {"rotation", "web_speed", "none: give one of speed, speeds, web_speed, web_speeds", "one web speed v; f_rot = v / (pi Dp), Dp the roll's outer diameter"},
         {"rotation", "web_speeds", "none: give one of speed, speeds, web_speed, web_speeds", "web speeds: a list, or [first, last] with points; each f_rot = v / (pi Dp)"},
+        {"rotation", "operating_speeds", "none: no operating range", "[lowest, highest] speed the machine runs at, in the sweep's units and inside it; campbell shades it and flags a critical speed inside"},
         {"rotation", "excitation_orders", "[1, 2]", "orders k of the excitation lines f = k f_rot (1: unbalance, 2: ovality, sag)"},
         {"rotation", "centrifugal_stiffening", "true", "the centrifugal prestress as geometric stiffness, where the level has a term for it (not at the beam level)"},
 

@@ -264,6 +264,8 @@ private:
     std::vector<double> read_speed_list(const Section& rotation, std::string_view key, Dimension d) const;
 
     std::vector<int> read_excitation_orders(const Section& rotation) const;
+    std::array<double, 2> read_operating_speeds(const Section& rotation, std::string_view sweep_key,
+                                                const RotationSpec& spec, double roll_diameter) const;
 
     // ---- [traction] -----------------------------------------------------
 

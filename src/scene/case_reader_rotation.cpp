@@ -43,6 +43,8 @@ std::optional<RotationSpec> CaseReader::read_rotation(const Section& top, const 
     spec.speeds_hz = list ? read_speed_list(*rotation, key, d) : std::vector<double>{*quantity(*rotation, key)};
     if (spec.from_web_speed)  // f_rot = v / (pi Dp): the roll's surface moves with the web
         for (double& v : spec.speeds_hz) v /= M_PI * roll_outer_diameter(scene);
+    if (get(*rotation, "operating_speeds"))
+        spec.operating_hz = read_operating_speeds(*rotation, key, spec, roll_outer_diameter(scene));
     if (get(*rotation, "excitation_orders")) spec.excitation_orders = read_excitation_orders(*rotation);
     if (const toml::node* c = get(*rotation, "centrifugal_stiffening")) spec.centrifugal_stiffening = *c->value<bool>();
     return spec;
@@ -76,6 +78,42 @@ std::vector<double> CaseReader::read_speed_list(const Section& rotation, std::st
     std::vector<double> out(*points);
     for (int i = 0; i < *points; ++i) out[i] = values[0] + (values[1] - values[0]) * i / (*points - 1);
     return out;
+}
+
+// The operating range: two speeds in the sweep's own units, the lower first,
+// inside the sweep (outside it no critical speed is computed, so "none inside
+// the operating range" could not be said).
+std::array<double, 2> CaseReader::read_operating_speeds(const Section& rotation, std::string_view sweep_key,
+                                                        const RotationSpec& spec, double roll_diameter) const {
+    const toml::node& node = *get(rotation, "operating_speeds");
+    const std::string what = echo(rotation, "operating_speeds", node);
+    const bool web = spec.from_web_speed;
+    const std::string example = web ? "[\"5 m/s\", \"20 m/s\"]" : "[\"0 rpm\", \"4000 rpm\"]";
+    if (!spec.sweep())
+        fail(node, what + " goes with a sweep; expected speeds or web_speeds = [first, last] with points, not " +
+                       std::string(sweep_key));
+    const toml::array& items = *node.as_array();
+    if (items.size() != 2)
+        fail(node, what + ": expected two speeds [lowest, highest], e.g. " + example);
+    const Dimension d = web ? Dimension::speed : Dimension::frequency;
+    const std::string units = web ? " (web speeds, as " + std::string(sweep_key) + ")" : " (rotation speeds, as speeds)";
+    std::array<double, 2> hz{};
+    for (int i = 0; i < 2; ++i) {
+        hz[i] = to_si(items[i], d, what + units);
+        if (web) hz[i] /= M_PI * roll_diameter;  // f_rot = v / (pi Dp), as the sweep
+    }
+    if (!(hz[0] < hz[1]))
+        fail(items[1], what + ": the lowest speed must come first and be below the highest; expected [lowest, highest], "
+                              "e.g. " + example);
+    // A relative tolerance: the same speed written in other units (4000 rpm, 66.67 Hz) rounds differently.
+    const double first = spec.speeds_hz.front(), last = spec.speeds_hz.back(), slack = 1e-9 * last;
+    const std::string sweep = echo(rotation, sweep_key, *get(rotation, sweep_key));
+    for (int i = 0; i < 2; ++i)
+        if (hz[i] < first - slack || hz[i] > last + slack)
+            fail(items[i], what + ": " + std::string(i == 0 ? "the lowest" : "the highest") +
+                               " speed lies outside the sweep " + sweep +
+                               "; expected both inside it (critical speeds are found only within the sweep)");
+    return hz;
 }
 
 std::vector<int> CaseReader::read_excitation_orders(const Section& rotation) const {

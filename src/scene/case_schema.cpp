@@ -223,6 +223,7 @@ const std::vector<KeySpec>& case_schema() {
         {"rotation", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed},
         plain_key("rotation", "web_speeds", ValueKind::list),
         plain_key("rotation", "excitation_orders", ValueKind::list),
+        plain_key("rotation", "operating_speeds", ValueKind::list),
         plain_key("rotation", "centrifugal_stiffening", ValueKind::boolean),
 
         // [web]: the paper web pulls on the roll along a line (docs/web.md).

@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +25,9 @@ struct RotationSpec {
     // The steady centrifugal stress as geometric stiffness, where a level
     // has a term for it (none at the beam level: docs/rotation.md).
     bool centrifugal_stiffening = true;
+    // operating_speeds: the speeds the machine runs at, [lowest, highest] in
+    // Hz, inside the sweep (a critical speed is only known there); or none.
+    std::optional<std::array<double, 2>> operating_hz;
     bool sweep() const { return speeds_hz.size() > 1; }
 };
 

@@ -50,6 +50,27 @@ TEST_CASE("coremodal campbell writes the Campbell table, the critical speeds, th
     const std::string report = slurp(dir.path / "out" / "report.md");
     CHECK(report.find("## Critical speeds") != std::string::npos);
     CHECK(report.find("I-5 safe web speed") != std::string::npos);
+    // The tester's operating range 0-4000 rpm (operating_speeds): the order-2 crossings of the first bending pair
+    // (69.1 Hz at rest, so near 30 x 69.1 = 2073 rpm) lie inside it, the order-1 ones (near 4150 rpm) above it.
+    const auto range = coremodal::json_at(summary, "rotation.operating_speeds_rpm");
+    REQUIRE(range);
+    CHECK((*range)[0].get<double>() == Approx(0.0).margin(1e-9));
+    CHECK((*range)[1].get<double>() == Approx(4000.0));
+    const auto critical = coremodal::json_at(summary, "critical_speeds");
+    REQUIRE(critical);
+    int inside = 0;
+    for (const auto& c : *critical) {
+        const double rpm = c["speed_rpm"].get<double>();
+        CHECK(c["inside_operating_range"].get<bool>() == (rpm <= 4000.0));
+        if (c["inside_operating_range"].get<bool>()) {
+            ++inside;
+            CHECK(c["order"].get<int>() == 2);
+            CHECK(rpm == Approx(2073.0).epsilon(0.01));
+        }
+    }
+    CHECK(inside == 2);
+    CHECK(r.out.find("critical speed 2071.6 rpm inside the operating range 0 rpm to 4000 rpm") != std::string::npos);
+    CHECK(report.find("inside the operating range") != std::string::npos);
 }
 
 TEST_CASE("coremodal run on a case with one speed reports the modes at that speed", "[app][rotation]") {

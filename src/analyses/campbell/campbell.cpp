@@ -402,6 +402,14 @@ const WhirlCrossing* CampbellResult::first_order_one() const {
     return nullptr;
 }
 
+std::vector<const WhirlCrossing*> CampbellResult::inside_operating_range() const {
+    std::vector<const WhirlCrossing*> out;
+    if (!operating_hz) return out;
+    for (const WhirlCrossing& c : critical)
+        if (c.speed_hz >= (*operating_hz)[0] && c.speed_hz <= (*operating_hz)[1]) out.push_back(&c);
+    return out;
+}
+
 std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& points, const std::vector<int>& orders,
                                            double dp) {
     std::vector<WhirlCrossing> out;
@@ -435,6 +443,7 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     out.excitation_orders = rotation.excitation_orders;
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.from_web_speed = rotation.from_web_speed;
+    out.operating_hz = rotation.operating_hz;
     out.effects = rotating_effect_names(scene, rotation, level_has_centrifugal(scene.model));
     if (scene.model == "beam")
         run_beam_campbell(scene, rotation, options, out);

@@ -20,7 +20,9 @@
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 
+#include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,8 +102,11 @@ struct CampbellResult {
     std::vector<std::string> effects;        // the terms included
     std::vector<std::string> notes;          // what is included and what is not
     std::string sweep_end;                   // where the sweep stopped short of the scene's speeds, and why; or empty
+    std::optional<std::array<double, 2>> operating_hz;  // [rotation] operating_speeds, Hz; or none
     // The first order-1 crossing, if any.
     const WhirlCrossing* first_order_one() const;
+    // The critical speeds inside the operating range (ends included); none without one.
+    std::vector<const WhirlCrossing*> inside_operating_range() const;
 };
 
 // Throws InputError when the scene's level (with "auto" resolved) cannot

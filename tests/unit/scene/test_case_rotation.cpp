@@ -93,3 +93,26 @@ TEST_CASE("[rotation] mistakes are refused with the key, the place and what is e
     CHECK(error_of(kCore + "[rotation]\nsped = \"5 Hz\"\n") ==
           "cases/x.toml:6:1: unknown key 'sped' in [rotation]; did you mean 'speed'?");
 }
+
+// operating_speeds: two speeds in the sweep's units, the lower first, inside the sweep.
+TEST_CASE("[rotation] operating_speeds: the range read, mistakes refused naming the key", "[rotation][scene]") {
+    const std::string sweep = "[rotation]\nspeeds = [\"0 rpm\", \"4500 rpm\"]\npoints = 10\n";
+    const RotatingCase good = read(sweep + "operating_speeds = [\"600 rpm\", \"4000 rpm\"]\n");
+    REQUIRE(good.rotation->operating_hz);
+    CHECK((*good.rotation->operating_hz)[0] == Approx(10.0));  // 600 rpm = 10 Hz
+    CHECK((*good.rotation->operating_hz)[1] == Approx(4000.0 / 60));
+    CHECK_FALSE(read(sweep).rotation->operating_hz);
+    const std::string reversed = error_of(kCore + sweep + "operating_speeds = [\"4000 rpm\", \"600 rpm\"]\n");
+    CHECK(reversed.starts_with("cases/x.toml:8:"));
+    CHECK(reversed.find("[rotation] operating_speeds = ") != std::string::npos);
+    CHECK(reversed.find("the lowest speed must come first and be below the highest") != std::string::npos);
+    CHECK(error_of(kCore + sweep + "operating_speeds = [\"600 rpm\", \"600 rpm\"]\n").find("below the highest") !=
+          std::string::npos);
+    const std::string unit = error_of(kCore + sweep + "operating_speeds = [\"0 rpm\", \"15 m/s\"]\n");
+    CHECK(unit.starts_with("cases/x.toml:8:"));
+    CHECK(unit.find("[rotation] operating_speeds = ") != std::string::npos);
+    CHECK(error_of(kCore + sweep + "operating_speeds = [\"0 rpm\", \"5000 rpm\"]\n").find("outside the sweep") !=
+          std::string::npos);
+    CHECK(error_of(kCore + "[rotation]\nspeed = \"10 Hz\"\noperating_speeds = [\"0 rpm\", \"600 rpm\"]\n")
+              .find("goes with a sweep") != std::string::npos);
+}
