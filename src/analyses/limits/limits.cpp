@@ -105,6 +105,9 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     if (check) result.checks = LimitsChecks{d, response.checks};
     std::optional<CriticalSpeeds> critical;
     if (at.model == "beam") critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
+    if (!critical && !result.campbell_sweep)
+        throw InputError("the roll's bending planes differ (a web or unlike supports), so its critical speeds need "
+                         "the Campbell sweep");
     if (!critical) critical = campbell_speeds(at, f1_estimate, p.order1_mode);
     result.n_solves += 2;
     p.f1_hz = response.speeds_at_rest.f1_hz;
@@ -424,6 +427,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     r.level = scene.model;
     r.band = request.spec.band;
     r.check_response = request.check_response;
+    r.campbell_sweep = request.campbell_sweep;
     r.limit_m = request.spec.limit_m.value_or(response ? response->response.limit_m : kDefaultAmplitudeLimit);
     ResponseSetup base = response.value_or(default_limits_setup(scene, r.limit_m));
     base.response.limit_m = r.limit_m;
@@ -498,6 +502,7 @@ std::string stand_verdict_line(const std::string& case_file) {
     request.spec.largest_diameter_m = request.spec.smallest_diameter_m = d;
     request.spec.band = false;
     request.check_response = false;
+    request.campbell_sweep = false;
     if (const std::optional<TractionCase> roller = read_traction_case(case_file))
         request.traction = traction_slip_criterion(roller->spec);
     const std::string what =

@@ -145,6 +145,7 @@ struct LimitsResult {
     std::vector<std::string> warnings, assumptions, notes;
     std::optional<LimitsChecks> checks;
     bool check_response = true;  // as asked (LimitsRequest)
+    bool campbell_sweep = true;  // as asked (LimitsRequest)
     int n_solves = 0;            // forced responses and Campbell sweeps
     double seconds = 0;
 };
@@ -169,6 +170,10 @@ struct LimitsRequest {
     // Check the forced response's superposition once, at the first diameter
     // (LimitsResult::checks); `run`'s verdict line leaves it to `limits`.
     bool check_response = true;
+    // Where the beam level's exact critical speeds do not apply (unlike
+    // bending planes: a web, unlike supports), sweep the Campbell diagram
+    // (minutes at the beam level); `run`'s verdict line does not, and says so.
+    bool campbell_sweep = true;
 };
 
 // `coremodal run` on a roll held in its stand ends with the verdict line too
