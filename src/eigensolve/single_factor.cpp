@@ -58,14 +58,16 @@ FactorPrecision factor_precision_choice(MPI_Comm comm) {
     const std::string choice = text;
     if (choice != "auto" && choice != "single" && choice != "double")
         throw InputError("-factor_precision " + choice + ": expected single, double or auto");
-    const bool parallel = mpi_size(comm) > 1;
     if (choice == "double") return {false, "double precision, as -factor_precision double asks"};
-    if (parallel)
-        return {false, std::string("double precision: the single-precision factor runs in one process only") +
-                           (choice == "single" ? " (-factor_precision single ignored)" : "")};
-    return {true, choice == "single"
-                      ? "single precision, as -factor_precision single asks"
-                      : "single precision, refined in double (-factor_precision double to force double)"};
+    if (choice == "auto")
+        return {false,
+                "double precision: the single-precision factor measured slower on case 03 (its refinement "
+                "takes 3 corrections a pass; docs/performance.md), -factor_precision single to use it"};
+    if (mpi_size(comm) > 1)
+        return {false,
+                "double precision: the single-precision factor runs in one process only "
+                "(-factor_precision single ignored)"};
+    return {true, "single precision refined in double, as -factor_precision single asks"};
 }
 
 SingleLdlt::SingleLdlt(Mat A) : mumps_(std::make_unique<Mumps>()), A_(A) {

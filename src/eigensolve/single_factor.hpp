@@ -30,8 +30,11 @@
 namespace coremodal {
 
 // Which precision factors K - sigma M on the one-factor path, and why (the
-// run says it). -factor_precision single | double | auto (auto: single in
-// one process, double in parallel, where the single library is not wired).
+// run says it). -factor_precision single | double | auto. auto is double
+// for now: on case 03 the single factor's refinement (3 corrections a pass)
+// cost more than its cheaper factorization saved (docs/performance.md,
+// "Single-precision factor"). single is one process only (sequential
+// SMUMPS); in parallel the double factor stays.
 struct FactorPrecision {
     bool single = false;
     std::string why;
