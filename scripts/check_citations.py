@@ -2,7 +2,7 @@
 """Fail if a project file cites a file that is not in the repository.
 
 A reader of a comment, a case file, a doc page or a run's output must be able
-to follow every source it names (docs/references.md). This check finds
+to follow every source it names (docs/reference/references.md). This check finds
   - citations of the team's private notes (the domain notes and the shared
     folder beside the work trees), which no reader has;
   - relative links and images in Markdown pages that point nowhere;
@@ -63,7 +63,7 @@ def findings(root):
             where = f"{rel}:{number}"
             private = [m.group(0) for m in (p.search(line) for p in PRIVATE_NOTES) if m]
             if private:
-                yield f"{where}: cites the team's private notes ({private[0]}); cite the published source or a docs/ page (docs/references.md)"
+                yield f"{where}: cites the team's private notes ({private[0]}); cite the published source or a docs/ page (docs/reference/references.md)"
             for match in REPO_PATH.finditer(line) if not rel.startswith(PATHS_NOT_CHECKED) else ():
                 target = match.group(1).rstrip(".")
                 if GENERATED.search(target):

@@ -1,5 +1,5 @@
 """scripts/check_citations.py: every file a project file cites is in the
-repository (docs/references.md). Checked on a small tree with one planted
+repository (docs/reference/references.md). Checked on a small tree with one planted
 fault of each kind, then on this repository itself."""
 
 from __future__ import annotations

@@ -57,7 +57,7 @@ inline constexpr int kExitUsage = 64;
 inline void add_results_options(CLI::App* cmd, std::string& output, bool& force, const std::string& suffix) {
     cmd->add_option("-o,--output", output,
                     "results folder (default results/<case name>" + suffix + "); replaces only an earlier coremodal "
-                    "result, which is kept as <folder>.previous (docs/results.md)");
+                    "result, which is kept as <folder>.previous (docs/reference/results.md)");
     cmd->add_flag("--force", force, "remove the earlier result at --output instead of keeping it as .previous");
 }
 
