@@ -50,7 +50,7 @@ struct HarmonicMatrices {
 // for a cell with a non-positive Jacobian or a node at r < 0.
 HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C, double density, int n);
 
-// The spin coupling of one section cell (effects/rotation.hpp, docs/theory/rotation.md):
+// The spin coupling of one section cell (effects/rotation.hpp, docs/theory/rotation-harmonic.md):
 // a body of revolution spinning at Omega about z, seen from the stationary
 // frame, moves its material through every point at Omega d/dtheta, so its
 // kinetic energy has the cross term Omega int rho u' . L u dV, L u = d u /

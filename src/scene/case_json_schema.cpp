@@ -269,7 +269,7 @@ constexpr TableTitle kTables[] = {
     {"study", "[study]: a sweep for `coremodal study` (docs/how-to/studies.md)"},
     {"calibration", "[calibration]: a sweep whose chuck factor is fitted, for `coremodal calibrate`"},
     {"parameter", "an item of parameters: key, and values or from/to/steps"},
-    {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/theory/rotation.md)"},
+    {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/how-to/campbell.md)"},
     {"web", "[web]: the paper web pulls on one line of the roll's surface (docs/theory/web.md)"},
     {"damping", "[damping]: relative damping of the modes for the forced response (docs/how-to/response.md)"},
     {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},

@@ -1,5 +1,5 @@
 // [rotation]: the speeds the roll spins at and the excitation orders of a
-// Campbell diagram (scene/case_reader.hpp, docs/theory/rotation.md).
+// Campbell diagram (scene/case_reader.hpp, docs/how-to/campbell.md).
 #include "scene/case_reader.hpp"
 
 #include "scene/case_file.hpp"

@@ -216,7 +216,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("mesh", "element", ValueKind::text),
         plain_key("mesh", "file", ValueKind::text),
 
-        // [rotation]: the roll spins (docs/theory/rotation.md).
+        // [rotation]: the roll spins (docs/how-to/campbell.md).
         {"rotation", "speed", ValueKind::quantity, Dimension::frequency, 0.0, kMaxRotationHz},
         plain_key("rotation", "speeds", ValueKind::list),
         integer_key("rotation", "points", 2, kMaxRotationPoints),

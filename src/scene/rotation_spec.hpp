@@ -1,4 +1,4 @@
-// [rotation] of a case file (docs/theory/rotation.md): the roll, its chucks and
+// [rotation] of a case file (docs/how-to/campbell.md): the roll, its chucks and
 // shafts spin about the z axis. One speed: the modes at that speed (`run`);
 // several: a Campbell sweep (`coremodal campbell`). Like [study] and
 // [calibration], the table is read beside the Scene, not into it: the case

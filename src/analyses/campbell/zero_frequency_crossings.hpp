@@ -1,5 +1,5 @@
 // Critical speeds of a Campbell sweep in co-rotating coordinates (the solid
-// level's rotating frame, models/solid/rotating_frame.hpp; docs/theory/rotation.md
+// level's rotating frame, models/solid/rotating_frame.hpp; docs/theory/rotation-solid.md
 // "Critical speeds in co-rotating coordinates").
 //
 // Above the lowest speed where a mode's rotating-frame frequency is zero,

@@ -121,7 +121,7 @@ void require_response_level(const Scene& scene) {
     if (const auto why = why_not_axisymmetric(scene); why && level == "solid")
         throw InputError(scene.source_file + ": [response] at the solid level: " + *why +
                          "; the gyroscopic term is the stationary frame's, right for a body of revolution only "
-                         "(docs/theory/rotation.md); expected full bands, no [mesh] file and expanded chucks");
+                         "(docs/theory/rotation-solid.md); expected full bands, no [mesh] file and expanded chucks");
 }
 
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,

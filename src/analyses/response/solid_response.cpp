@@ -4,7 +4,7 @@
 // SLEPc (verified, complete by inertia), the static part of the others from
 // a sparse factor of K, and the check by the direct sparse solve of the
 // whole 3D problem. For bodies of revolution only (the gyroscopic term is
-// the stationary frame's, docs/theory/rotation.md), and for coarse meshes in
+// the stationary frame's, docs/theory/rotation-solid.md), and for coarse meshes in
 // practice: a sparse LU of the 3D problem per checked speed.
 #include "analyses/response/modal_response_model.hpp"
 #include "analyses/response/response_levels.hpp"
