@@ -48,7 +48,7 @@ HUMAN_NAMES = {
     "mesh.around": "elements around",
     "mesh.along": "elements along",
 }
-#: The constants of a material table (docs/reference/case-files.md, "Materials").
+#: The constants of a material table (docs/reference/case-scene.md, "Materials").
 MATERIAL_NAMES = {
     "E": "Young's modulus E",
     "nu": "Poisson's ratio ν",

@@ -88,7 +88,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"analysis", "tolerance", "1e-10", "eigensolver relative residual tolerance"},
         {"analysis", "max_iterations", "500", "eigensolver iteration limit"},
 
-        {"mesh", "level", "\"default\"", "named refinement (docs/reference/case-files.md, [mesh])", "coarse default fine very_fine"},
+        {"mesh", "level", "\"default\"", "named refinement (docs/reference/case-scene.md, [mesh])", "coarse default fine very_fine"},
         {"mesh", "through_wall", "from the level", "elements through the core wall; overrides the level's"},
         {"mesh", "through_rest_paper", "from the level", "elements through the rest paper; overrides the level's"},
         {"mesh", "around", "from the level", "elements around the circumference, a multiple of 4; overrides the level's"},
