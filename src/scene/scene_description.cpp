@@ -277,7 +277,7 @@ private:
                 add("[mesh] around", std::to_string(m.n_around),
                     from_level + ": its " + std::to_string(named->n_around) + " raised for the thin wall (" +
                         significant(named->around_per_slenderness, 2) +
-                        " x 2 pi sqrt(R / t), docs/validation/accuracy-vs-cost.md, \"Thin walls\")");
+                        " x 2 pi sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")");
             } else {
                 count("around", m.n_around);
             }

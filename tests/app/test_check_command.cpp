@@ -140,7 +140,7 @@ TEST_CASE("coremodal check shows every default it filled in, with its origin", "
         INFO("stdout: " << t.out << "\nstderr: " << t.err);
         REQUIRE(t.exit_code == 0);
         CHECK(has_line(t.out, {"[mesh] around = 48", "from the level: its 32 raised for the thin wall (1.5 x 2 pi "
-                                                     "sqrt(R / t), docs/validation/accuracy-vs-cost.md, \"Thin walls\")"}));
+                                                     "sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")"}));
         const Run coarse = run_coremodal(dir, "check thin.toml --mesh coarse");
         CHECK(has_line(coarse.out, {"[mesh] around = 32", "command line (--mesh): its 16 raised for the thin wall"}));
     }
