@@ -168,7 +168,7 @@ TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of 
     REQUIRE(c.response);
     c.scene.model = "harmonic";
     const ResponseResult r = run_forced_response(c.scene, *c.response);
-    // docs/how-to/response.md, "The beam and harmonic levels on one scene": f1
+    // docs/validation/response.md, "The three levels on one scene": f1
     // 25.789 Hz (beam 26.308), the peak 5.444 mm at 16.41 m/s (beam 5.155 mm
     // at 16.74 m/s: 0.980 of the speed, as f1), the limit at 16.34 m/s.
     REQUIRE(r.level == "harmonic");

@@ -1,6 +1,6 @@
 // The steady forced response of a spinning model given as sparse matrices
 // (the harmonic level's wave number n = 1, the solid) to loads turning at
-// omega = k Omega (docs/how-to/response.md):
+// omega = k Omega (docs/theory/response.md):
 //
 //     (K - omega^2 M + g omega Omega G + i omega D) x = f
 //

@@ -1,4 +1,4 @@
-// The forced response at the solid level (docs/how-to/response.md, "At the solid
+// The forced response at the solid level (docs/theory/response.md, "At the solid
 // level"): the solid run's mesh with both planes (G skew, as the beam
 // network's), the modes at rest of the whole solid up to the cutoff from
 // SLEPc (verified, complete by inertia), the static part of the others from
