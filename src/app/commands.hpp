@@ -49,7 +49,7 @@ inline void add_unused_option(CLI::App* cmd, const std::string& name, bool takes
 
 // The exit status of a command line that cannot be parsed (an unknown
 // command or option, a missing or invalid value): EX_USAGE of BSD's
-// sysexits.h, 64 (docs/architecture.md, "Exit status").
+// sysexits.h, 64 (docs/reference/results.md).
 inline constexpr int kExitUsage = 64;
 
 // -o/--output and --force of a command that writes one results folder

@@ -34,7 +34,7 @@ constexpr double kClusterTolerance = 1e-6;
 // frequencies that come from different meshes or meshes without the roll's
 // symmetry, so they are wider than kClusterTolerance on purpose; unifying
 // them with it (or with each other) changes study tracks and converge labels
-// (docs/architecture.md, "Decisions and why").
+// (docs/architecture-decisions.md).
 //
 // Study tracking by MAC (modes/tracking.cpp): modes closer than this relative
 // frequency gap are one degenerate group (exact pairs split by ~1e-10;
