@@ -2,7 +2,7 @@
 // console table, summary.json (schema in docs/reference/results.md), modes.csv.
 #pragma once
 
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <iosfwd>
 #include <string>

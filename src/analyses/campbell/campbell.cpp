@@ -2,6 +2,7 @@
 
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 
+#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"

@@ -15,8 +15,8 @@
 #pragma once
 
 #include "beam/beam_model.hpp"
-#include "beam/rotating_modes.hpp"
 #include "beam/speeds.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 

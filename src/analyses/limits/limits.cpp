@@ -4,6 +4,7 @@
 #include "analyses/limits/limits_band.hpp"
 #include "analyses/run/run.hpp"
 #include "beam/beam_model.hpp"
+#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/join.hpp"

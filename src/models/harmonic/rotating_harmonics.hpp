@@ -22,11 +22,11 @@
 // speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
-#include "beam/rotating_modes.hpp"
 #include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "models/harmonic/spinning_harmonic.hpp"
 #include "modes/classify.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>

@@ -23,12 +23,12 @@
 #include "assembly/dof_map.hpp"
 #include "assembly/operator_set.hpp"
 #include "assembly/chuck_supports.hpp"
-#include "beam/rotating_modes.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "eigensolve/zero_frequency_speeds.hpp"
 #include "mesh/mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
