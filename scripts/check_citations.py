@@ -21,7 +21,7 @@ import sys
 
 # The directories and files whose text a user reads (the build tree and git's
 # own files are not).
-SCANNED = ["src", "docs", "cases", "python", "scripts", "bench", "tests", "fuzz", "README.md", "CMakeLists.txt"]
+SCANNED = ["src", "docs", "cases", "python", "scripts", "bench", "tests", "fuzz", ".ci", "README.md", "CMakeLists.txt"]
 TEXT_SUFFIXES = {".cpp", ".hpp", ".h", ".c", ".py", ".md", ".toml", ".txt", ".sh", ".cmake", ".json", ".cfg", ".geo", ".yml", ".yaml", ""}
 
 # Written in two parts so that this file does not cite them itself.
