@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The error laws behind the a-priori mesh rule (scene/mesh_rule.hpp,
-docs/accuracy-vs-cost.md, "The mesh from the band").
+docs/validation/accuracy-by-level.md, "The mesh from the band").
 
 Around: the solid's lowest mode of each label (ovalling n, m = 0) against the
 harmonic level's (the same r-z section, exact around) on free steel rings and

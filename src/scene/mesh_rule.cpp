@@ -12,7 +12,7 @@ namespace coremodal {
 namespace {
 
 // The around law's fit and its safety factor (mesh_rule.hpp; the table in
-// docs/accuracy-vs-cost.md, "The mesh from the band").
+// docs/validation/accuracy-by-level.md, "The mesh from the band").
 constexpr double kAroundFit = 26.92, kAroundSlendernessPower = 1.585, kAroundWavePower = 1.285, kAroundOrder = 3.738,
                  kAroundSafety = 1.55;
 // The along law's envelope: the free 76 x 15 mm tube's first bending pair
@@ -187,7 +187,7 @@ std::optional<std::string> mesh_rule_text(const Scene& scene) {
     const double target = level ? level_target_error(*level) : level_target_error(*find_mesh_level("default"));
     const MeshRule rule = mesh_rule(scene, target);
     const BandWaves& b = rule.band;
-    std::string text = "mesh from the band (docs/accuracy-vs-cost.md, \"The mesh from the band\"): top " +
+    std::string text = "mesh from the band (docs/validation/accuracy-by-level.md, \"The mesh from the band\"): top " +
                        significant(b.top_hz, 4) + " Hz (" +
                        (b.top_estimated ? "estimated for " + std::to_string(scene.analysis.n_modes) +
                                               " modes: beam and thin-ring/shell formulas"
@@ -230,7 +230,7 @@ std::optional<std::string> explicit_mesh_warning(const Scene& scene, bool around
     if (coarse.empty()) return std::nullopt;
     std::string text = "[mesh] is coarser than the band needs (top " + significant(b.top_hz, 4) + " Hz): " + coarse[0];
     for (size_t i = 1; i < coarse.size(); ++i) text += "; " + coarse[i];
-    return text + "; kept as given (docs/accuracy-vs-cost.md, \"The mesh from the band\")";
+    return text + "; kept as given (docs/validation/accuracy-by-level.md, \"The mesh from the band\")";
 }
 
 }  // namespace coremodal

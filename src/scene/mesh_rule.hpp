@@ -4,7 +4,7 @@
 // half-waves h of a mode below it (thin-ring and beam formulas), then asks
 // for as many elements around and along as keep the frequency error of
 // those modes below the level's target, by error laws measured on this
-// code's own elements (docs/accuracy-vs-cost.md, "The mesh from the band";
+// code's own elements (docs/validation/accuracy-by-level.md, "The mesh from the band";
 // bench/mesh_rule_errors.py measures them):
 //
 //   around (the solid's hex20 ring, against the harmonic level, exact around):
@@ -66,7 +66,7 @@ MeshRule mesh_rule(const Scene& scene, double target);
 
 // The rule in one line for the run's output and `coremodal check`: the
 // band, n and h, the counts it asks for and the expected errors of the
-// scene's own counts, e.g. "mesh from the band (docs/accuracy-vs-cost.md):
+// scene's own counts, e.g. "mesh from the band (docs/validation/accuracy-by-level.md):
 // top 700 Hz ([analysis] band), highest n = 6 (thin ring 651 Hz), 1 axial
 // half-wave; for 1 % (level default): 68 around (expected 0.63 %), 8 along
 // (expected 0.0 %)". Empty for a mesh file.

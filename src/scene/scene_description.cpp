@@ -283,9 +283,9 @@ private:
                 add("[mesh] around", std::to_string(m.n_around),
                     from_level + ": its " + std::to_string(named->n_around) +
                         (band ? " raised for the band's n = " + std::to_string(rule.band.n_max) +
-                                    " (docs/accuracy-vs-cost.md, \"The mesh from the band\")"
+                                    " (docs/validation/accuracy-by-level.md, \"The mesh from the band\")"
                               : " raised for the thin wall (" + significant(named->around_per_slenderness, 2) +
-                                    " x 2 pi sqrt(R / t), docs/accuracy-vs-cost.md, \"Thin walls\")"));
+                                    " x 2 pi sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")"));
             } else {
                 count("around", m.n_around);
             }
@@ -293,7 +293,7 @@ private:
                 origin("mesh.along", from_level) == from_level)
                 add("[mesh] along", std::to_string(m.n_along),
                     from_level + ": raised for the band's " + significant(rule.band.half_waves, 2) +
-                        " axial half-waves (docs/accuracy-vs-cost.md, \"The mesh from the band\")");
+                        " axial half-waves (docs/validation/accuracy-by-level.md, \"The mesh from the band\")");
             else
                 count("along", m.n_along);
             if (const auto text = mesh_rule_text(scene_)) add("[mesh] rule", *text, "scene/mesh_rule.hpp");
@@ -332,7 +332,7 @@ std::string effect_detail(const Scene& s, const std::string& effect) {
         return out;
     }
     if (effect == "contact_compliance")
-        return "a spring layer between chuck and bore (k_n, k_t per unit area, contact law of docs/chucks.md) at the " +
+        return "a spring layer between chuck and bore (k_n, k_t per unit area, contact law of docs/theory/chucks.md) at the " +
                chuck_names(s, [](const ChuckSpec& c) { return c.interface.kind == InterfaceKind::spring; }) +
                " chuck(s)";
     if (effect == "one_sided_contact")

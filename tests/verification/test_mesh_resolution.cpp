@@ -130,7 +130,7 @@ TEST_CASE("A solid run whose mesh does not resolve its ovalling says so, by how 
     CHECK(h.warnings.empty());
 
     // 16 around (c = 16 / (2 pi sqrt(R / t)) = 0.51): the solid's n = 2 pair
-    // locks 45 % high (docs/accuracy-vs-cost.md, "Thin walls"); the run warns,
+    // locks 45 % high (docs/validation/accuracy-by-level.md, "Thin walls"); the run warns,
     // names the mode, both frequencies, and the level whose count fixes it
     // (coarse: 40 around for the band's n = 3 by the rule, scene/mesh_rule.hpp;
     // n = 2 then 3.7 % x (32 / 40)^3.7 = 1.6 % by the measured law).
@@ -164,7 +164,7 @@ TEST_CASE("The rule's mesh resolves the band's highest n within its target at th
     // Issue 33's ring with a band to 700 Hz: thin-ring theory puts n = 6 at
     // 656 Hz inside it. `default` asks for 68 around (scene/mesh_rule.hpp);
     // the thin-wall count alone (48) leaves n = 6 2.0 % stiff (measured,
-    // docs/accuracy-vs-cost.md). Along and through do not matter for these
+    // docs/validation/accuracy-by-level.md). Along and through do not matter for these
     // m = 0 modes (2 along, 2 through: within 0.01 %, the "through" table).
     const double mean_radius = 0.5, wall = 0.02;
     Scene ring = steel_tube(2 * mean_radius + wall, 2 * mean_radius - wall, 0.05, 2, 16, 2, 10);

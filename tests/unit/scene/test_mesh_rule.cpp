@@ -1,6 +1,6 @@
 // The a-priori mesh rule (scene/mesh_rule.hpp, issue 33, 12): the counts of
 // a generated mesh from the wanted band, by error laws measured on this
-// code's elements (docs/accuracy-vs-cost.md, "The mesh from the band").
+// code's elements (docs/validation/accuracy-by-level.md, "The mesh from the band").
 #include "scene/mesh_rule.hpp"
 
 #include "scene/case_file.hpp"
@@ -55,7 +55,7 @@ TEST_CASE("The band's highest ring wave number is thin-ring theory's below its t
 TEST_CASE("A ring whose band holds a high n gets more elements around than one whose band does not",
           "[mesh][mesh_rule]") {
     // Below 60 Hz only n = 2: the thin-wall count of `default` (48) already
-    // keeps it within 1 % (measured 0.80 %, docs/accuracy-vs-cost.md).
+    // keeps it within 1 % (measured 0.80 %, docs/validation/accuracy-by-level.md).
     const Scene low = ring(60);
     CHECK(low.mesh.n_around == 48);
     CHECK(mesh_rule(low, 0.01).around <= 48);
@@ -135,6 +135,6 @@ TEST_CASE("coremodal check says the rule and why a count was raised", "[mesh][me
     const std::string text = describe_scene(s, KeySources{});
     INFO(text);
     CHECK_THAT(text, Catch::Contains("[mesh] around = 68") &&
-                         Catch::Contains("its 32 raised for the band's n = 6 (docs/accuracy-vs-cost.md") &&
+                         Catch::Contains("its 32 raised for the band's n = 6 (docs/validation/accuracy-by-level.md") &&
                          Catch::Contains("[mesh] rule = mesh from the band"));
 }
