@@ -265,7 +265,7 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
                                " x ||K - sigma M||_1) of zero";
     if (found_below == below && single_count_proven(*F, M, sigma, a.lambdas, a.vectors)) {
         progress("count from the single-precision factor's inertia, proven: " + margin +
-                 " (docs/theory.md, \"A count from a single-precision factor\")");
+                 " (docs/theory/methods.md, \"A count from a single-precision factor\")");
         return {verified_modes(K, M, a, n_report, sigma, below, found_below), false};
     }
     progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +

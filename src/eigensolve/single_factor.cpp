@@ -62,7 +62,7 @@ FactorPrecision factor_precision_choice(MPI_Comm comm) {
     if (choice == "auto")
         return {false,
                 "double precision: the single-precision factor measured slower on case 03 (its refinement "
-                "takes 3 corrections a pass; docs/performance.md), -factor_precision single to use it"};
+                "takes 3 corrections a pass; bench/results/log.md), -factor_precision single to use it"};
     if (mpi_size(comm) > 1)
         return {false,
                 "double precision: the single-precision factor runs in one process only "

@@ -6,12 +6,12 @@
 // its backward error is that of a double-precision solve. The factor has
 // half the bytes of the double one and its numeric step runs on sgemm, so
 // the factorization and every pass over the factor cost about half
-// (docs/performance.md, "Single-precision factor").
+// (bench/results/log.md, "Single-precision factor").
 //
 // The factor's negative pivots (INFOG(12)) are the exact inertia of A + E,
 // E the factor's backward error; they count the eigenvalues of (K, M)
 // below sigma only when no eigenvalue lies within the bound
-// count_margin() of sigma (docs/theory.md, "A count from a
+// count_margin() of sigma (docs/theory/methods.md, "A count from a
 // single-precision factor"): single_count_proven says whether the verified
 // modes show that. One process only (sequential SMUMPS); in parallel the
 // double factor stays. Internal to eigensolve/.
@@ -32,7 +32,7 @@ namespace coremodal {
 // Which precision factors K - sigma M on the one-factor path, and why (the
 // run says it). -factor_precision single | double | auto. auto is double
 // for now: on case 03 the single factor's refinement (3 corrections a pass)
-// cost more than its cheaper factorization saved (docs/performance.md,
+// cost more than its cheaper factorization saved (bench/results/log.md,
 // "Single-precision factor"). single is one process only (sequential
 // SMUMPS); in parallel the double factor stays.
 struct FactorPrecision {
