@@ -9,6 +9,7 @@
 #include "common/warnings.hpp"
 #include "output/converge_report.hpp"
 #include "output/results_folder.hpp"
+#include "scene/level_traits.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 
@@ -39,7 +40,8 @@ void check_options(const ConvergeOptions& o) {
     const std::string valid = "expected solid, harmonic, beam (comma-separated, any of them)";
     if (o.models.empty()) throw InputError("--models: no model level; " + valid);
     for (const auto& name : o.models)
-        if (name != "solid" && name != "beam" && name != "harmonic")
+        if (const auto level = parse_model_choice(name);
+            !level || *level == ModelChoice::automatic || !level_traits(*level).converge_ladder)
             throw InputError("--models " + name + ": unknown model level; " + valid);
     if (!o.check_levels.empty() && !wants_model(o, "solid"))
         throw InputError("--check-levels: named mesh levels are solid meshes; add solid to --models");
@@ -87,16 +89,16 @@ std::vector<ModelLadder> model_ladders(const Scene& scene, const ConvergeOptions
 void run_ladders(const Scene& scene, std::vector<ModelLadder>& ladders, const ConvergeOptions& o, int& n_modes,
                  std::ostream& progress, ConvergeStudy& study) {
     std::optional<LevelRun> first_run;
-    std::string first_run_model;
+    std::optional<ModelChoice> first_run_model;
     for (const auto& ladder : ladders)
-        if (ladder.model == "solid" || ladder.model == "harmonic") {
+        if (level_traits(ladder.model).meshed) {
             first_run = choose_mode_count(scene, ladder, o, n_modes, progress, study.notes);
             first_run_model = ladder.model;
             break;
         }
     study.n_modes = n_modes;
     for (auto& ladder : ladders)
-        if (ladder.model == "solid" || ladder.model == "harmonic") ladder.n_modes = n_modes;
+        if (level_traits(ladder.model).meshed) ladder.n_modes = n_modes;
     for (auto& ladder : ladders) {
         std::vector<LevelResult> levels;
         for (std::size_t i = 0; i < ladder.steps.size(); ++i) {

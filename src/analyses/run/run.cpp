@@ -110,7 +110,7 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene, const RunOptions& options) {
-    scene.model = chosen_level(scene);  // "auto" resolved, for the summary and the derived scenes
+    scene.model = to_string(chosen_level(scene));  // "auto" resolved, for the summary and the derived scenes
     const Printer say{mpi_rank() == 0 && !options.quiet};
     Stopwatch total;
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
@@ -125,7 +125,7 @@ RunReport run_scene(Scene scene, const RunOptions& options) {
 }
 
 RunReport analyse_derived_scene(Scene scene) {
-    scene.model = chosen_level(scene);
+    scene.model = to_string(chosen_level(scene));
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     RunReport report = level_report(std::move(scene), *level, Printer{false});
     require_verified_report(report, false);
