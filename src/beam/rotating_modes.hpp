@@ -1,4 +1,4 @@
-// The modes of a spinning beam network (effects/rotation.hpp, docs/rotation.md):
+// The modes of a spinning beam network (effects/rotation.hpp, docs/theory/rotation.md):
 //
 //     M q'' + Omega G q' + K q = 0,   q = x e^{i omega t}:   (K + i omega Omega G - omega^2 M) x = 0
 //
@@ -96,7 +96,7 @@ private:
         // The x-z bending plane standing for both (the planes alike): in
         // u = ux + i uy the problem is K a - omega^2 M a + omega Omega G a = 0
         // with G = rho_J N N on ry (symmetric) and omega > 0 forward, < 0
-        // backward whirl: real, half the size (docs/rotation.md).
+        // backward whirl: real, half the size (docs/theory/rotation.md).
         bool plane = false;
     };
     // How a candidate's rows become network DOFs: as they are, or from the

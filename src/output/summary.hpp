@@ -1,5 +1,5 @@
 // Writers of the human- and machine-readable summaries of a run:
-// console table, summary.json (schema in docs/results.md), modes.csv.
+// console table, summary.json (schema in docs/reference/results.md), modes.csv.
 #pragma once
 
 #include "results/run_report.hpp"

@@ -1,7 +1,7 @@
 // [damping]: the base damping of every mode (one ratio from ratio,
 // log_decrement or a measured decay, or Rayleigh's alpha M + beta K), ratios
 // per mode family and per single mode on top of it (scene/response_spec.hpp,
-// docs/response.md). Every mistake stops the reader with file:line:col, the
+// docs/how-to/response.md). Every mistake stops the reader with file:line:col, the
 // key and what is expected. Mode numbers are checked against the modes at
 // rest by the run (analyses/response/response_damping.cpp), which alone knows
 // them.

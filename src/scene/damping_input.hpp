@@ -1,4 +1,4 @@
-// What the case file's forms of [damping] mean as damping (docs/response.md):
+// What the case file's forms of [damping] mean as damping (docs/how-to/response.md):
 // a measured free decay or logarithmic decrement as a modal ratio (I-1), and
 // one ratio at two frequencies as Rayleigh's alpha and beta. The case reader
 // turns the file's form into a DampingSpec with these; effects/damping.hpp,

@@ -1,4 +1,4 @@
-// The paper web's three springs per unit length of roll (docs/web.md;
+// The paper web's three springs per unit length of roll (docs/theory/web.md;
 // effects/web.hpp puts them on each level's DOFs), the default of its shear
 // modulus, and what a run echoes of them. Here, below effects/, because the
 // case reader applies the default and echoes the springs as the scene's

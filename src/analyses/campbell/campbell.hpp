@@ -1,4 +1,4 @@
-// A Campbell diagram of a spinning scene ([rotation], docs/rotation.md) at
+// A Campbell diagram of a spinning scene ([rotation], docs/theory/rotation.md) at
 // the beam level (beam/rotating_modes), the harmonic level
 // (models/harmonic/rotating_harmonics) or the solid level
 // (models/solid/rotating_solid): the modes at every speed of the sweep,

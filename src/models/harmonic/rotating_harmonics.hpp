@@ -1,4 +1,4 @@
-// The harmonic level of a spinning scene ([rotation], docs/rotation.md): per
+// The harmonic level of a spinning scene ([rotation], docs/theory/rotation-harmonic.md): per
 // wave number n the spinning operator set (spinning_harmonic.hpp) solved by
 // the quadratic solver (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every
 // mode verified by its residual, complete by the inertia of the Hermitian

@@ -1,4 +1,4 @@
-// The solid level of a spinning scene ([rotation], docs/rotation.md): the
+// The solid level of a spinning scene ([rotation], docs/theory/rotation-solid.md): the
 // solid level's mesh, DOF map and operator set with the spin terms,
 // assembled once; at each speed the quadratic solver
 // (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every mode verified by its
