@@ -7,8 +7,6 @@
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "common/warnings.hpp"
-#include "output/converge_report.hpp"
-#include "output/results_folder.hpp"
 #include "scene/level_traits.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
@@ -145,7 +143,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     print_warnings(scene.warnings);
     const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
                                                    : std::filesystem::path("results") / (scene.name + "-converge");
-    if (o.write_results) claim_output(out, o.force);
+    if (o.write_results && o.claim) o.claim(out, o);
     ConvergeStudy study;
     study.load_start = load_average();
     study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
@@ -167,8 +165,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.load_end = load_average();
 
     // 4. Write (rank 0): numbers first, then the picture, then the report.
-    if (root && o.write_results) write_converge_results(study, out, {o.force, o.quiet, o.plots}, progress);
-    if (root && !o.quiet) print_converge_summary(study, progress);
+    if (root && o.write) o.write(study, out, o, progress);
     return study;
 }
 

@@ -4,6 +4,8 @@
 // summary.
 #include "output/converge_report.hpp"
 
+#include "analyses/converge/ladder_runs.hpp"  // progress_seconds
+
 #include "support/json_lookup.hpp"  // json_number, json_string: read back converge.json
 #include "output/csv.hpp"
 
