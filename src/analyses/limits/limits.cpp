@@ -66,6 +66,23 @@ std::optional<CriticalSpeeds> pencil_speeds(const BeamModelResult& beam, double 
     return out;
 }
 
+// Step 2 at the harmonic level: the crossings of the forced response's own
+// n = 1 model in its kept modes (ResponseResult::crossings), exact for that
+// model, instead of a Campbell sweep over every wave number (the criteria
+// need the n = 1 family only: every load of the verdict is lateral). They
+// agree with the sweep's refined crossings within 0.2 % (tests/unit/analyses/
+// limits; docs/limits.md, "Speed").
+CriticalSpeeds response_crossing_speeds(const ResponseResult& response, std::string& mode) {
+    CriticalSpeeds out;
+    for (const ResponseCrossing& c : response.crossings) {  // ascending speed
+        std::optional<double>& slot = c.order == 2 ? out.order2 : c.forward ? out.order1_forward : out.order1_backward;
+        if (slot) continue;
+        slot = c.web_speed_m_s;
+        if (c.order == 1 && mode.empty()) mode = label_text(c.mode);
+    }
+    return out;
+}
+
 // Step 2: the critical web speeds of the spinning roll, by the level's
 // Campbell machinery over 0 .. kRangeTop x the first critical speed.
 CriticalSpeeds campbell_speeds(const Scene& scene, double f1_estimate_hz, std::string& mode) {
@@ -102,10 +119,13 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     const ResponseSetup setup = setup_for_range(base, at, f1_estimate);
     const bool check = result.check_response && !result.checks;
     const ResponseResult response =
-        run_forced_response(at, setup, {}, check ? ResponseChecking::full : ResponseChecking::none);
+        run_forced_response(at, setup, {}, check ? ResponseChecking::light : ResponseChecking::none);
     if (check) result.checks = LimitsChecks{d, response.checks};
     std::optional<CriticalSpeeds> critical;
-    if (level_traits(at.model).pencil_critical_speeds) critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
+    if (level_traits(at.model).pencil_critical_speeds)
+        critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
+    else if (!response.crossings.empty())  // the harmonic level's n = 1 crossings, from the response's own modes
+        critical = response_crossing_speeds(response, p.order1_mode);
     if (!critical && !result.campbell_sweep)
         throw InputError("the roll's bending planes differ (a web or unlike supports), so its critical speeds need "
                          "the Campbell sweep");
@@ -298,7 +318,8 @@ std::string checks_note(const LimitsChecks& c) {
            std::to_string(k.speeds_checked) + " speeds): the truncated sum against " +
            (k.complete_basis
                 ? "the complete basis " + significant(k.truncation_max_relative, 2) +
-                      ", the complete basis against the direct solve " + significant(k.direct_max_relative, 2)
+                      ", the complete basis against the direct solve " + significant(k.direct_max_relative, 2) +
+                      " at " + std::to_string(k.direct_speeds_checked) + " of them"
                 : "the direct solve " + significant(k.direct_max_relative, 2)) +
            " (relative); every other diameter and band sample is the same "
            "computation on a changed scene, with the "

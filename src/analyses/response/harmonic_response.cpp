@@ -10,6 +10,7 @@
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
+#include "effects/rotation.hpp"
 #include "eigensolve/tolerances.hpp"
 #include "models/harmonic/harmonic_level.hpp"
 #include "models/harmonic/harmonic_shapes.hpp"
@@ -53,6 +54,26 @@ Eigen::VectorXd first_bending_mode(const ModalBasis& basis, const std::vector<Mo
     for (size_t j = 0; j < labels.size(); ++j)
         if (labels[j].type == "bending") return basis.Phi.col(static_cast<Eigen::Index>(j));
     throw SolveError("the roll has no bending mode among the modes at rest of n = 1 kept for the response");
+}
+
+// The order-1 and order-2 crossings, forward and backward, up to the range's
+// top speed (ModalResponse::synchronous_crossings).
+std::vector<ResponseCrossing> crossings_of(const ModalResponse& response, const std::vector<ModeLabel>& labels,
+                                           double top_speed_hz, double dp) {
+    std::vector<ResponseCrossing> out;
+    for (int order : {1, 2})
+        for (int direction : {1, -1})
+            for (const ModalResponse::SynchronousCrossing& c :
+                 response.synchronous_crossings(order, direction, 2 * M_PI * top_speed_hz)) {
+                Eigen::Index dominant = 0;
+                c.modal.cwiseAbs().maxCoeff(&dominant);
+                const double speed_hz = c.omega_spin / (2 * M_PI);
+                out.push_back({order, direction == 1, speed_hz, web_speed(speed_hz, dp),
+                               labels[static_cast<size_t>(dominant)]});
+            }
+    std::sort(out.begin(), out.end(),
+              [](const ResponseCrossing& a, const ResponseCrossing& b) { return a.speed_hz < b.speed_hz; });
+    return out;
 }
 
 }  // namespace
@@ -101,6 +122,7 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
     // 3-5. The sweep, the peaks, the speed at the limit, the checks.
     finish_modal_response({response, damping, loads, probes, labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
                           range, out.speeds_at_rest.f1_hz, out, checking);
+    out.crossings = crossings_of(response, labels, range.speeds_hz.back(), out.roll_outer_diameter);
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -87,6 +87,38 @@ Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& 
     return static_response(Eigen::VectorXd(p.real())).cast<cd>() + cd(0, 1) * static_response(Eigen::VectorXd(p.imag())).cast<cd>();
 }
 
+std::vector<ModalResponse::SynchronousCrossing> ModalResponse::synchronous_crossings(int order, int direction,
+                                                                                  double omega_spin_max) const {
+    COREMODAL_ASSERT(gyroscopic_unit_ == kOnePlane && (direction == 1 || direction == -1) && order >= 1);
+    // A rigid mode (lambda ~ 0) crosses at Omega = 0: no critical speed; its
+    // row would divide by zero.
+    const double rigid_line = kRigidEigenvalueFraction * lambda_scale_;
+    std::vector<Eigen::Index> elastic;
+    for (Eigen::Index j = 0; j < basis_.lambda.size(); ++j)
+        if (basis_.lambda(j) > rigid_line) elastic.push_back(j);
+    const Eigen::Index n = static_cast<Eigen::Index>(elastic.size());
+    std::vector<SynchronousCrossing> out;
+    if (n == 0) return out;
+    Eigen::VectorXd scale(n);  // lambda^-1/2
+    for (Eigen::Index a = 0; a < n; ++a) scale(a) = 1 / std::sqrt(basis_.lambda(elastic[a]));
+    Eigen::MatrixXd C(n, n);
+    for (Eigen::Index a = 0; a < n; ++a)
+        for (Eigen::Index b = 0; b < n; ++b)
+            C(a, b) = scale(a) * scale(b) *
+                      ((a == b ? double(order * order) : 0.0) - direction * order * Ghat_(elastic[a], elastic[b]));
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
+    for (Eigen::Index k = n; k-- > 0;) {  // the largest nu first: the lowest spin
+        const double nu = eig.eigenvalues()(k);
+        if (!(nu > 0)) break;
+        const double spin = 1 / std::sqrt(nu);
+        if (spin > omega_spin_max) break;
+        Eigen::VectorXd y = Eigen::VectorXd::Zero(basis_.lambda.size());
+        for (Eigen::Index a = 0; a < n; ++a) y(elastic[a]) = scale(a) * eig.eigenvectors()(a, k);
+        out.push_back({spin, std::move(y)});
+    }
+    return out;
+}
+
 Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
     // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
     // the modes' own damping is the low-rank term i omega U diag(d) U^T,

@@ -90,6 +90,22 @@ public:
     Eigen::VectorXd static_response(const Eigen::VectorXd& p) const;
     Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;  // K^-1 p, p complex
 
+    // The spins at which a mode of the projected model whirls at
+    // omega = order x Omega, forward (direction +1) or backward (-1), for one
+    // complex plane (kOnePlane): det(Lambda - omega^2 I + omega Omega Gh) = 0
+    // with omega = +-order Omega is the symmetric pencil
+    //     Lambda y = Omega^2 (order^2 I -+ order Gh) y,
+    // solved as the eigenvalues nu = 1 / Omega^2 of Lambda^-1/2 (order^2 I -+
+    // order Gh) Lambda^-1/2 (dense, the basis' size). The crossings of the
+    // truncated model, exactly: what its forced response resonates at
+    // (docs/limits.md, "Speed"). Ascending spin (rad/s) up to omega_spin_max,
+    // each with its modal coordinates y.
+    struct SynchronousCrossing {
+        double omega_spin = 0;
+        Eigen::VectorXd modal;
+    };
+    std::vector<SynchronousCrossing> synchronous_crossings(int order, int direction, double omega_spin_max) const;
+
 private:
     Eigen::SparseMatrix<double> K_, M_, G_;
     std::complex<double> gyroscopic_unit_;

@@ -65,6 +65,16 @@ struct ResponsePeak {
     double mode_frequency_hz = 0;  // its frequency at rest
 };
 
+// Where order x f_rot meets a whirl of the harmonic level's n = 1 model in
+// the kept modes (ModalResponse::synchronous_crossings): the critical speeds
+// of the model the response is computed in, without a Campbell sweep.
+struct ResponseCrossing {
+    int order = 1;
+    bool forward = true;  // false: backward whirl
+    double speed_hz = 0, web_speed_m_s = 0;
+    ModeLabel mode;  // the kept mode with the largest share of the crossing's shape
+};
+
 struct AmplitudeSafeSpeed {
     bool reached = false;  // the amplitude reaches the limit within the range
     bool below_range = false;  // already at the first speed
@@ -76,6 +86,7 @@ struct ResponseChecks {
     int n_modes_all = 0, n_modes_used = 0;
     double cutoff_hz = 0;
     int speeds_checked = 0;
+    int direct_speeds_checked = 0;  // of them, against the direct solve
     double truncation_max_relative = 0;  // |a_truncated - a_complete| / a_complete at the first probe
     double direct_max_relative = 0;      // ||x_complete - x_direct|| / ||x_direct||
     // false where the level has only the kept modes (harmonic): both
@@ -102,6 +113,7 @@ struct ResponseResult {
     double max_amplitude_m = 0;
     double max_amplitude_web_speed_m_s = 0;
     ResponseChecks checks;
+    std::vector<ResponseCrossing> crossings;  // harmonic level, ascending speed; empty at the others
     double roll_outer_diameter = 0;
     bool from_web_speed = false;
     long n_dofs = 0;
@@ -116,7 +128,14 @@ struct ResponseResult {
 // (lateral_response.hpp), which is the same truncated sum without a dense
 // eigensolve of every mode. ResponseChecks then holds no differences
 // (speeds_checked = 0).
-enum class ResponseChecking { full, none };
+// `light` is for the same caller's one check (`coremodal limits`, whose
+// beam-level time it halves): the truncated sum against the complete basis
+// at every check speed as `full`, the complete basis against the direct
+// dense solve at one speed only (the last checked: the highest peak where
+// there is one), since that difference is round-off wherever the assembly
+// is right (tests/verification hold it at every speed). Without a complete
+// basis (harmonic, solid) it is `full`.
+enum class ResponseChecking { full, light, none };
 
 // At the scene's level ("auto" resolved as models/choose does): beam,
 // harmonic or solid. Throws InputError for a scene the level cannot take;

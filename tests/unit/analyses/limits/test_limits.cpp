@@ -15,6 +15,7 @@
 #include "common/error.hpp"
 #include "modes/tracking.hpp"
 #include "scene/limits_spec.hpp"
+#include "scene/mesh_levels.hpp"
 #include "scene/toml_text.hpp"
 #include "scene/traction_case.hpp"
 #include "traction/traction_sweep.hpp"
@@ -382,4 +383,65 @@ TEST_CASE("run's verdict line is the limits verdict at the case's roll, at the b
     // A free scene has no stand: no line.
     const std::string free_case = std::string(COREMODAL_SOURCE_DIR) + "/cases/01-iso-free-free-76x15.toml";
     CHECK(stand_verdict_line(free_case).empty());
+}
+
+TEST_CASE("At the harmonic level the response's n = 1 crossings are the Campbell sweep's refined crossings",
+          "[limits][speed][long]") {
+    // The verdict takes the harmonic level's critical speeds from the forced
+    // response's own n = 1 model in its kept modes (ModalResponse::
+    // synchronous_crossings) instead of a Campbell sweep over every wave
+    // number. The sweep (RotatingHarmonics: the full problem's residuals,
+    // crossings refined to 1e-6) is the independent truth; the kept modes
+    // reach 3x the top speed, so what is left out shifts a crossing by its
+    // gyroscopic coupling to modes far above: 0.12 % (order 1) here, 0.055 %
+    // on case 16; a band of the verdict is several per cent wide.
+    constexpr double kAgreement = 2e-3;
+    LimitsCase c = small_roll();
+    c.scene.model = "harmonic";
+    apply_mesh_level(c.scene, "coarse");
+    ResponseSetup setup = *c.response;
+    const double top_hz = 60;  // above f1 (~45 Hz) and the order-2 crossing of the first bending mode
+    setup.response.from_web_speed = false;
+    setup.response.speeds_hz.clear();
+    for (int i = 1; i <= 20; ++i) setup.response.speeds_hz.push_back(top_hz * i / 20);
+    const ResponseResult response = run_forced_response(c.scene, setup, {}, ResponseChecking::none);
+    RotationSpec rotation;
+    for (int i = 0; i <= 12; ++i) rotation.speeds_hz.push_back(top_hz * i / 12);
+    rotation.excitation_orders = {1, 2};
+    const CampbellResult campbell = run_campbell(c.scene, rotation);
+    int compared = 0;
+    for (int order : {1, 2})
+        for (Whirl whirl : {Whirl::forward, Whirl::backward}) {
+            INFO("order " << order << " " << whirl_name(whirl));
+            const auto mine = std::find_if(response.crossings.begin(), response.crossings.end(), [&](const auto& x) {
+                return x.order == order && x.forward == (whirl == Whirl::forward);
+            });
+            const auto swept = std::find_if(campbell.critical.begin(), campbell.critical.end(), [&](const auto& x) {
+                return x.order == order && x.whirl == whirl && x.label.type == "bending";
+            });
+            REQUIRE(swept != campbell.critical.end());
+            REQUIRE(mine != response.crossings.end());
+            CHECK(mine->speed_hz == Approx(swept->speed_hz).epsilon(kAgreement));
+            CHECK(mine->mode.type == "bending");
+            ++compared;
+        }
+    CHECK(compared == 4);
+}
+
+TEST_CASE("The verdict's light check compares the truncation at every speed and the direct solve at one",
+          "[limits][speed]") {
+    // ResponseChecking::light (the verdict's one check): the same truncated
+    // sum and the same truncation check as `full`, the direct solve at one
+    // speed only, where it agrees with the complete basis to round-off.
+    const LimitsCase c = small_roll();
+    const ResponseResult full = run_forced_response(c.scene, *c.response);
+    const ResponseResult light = run_forced_response(c.scene, *c.response, {}, ResponseChecking::light);
+    CHECK(light.checks.speeds_checked == full.checks.speeds_checked);
+    CHECK(full.checks.direct_speeds_checked == full.checks.speeds_checked);
+    CHECK(light.checks.direct_speeds_checked == 1);
+    CHECK(light.checks.truncation_max_relative == Approx(full.checks.truncation_max_relative).epsilon(1e-10));
+    CHECK(light.checks.direct_max_relative < 1e-8);
+    CHECK(light.checks.direct_max_relative <= full.checks.direct_max_relative * (1 + 1e-10));
+    REQUIRE(light.safe.reached == full.safe.reached);
+    CHECK(light.safe.web_speed_m_s == full.safe.web_speed_m_s);
 }
