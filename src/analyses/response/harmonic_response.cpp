@@ -83,6 +83,9 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
                                                           [](const ModeLabel& l) { return l.n == 1; },
                                                           "wave number n = 1 only");
     response.set_damping(damping.rayleigh, damping.zeta);
+    const StructuralDamping structural = structural_damping_of(setup.damping);
+    if (structural.given()) response.set_hysteretic(harmonic_hysteretic(plane, structural));
+    for (const std::string& a : structural_damping_assumptions(setup.damping, "each part's cells of wave number n = 1 (core, rest paper, chucks)")) out.assumptions.push_back(a);
     const Eigen::VectorXd first_mode =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(basis, labels) : Eigen::VectorXd();
     const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, plane, response, first_mode);

@@ -39,9 +39,19 @@ ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<
 
 void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     rayleigh_ = rayleigh;
-    damping_ = modal_damping_coefficients(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
-    own_damping_.resize(n_modes());
-    for (int j = 0; j < n_modes(); ++j) own_damping_(j) = damping_(j) - rayleigh.coefficient(basis_.lambda(j));
+    ModalDampingSplit split = split_modal_damping(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
+    damping_ = std::move(split.total);
+    own_damping_ = std::move(split.own);
+}
+
+void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
+    COREMODAL_ASSERT(H.rows() == K_.rows() && H.cols() == K_.cols());
+    H_ = std::move(H);
+    Hhat_ = basis_.Phi.transpose() * (H_ * basis_.Phi);
+}
+
+double ModalResponse::modal_loss_factor(int j) const {
+    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), basis_.lambda(j));
 }
 
 int ModalResponse::modes_below(double omega_cut) const {
@@ -58,8 +68,9 @@ Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, dou
                                                   int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = basis_.Phi.leftCols(n).transpose().cast<cd>() * p;
-    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>(), basis_.lambda,
-                                 damping_, omega, load);
+    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>() +
+                                     hysteretic_term(Hhat_, n),
+                                 basis_.lambda, damping_, omega, load);
 }
 
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
@@ -88,12 +99,13 @@ Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& 
 }
 
 Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
-    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
+    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K) + i H, sparse;
     // the modes' own damping is the low-rank term i omega U diag(d) U^T,
     // U = M Phi, d = own_damping_: (A0 + U C U^T)^-1 p = y - Z (I + C U^T Z)^-1 C U^T y,
     // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
-    const ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
-                             cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
+    ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
+                       cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
+    if (H_.nonZeros() > 0) A0 += cd(0, 1) * H_.cast<cd>();  // structural damping, frequency independent
     Eigen::UmfPackLU<ComplexSparse> lu;
     {
         const SingleThreadBlas one_thread;

@@ -86,6 +86,9 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
                                                           [](const ModeLabel&) { return true; },
                                                           "every mode of the solid below the cutoff");
     response.set_damping(damping.rayleigh, damping.zeta);
+    const StructuralDamping structural = structural_damping_of(setup.damping);
+    if (structural.given()) response.set_hysteretic(solid_hysteretic(model, structural));
+    for (const std::string& a : structural_damping_assumptions(setup.damping, "each part's cells (core, rest paper, chucks)")) out.assumptions.push_back(a);
     const Eigen::MatrixXd first_pair =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_pair(basis, labels) : Eigen::MatrixXd();
     const LevelLoads loads = build_solid_loads(scene, setup.excitation, model, response, first_pair);
