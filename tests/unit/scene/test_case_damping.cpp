@@ -173,11 +173,11 @@ TEST_CASE("[damping] loss factor mistakes are refused with the key, the place an
     CHECK(error_with("loss_factor = 0\n") == "cases/x.toml:13:15: [damping] loss_factor = 0 must be positive");
     CHECK(error_with("loss_factor = 1.5\n") == "cases/x.toml:13:15: [damping] loss_factor = 1.5 is too large: expected at most 1");
     CHECK(error_with("loss_factors = { core = -0.01 }\n")
-              .starts_with("cases/x.toml:13:24: [damping.loss_factors] core = -0.01 must be zero or positive"));
+              .starts_with("cases/x.toml:13:25: [damping.loss_factors] core = -0.01 must be zero or positive"));
     CHECK(error_with("loss_factors = { core = 2 }\n")
-              .starts_with("cases/x.toml:13:24: [damping.loss_factors] core = 2 is too large: expected at most 1"));
+              .starts_with("cases/x.toml:13:25: [damping.loss_factors] core = 2 is too large: expected at most 1"));
     CHECK(error_with("loss_factors = { shaft = 0.01 }\n")
-              .starts_with("cases/x.toml:13:17: unknown key 'shaft' in [damping.loss_factors]"));
+              .starts_with("cases/x.toml:13:18: unknown key 'shaft' in [damping.loss_factors]; expected one of core, rest_paper, chucks"));
     // A per-part table that damps nothing is no damping.
     CHECK(error_with("loss_factors = { core = 0 }\n")
               .starts_with("cases/x.toml:12:1: [damping] gives no damping for the modes it does not name; expected "
