@@ -1,4 +1,4 @@
-// Time per evaluation of the beam model (docs/performance.md):
+// Time per evaluation of the beam model (bench/results/log.md):
 //
 //   build/coremodal_bench_beam [--repeats N] [--modes M] [--elements E] CASE.toml...
 //
@@ -78,7 +78,7 @@ int run(int argc, char** argv) {
         else if (a == "--elements" && i + 1 < argc) options.core_elements = std::atoi(argv[++i]);
         else if (a == "-h" || a == "--help") {
             std::printf("usage: coremodal_bench_beam [--repeats N] [--modes N] [--elements N] CASE.toml...\n"
-                        "Times the beam model level's evaluation of each case (docs/performance.md).\n");
+                        "Times the beam model level's evaluation of each case (bench/results/log.md).\n");
             return 0;
         } else files.push_back(a);
     }

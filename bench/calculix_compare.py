@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """coremodal's solid level against CalculiX (Debian calculix-ccx) on the same
-hex20 mesh (issue 19, docs/performance.md "Against CalculiX").
+hex20 mesh (issue 19, bench/results/log.md "Against CalculiX").
 
 For each case: build/coremodal_calculix_deck writes coremodal's own mesh of
 the case as a CalculiX deck (C3D20 cells, cylindrically orthotropic

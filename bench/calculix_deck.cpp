@@ -1,4 +1,4 @@
-// The CalculiX deck of a solid run (issue 19, docs/performance.md "Against
+// The CalculiX deck of a solid run (issue 19, bench/results/log.md "Against
 // CalculiX"): coremodal's own mesh of a case as C3D20 cells, its cylindrically
 // orthotropic materials, its rigid clamps and the same number of modes, so
 // that `ccx` (Debian calculix-ccx) solves the very problem coremodal's solid

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The 41-speed Campbell diagram of cases 07 and 08 at the harmonic level
-# (docs/performance.md, "Campbell sweeps at the harmonic level").
+# (bench/results/log.md, "Campbell sweeps at the harmonic level").
 # Cases 07 and 08 have no [rotation] table: this script copies them into a
 # temporary folder with one added (0 ... 3000 rpm, 41 speeds, orders 1 and 2)
 # and times `coremodal campbell --model harmonic --no-plots` on each,

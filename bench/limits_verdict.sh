@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The verdict over the unwind (`coremodal limits`, docs/performance.md, "The
+# The verdict over the unwind (`coremodal limits`, bench/results/log.md, "The
 # verdict over the unwind"): case 16 (case 07's roll and stand with 40 mm of
 # rest paper, 20 rest-roll diameters down to the bare core, every criterion
 # and the band) at the beam level and at the harmonic level, REPEATS times

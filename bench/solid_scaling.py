@@ -6,7 +6,7 @@ several mesh sizes: DOFs, mesh, assembly, factor-and-solve and total time
     /usr/bin/python3 bench/solid_scaling.py [--sizes A,B,C] [--repeats 3] [--out bench/results/solid_scaling.json]
         [--ranks 2] [--options '-mat_mumps_icntl_22 1']
 
-Prints a markdown table to paste into docs/performance.md. Runs serially, one
+Prints a markdown table to paste into bench/results/log.md. Runs serially, one
 case at a time, so that timings are not disturbed by each other.
 """
 import argparse

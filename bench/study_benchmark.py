@@ -11,7 +11,7 @@ included. With --supports chucks (the issue's scene) each end has an elastic
 steel chuck inserted 400 mm whose expanding element (100 mm wide) is centred
 at Li; with --supports clamped, rigid clamps 100 mm long centred at Li. Prints the wall time, the CPU time (user + system of the study process and
 its children: a check on a machine shared with other work), the time per point
-and a markdown row for docs/performance.md.
+and a markdown row for bench/results/log.md.
 """
 import argparse
 import csv

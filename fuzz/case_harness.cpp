@@ -174,7 +174,7 @@ Outcome run_selection_text(std::string_view text, const std::string& path) {
     return Outcome::solved;
 }
 
-// A file with [traction] (docs/traction.md): its reader (the whole scene too
+// A file with [traction] (docs/how-to/traction.md): its reader (the whole scene too
 // when it describes a roll), then the model at every speed: finite,
 // non-negative traction, f_e between 0 and f, a zero-traction speed.
 Outcome run_traction_text(std::string_view text, const std::string& path) {

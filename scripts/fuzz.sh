@@ -40,7 +40,7 @@ limit=()
 [ "$seconds" -gt 0 ] && limit=(-max_total_time="$seconds")
 # -timeout: an input that takes 30 s is a hang (a valid case takes
 # milliseconds at the beam level, a winder file up to 1 s; at 10 s a fuzzer
-# starved by other work once called a 1 s input a hang, docs/validation.md);
+# starved by other work once called a 1 s input a hang, docs/validation/reliability.md);
 # -max_len: case files are a few kB.
 set +e
 build-fuzz/case_fuzzer build-fuzz/corpus "${seeds[@]}" -dict=build-fuzz/case.dict \

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds coremodal with AddressSanitizer + UndefinedBehaviorSanitizer (clang,
 # Debug, -DCOREMODAL_SANITIZE=ON) in build-asan/ and runs the unit and
-# verification tests under them (docs/validation.md, "Reliability").
+# verification tests under them (docs/validation/reliability.md, "Reliability").
 #
 #   bash scripts/sanitize.sh            # the CI selection below
 #   bash scripts/sanitize.sh all        # every unit and verification test
@@ -69,7 +69,7 @@ cmake --build build-asan -j "$(nproc)" 2>&1 | tail -n 5
 # and runs the same code as a quicker test beside it; `all` runs them. In
 # session 14 the 19 slowest of run 11 (857 s of its 1,282 s in two shards)
 # were tagged so, to keep CI under 40 minutes. Its time and status:
-# docs/validation.md, "Reliability".
+# docs/validation/reliability.md, "Reliability".
 everything="~[.]~[app]~[hard]~[cases]~[e2e]~[beam_vs_solid]~[converge]"
 # The leak pass: the tests of coremodal's own containers, readers and writers.
 leak_tags=(scene output element material mesh modes mac numerics geometry tracking results_folder study)

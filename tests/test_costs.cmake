@@ -48,7 +48,7 @@ set_tests_properties([=[The unheld-part case file as written (paper bonded) is h
 set_tests_properties([=[A free-free tube's axial mode is f = 1/(2L) sqrt(E/rho) with Love's correction]=] PROPERTIES COST 17.0)
 set_tests_properties([=[A free-free tube bends at Timoshenko's frequency, in degenerate pairs]=] PROPERTIES COST 16.9)
 set_tests_properties([=[A body of revolution in the rotating frame: the pencils r = 1 to 3 give the backward order-1 and the order-2 crossings where the stationary frame's whirls meet the lines]=] PROPERTIES COST 15.3)
-set_tests_properties([=[Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/response.md]=] PROPERTIES COST 15.1)
+set_tests_properties([=[Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/how-to/response.md]=] PROPERTIES COST 15.1)
 set_tests_properties([=[Harmonic level: superposition in the complete basis of n = 1 is the direct solve]=] PROPERTIES COST 15.1)
 set_tests_properties([=[Every kind of bad input stops coremodal with a located message and no results]=] PROPERTIES COST 14.5)
 set_tests_properties([=[Case 01: the ISO 11093-8 free-free core test has 6 rigid modes and bends at Timoshenko's frequency]=] PROPERTIES COST 13.9)

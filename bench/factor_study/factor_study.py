@@ -8,7 +8,7 @@ in one sitting (median of repeats; alternating variants).
 
 Builds factor_study.c into build/ (installs Debian's libmetis-dev when
 missing), writes case 03's K and M with PETSc's -mat_view, then runs every
-variant. Prints a markdown table for docs/performance.md.
+variant. Prints a markdown table for bench/results/log.md.
 """
 import argparse
 import json

@@ -11,7 +11,7 @@
 From the shell: ``python3 -m coremodal table results/modes.h5``,
 ``python3 -m coremodal plot results/modes.h5 --mode 7 --out mode7.png`` and
 ``python3 -m coremodal paraview RESULTS_DIR --mode 1`` (pvpython); see
-docs/results.md.
+docs/reference/results.md.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The Campbell diagram of a ``coremodal campbell`` results folder (docs/rotation.md):
+"""The Campbell diagram of a ``coremodal campbell`` results folder (docs/how-to/campbell.md):
 
     python3 -m coremodal campbell-plot results/12-rotation-tester-76x15-campbell
 

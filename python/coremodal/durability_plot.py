@@ -1,4 +1,4 @@
-"""Picture of a ``coremodal durability`` results folder (docs/durability.md):
+"""Picture of a ``coremodal durability`` results folder (docs/how-to/durability.md):
 
     python3 -m coremodal durability-plot results/18-core-B-durability
 

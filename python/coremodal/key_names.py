@@ -16,7 +16,7 @@ import re
 from fnmatch import fnmatchcase
 
 #: The keys a study of a roll varies, in the words of the press room and of
-#: docs/case-files.md.
+#: docs/reference/case-files.md.
 HUMAN_NAMES = {
     "core.length": "roll width",
     "core.inner_diameter": "core inner diameter",
@@ -48,7 +48,7 @@ HUMAN_NAMES = {
     "mesh.around": "elements around",
     "mesh.along": "elements along",
 }
-#: The constants of a material table (docs/case-files.md, "Materials").
+#: The constants of a material table (docs/reference/case-scene.md, "Materials").
 MATERIAL_NAMES = {
     "E": "Young's modulus E",
     "nu": "Poisson's ratio ν",

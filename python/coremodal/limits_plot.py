@@ -1,4 +1,4 @@
-"""The verdict of a ``coremodal limits`` results folder (docs/limits.md):
+"""The verdict of a ``coremodal limits`` results folder (docs/how-to/limits.md):
 
     python3 -m coremodal limits-plot results/16-limits-rotogravure-150x15.8-4320-limits
 

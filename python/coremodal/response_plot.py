@@ -1,4 +1,4 @@
-"""The forced response of a ``coremodal response`` results folder (docs/response.md):
+"""The forced response of a ``coremodal response`` results folder (docs/how-to/response.md):
 
     python3 -m coremodal response-plot results/13-rest-roll-response-response
 

@@ -1,6 +1,6 @@
 """Reading modes.h5, the results file written by the coremodal program.
 
-The layout (schema version 1) is described in docs/results.md, section
+The layout (schema version 1) is described in docs/reference/results.md, section
 "modes.h5 and modes.xdmf". Everything but the mode shapes is read at once;
 each shape is read from the file when asked for, so that large meshes with
 many modes do not fill memory.

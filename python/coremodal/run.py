@@ -12,7 +12,7 @@
 
 Every other folder a command writes opens as a Folder: its ``summary``
 (summary.json of campbell, response, winder, limits, select, traction and
-durability, study.json, converge.json: one scheme, docs/results.md), its
+durability, study.json, converge.json: one scheme, docs/reference/results.md), its
 ``command`` and its main ``table`` (campbell.csv, response.csv, winder.csv,
 limits.csv, selection.csv, traction.csv, points.csv of durability,
 study.csv, calibration.csv, batch.csv, converge.csv, sensitivity.csv), with

@@ -3,7 +3,7 @@ folder.
 
     python3 -m coremodal run-plot results/02-clamped-76x15 --modes 7,9,13
 
-draws into that folder (docs/results.md, "report.md"):
+draws into that folder (docs/reference/results.md, "report.md"):
 
 - ``mode_NN.png`` for each listed mode: the three-panel picture of
   coremodal.plot.draw_mode (side view, cross-section, curves along the

@@ -1,4 +1,4 @@
-"""The chart of a ``coremodal select`` results folder (docs/durability.md,
+"""The chart of a ``coremodal select`` results folder (docs/how-to/durability.md,
 "Choosing a core"):
 
     python3 -m coremodal selection-plot results/18-core-selection-select

@@ -3,7 +3,7 @@ folder written by ``coremodal study`` (or ``coremodal calibrate``).
 
     python3 -m coremodal study-plot results/06-study-safe-speed-study
 
-draws into that folder (docs/studies.md):
+draws into that folder (docs/how-to/studies.md):
 
 - ``modes_vs_<p>.png``: every tracked mode's frequency against the fastest
   parameter p, one line per track (the same physical mode, followed by MAC),

@@ -105,7 +105,7 @@ def read_table(path: str | Path) -> Table:
 
 def read_summary(path: str | Path) -> dict[str, Any]:
     """summary.json of a run (a folder or the file) as a dict; its keys are
-    listed in docs/results.md."""
+    listed in docs/reference/results.md."""
     path = Path(path)
     if path.is_dir():
         path = path / "summary.json"

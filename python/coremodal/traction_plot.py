@@ -1,4 +1,4 @@
-"""The picture of a ``coremodal traction`` results folder (docs/traction.md):
+"""The picture of a ``coremodal traction`` results folder (docs/how-to/traction.md):
 
     python3 -m coremodal traction-plot results/19-grooved-idler-traction-traction
 

@@ -1,4 +1,4 @@
-"""Pictures of a ``coremodal winder`` results folder (docs/winder.md):
+"""Pictures of a ``coremodal winder`` results folder (docs/how-to/winder.md):
 
     python3 -m coremodal winder-plot results/11-two-drum-winder-winder
 

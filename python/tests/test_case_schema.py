@@ -5,9 +5,9 @@ few broken cases must not: an unknown key, a wrong type, a negative length,
 a unit string of the wrong dimension or no unit at all.
 
 cases/11-two-drum-winder.toml is left out: it is a [winder] file, read by its
-own reader (src/winder/winder_scene.cpp, docs/winder.md), with its own schema,
+own reader (src/winder/winder_scene.cpp, docs/how-to/winder.md), with its own schema,
 `coremodal schema --winder` (test_winder_fit_schema.py); cases/18-core-selection.toml
-is a [selection] file (src/selection/selection_scene.cpp, docs/durability.md),
+is a [selection] file (src/selection/selection_scene.cpp, docs/how-to/durability.md),
 which the case-file schema does not describe.
 
 Needs COREMODAL_BIN (the program) and the jsonschema package (Debian
@@ -99,7 +99,7 @@ BROKEN = [
     ("an unknown table", BASE, lambda d: d.update(anlysis={"modes": 3}), "anlysis"),
     ("a wrong type", BASE, lambda d: d["analysis"].update(modes="12"), "'12' is not of type 'integer'"),
     # 12.0 would pass: JSON Schema counts a number with no fraction as an
-    # integer, where the reader wants a TOML integer (docs/case-files.md).
+    # integer, where the reader wants a TOML integer (docs/reference/case-files.md).
     ("a fraction for an integer", BASE, lambda d: d["analysis"].update(modes=12.5), "integer"),
     ("a negative length", BASE, lambda d: d["core"].update(length=-2.2), "length"),
     ("a negative length with a unit", BASE, lambda d: d["core"].update(length="-2.2 m"), "length"),

@@ -1,4 +1,4 @@
-"""One scheme for every command's JSON (docs/results.md, "summary.json"):
+"""One scheme for every command's JSON (docs/reference/results.md, "summary.json"):
 every shipped case in cases/ is run with its own command and what it writes
 is validated against the published JSON Schema,
 docs/schemas/summary.schema.json (draft 2020-12); so are `beam --json`,

@@ -20,7 +20,7 @@ Command add_batch_command(CLI::App& app) {
     cmd->add_option("cases", options->inputs, "case files, or folders (every *.toml in them, sorted)")->required();
     cmd->add_option("-o,--output", options->output_dir,
                     "results folder: OUT/<case>/ and OUT/<case>.log per case, OUT/batch.csv and OUT/batch.md; "
-                    "replaces only an earlier coremodal result, which is kept as OUT.previous (docs/results.md)")
+                    "replaces only an earlier coremodal result, which is kept as OUT.previous (docs/reference/results.md)")
         ->capture_default_str();
     cmd->add_flag("--force", options->force, "remove the earlier result at --output instead of keeping it as .previous");
     cmd->add_option("-j,--jobs", options->jobs, "cases run at once (default: the number of cores)")
@@ -30,7 +30,7 @@ Command add_batch_command(CLI::App& app) {
     auto no_plots = std::make_shared<bool>(false);
     cmd->add_flag("--no-plots", *no_plots, "passed on to every case: no python3 pictures in their report.md");
     cmd->footer("Each case runs as `coremodal run CASE --output OUT/<case> --quiet`; a failing case does not stop "
-                "the others. Exit code 1 if any case failed. See docs/batch.md.");
+                "the others. Exit code 1 if any case failed. See docs/how-to/batch.md.");
     auto run = [options, mesh_level, no_plots] {
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         options->plots = !*no_plots;

@@ -101,7 +101,7 @@ Command add_beam_command(CLI::App& app) {
         ->type_name("FILE");
     cmd->add_flag("--json", options->json, "print the results as one JSON object");
     cmd->footer("Values carry units (\"--li 250mm\", \"--f-free 52Hz\", \"--ep 1.8GPa\"); options override the "
-                "case file. Formulas and limits: docs/beam.md.");
+                "case file. Formulas and limits: docs/theory/beam.md.");
     auto run = [options] {
         const auto start = std::chrono::steady_clock::now();
         const BeamFormulas r = beam_formulas(parse_inputs(*options));

@@ -1,6 +1,6 @@
 // `coremodal calibrate CASE.toml [--output DIR]`: the [calibration] sweep,
 // the table of k, the fitted law and its check; calibration.toml for
-// `coremodal beam --calibration` (docs/calibration.md).
+// `coremodal beam --calibration` (docs/how-to/calibration.md).
 #include "analyses/calibrate/calibrate.hpp"
 #include "app/commands.hpp"
 #include "common/petsc_handle.hpp"
@@ -60,7 +60,7 @@ Command add_calibrate_command(CLI::App& app) {
     add_sweep_options(cmd, *o, "calibration");
     cmd->footer("Exit status 0 when every point ran and I-7 with the fitted k reproduces the FE f1 within "
                 "[calibration] max_error on fitted and held-out points; 1 otherwise (the results are written "
-                "either way). docs/calibration.md.");
+                "either way). docs/how-to/calibration.md.");
     return {cmd, [o] { return run_calibrate_command(*o); }, true};
 }
 

@@ -1,7 +1,7 @@
 // `coremodal campbell CASE.toml [--output DIR] [--model beam] [--mesh LEVEL] [--no-plots]`:
 // the modes of a spinning scene ([rotation]) at every speed of its sweep,
 // followed by MAC and labelled forward/backward whirl, with the critical
-// speeds where the excitation lines f = k f_rot cross them (docs/rotation.md).
+// speeds where the excitation lines f = k f_rot cross them (docs/how-to/campbell.md).
 // `coremodal run` on a case with [rotation] comes here too (one speed: the
 // modes at that speed). Beam level (Eigen only), harmonic and solid levels (SLEPc).
 #include "analyses/campbell/campbell.hpp"
@@ -24,7 +24,7 @@ int run_rotating_case(const FolderCaseOptions& o) {
     apply_level_options(o, scene);
     if (!rotating.rotation)
         throw InputError(o.case_file + ": no [rotation] table; expected one with speed = \"1200 rpm\" or "
-                                       "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/rotation.md)");
+                                       "speeds = [\"0 rpm\", \"4000 rpm\"] and points (docs/how-to/campbell.md)");
     // "auto": the harmonic level for a body of revolution (models/choose), else the solid, which spins
     // the others in co-rotating coordinates (and refuses a chuck not expanded here, before any work).
     // The coupled-harmonic level has no spinning terms: where "auto" would pick it, the solid spins.
@@ -66,7 +66,7 @@ Command add_campbell_command(CLI::App& app) {
                   "write the results even when the modes fail their verification (a residual not finite or above "
                   "1e-6), marked as not verified; otherwise such a run exits non-zero and writes nothing");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
-                "The [rotation] table: docs/rotation.md.");
+                "The [rotation] table: docs/how-to/campbell.md.");
     // PETSc and SLEPc: the harmonic and solid levels solve with them (the beam level does not need them).
     return {cmd, [o] { return run_rotating_case(*o); }, true};
 }

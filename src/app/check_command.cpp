@@ -38,7 +38,7 @@ std::string model_choice(const Scene& scene, const KeySources& sources) {
     return level_choice_text(scene, given);
 }
 
-// A two-drum winder file (docs/winder.md): its own reader, its beam model.
+// A two-drum winder file (docs/how-to/winder.md): its own reader, its beam model.
 int check_winder(const CheckOptions& options) {
     const WinderScene scene = read_winder_file(options.case_file);
     std::cout << options.case_file << ": valid two-drum winder file \"" << scene.name << "\"\n\n"
@@ -49,7 +49,7 @@ int check_winder(const CheckOptions& options) {
     return 0;
 }
 
-// A file for `coremodal traction` alone (docs/traction.md): its [traction] only.
+// A file for `coremodal traction` alone (docs/how-to/traction.md): its [traction] only.
 int check_traction(const CheckOptions& options, const TractionCase& tc) {
     print_warnings(tc.warnings);
     std::cout << options.case_file << ": valid traction file \"" << tc.name << "\"\n\n"
@@ -60,7 +60,7 @@ int check_traction(const CheckOptions& options, const TractionCase& tc) {
     return 0;
 }
 
-// A core-selection file (docs/durability.md): its own reader, beam formulas.
+// A core-selection file (docs/how-to/durability.md): its own reader, beam formulas.
 int check_selection(const CheckOptions& options) {
     const SelectionScene scene = read_selection_file(options.case_file);
     std::cout << options.case_file << ": valid core-selection file \"" << scene.name << "\": " << scene.cores.size()
@@ -71,7 +71,7 @@ int check_selection(const CheckOptions& options) {
     return 0;
 }
 
-// A fit's measurements file (docs/calibration.md, "Fitting the model"): its
+// A fit's measurements file (docs/how-to/calibration.md, "Fitting the model"): its
 // own reader; the cases it names are checked by `coremodal check` on each.
 int check_fit(const CheckOptions& options) {
     const FitInput in = read_fit_input(options.case_file);
@@ -112,9 +112,9 @@ int check_case(const CheckOptions& options) {
               << "assumptions (the run summary echoes them):\n"
               << describe_assumptions(scene);
     if (const std::optional<ResponseSetup> response = parse_response_case(options.case_file).response)
-        std::cout << "\nforced response (docs/response.md):\n" << describe_response(*response);
+        std::cout << "\nforced response (docs/how-to/response.md):\n" << describe_response(*response);
     if (traction)
-        std::cout << "\nweb-to-roller traction ([traction], docs/traction.md; `coremodal traction` runs it):\n"
+        std::cout << "\nweb-to-roller traction ([traction], docs/how-to/traction.md; `coremodal traction` runs it):\n"
                   << traction_check_text(*traction);
     return 0;
 }

@@ -49,7 +49,7 @@ inline void add_unused_option(CLI::App* cmd, const std::string& name, bool takes
 
 // The exit status of a command line that cannot be parsed (an unknown
 // command or option, a missing or invalid value): EX_USAGE of BSD's
-// sysexits.h, 64 (docs/architecture.md, "Exit status").
+// sysexits.h, 64 (docs/reference/results.md).
 inline constexpr int kExitUsage = 64;
 
 // -o/--output and --force of a command that writes one results folder
@@ -57,7 +57,7 @@ inline constexpr int kExitUsage = 64;
 inline void add_results_options(CLI::App* cmd, std::string& output, bool& force, const std::string& suffix) {
     cmd->add_option("-o,--output", output,
                     "results folder (default results/<case name>" + suffix + "); replaces only an earlier coremodal "
-                    "result, which is kept as <folder>.previous (docs/results.md)");
+                    "result, which is kept as <folder>.previous (docs/reference/results.md)");
     cmd->add_flag("--force", force, "remove the earlier result at --output instead of keeping it as .previous");
 }
 

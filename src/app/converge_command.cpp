@@ -1,5 +1,5 @@
 // `coremodal converge CASE.toml`: the command line of the accuracy-vs-cost
-// study (analyses/converge/converge.hpp runs it; docs/accuracy-vs-cost.md).
+// study (analyses/converge/converge.hpp runs it; docs/validation/accuracy-vs-cost.md).
 #include "analyses/converge/converge.hpp"
 #include "app/commands.hpp"
 
@@ -67,13 +67,13 @@ void add_run_options(CLI::App* cmd, ConvergeLine& line) {
                       "--check-levels");
 }
 
-// The ladders in one paragraph; docs/accuracy-vs-cost.md says the rest.
+// The ladders in one paragraph; docs/validation/accuracy-vs-cost.md says the rest.
 constexpr const char* kConvergeFooter =
     "Model levels: solid, harmonic and beam. Solid level k refines the unit mesh k times in every direction "
     "(--levels, --first, --unit, --max-dofs, --repeats apply to it); the harmonic ladder (r-z section only; exact in "
     "theta) meshes the same section two levels finer; the beam ladder is 4 to 64 Timoshenko elements. The three "
     "finest levels of each give the Richardson extrapolation. PETSc/SLEPc options pass through as for `run`. See "
-    "docs/accuracy-vs-cost.md.";
+    "docs/validation/accuracy-vs-cost.md.";
 
 }  // namespace
 

@@ -1,7 +1,7 @@
 // `coremodal durability DATA.csv [--confidence C] [--probability P ...]`: a
 // core's winding–unwinding simulator results fitted and reduced to the roll
 // weight each failure probability allows, by M. Ilomäki's statistics
-// ({16}–{32}; docs/durability.md). Plain numbers: no mesh, no PETSc.
+// ({16}–{32}; docs/how-to/durability.md). Plain numbers: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -83,7 +83,7 @@ Command add_durability_command(CLI::App& app) {
     cmd->add_flag("-q,--quiet", o->quiet, "no step lines");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plot");
     cmd->footer("Exit status 0 on success, 1 when the data or an option is wrong (nothing is written then). "
-                "docs/durability.md.");
+                "docs/how-to/durability.md.");
     return {cmd, [o] { return run_durability_command(*o); }, false};
 }
 

@@ -1,5 +1,5 @@
 // `coremodal fit MEASUREMENTS.toml [--output DIR]`: case-file parameters
-// fitted to measured frequencies (docs/calibration.md, "Fitting the model to
+// fitted to measured frequencies (docs/how-to/calibration.md, "Fitting the model to
 // measured frequencies"); fit.toml, report.md and the calibrated case files.
 #include "analyses/fit/fit.hpp"
 #include "app/commands.hpp"
@@ -51,7 +51,7 @@ Command add_fit_command(CLI::App& app) {
     add_unused_option(cmd, "--no-plots", false, "it draws no pictures");
     cmd->footer("Writes fit.toml, report.md and <case>-fitted.toml per case. Exit status 0 when the fit converged "
                 "(warnings about parameters the data cannot separate are in report.md); 1 otherwise. "
-                "docs/calibration.md.");
+                "docs/how-to/calibration.md.");
     return {cmd, [o] { return run_fit_command(*o); }, true};
 }
 

@@ -1,7 +1,7 @@
 // `coremodal limits CASE.toml [--speed V] [--output DIR] [--model beam] [-q]
 // [--no-plots]`: how fast the rest roll may run in its stand as it unwinds, one
 // verdict over the rest-roll diameters with the criterion that governs and its
-// band (analyses/limits, docs/limits.md). The console ends with the verdict
+// band (analyses/limits, docs/how-to/limits.md). The console ends with the verdict
 // line, also under -q.
 #include "analyses/fit/fit.hpp"
 #include "analyses/limits/limits.hpp"
@@ -34,7 +34,7 @@ LimitsCase fitted_case(const LimitsOptions& o, std::optional<FitOutcome>& fit) {
     }
     throw InputError("--fit " + o.fit_file + ": no [[measurement]] names " + o.folder.case_file +
                      "; expected case = the stand's case file (the measured first resonance of this roll in its "
-                     "stand, docs/limits.md)");
+                     "stand, docs/how-to/limits.md)");
 }
 
 int run_limits_case(const LimitsOptions& o) {
@@ -47,7 +47,7 @@ int run_limits_case(const LimitsOptions& o) {
     request.spec = c.limits.value_or(LimitsSpec{});
     request.target_web_speed_m_s = o.speed_m_s;
     request.fit = fit, request.fit_file = o.fit_file;
-    // The web's first idler, when the stand scene names one (docs/traction.md).
+    // The web's first idler, when the stand scene names one (docs/how-to/traction.md).
     if (const std::optional<TractionCase> roller = read_traction_case(o.folder.case_file))
         request.traction = traction_slip_criterion(roller->spec);
     require_limits_scene(scene, request);  // before the folder: nothing written on bad input
@@ -88,11 +88,11 @@ Command add_limits_command(CLI::App& app) {
     cmd->add_option("--fit", o->fit_file,
                     "measurements file of `coremodal fit` naming this case (the roll's first resonance measured "
                     "in its stand): the verdict on the fitted case, the band's contact and E_z ranges narrowed "
-                    "to the fit's uncertainty (docs/limits.md)")
+                    "to the fit's uncertainty (docs/how-to/limits.md)")
         ->check(CLI::ExistingFile);
     cmd->footer(
         "Exit status 0 on success, 1 when the input is wrong (nothing is "
-        "written then). docs/limits.md.");
+        "written then). docs/how-to/limits.md.");
     return {cmd, [o] { return run_limits_case(*o); }, true};
 }
 

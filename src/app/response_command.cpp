@@ -2,7 +2,7 @@
 // the mid-span vibration of a spinning roll against web speed from its
 // damping and excitation ([damping], [excitation], [response]), the
 // resonance peaks and the safe web speed from the amplitude limit beside
-// I-5 (docs/response.md). `coremodal run` on a case with [response] comes
+// I-5 (docs/how-to/response.md). `coremodal run` on a case with [response] comes
 // here too. At the beam level (Eigen only), the harmonic level (the r-z
 // section) or the solid level (bodies of revolution; PETSc and SLEPc for
 // their modes at rest).
@@ -23,7 +23,7 @@ int run_response_case(const FolderCaseOptions& o) {
     apply_level_options(o, scene);
     if (!c.response)
         throw InputError(o.case_file + ": no [response] table; expected [damping], [excitation] and [response] with "
-                                       "web_speeds = [\"5 m/s\", \"20 m/s\"] and points (docs/response.md)");
+                                       "web_speeds = [\"5 m/s\", \"20 m/s\"] and points (docs/how-to/response.md)");
     require_response_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-response");
     const ResponseSetup& setup = *c.response;
@@ -47,7 +47,7 @@ Command add_response_command(CLI::App& app) {
     add_folder_case_options(cmd, *o, "case file (TOML) with a [response] table, e.g. cases/13-rest-roll-response-150x15.8-4320.toml",
                             "-response", "response.png");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
-                "The tables: docs/response.md.");
+                "The tables: docs/how-to/response.md.");
     return {cmd, [o] { return run_response_case(*o); }, true};
 }
 

@@ -34,8 +34,8 @@ int run_command(RunLine& line) {
     if (!line.mesh_level.empty()) options.mesh_level = line.mesh_level;
     if (!line.model.empty()) options.model = line.model;
     const auto output_of = [&](const std::string& case_name) { return results_path(line.output, case_name, ""); };
-    // A forced response (docs/response.md) before a spinning scene's modes
-    // (docs/rotation.md): [response] includes the rotation.
+    // A forced response (docs/how-to/response.md) before a spinning scene's modes
+    // (docs/theory/rotation.md): [response] includes the rotation.
     const auto folder_case = [&](const Scene& scene) {
         FolderCaseOptions o{options.case_file, output_of(scene.name).string(), line.model};
         o.mesh = line.mesh_level;

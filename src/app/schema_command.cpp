@@ -4,7 +4,7 @@
 // (winder/winder_scene.hpp), of a fit's measurements file
 // (analyses/fit/measurements.hpp) or of a core-selection file
 // (selection/selection_scene.hpp), for editors with TOML
-// support; docs/case-files.md, "Editor support: the JSON Schema", says how
+// support; docs/reference/case-files.md, "Editor support: the JSON Schema", says how
 // to use it. Stdout, or the file named by --output (that file only), under
 // the rules of results folders (output/results_folder.hpp): an earlier
 // schema coremodal wrote is replaced, any other file, a folder or a symbolic

@@ -4,7 +4,7 @@
 // level, calibrated to the stand's k), the chart of the two
 // (the form of Figs. 18–19 of M. Ilomäki, "On the durability of cores and
 // rest roll dynamics") and the verdict on each reel asked
-// (docs/durability.md, "Choosing a core"). Beam level only (Eigen): no mesh.
+// (docs/how-to/durability.md, "Choosing a core"). Beam level only (Eigen): no mesh.
 #include "app/commands.hpp"
 #include "common/stopwatch.hpp"
 #include "output/python_plots.hpp"
@@ -58,7 +58,7 @@ Command add_select_command(CLI::App& app) {
     add_results_options(cmd, o->output, o->force, "-select");
     cmd->add_flag("-q,--quiet", o->quiet, "no lines per stand and reel");
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the chart");
-    cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). docs/durability.md.");
+    cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). docs/how-to/durability.md.");
     return {cmd, [o] { return run_select_command(*o); }, false};
 }
 

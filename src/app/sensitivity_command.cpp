@@ -1,6 +1,6 @@
 // `coremodal sensitivity CASE.toml [--parameters KEYS] [--output DIR]`:
 // d ln f / d ln p of the case's modes (and k on chucks) for case-file keys,
-// by default every material and contact constant (docs/calibration.md,
+// by default every material and contact constant (docs/how-to/calibration.md,
 // "Sensitivities").
 #include "analyses/sensitivity/sensitivity.hpp"
 #include "app/commands.hpp"
@@ -56,7 +56,7 @@ Command add_sensitivity_command(CLI::App& app) {
     cmd->add_option("-m,--mesh", o->mesh, "mesh level, overriding the case's [mesh]: coarse, default, fine, very_fine");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines");
     add_unused_option(cmd, "--no-plots", false, "it draws no pictures");
-    cmd->footer("Writes sensitivity.csv and report.md (docs/calibration.md, \"Sensitivities\").");
+    cmd->footer("Writes sensitivity.csv and report.md (docs/how-to/calibration.md, \"Sensitivities\").");
     return {cmd, [o] { return run_sensitivity_command(*o); }, true};
 }
 

@@ -1,5 +1,5 @@
 // `coremodal study CASE.toml [--output DIR]`: the case's [study] table run
-// point by point, modes tracked by MAC, results in one folder (docs/studies.md).
+// point by point, modes tracked by MAC, results in one folder (docs/how-to/studies.md).
 #include "analyses/study/study.hpp"
 #include "analyses/study/study_workers.hpp"
 #include "app/commands.hpp"
@@ -67,7 +67,7 @@ Command add_study_command(CLI::App& app) {
     cmd->add_option("--worker-table", o->worker_table)->group("");
     cmd->add_option("--worker-output", o->worker_output)->group("");
     cmd->footer("Exit status 0 when every point ran, 1 when any failed (its error is in report.md and study.csv) "
-                "or the input is wrong. The [study] table: docs/studies.md.");
+                "or the input is wrong. The [study] table: docs/how-to/studies.md.");
     return {cmd, [o] { return run_study_command(*o); }, true};
 }
 

@@ -3,7 +3,7 @@
 // film between web and roller over the case's [traction] table: the
 // effective clearance, the traction and effective friction against web
 // speed, the zero-traction speed, the grooves' gain over a plain roller and
-// the paper's validity limits at every point (docs/traction.md). Closed
+// the paper's validity limits at every point (docs/how-to/traction.md). Closed
 // forms only: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/error.hpp"
@@ -37,7 +37,7 @@ int run_traction_command(const TractionOptions& o) {
     const std::optional<TractionCase> tc = read_traction_case(o.case_file);
     if (!tc)
         throw InputError(o.case_file + ": no [traction] table; expected one with the roller and the web "
-                                       "(roller_radius, wrap, tension, friction, roughnesses, web; docs/traction.md)");
+                                       "(roller_radius, wrap, tension, friction, roughnesses, web; docs/how-to/traction.md)");
     print_warnings(tc->warnings);
     // 2. Where the results go, refused before any work if it is not ours to write.
     const std::filesystem::path out_dir = results_path(o.output, tc->name, "-traction");
@@ -79,7 +79,7 @@ Command add_traction_command(CLI::App& app) {
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plot");
     cmd->add_flag("-q,--quiet", o->quiet, "no progress lines (as the other commands take it; closed forms print none)");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
-                "The [traction] table: docs/traction.md.");
+                "The [traction] table: docs/how-to/traction.md.");
     return {cmd, [o] { return run_traction_command(*o); }, false};
 }
 

@@ -1,7 +1,7 @@
 // `coremodal winder WINDER.toml [--output DIR] [--no-plots] [--quiet]`: the
 // two-drum winder of a [winder] case file, its modes as the rolls grow, the
 // crossings of the rolls' rotation harmonics with the drum-dominated modes
-// and the response at a drum's centre (docs/winder.md). Beam level, Eigen
+// and the response at a drum's centre (docs/how-to/winder.md). Beam level, Eigen
 // only: no mesh, no PETSc.
 #include "app/commands.hpp"
 #include "common/format.hpp"
@@ -71,7 +71,7 @@ Command add_winder_command(CLI::App& app) {
     cmd->add_flag("--no-plots", o->no_plots, "do not run python3 for the PNG plots");
     add_unused_option(cmd, "--mesh", true, "the drums, rolls and rider are beam elements ([winder] elements)");
     cmd->footer("Exit status 0 on success, 1 when the input is wrong (nothing is written then). "
-                "The [winder] table: docs/winder.md.");
+                "The [winder] table: docs/how-to/winder.md.");
     return {cmd, [o] { return run_winder_command(*o); }, false};
 }
 

@@ -20,7 +20,7 @@ using VectorInsert = std::function<void(const std::vector<int>& dofs, const Eige
 using NodeField = std::function<Eigen::Vector3d(int node)>;
 
 // The spin frame whose Omega^2 terms are assembled (effects/rotation.hpp,
-// docs/rotation.md): the stationary frame's K_Omega = K_sigma1 - M_L (bodies
+// docs/theory/rotation.md): the stationary frame's K_Omega = K_sigma1 - M_L (bodies
 // of revolution), or K_sigma1 alone, to which the rotating frame adds its
 // spin softening -M_P over every mass (models/solid/rotating_frame).
 enum class CentrifugalPart { stationary_frame, stress_stiffness_only };

@@ -4,7 +4,7 @@
 // rigid bearing eliminates the shaft end face; bearing springs are spread
 // over it, optionally through a frame node carrying the frame mass). This
 // file only translates those effects into the solid's nodes and faces;
-// docs/chucks.md gives the formulas. The paper web's span (effects/web.hpp),
+// docs/theory/chucks.md gives the formulas. The paper web's span (effects/web.hpp),
 // like a bearing a spring to the ground, joins them as couplings on the
 // faces of the roll's outer surface that its line crosses.
 #pragma once

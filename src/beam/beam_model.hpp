@@ -1,4 +1,4 @@
-// The beam model level (model = "beam", docs/beam.md): a scene as a network
+// The beam model level (model = "beam", docs/theory/beam.md): a scene as a network
 // of Timoshenko beams on the z axis, solved in well under a millisecond.
 //
 //   core + rest paper  one beam over the core length (composite section, BeamSection)
@@ -14,7 +14,7 @@
 //
 // What a beam cannot see: cross-section deformation (ovalling, breathing), the
 // wall's through-thickness shear (G_rz) and the local compliance of a clamp or
-// chuck edge on a shear-soft wall. docs/beam.md says when the model holds.
+// chuck edge on a shear-soft wall. docs/theory/beam.md says when the model holds.
 #pragma once
 
 #include "beam/beam_network.hpp"
@@ -83,7 +83,7 @@ BeamNetwork build_beam_network(const Scene& scene, const BeamModelOptions& optio
 // stiffness per unit length (6x6 on ux, uy, uz, rx, ry, rz) at radius R
 // between a chuck body and the core bore, from the normal and tangential
 // stiffness per unit area k_n, k_t (Pa/m) integrated over the element's
-// contact arcs (a full band or `segments` pads; docs/beam.md, "Expanding elements").
+// contact arcs (a full band or `segments` pads; docs/theory/beam.md, "Expanding elements").
 Matrix6 spring_layer_per_length(const SpringLayer& layer, const ExpandingElement& element, double radius);
 
 // The modes the scene asks for ([analysis] modes or band), no I/O. Throws

@@ -121,7 +121,7 @@ ChuckFactorLaw fit_chuck_factor(const std::vector<CalibrationSample>& samples) {
     if (!(sigma(m - 1) > kCollinearShare * sigma(0)))
         throw InputError("the calibration points do not vary the groups g1 = (EI/EcIc)(Li/L), g2 = EI/(kGA L^2) "
                          "and g3 = EpIp/EI independently, so the law cannot be fitted; expected a grid over both "
-                         "rest paper thickness and core length (docs/calibration.md)");
+                         "rest paper thickness and core length (docs/how-to/calibration.md)");
     const Eigen::VectorXd cs = svd.solve(y);
     law.c = {cs(0) / scale(0), 0, 0, 0};
     for (size_t j = 0; j < columns.size(); ++j)
@@ -166,7 +166,7 @@ void write_calibration(const std::string& path, const Calibration& c) {
                               {"diameter_m", range_array(c.diameter_m)}}},
     };
     std::ofstream out(path);
-    out << "# Chuck factor calibration written by coremodal " COREMODAL_VERSION " (docs/calibration.md).\n"
+    out << "# Chuck factor calibration written by coremodal " COREMODAL_VERSION " (docs/how-to/calibration.md).\n"
         << "# Apply it with: coremodal beam CASE.toml --calibration " << "calibration.toml\n"
         << "# k = 1/sqrt(c0 + c1 g1 + c2 g2 + c3 g3), g1 = (EI/(Ec Ic)) (Li/L), g2 = EI/(kappa G A L^2),\n"
         << "# g3 = Ep Ip/EI, EI = Ec Ic + Ep Ip, L = Lc - 2 Li. A coefficient 0 with its group constant over\n"
@@ -188,7 +188,7 @@ public:
             where = path_ + ":" + std::to_string(at->source().begin.line) + ":" +
                     std::to_string(at->source().begin.column) + ": ";
         throw InputError(where + what + "; expected a calibration.toml written by coremodal calibrate "
-                                        "(docs/calibration.md)");
+                                        "(docs/how-to/calibration.md)");
     }
     double number(std::string_view table, std::string_view key) const {
         const toml::node* n = t_[table][key].node();

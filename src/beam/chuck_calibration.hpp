@@ -1,5 +1,5 @@
 // The chuck factor k of a scene, and its calibration as a function of
-// dimensionless groups (docs/calibration.md).
+// dimensionless groups (docs/how-to/calibration.md).
 //
 // k = f1 / f_I-7(k = 1): the first bending frequency of the roll in the stand
 // over the Euler–Bernoulli clamped–clamped (= free–free) frequency of formula
@@ -22,7 +22,7 @@
 //
 // EI = Ec Ic + Ep Ip, kappa G A as in beam_theory.hpp (Cowper, G_thetaz).
 // c0 = 1, c1 = c2 = c3 = 0 is the rigid clamp at Li on a shear-stiff beam.
-// docs/calibration.md compares this law with simpler ones on real runs.
+// docs/how-to/calibration.md compares this law with simpler ones on real runs.
 #pragma once
 
 #include "beam/beam_theory.hpp"

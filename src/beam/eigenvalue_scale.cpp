@@ -49,7 +49,7 @@ void add_beam_families(const Scene& scene, std::vector<EigenvalueEstimate>& out)
     out.push_back({"torsion", k * k * s.GJ / s.rho_J});
 }
 
-// The wall as a thin ring of the core's length (docs/theory.md, "The eigenvalue scale"):
+// The wall as a thin ring of the core's length (docs/theory/methods.md, "The eigenvalue scale"):
 //   in its plane, n waves:  omega^2 = D / (m R^4) n^2 (n^2 - 1)^2 / (n^2 + 1),
 //     D the wall's bending stiffness per unit length (layers about their
 //     common neutral radius, E_theta), m its mass per unit area;

@@ -1,5 +1,5 @@
 // The scale of a scene's lowest elastic eigenvalue, for every shape: a long
-// core, a ring, a disc, a roll on soft springs (docs/theory.md, "The
+// core, a ring, a disc, a roll on soft springs (docs/theory/methods.md, "The
 // eigenvalue scale").
 //
 // The eigensolvers need it twice: the negative shift sigma = -c * scale keeps

@@ -1,4 +1,4 @@
-// The quick formulas of the two source studies (docs/references.md), as plain
+// The quick formulas of the two source studies (docs/reference/references.md), as plain
 // functions: SI units in and out (m, Pa, kg/m^3, kg/m, Hz, m/s). Each names its
 // formula by its number: I-n from Ilomäki ("On the durability of
 // cores and rest roll dynamics"), K-n from König & Müller (1988).
@@ -8,7 +8,7 @@
 
 namespace coremodal {
 
-// Section of a tube (docs/beam.md, "Symbols"): A = pi/4 (Do^2 - Di^2),
+// Section of a tube (docs/theory/beam.md, "Symbols"): A = pi/4 (Do^2 - Di^2),
 // I = pi/64 (Do^4 - Di^4). Requires 0 <= d_in < d_out.
 double tube_area(double d_out, double d_in);
 double tube_inertia(double d_out, double d_in);

@@ -3,7 +3,7 @@
 // from the first bending frequency of a free–free run, beside the E_z put in.
 // The standard reads a beam (Euler–Bernoulli times its shear and rotary
 // inertia factor Q) into the frequency of a shear-soft orthotropic tube, so
-// the two differ by what Q does not capture (docs/calibration.md, "The
+// the two differ by what Q does not capture (docs/how-to/calibration.md, "The
 // virtual ISO 11093-8 test").
 #pragma once
 

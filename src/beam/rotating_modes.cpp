@@ -148,21 +148,6 @@ std::vector<Eigen::SparseMatrix<double>> assemble_gyroscopic(const BeamNetwork& 
     return out;
 }
 
-const char* whirl_name(Whirl w) {
-    switch (w) {
-        case Whirl::forward: return "FW";
-        case Whirl::backward: return "BW";
-        case Whirl::none: return "";
-    }
-    return "";
-}
-
-double complex_mac(const Eigen::VectorXcd& x, const Eigen::VectorXcd& y) {
-    const double xx = x.squaredNorm(), yy = y.squaredNorm();
-    if (xx == 0 || yy == 0) return 0;
-    return std::norm(x.dot(y)) / (xx * yy);
-}
-
 FamilySet lateral_family_set(const BeamNetwork& network) {
     const std::vector<FamilySet> sets = rotating_sets(network);
     return !sets.empty() && has_bending(sets.front()) ? sets.front() : 0;

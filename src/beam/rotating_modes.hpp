@@ -1,4 +1,4 @@
-// The modes of a spinning beam network (effects/rotation.hpp, docs/rotation.md):
+// The modes of a spinning beam network (effects/rotation.hpp, docs/theory/rotation.md):
 //
 //     M q'' + Omega G q' + K q = 0,   q = x e^{i omega t}:   (K + i omega Omega G - omega^2 M) x = 0
 //
@@ -28,6 +28,7 @@
 #include "beam/beam_network.hpp"
 #include "beam/timoshenko_element.hpp"
 #include "modes/mode_set.hpp"
+#include "modes/rotating_mode.hpp"
 
 #include <Eigen/Dense>
 
@@ -69,28 +70,6 @@ struct DenseModes {
 };
 DenseModes dense_modes_at_rest(const NetworkMatrices& problem, double lambda_scale);
 
-// none: no orbit to speak of (standing still, axial, torsion, rigid).
-enum class Whirl { none, forward, backward };
-const char* whirl_name(Whirl w);  // "", "FW", "BW"
-
-// Below this |circularity| a lateral mode is planar: no whirl (at rest, or
-// held much stiffer in one plane than the other).
-constexpr double kPlanarCircularity = 1e-6;
-
-struct RotatingMode {
-    double frequency_hz = 0;  // >= 0
-    Whirl whirl = Whirl::none;
-    double circularity = 0;
-    ModeLabel label;  // of the mode's largest real snapshot (label_beam_mode)
-    // ||(K + i omega Omega G - omega^2 M) x|| / ((||K|| + omega Omega ||G|| + omega^2 ||M||) ||x||)
-    double relative_residual = 0;
-    Eigen::VectorXcd shape;  // per network DOF (6 per node), x^H M x = 1, zero where held
-    // Which independent problem the shape's DOFs belong to: modes of
-    // different blocks never match by MAC (the harmonic level: the wave
-    // number n; the beam network: 0, one vector for all).
-    int block = 0;
-};
-
 class RotatingNetwork {
 public:
     // lambda_scale: the scale of the first elastic eigenvalue (rad^2/s^2),
@@ -117,7 +96,7 @@ private:
         // The x-z bending plane standing for both (the planes alike): in
         // u = ux + i uy the problem is K a - omega^2 M a + omega Omega G a = 0
         // with G = rho_J N N on ry (symmetric) and omega > 0 forward, < 0
-        // backward whirl: real, half the size (docs/rotation.md).
+        // backward whirl: real, half the size (docs/theory/rotation.md).
         bool plane = false;
     };
     // How a candidate's rows become network DOFs: as they are, or from the
@@ -160,9 +139,5 @@ struct PlaneCrossing {
 };
 std::optional<std::vector<PlaneCrossing>> plane_critical_speeds(const BeamNetwork& network, double lambda_scale,
                                                                 const std::vector<int>& orders, double max_speed_hz);
-
-// |x^H y|^2 / (|x|^2 |y|^2): the MAC of two complex shapes (1: the same
-// mode up to a complex factor).
-double complex_mac(const Eigen::VectorXcd& x, const Eigen::VectorXcd& y);
 
 }  // namespace coremodal

@@ -1,7 +1,7 @@
 // The speeds a printer acts on, from a roll's first bending frequency in its
 // stand: Ilomäki's safe web speed (I-5) and König's critical speed (K-1/K-2),
 // with the span rules they need. Computed once here for summary.json,
-// report.md and `coremodal beam` alike (docs/beam.md, "Symbols").
+// report.md and `coremodal beam` alike (docs/theory/beam.md, "Symbols").
 #pragma once
 
 #include "beam/formulas.hpp"

@@ -1,5 +1,5 @@
 // A three-node Timoshenko beam element along the z axis, in 3D: 6 DOFs per
-// node (Eigen only; docs/beam.md, "The beam model level").
+// node (Eigen only; docs/theory/beam.md, "The beam model level").
 //
 // Node DOFs, in this order: ux, uy, uz (m) and the rotation-vector components
 // rx, ry, rz (rad, right hand). Without shear a section turns with the axis:

@@ -1,6 +1,6 @@
 // A core's winding–unwinding simulator results (cycles to delamination
 // against the roll weight of each test) as a CSV file with units in its
-// header and the test chuck said in `#` lines above it (docs/durability.md,
+// header and the test chuck said in `#` lines above it (docs/how-to/durability.md,
 // "The data file"):
 //
 //   # 76x15 mm cores, simulator runs of 2025 (made-up example)

@@ -6,7 +6,7 @@
 //
 // All in log10 y, with the regression's n - 2 degrees of freedom; how this
 // reads the paper's {22} and {25} (written for one sample with n - 1) is in
-// docs/durability.md, "Confidence with two fitted parameters".
+// docs/how-to/durability.md, "Confidence with two fitted parameters".
 #pragma once
 
 #include "durability/power_law_fit.hpp"
@@ -45,7 +45,7 @@ double upper_standard_deviation(const PowerLawFit& fit, double confidence);
 
 // {28} in log10 y: the reduced curve at x for failure probability p,
 // confident mean + λ · S_C; the same line {32} draws with S_C for S_log
-// ({31} draws it once more, shifted in x instead: docs/durability.md).
+// ({31} draws it once more, shifted in x instead: docs/how-to/durability.md).
 double reduced_log_weight(const PowerLawFit& fit, double x, double confidence, double p);
 
 // The safety factor of the reduced curve over the confident mean, 10^(-λ S_C)

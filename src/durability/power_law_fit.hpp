@@ -2,10 +2,10 @@
 // ({16}), fitted by least squares in log–log ({17}–{20}) with its residuals
 // and their standard deviation S_log ({24}). M. Ilomäki, "On the durability
 // of cores and rest roll dynamics"; the choices where the paper leaves room
-// are in docs/durability.md.
+// are in docs/how-to/durability.md.
 //
 // Logarithms are base 10 as in the paper ({20}: b0 = 10^log(b0)). Residuals
-// are in log10 y (docs/durability.md, "Residuals in log y"): the scatter the
+// are in log10 y (docs/how-to/durability.md, "Residuals in log y"): the scatter the
 // paper's S_log ({24}) and reduced curves ({31}, {32}) describe.
 #pragma once
 

@@ -2,7 +2,7 @@
 // from Boost.Math (never written by hand): Student's t for the confidence of
 // the mean ({22}, {23}), χ² for the upper standard deviation ({25}, {26}) and
 // the standard normal for the failure probability ({27}). M. Ilomäki, "On the
-// durability of cores and rest roll dynamics" (docs/durability.md).
+// durability of cores and rest roll dynamics" (docs/how-to/durability.md).
 #pragma once
 
 namespace coremodal {

@@ -1,4 +1,4 @@
-// Damping ([damping], docs/response.md), stated once for every model level.
+// Damping ([damping], docs/how-to/response.md), stated once for every model level.
 //
 //   effect            every level (analyses/response)
 //   modal_damping     zeta per elastic mode at rest: the base ratio, a family's (bending, ...)

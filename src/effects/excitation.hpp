@@ -1,4 +1,4 @@
-// Excitation of a spinning roll ([excitation], docs/response.md), stated once
+// Excitation of a spinning roll ([excitation], docs/how-to/response.md), stated once
 // for every model level; analyses/response puts the loads on the beam network
 // (response_loads), on the harmonic level's wave number n = 1 (harmonic_loads)
 // and on the solid's nodes (solid_loads).

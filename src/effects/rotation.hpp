@@ -1,4 +1,4 @@
-// Rotation ([rotation], docs/rotation.md), stated once for every model level.
+// Rotation ([rotation], docs/theory/rotation.md), stated once for every model level.
 // In the stationary frame the roll, its chuck bodies and shafts spin at
 // Omega = 2 pi f_rot about the z axis; the bearings, frames and the stand do
 // not. A spinning part adds the gyroscopic term Omega G and the centrifugal

@@ -17,7 +17,7 @@
 //   bearing_springs     springs spread over the end face   ring springs over the end edges       radial + tilting springs
 //   frame_mass          frame node, 3 translations         one DOF in n = 0 and n = 1            frame node, 2 translations
 //
-// docs/chucks.md gives the formulas.
+// docs/theory/chucks.md gives the formulas.
 #pragma once
 
 #include "effects/chuck_placement.hpp"
@@ -65,7 +65,7 @@ struct SpringLayer {
     double axial_stiffness(const ExpandingElement& e, double bore_radius) const;
 };
 
-// A chuck that was not expanded (contact = "one-sided", docs/chucks.md): the
+// A chuck that was not expanded (contact = "one-sided", docs/theory/chucks.md): the
 // bore rests on the chuck body across the radial clearance where the roll's
 // weight closes it, anywhere on the inserted length. Interpenetration of the
 // layer at a bore point with outward normal e_r,

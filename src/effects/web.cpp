@@ -47,7 +47,7 @@ std::vector<std::string> web_assumptions(const WebSpec& web) {
                 " (a string), along the axis (G t + T) / s = " + per_area(k.axial) + " (its shear; G from " +
                 web.shear_source + ")",
             "[web] left out: the web's bending stiffness, the span's mass and the tension's steady side pull on "
-            "the roll (docs/web.md)"};
+            "the roll (docs/theory/web.md)"};
 }
 
 }  // namespace coremodal

@@ -1,4 +1,4 @@
-// The paper web ([web], docs/web.md): the web leaves the roll along one line
+// The paper web ([web], docs/theory/web.md): the web leaves the roll along one line
 // of its outer surface towards the first guide roller, a free span s away,
 // under the tension T per unit width. For the roll's small vibrations the
 // span acts on that line, per unit length of roll, as three springs:
@@ -9,7 +9,7 @@
 //
 // E, G the web's in-plane modulus along its length and its shear modulus, t
 // its thickness. Left out, with the reason (numbers for the example case in
-// docs/web.md): the web's bending stiffness (a sheet), the span's own mass
+// docs/theory/web.md): the web's bending stiffness (a sheet), the span's own mass
 // (rho t s / 3 per unit length against the roll's hundreds of times more),
 // and the tension's static pull T on the roll (a steady side load: it bends
 // the roll but does not change its stiffness to first order).

@@ -1,7 +1,7 @@
 // Eigenpairs of K x = lambda M x by block Lanczos on the shift-and-invert
 // operator T = (K - sigma M)^-1 M, the lowest first.
 //
-// Why a block method (issue 19, docs/performance.md): on the solid level a
+// Why a block method (issue 19, bench/results/log.md): on the solid level a
 // triangular solve with the factor of K - sigma M reads the whole factor
 // (1.5 GB on case 03) twice and does two flops per entry, so it is bound by
 // memory: 0.13 s each, 115 of them per solve with SLEPc's one-vector
@@ -25,7 +25,7 @@
 // owns) and the factor is MUMPS's distributed one; the inner products are
 // local dgemms summed over the processes, so every process holds the same
 // small matrices and takes the same steps (case 03 on two processes: 0.75x
-// the time of one, docs/performance.md "Two processes").
+// the time of one, bench/results/log.md "Two processes").
 //
 // Two uses (eigensolve/modal_solver.cpp). Sigma below every eigenvalue
 // (K - sigma M definite, a Cholesky factor): all theta are positive and

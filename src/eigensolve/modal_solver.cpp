@@ -34,7 +34,7 @@ PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, cons
     // K - sigma M is positive definite (sigma < 0), so a plain Cholesky
     // factor serves. In one process CHOLMOD's METIS ordering gives a smaller
     // factor than Debian's MUMPS (PORD): 30 % less time on a 181k-DOF rest
-    // roll (docs/performance.md). In parallel, MUMPS.
+    // roll (bench/results/log.md). In parallel, MUMPS.
     COREMODAL_PETSC(PCFactorSetMatSolverType(pc, shift_invert_factor_package(PetscObjectComm((PetscObject)K))));
     // Experts override any of the above from the command line (-eps_*, -st_*).
     COREMODAL_PETSC(EPSSetFromOptions(eps));
@@ -44,7 +44,7 @@ PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, cons
 // The vectors as the columns of one dense matrix with M's rows, so that K
 // and M pass over their entries once for all the modes: one product each
 // where one vector at a time took 4 passes per mode (56 on case 03's solid
-// level, 2.8 s; docs/performance.md).
+// level, 2.8 s; bench/results/log.md).
 PetscMatrix as_columns(Mat M, const std::vector<PetscVector>& X) {
     PetscInt local_rows = 0;
     COREMODAL_PETSC(MatGetLocalSize(M, &local_rows, nullptr));

@@ -100,7 +100,7 @@ PetscErrorCode factor_symmetric(Mat A, const char* package, PetscMatrix& F) {
     COREMODAL_PETSC(MatGetFactor(A, package, MAT_FACTOR_CHOLESKY, F.out()));
     // ICNTL(13) = 1 keeps MUMPS's root front off ScaLAPACK, so MUMPS can
     // count negative pivots in parallel too; in one process it measured
-    // faster as well (docs/performance.md, issue 19).
+    // faster as well (bench/results/log.md, issue 19).
     if (std::string(package) == MATSOLVERMUMPS) COREMODAL_PETSC(MatMumpsSetIcntl(F, 13, 1));
     PetscIndexSet row_perm, col_perm;
     COREMODAL_PETSC(MatGetOrdering(A, MATORDERINGNATURAL, row_perm.out(), col_perm.out()));

@@ -31,7 +31,7 @@ PetscMatrix shifted(Mat K, Mat M, double sigma);
 // least of them; common/free_memory.hpp): the run then
 // finishes, slower, where in core it would swap or be killed. Measured on
 // case 03 at 540,288 unknowns, two processes: 6.9 GB and 204 s out of core
-// against 14.6 GB and 182 s in core (docs/performance.md). A user's
+// against 14.6 GB and 182 s in core (bench/results/log.md). A user's
 // -mat_mumps_icntl_22 decides instead. The estimate is compared with the
 // first process's machine: on several machines a conservative choice. The
 // share: on case 03 INFOG(17) is 2,116 MB of the run's 3.27 GB peak (K, M

@@ -50,7 +50,7 @@ PetscHandle<EPS, EPSDestroy> configure_ldlt(Mat K, Mat M, double sigma, const So
     // parallel it keeps it off ScaLAPACK, which would not report the
     // inertia (petsc_algebra.cpp); in one process it measured faster too
     // (case 03: numeric factor 33.9 -> 20.4 s, 103 solves 44.7 -> 32.8 s;
-    // docs/performance.md, issue 19). Set through the options database, as
+    // bench/results/log.md, issue 19). Set through the options database, as
     // the factor is made inside SLEPc's setup; a user's value is kept.
     COREMODAL_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
     PetscBool set = PETSC_FALSE;

@@ -20,7 +20,7 @@ namespace {
 // S = K + K_sigma + tau^2 M with tau = this fraction of sqrt(lambda_scale):
 // solve_gyroscopic's target (positive definite with rigid modes or not).
 constexpr double kTargetFraction = 0.5;
-// Counting at fewer speeds (header, docs/rotation.md). The bound gamma is
+// Counting at fewer speeds (header, docs/theory/rotation-harmonic.md). The bound gamma is
 // guessed from the projected term (its largest |eigenvalue| in the basis, a
 // lower bound of the full term's), times kBoundMargin, and doubled up to
 // kBoundTries times until the inertia count proves it (the margin keeps
@@ -126,7 +126,7 @@ struct ProjectedGyroscopic::Basis {
     // The modes of the small problem, ascending: the rigid ones at 0 Hz,
     // then every eigenvalue omega >= the rigid line of the Hermitian
     // linearization H = [[i Omega G, Lambda^1/2], [Lambda^1/2, 0]]
-    // (docs/rotation.md). H's eigenvalues below the line come in pairs
+    // (docs/theory/rotation-harmonic.md). H's eigenvalues below the line come in pairs
     // +-omega (a rigid direction's zero twice at rest; a free body's tilt at
     // 0 and its precession at +-omega once it spins); each pair is one mode
     // of the quadratic problem, as the full solver reports it, and a rigid
@@ -172,7 +172,7 @@ struct ProjectedGyroscopic::Basis {
     // omega > 0 a forward mode (x = (f, -i f) / sqrt 2: Im(a . conj b) > 0,
     // spinning_harmonic.hpp) at omega, omega < 0 a backward one
     // (x = (f, i f) / sqrt 2) at |omega|. Its exact linearization, as the
-    // beam level's planes alike (docs/rotation.md), is real symmetric of
+    // beam level's planes alike (docs/theory/rotation-harmonic.md), is real symmetric of
     // twice the family basis' size: H = [[Omega Gab^, Lambda^1/2],
     // [Lambda^1/2, 0]] in the eigenvectors of K(Omega)^; a quarter of the
     // whole set's Hermitian H's size in complex arithmetic, some thirty
@@ -230,7 +230,7 @@ struct ProjectedGyroscopic::Basis {
     // certificate's point where Weyl's bound covers this speed (no count),
     // or at the band edge with a new certificate (two counts; three where
     // they differ). Only where the rigid line is proven clear (nothing to
-    // subtract) and the bounds are proven; header and docs/rotation.md.
+    // subtract) and the bounds are proven; header and docs/theory/rotation-harmonic.md.
     struct Count {
         double point;
         long negative, found;
@@ -300,7 +300,7 @@ struct ProjectedGyroscopic::Basis {
         // the prestress's geometric stiffness on the mesh's shortest waves
         // makes it 10^3 to 10^4 on cases 07 and 08 (2.8e3 to 3.7e4, found by
         // doubling), where a sweep's step would need it below ~10; proving it
-        // cost counts and no certificate ever followed (docs/rotation.md). So
+        // cost counts and no certificate ever followed (docs/theory/rotation-harmonic.md). So
         // certificates are made for sets without the term only (kappa = 0).
         if (centrifugal) return;
         const double k = 0;

@@ -14,7 +14,7 @@
 // and every term projected once: V^T (K + K_sigma) V, V^T K_Omega V, V^T G V.
 // Per speed: K(Omega) = K + K_sigma + Omega^2 K_Omega combined in the basis,
 // and the small problem solved whole as the beam level does (an exact
-// Hermitian linearization of size 2m, Eigen, docs/rotation.md).
+// Hermitian linearization of size 2m, Eigen, docs/theory/rotation-harmonic.md).
 //
 // Nothing of the small problem is trusted. Each mode x = V y is verified on
 // the full set, with the relative residual of solve_gyroscopic,
@@ -94,7 +94,7 @@ public:
     int basis_size() const;
     bool counts_mirrored_families() const;
 
-    // Counting at fewer speeds (docs/rotation.md, "Counting at fewer
+    // Counting at fewer speeds (docs/theory/rotation-harmonic.md, "Counting at fewer
     // speeds"). After prove_rigid_line_clear has held, the sweep's counts
     // may come from a certificate: at (Omega_1, omega_1) the two counts
     // neg(Q - delta M) = neg(Q + delta M) = N say that no eigenvalue of the

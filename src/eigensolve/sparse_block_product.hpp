@@ -5,7 +5,7 @@
 // transposed in and out), so an entry is read once for all the columns and
 // the columns' multiply-adds run in vector registers: case 03's M (181,152
 // rows) times 16 columns in 0.11-0.13 s against 0.20-0.24 s
-// (docs/performance.md, session 16). In parallel PETSc's product stays.
+// (bench/results/log.md, session 16). In parallel PETSc's product stays.
 #pragma once
 
 #include <petscmat.h>

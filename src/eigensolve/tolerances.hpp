@@ -34,11 +34,11 @@ constexpr double kClusterTolerance = 1e-6;
 // frequencies that come from different meshes or meshes without the roll's
 // symmetry, so they are wider than kClusterTolerance on purpose; unifying
 // them with it (or with each other) changes study tracks and converge labels
-// (docs/architecture.md, "Decisions and why").
+// (docs/architecture-decisions.md).
 //
 // Study tracking by MAC (modes/tracking.cpp): modes closer than this relative
 // frequency gap are one degenerate group (exact pairs split by ~1e-10;
-// distinct ovalling modes of one family by ~1e-4 and more, docs/studies.md).
+// distinct ovalling modes of one family by ~1e-4 and more, docs/how-to/studies.md).
 constexpr double kDegenerateGap = 1e-5;
 // Converge's tracking by label (modes/label_tracking.cpp): neighbours with
 // the same label closer than this relative frequency gap are one mode. A pair

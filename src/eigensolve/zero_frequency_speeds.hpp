@@ -1,5 +1,5 @@
 // The spin speeds at which a spinning structure has a mode of frequency
-// zero (docs/rotation.md, "Critical speeds in co-rotating coordinates").
+// zero (docs/theory/rotation-solid.md, "Critical speeds in co-rotating coordinates").
 //
 // In co-rotating coordinates (models/solid/rotating_frame.hpp) a scene
 // solves M q'' + Omega G_c q' + K(Omega) q = 0 with K(Omega) = K +

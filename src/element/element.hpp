@@ -32,7 +32,7 @@ void element_matrices(CellType type, const CellCoords& coords, const Matrix6& C_
 
 // The gyroscopic matrix G_e (3n x 3n, per unit spin speed in rad/s) of a cell
 // of a body of revolution spinning about the z axis, seen from the stationary
-// frame (effects/rotation.hpp, docs/rotation.md). The material passes through
+// frame (effects/rotation.hpp, docs/theory/rotation-solid.md). The material passes through
 // each point at Omega d/dtheta, d/dtheta = x d/dy - y d/dx acting on every
 // Cartesian component, so its velocity is u' + Omega du/dtheta and the kinetic
 // energy's cross term is Omega q'^T C q with

@@ -11,7 +11,7 @@
 // nodes as unknowns (Zienkiewicz & Taylor, vol. 1, ch. 9; Bathe, sec. 5.3).
 // The minus sign on V makes a lateral translation X of the n = 1 family read
 // U = V = X, so nodes on the axis are held by plain equalities
-// (docs/harmonic.md).
+// (docs/theory/harmonic.md).
 //
 // Strains in the Voigt order of material.hpp (rr, tt, zz, tz, rz, rt), with
 // the theta factor of each row dropped (c for rr, tt, zz, rz; s for tz, rt):
@@ -50,7 +50,7 @@ struct HarmonicMatrices {
 // for a cell with a non-positive Jacobian or a node at r < 0.
 HarmonicMatrices harmonic_quad8_matrices(const Quad8Coords& x, const Matrix6& C, double density, int n);
 
-// The spin coupling of one section cell (effects/rotation.hpp, docs/rotation.md):
+// The spin coupling of one section cell (effects/rotation.hpp, docs/theory/rotation-harmonic.md):
 // a body of revolution spinning at Omega about z, seen from the stationary
 // frame, moves its material through every point at Omega d/dtheta, so its
 // kinetic energy has the cross term Omega int rho u' . L u dV, L u = d u /

@@ -2,9 +2,9 @@
 // core wall and rest paper as annuli, chuck bodies and shafts as O-grid
 // discs) extruded along z segment by segment in explicitly graded layers,
 // recombined into quadratic hexahedra. Every part shares the layers and the
-// count around, so chuck nodes face core nodes (docs/chucks.md).
+// count around, so chuck nodes face core nodes (docs/theory/chucks.md).
 // Physical groups (the names the rest of coremodal uses; a user mesh must
-// carry the first ones, see docs/case-files.md):
+// carry the first ones, see docs/reference/case-scene.md):
 //   volumes  "core", "rest_paper", "chuck_left", "chuck_right"
 //   surfaces "core_inner", "core_outer", "rest_paper_outer", "clamp_<name>",
 //            "interface_<chuck>_core", "interface_<chuck>_chuck", "bearing_<chuck>"

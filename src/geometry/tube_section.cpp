@@ -18,7 +18,7 @@ constexpr double kBreakpointMergeTolerance = 1e-9;
 
 // Axial zones where the core is held: rigid clamp zones, or the expanding
 // elements of elastic chucks (global z). Their edges are where the wall's
-// strain concentrates (docs/validation.md, "Example cases"), so the mesh grades towards them.
+// strain concentrates (docs/validation/models.md, "Example cases"), so the mesh grades towards them.
 std::vector<std::pair<double, double>> held_zones(const Scene& scene) {
     std::vector<std::pair<double, double>> zones;
     for (const auto& c : scene.supports.clamps) zones.push_back({c.z_start, c.z_end});
@@ -77,7 +77,7 @@ bool is_clamp_edge(const Scene& scene, double z) {
 // 100-1000 times stiffer than the paper deforms smoothly: its section stays
 // nearly plane, so one quadratic element across each ring carries it. On
 // case 07 this halves the rings' cells (224 -> 128 a layer) and moves f1 by
-// 0.04 % (docs/chucks.md).
+// 0.04 % (docs/theory/chucks.md).
 constexpr double kChuckRingAspect = 3.0;
 
 // Elements along a shaft: five times as long as the elements are wide around
@@ -86,7 +86,7 @@ constexpr double kChuckRingAspect = 3.0;
 // shaft carries only end loads and its own inertia, so its bending moment
 // varies almost linearly and a few quadratic elements resolve it: on case 07
 // the earlier two widths (13 elements on the 250 mm shaft) gave the same f1
-// to 0.01 % (docs/performance.md).
+// to 0.01 % (bench/results/log.md).
 constexpr double kShaftElementAspect = 5.0;
 
 int shaft_elements(double length, double radius, int n_around) {

@@ -19,7 +19,7 @@ struct RadialLayer {
 };
 
 // How a segment's elements are sized along z. Clamp edges are stress
-// singularities in a shear-soft wall (docs/accuracy-vs-cost.md): segments of the
+// singularities in a shear-soft wall (docs/validation/accuracy-vs-cost.md): segments of the
 // free core next to them are graded towards them.
 enum class AxialGrading { uniform, toward_start, toward_end, toward_both };
 

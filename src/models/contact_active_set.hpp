@@ -13,7 +13,7 @@
 // bore's top closed, closes every point whose d came out positive and opens
 // every other, damping a step that would close a point too far, until the
 // set repeats and the Newton step is below 1e-8 of the layer's scale u0.
-// docs/chucks.md, "A chuck that was not expanded".
+// docs/theory/chucks.md, "A chuck that was not expanded".
 #pragma once
 
 #include "assembly/one_sided_contact.hpp"  // ContactPointState

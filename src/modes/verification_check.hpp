@@ -17,7 +17,7 @@ namespace coremodal {
 // The largest relative residual ||K x - lambda M x|| / (||K|| ||x||) a
 // verified mode may have, unless the case's [analysis] tolerance is looser.
 // A backward-stable solve of a well-posed problem gives 1e-12 and less
-// (measured on the shipped cases: docs/validation.md); 1e-6 is the quadratic solver's bound
+// (measured on the shipped cases: docs/validation/models.md); 1e-6 is the quadratic solver's bound
 // (eigensolve/gyroscopic_solver.cpp), a residual above it a solve that did
 // not converge or a problem round-off has swamped.
 constexpr double kMaxVerifiedResidual = 1e-6;

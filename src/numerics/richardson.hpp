@@ -2,7 +2,7 @@
 // or more element sizes h, the limit f0 of f(h) = f0 + C h^p, the order p the
 // values themselves show, and whether they are in the asymptotic range.
 // coremodal converge uses it on frequencies of a refinement ladder
-// (docs/accuracy-vs-cost.md); the h need not have a constant ratio.
+// (docs/validation/accuracy-vs-cost.md); the h need not have a constant ratio.
 #pragma once
 
 #include <optional>
@@ -26,7 +26,7 @@ struct Richardson {
 
 // Plausible observed orders: quadratic elements give eigenvalue errors ~ h^4
 // on smooth problems; stress singularities at clamp edges lower that towards 1
-// or below (docs/accuracy-vs-cost.md). Outside this range the levels are not in
+// or below (docs/validation/accuracy-vs-cost.md). Outside this range the levels are not in
 // the asymptotic range and the report says so.
 inline constexpr double kMinPlausibleOrder = 0.5;
 inline constexpr double kMaxPlausibleOrder = 8.0;

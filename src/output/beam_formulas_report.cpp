@@ -39,7 +39,7 @@ void print_frequencies(const BeamFormulas& r, std::ostream& out) {
         << significant(r.f1) << " Hz\n";
     if (r.k_assumed)
         out << "       k = 1 assumed: the core rigidly clamped at Li, no chuck or stand compliance; an upper bound. "
-               "Elastic chucks in a stand give k ~ 0.7-0.85 (docs/material-sources.md: case 07 0.744, case 08 0.768): give "
+               "Elastic chucks in a stand give k ~ 0.7-0.85 (docs/reference/material-sources.md: case 07 0.744, case 08 0.768): give "
                "--k, --calibration, or `coremodal run` / `coremodal limits` on the stand for a computed k\n";
     if (!r.k_source.empty())
         out << "       k from the " << r.k_source << ": g1 = " << significant(r.groups->g1) << ", g2 = " << significant(r.groups->g2)

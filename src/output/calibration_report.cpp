@@ -56,7 +56,7 @@ std::string calibration_report_markdown(const CaseSweep& sweep, const StudyResul
            "    g1 = (EI/(Ec Ic)) (Li/L)     support rotation\n"
            "    g2 = EI/(kappa G A L^2)     shear flexibility of the span\n"
            "    g3 = Ep Ip / EI             share of the bending stiffness in the rest paper\n\n"
-           "k = f1_FE / f_I-7(k = 1) over L = Lc - 2 Li; EI = Ec Ic + Ep Ip (docs/calibration.md).\n\n";
+           "k = f1_FE / f_I-7(k = 1) over L = Lc - 2 Li; EI = Ec Ic + Ep Ip (docs/how-to/calibration.md).\n\n";
     out << "| coefficient | value |\n|---|---|\n| c0 | " << significant(c.law.c[0], 6) << " |\n| c1 | " << significant(c.law.c[1], 6)
         << " |\n| c2 | " << significant(c.law.c[2], 6) << " |\n| c3 | " << significant(c.law.c[3], 6) << " |\n\n";
     for (int i = 0; i < kCalibrationGroups; ++i)

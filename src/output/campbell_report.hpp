@@ -1,4 +1,4 @@
-// The files of `coremodal campbell` (docs/rotation.md): campbell.csv (speed,
+// The files of `coremodal campbell` (docs/how-to/campbell.md): campbell.csv (speed,
 // tracked mode, frequency, whirl), critical_speeds.csv, summary.json and
 // report.md; campbell.png comes from `python3 -m coremodal campbell-plot`.
 #pragma once

@@ -154,7 +154,7 @@ std::string durability_report_markdown(const DurabilityData& d, const Durability
     const PowerLawFit& f = a.fit;
     std::ostringstream md;
     md << "# Core durability: " << d.source << "\n\n"
-       << "The statistics of " << kPaper << ", equations {16}-{32}, as docs/durability.md reads them: "
+       << "The statistics of " << kPaper << ", equations {16}-{32}, as docs/how-to/durability.md reads them: "
        << "the fit and every spread in log10 of the weight, n - 2 degrees of freedom.\n\n"
        << "## Steps\n\n";
     for (const std::string& s : durability_steps(d, a)) md << "- " << s << "\n";

@@ -1,4 +1,4 @@
-// The results of `coremodal durability` (docs/durability.md): points.csv
+// The results of `coremodal durability` (docs/how-to/durability.md): points.csv
 // (the data with their log residuals), curves.csv (fit, confidence and
 // prediction limits, reduced curves; what the plot draws),
 // allowed_weights.csv (the weight each failure probability allows at 0.5, 1,

@@ -35,7 +35,7 @@ std::string number(double v) {
 std::string fit_toml(const FitInput& input, const FitOutcome& out) {
     std::ostringstream s;
     s << "# coremodal fit of " << input.path << ": values in SI (" << "Pa, Pa/m, kg/m^3, m); uncertainty: standard "
-      << "uncertainty from the measurements' uncertainties (docs/calibration.md)\n"
+      << "uncertainty from the measurements' uncertainties (docs/how-to/calibration.md)\n"
       << "converged = " << (out.converged ? "true" : "false") << "\niterations = " << out.iterations
       << "\nchi2 = " << number(out.chi2) << "\nmeasurements = " << out.measurements.size() << "\n";
     for (const FitParameter& p : out.parameters) {
@@ -55,7 +55,7 @@ std::string fit_report_markdown(const FitInput& input, const FitOutcome& out,
     s << "# Fit of " << input.path << "\n\n"
       << out.parameters.size() << " parameters fitted to " << out.measurements.size()
       << " measured frequencies by Levenberg–Marquardt in ln p with exact eigenvalue sensitivities "
-      << "(docs/calibration.md): " << (out.converged ? "converged" : "NOT converged") << " after " << out.iterations
+      << "(docs/how-to/calibration.md): " << (out.converged ? "converged" : "NOT converged") << " after " << out.iterations
       << " iterations; χ² = Σ ((f_model − f_measured)/u)² from " << significant(out.chi2_start) << " to "
       << significant(out.chi2) << ".\n\n";
     if (!out.warnings.empty()) {

@@ -1,4 +1,4 @@
-// The files of `coremodal fit` (docs/calibration.md, "Fitting the model to
+// The files of `coremodal fit` (docs/how-to/calibration.md, "Fitting the model to
 // measured frequencies"): fit.toml (each parameter's value ± standard
 // uncertainty, its start and bounds) and report.md (residuals per
 // measurement, the sensitivity matrix, correlations, warnings).

@@ -180,7 +180,7 @@ std::string limits_report_markdown(const Scene& scene, const LimitsResult& r, co
     out << "\nA measured first resonance of the roll in its stand narrows the "
            "band: fit the stand to it with "
            "`coremodal fit` and run the verdict on the fitted case "
-           "(docs/limits.md, \"Narrowing the band\").\n\n";
+           "(docs/how-to/limits.md, \"Narrowing the band\").\n\n";
     out << "## Assumptions\n\n";
     for (const std::string& a : r.assumptions) out << "- " << a << "\n";
     out << "\n## Notes\n\n";

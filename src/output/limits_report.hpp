@@ -1,4 +1,4 @@
-// The files of `coremodal limits` (docs/limits.md): limits.csv (per
+// The files of `coremodal limits` (docs/how-to/limits.md): limits.csv (per
 // rest-roll diameter every criterion's web speed and band, the governing one,
 // the safe speed), amplitude.csv (the mid-span orbit against web speed at every
 // diameter), summary.json (every number of them, the inputs' ranges, the

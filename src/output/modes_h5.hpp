@@ -1,6 +1,6 @@
 // modes.h5: the complete results of a run (mesh, case, modes, shapes) in one
 // HDF5 file, read by the python package (python/coremodal) and, through
-// modes.xdmf, by ParaView. The layout is documented in docs/results.md
+// modes.xdmf, by ParaView. The layout is documented in docs/reference/results.md
 // ("modes.h5 and modes.xdmf"); change it only together with
 // modes_h5_schema_version and the python reader.
 #pragma once
@@ -14,7 +14,7 @@
 namespace coremodal {
 
 // Version of the file layout. Readers reject files with a newer version.
-// Adding datasets keeps the version (docs/results.md, "Compatibility"): the
+// Adding datasets keeps the version (docs/reference/results.md, "Compatibility"): the
 // cylindrical components and warp scales came without a change.
 inline constexpr int modes_h5_schema_version = 1;
 

@@ -1,5 +1,5 @@
 // report.html: a results folder's report.md as one page one can send by
-// mail or put on a share (docs/results.md, "report.html"). Self-contained:
+// mail or put on a share (docs/reference/results.md, "report.html"). Self-contained:
 // the pictures are embedded as data: URIs, the style is inline, and the page
 // has no script, no font, no link and no request of any kind, so it reads the
 // same anywhere, offline.

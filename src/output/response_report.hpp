@@ -1,4 +1,4 @@
-// The files of `coremodal response` (docs/response.md): response.csv (per
+// The files of `coremodal response` (docs/how-to/response.md): response.csv (per
 // speed and probe: the amplitude in total and per order), peaks.csv,
 // summary.json and report.md; response.png comes from `python3 -m
 // coremodal response-plot`.

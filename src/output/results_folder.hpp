@@ -1,5 +1,5 @@
 // Results folders: written by coremodal only where it cannot destroy the
-// user's data, and complete or not at all (docs/results.md, "Where results
+// user's data, and complete or not at all (docs/reference/results.md, "Where results
 // go").
 //
 // The rule. Every folder coremodal writes carries a marker file,

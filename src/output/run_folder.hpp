@@ -6,7 +6,7 @@
 #include "mesh/mesh.hpp"
 #include "output/results_folder.hpp"
 #include "output/run_pictures.hpp"
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <filesystem>
 #include <functional>

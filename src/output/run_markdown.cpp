@@ -93,7 +93,7 @@ void model_section(std::ostream& out, const RunReport& r) {
     if (!m.harmonics.empty() && m.level == "coupled")
         out << "- coupled harmonics (segmented chucks, a chuck not expanded, the web), one problem per independent set "
                "of wave numbers "
-               "(docs/harmonic.md): " << m.harmonics << "\n";
+               "(docs/theory/harmonic.md): " << m.harmonics << "\n";
     else if (!m.harmonics.empty())
         out << "- one 2D problem per wave number n (modes with n >= 1 come in pairs turned by 90°/n): " << m.harmonics
             << "\n";
@@ -194,7 +194,7 @@ void chuck_section(std::ostream& out, const ChuckFactor& k) {
 void iso_section(std::ostream& out, const IsoFlexuralTest& t) {
     out << "## Virtual ISO 11093-8 test\n\nThe flexural modulus the standard's free-hanging test reports from "
            "this run's first bending frequency, Ec = 7.88e-8 · f² · M · L⁴ · Q / Ic (I-13: N/mm² with M in kg/m, L in mm, Ic in mm⁴), "
-           "Q = 82.66 · Ic / (Ac · L²) + 1 (I-14), beside the wall's E_z put in (docs/calibration.md).\n\n"
+           "Q = 82.66 · Ic / (Ac · L²) + 1 (I-14), beside the wall's E_z put in (docs/how-to/calibration.md).\n\n"
         << "| quantity | value |\n|---|---:|\n"
         << "| f_free (FE, first bending) | " << hz(t.f_free_hz) << " Hz |\n"
         << "| M = ρc·Ac | " << significant(t.mass_per_length) << " kg/m |\n"

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "output/run_pictures.hpp"
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <string>
 

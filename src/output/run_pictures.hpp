@@ -13,7 +13,7 @@
 namespace coremodal {
 
 // At most this many mode pictures: each costs about 0.6 s of CPU time on a
-// 300 k-DOF result (docs/results.md), and six cover the families a reader
+// 300 k-DOF result (docs/reference/results.md), and six cover the families a reader
 // looks for (bending, torsion, axial, ovalling, breathing, mixed).
 constexpr int kMaxModePictures = 6;
 

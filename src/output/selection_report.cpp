@@ -235,7 +235,7 @@ std::string selection_report_markdown(const SelectionScene& s, const SelectionRe
     std::ostringstream md;
     md << "# Core selection: " << s.name << "\n\n"
        << "Which core grade carries which reel in which stand, after " << kPaper
-       << " (durability {16}-{32}; the chart in the form of Figs. 18-19). docs/durability.md, \"Choosing a core\".\n\n"
+       << " (durability {16}-{32}; the chart in the form of Figs. 18-19). docs/how-to/durability.md, \"Choosing a core\".\n\n"
        << "- failure probability P = " << g(s.failure_probability) << ", confidence C = " << g(100 * s.confidence, 4)
        << " %, " << g(s.cycles) << " winding-unwinding cycle(s)\n"
        << "- reel weight from the stand's roll diameter, paper " << g(s.paper_density, 4)

@@ -1,4 +1,4 @@
-// The results of `coremodal select` (docs/durability.md, "Choosing a core"):
+// The results of `coremodal select` (docs/how-to/durability.md, "Choosing a core"):
 // selection.csv (per stand and core: the largest roll weight, the widths
 // the speed and the weight allow; what `python3 -m coremodal selection-plot`
 // draws), reels.csv (the verdict on each reel asked), summary.json and

@@ -66,7 +66,7 @@ std::string sensitivity_report_markdown(const std::string& case_name, const Sens
     out << "# Sensitivities of " << case_name << "\n\n"
         << "d ln f / d ln p of the " << r.level << " level's modes, from the eigenvalue derivative "
         << "φᵀ(∂K/∂p − λ ∂M/∂p)φ / (2λ) with ∂K/∂p, ∂M/∂p the central difference of the assembled operators "
-        << "(docs/calibration.md, \"Sensitivities\"). A value of 0.5 means f ∝ √p; 0.1: a 10 % error in p moves "
+        << "(docs/how-to/calibration.md, \"Sensitivities\"). A value of 0.5 means f ∝ √p; 0.1: a 10 % error in p moves "
         << "f by 1 %.";
     if (r.k) out << " k = f1 / f2, f2 the free–free roll over the free span at the same level: d ln k = d ln f1 − d ln f2.";
     out << "\n\n" << sensitivity_table_markdown(r) << "\n";

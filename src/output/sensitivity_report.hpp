@@ -1,4 +1,4 @@
-// The files of `coremodal sensitivity` (docs/calibration.md, "Sensitivities"):
+// The files of `coremodal sensitivity` (docs/how-to/calibration.md, "Sensitivities"):
 // sensitivity.csv (one row per parameter, one column per mode and k) and
 // report.md (the same table, the values differentiated at, the method).
 #pragma once

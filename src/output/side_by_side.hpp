@@ -2,7 +2,7 @@
 // console table and rigid_vs_elastic.csv.
 #pragma once
 
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <ostream>
 #include <string>

@@ -64,7 +64,7 @@ void report_tracks(std::ostream& out, const StudyResult& r) {
     }
     out << "## Tracked modes\n\nModes are followed from point to point by the modal assurance criterion (MAC) "
            "of mesh-independent signatures on the core's outer surface; degenerate pairs are tracked as one "
-           "subspace (docs/studies.md).\n\n| track | label (first point) | points | f min [Hz] | f max [Hz] | "
+           "subspace (docs/how-to/studies.md).\n\n| track | label (first point) | points | f min [Hz] | f max [Hz] | "
            "ambiguous steps |\n|---|---|---|---|---|---|\n";
     for (const auto& [id, s] : tracks)
         out << "| " << id << " | " << s.label << " | " << s.n_points << " | " << significant(s.f_min) << " | " << significant(s.f_max)
@@ -134,7 +134,7 @@ void report_response(std::ostream& out, const CaseSweep& sweep, const StudyResul
     const auto first = std::find_if(r.points.begin(), r.points.end(), has);
     if (first == r.points.end()) return;
     out << "## Safe web speed from the forced response\n\nAt every point the forced response of the case's [damping], "
-           "[excitation] and [response] (docs/response.md): the web speed where the amplitude first reaches +-"
+           "[excitation] and [response] (docs/how-to/response.md): the web speed where the amplitude first reaches +-"
         << significant(first->response->limit_m * 1e3, 3)
         << " mm, the factor that speed implies in I-5 (f_rot / f1), beside I-5 at 0.7 and 0.8 and König's "
            "v_krit (K-1/K-2, experience factor 0.66), all from the same f1 at rest (m/s).\n\n| # |";

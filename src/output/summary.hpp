@@ -1,8 +1,8 @@
 // Writers of the human- and machine-readable summaries of a run:
-// console table, summary.json (schema in docs/results.md), modes.csv.
+// console table, summary.json (schema in docs/reference/results.md), modes.csv.
 #pragma once
 
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <iosfwd>
 #include <string>

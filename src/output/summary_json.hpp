@@ -1,4 +1,4 @@
-// The one scheme every command's summary.json follows (docs/results.md,
+// The one scheme every command's summary.json follows (docs/reference/results.md,
 // docs/schemas/summary.schema.json): written with nlohmann-json in the order
 // the keys are inserted, `schema_version` first, then `program`, `command`,
 // `case`; `timing_s` {`total`, ...} and, where a roll spins in a stand, the

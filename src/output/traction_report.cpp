@@ -302,7 +302,7 @@ std::string traction_report_markdown(const TractionCase& tc, const TractionSweep
     std::ostringstream md;
     md << "# Web-to-roller traction: " << tc.name << "\n\n";
     if (!tc.description.empty()) md << tc.description << "\n\n";
-    md << "Model: " << kRiceGansCitation << " (docs/traction.md); case file `" << tc.source_file << "`.\n\n";
+    md << "Model: " << kRiceGansCitation << " (docs/how-to/traction.md); case file `" << tc.source_file << "`.\n\n";
     md << "## Roller and web\n\n";
     md << "| R | θ | T_0 | f | μ | c | ρ |\n|---|---|---|---|---|---|---|\n";
     md << "| " << significant(spec.roller_radius * 1e3, 4) << " mm | " << deg(spec.wrap) << " | "

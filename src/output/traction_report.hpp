@@ -1,4 +1,4 @@
-// The results of `coremodal traction` (docs/traction.md): traction.csv and
+// The results of `coremodal traction` (docs/how-to/traction.md): traction.csv and
 // summary.json for programs, report.md for people; traction.png comes from
 // `python3 -m coremodal traction-plot` (output/python_plots.hpp).
 #pragma once

@@ -76,7 +76,7 @@ void estimate_section(std::ostringstream& md, const WinderSweepResult& r) {
     md << "## The lowest drum frequency against the estimate\n\n"
           "The estimate is **our derivation**, not the paper's eq. 9 (whose text was not available): a "
           "two-mode Rayleigh-Ritz of the drum's first mode on its bearings and the rolls moving with it, "
-          "for isotropic bearings and a soft rider (docs/winder.md). Symmetric: both drums towards the rolls "
+          "for isotropic bearings and a soft rider (docs/how-to/winder.md). Symmetric: both drums towards the rolls "
           "(rolls vertical); antisymmetric: one towards, one away (rolls horizontal). The model column is the "
           "model's mode with most of that drum motion.\n\n"
           "| d | drum alone | symmetric: estimate | model | antisymmetric: estimate | model | heavy-roll limit |\n"
@@ -136,7 +136,7 @@ std::string winder_report_markdown(const WinderScene& s, const WinderSweepResult
     if (!s.description.empty()) md << s.description << "\n\n";
     md << "`coremodal winder " << s.source_file << "`: the natural frequencies of the winder as the rolls grow, "
           "the rolls' rotation harmonics against the drum-dominated ones, and the response at a drum's centre "
-          "(docs/winder.md).\n\n";
+          "(docs/how-to/winder.md).\n\n";
     scene_section(md, s, r);
     nip_section(md, r);
     estimate_section(md, r);

@@ -1,4 +1,4 @@
-// The results of `coremodal winder` (docs/winder.md): tables for programs
+// The results of `coremodal winder` (docs/how-to/winder.md): tables for programs
 // (winder.csv, crossings.csv, response.csv, summary.json) and report.md for
 // people, written into a results folder; the crossing diagram comes from
 // `python3 -m coremodal winder-plot` (output/python_plots.hpp).

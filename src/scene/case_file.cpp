@@ -53,20 +53,20 @@ Scene parse_case_table(const toml::table& root, const std::string& path) {
     if (const toml::node* winder = root.get("winder"))
         throw InputError(path + ":" + std::to_string(winder->source().begin.line) +
                          ": [winder] is a two-drum winder file, not a roll's case file; run it with "
-                         "`coremodal winder " + path + "` (docs/winder.md)");
+                         "`coremodal winder " + path + "` (docs/how-to/winder.md)");
     if (const toml::node* selection = root.get("selection"))
         throw InputError(path + ":" + std::to_string(selection->source().begin.line) +
                          ": [selection] is a core-selection file, not a roll's case file; run it with "
-                         "`coremodal select " + path + "` (docs/durability.md)");
+                         "`coremodal select " + path + "` (docs/how-to/durability.md)");
     if (const toml::node* traction = root.get("traction"); traction && !root.get("core"))
         throw InputError(path + ":" + std::to_string(traction->source().begin.line) +
                          ": [traction] without [core] is a roller's traction file, not a roll's case file; run it "
-                         "with `coremodal traction " + path + "` (docs/traction.md)");
+                         "with `coremodal traction " + path + "` (docs/how-to/traction.md)");
     return case_reading::CaseReader(path).read(root);
 }
 
 Scene parse_case_text(std::string_view text, const std::string& path) {
-    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
     try {
         return parse_case_table(root, path);
     } catch (const InputError& e) {  // a key echoed in a message: the user's characters

@@ -14,7 +14,7 @@
 // material admissibility, plausible ranges (in the descriptions only). The
 // reader (`coremodal check`) stays the judge; the schema is for editing.
 //
-// Two-drum winder files ([winder], docs/winder.md) and a fit's measurements
+// Two-drum winder files ([winder], docs/how-to/winder.md) and a fit's measurements
 // files have readers and schemas of their own (winder/winder_scene.hpp,
 // analyses/fit/measurements.hpp; `coremodal schema --winder`, `--fit`).
 #pragma once

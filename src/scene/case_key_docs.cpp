@@ -1,6 +1,6 @@
 // One row per key of the key table (scene/case_schema.cpp), in its order.
 // Defaults are those of the reader (scene/case_file.cpp, scene/case_sweep.cpp,
-// scene/chuck_contact.hpp, scene/scene.hpp) and of docs/case-files.md.
+// scene/chuck_contact.hpp, scene/scene.hpp) and of docs/reference/case-files.md.
 #include "scene/case_key_docs.hpp"
 
 namespace coremodal {
@@ -17,13 +17,13 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"", "mesh", "level \"default\"", "mesh refinement, or a gmsh mesh file"},
         {"", "study", "none", "a sweep over this file's keys, for `coremodal study` (`run` ignores it)"},
         {"", "calibration", "none", "a sweep whose chuck factors are fitted, for `coremodal calibrate` (`run` ignores it)"},
-        {"", "web", "none: no web", "the paper web pulls on the roll along one line of its surface (docs/web.md)"},
+        {"", "web", "none: no web", "the paper web pulls on the roll along one line of its surface (docs/theory/web.md)"},
         {"", "rotation", "none: the roll stands still", "the roll, chucks and shafts spin: modes at a speed, or a Campbell sweep (`coremodal campbell`)"},
-        {"", "damping", "none (needed by [response])", "relative damping of the modes, for the forced response (docs/response.md)"},
+        {"", "damping", "none (needed by [response])", "relative damping of the modes, for the forced response (docs/how-to/response.md)"},
         {"", "excitation", "none (needed by [response])", "what excites the spinning roll: bow, unbalance, eccentricity, ovality with gravity"},
-        {"", "traction", "none: no roller", "web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/traction.md); other commands check it and ignore it"},
+        {"", "traction", "none: no roller", "web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/how-to/traction.md); other commands check it and ignore it"},
         {"", "response", "none: no forced response", "mid-span vibration against web speed and the safe speed from the amplitude limit (`coremodal response`)"},
-        {"", "limits", "none: the case's roll down to the bare core", "how fast the roll may run as it unwinds: one verdict (`coremodal limits`, docs/limits.md)"},
+        {"", "limits", "none: the case's roll down to the bare core", "how fast the roll may run as it unwinds: one verdict (`coremodal limits`, docs/how-to/limits.md)"},
 
         {"core", "inner_diameter", kRequired, "inner diameter Di of the core, smaller than the outer diameter"},
         {"core", "outer_diameter", "none: give outer_diameter or wall", "outer diameter Do; give exactly one of outer_diameter and wall"},
@@ -68,7 +68,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"chuck", "contact", "\"one-sided\" when not expanded, else \"uniform\"", "one-sided: compression-only contact across the clearance, closed where the roll's weight closes it (3D solid level); uniform: the spring layer all around", "uniform one-sided"},
         {"chuck", "normal_stiffness", "from the expansion pressure", "normal stiffness of the spring layer, instead of expansion_pressure"},
         {"chuck", "tangential_stiffness", "from the expansion pressure", "tangential stiffness of the spring layer, with normal_stiffness"},
-        {"chuck", "expansion_pressure", "\"6 bar\"", "expansion pressure of the elements; gives the spring layer's stiffness (docs/chucks.md)"},
+        {"chuck", "expansion_pressure", "\"6 bar\"", "expansion pressure of the elements; gives the spring layer's stiffness (docs/theory/chucks.md)"},
         {"chuck", "expanding", kRequired, "the expanding elements, [[supports.<end>.expanding]], at least one"},
         {"chuck", "bearing", "none: a rigid bearing", "the bearing at the shaft's end"},
 
@@ -88,7 +88,7 @@ const std::vector<KeyDoc>& case_key_docs() {
         {"analysis", "tolerance", "1e-10", "eigensolver relative residual tolerance"},
         {"analysis", "max_iterations", "500", "eigensolver iteration limit"},
 
-        {"mesh", "level", "\"default\"", "named refinement (docs/case-files.md, [mesh])", "coarse default fine very_fine"},
+        {"mesh", "level", "\"default\"", "named refinement (docs/reference/case-scene.md, [mesh])", "coarse default fine very_fine"},
         {"mesh", "through_wall", "from the level", "elements through the core wall; overrides the level's"},
         {"mesh", "through_rest_paper", "from the level", "elements through the rest paper; overrides the level's"},
         {"mesh", "around", "from the level", "elements around the circumference, a multiple of 4; overrides the level's"},

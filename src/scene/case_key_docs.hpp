@@ -4,7 +4,7 @@
 // (table, key), so that table stays one short row per key;
 // tests/unit/scene/test_case_key_docs.cpp checks that every schema key has a
 // row here and every row a schema key, so the two cannot drift apart.
-// docs/case-files.md is the long form of the same text.
+// docs/reference/case-files.md is the long form of the same text.
 #pragma once
 
 #include <string_view>

@@ -1,5 +1,5 @@
 // The case reader's parts, shared by the files that read one concept each
-// (scene/case_file.cpp is the entry point; docs/case-files.md the reference):
+// (scene/case_file.cpp is the entry point; docs/reference/case-files.md the reference):
 //   case_reader.cpp           messages, the schema (unknown keys, value kinds), typed values
 //   case_reader_core.cpp      [core], [rest_paper] and their materials
 //   case_reader_supports.cpp  [supports]: clamps, chucks, interfaces, bearings

@@ -149,7 +149,7 @@ OrthotropicMaterial CaseReader::read_material(const Section& owner, std::string_
         for (size_t i = warnings_before; i < warnings_.size(); ++i) hint += "; likely cause: " + warnings_[i];
         fail(at, name_of(owner, "material") + " is not admissible: " + *why +
                      "; expected positive moduli and density, and Poisson ratios for which the "
-                     "compliance matrix is positive definite (Jones 1999, ch. 2; docs/case-files.md)" + hint);
+                     "compliance matrix is positive definite (Jones 1999, ch. 2; docs/reference/case-scene.md)" + hint);
     }
     return m;
 }

@@ -2,7 +2,7 @@
 // log_decrement or a measured decay, or Rayleigh's alpha M + beta K), ratios
 // per mode family and per single mode on top of it, and structural damping:
 // a loss factor for every part and per part (loss_factor, [damping.loss_factors]) (scene/response_spec.hpp,
-// docs/response.md). Every mistake stops the reader with file:line:col, the
+// docs/how-to/response.md). Every mistake stops the reader with file:line:col, the
 // key and what is expected. Mode numbers are checked against the modes at
 // rest by the run (analyses/response/response_damping.cpp), which alone knows
 // them.

@@ -1,5 +1,5 @@
 // [limits]: one verdict over the rest-roll diameters (scene/limits_spec.hpp,
-// docs/limits.md). Every mistake stops the reader with file:line:col, the key
+// docs/how-to/limits.md). Every mistake stops the reader with file:line:col, the key
 // and what is expected.
 #include "scene/case_reader.hpp"
 
@@ -71,7 +71,7 @@ namespace coremodal {
 
 LimitsCase parse_limits_case_text(std::string_view text, const std::string& path) {
     const ResponseCase response = parse_response_case_text(text, path);  // every check, [limits] included
-    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
     LimitsCase out{response.scene, response.response, std::nullopt};
     try {
         out.limits = case_reading::CaseReader(path).limits(root, out.scene);

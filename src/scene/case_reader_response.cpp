@@ -1,5 +1,5 @@
 // [damping], [excitation] and [response]: the forced response of a spinning
-// roll (scene/response_spec.hpp, docs/response.md). Every mistake stops the
+// roll (scene/response_spec.hpp, docs/how-to/response.md). Every mistake stops the
 // reader with file:line:col, the key and what is expected.
 #include "scene/case_reader.hpp"
 
@@ -35,15 +35,15 @@ std::optional<ResponseSetup> CaseReader::read_response_setup(const Section& top,
             if (s)
                 fail(s->table->source(), s->display + " is used only by the forced response; expected a [response] table "
                                                        "too (web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or "
-                                                       "no " + s->display + " (docs/response.md)");
+                                                       "no " + s->display + " (docs/how-to/response.md)");
         return std::nullopt;
     }
     if (!damping)
         fail(response->table->source(), "[response] needs [damping]; expected e.g. [damping] ratio = 0.01 (cores and "
-                                        "rest rolls: 0.005-0.02), or log_decrement, decay or rayleigh (docs/response.md)");
+                                        "rest rolls: 0.005-0.02), or log_decrement, decay or rayleigh (docs/how-to/response.md)");
     if (!excitation)
         fail(response->table->source(), "[response] needs [excitation]; expected e.g. [excitation] bow = \"0.5 mm\", "
-                                        "unbalance = \"2 kg*mm\", ovality = \"0.3 mm\" (docs/response.md)");
+                                        "unbalance = \"2 kg*mm\", ovality = \"0.3 mm\" (docs/how-to/response.md)");
     if (scene.supports.kind == SupportKind::free)
         fail(response->table->source(), "[response] needs a roll held in its stand; expected [supports] type = "
                                         "\"clamped\" or \"chucks\" (a free roll has no resonance to pass and no sag)");
@@ -148,7 +148,7 @@ ResponseCase parse_response_case_table(const toml::table& root, const std::strin
 ResponseCase parse_response_case_text(std::string_view text, const std::string& path) {
     const RotatingCase rotating = parse_rotating_case_text(text, path);  // every check, the new tables included
     ResponseCase out{rotating.scene, rotating.rotation, std::nullopt};
-    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
     out.response = case_reading::CaseReader(path).response(root, out.scene);
     return out;
 }

@@ -1,5 +1,5 @@
 // [rotation]: the speeds the roll spins at and the excitation orders of a
-// Campbell diagram (scene/case_reader.hpp, docs/rotation.md).
+// Campbell diagram (scene/case_reader.hpp, docs/how-to/campbell.md).
 #include "scene/case_reader.hpp"
 
 #include "scene/case_file.hpp"
@@ -147,7 +147,7 @@ double roll_outer_diameter(const Scene& scene) {
 
 RotatingCase parse_rotating_case_text(std::string_view text, const std::string& path) {
     RotatingCase out{parse_case_text(text, path), std::nullopt};  // every check, [rotation] included
-    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
     out.rotation = case_reading::CaseReader(path).rotation(root, out.scene);
     return out;
 }

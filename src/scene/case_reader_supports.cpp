@@ -191,7 +191,7 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
     }
     if (p && kn)
         fail(*p, s.display + " gives both expansion_pressure and normal_stiffness; expected one of them "
-                             "(the pressure is converted to a stiffness, docs/chucks.md)");
+                             "(the pressure is converted to a stiffness, docs/theory/chucks.md)");
     if (p && !f.expanded)
         fail(*p, s.display + " expansion_pressure with expanded = false; expected no pressure for a chuck that "
                              "was not expanded");
@@ -207,7 +207,7 @@ ChuckInterface CaseReader::read_interface(const Section& s, const std::string& c
         f.normal_stiffness = contact_normal_stiffness(pressure, law);
         const std::string k2_h = ": k_n = K2 (p + " + std::string(one_sided ? "K1" : "p_res") + ") / h with K2 = " +
                                  format_quantity(law.stack_exponent, Dimension::dimensionless) +
-                                 ", h = " + format_quantity(law.layer_thickness, Dimension::length) + " (docs/chucks.md)";
+                                 ", h = " + format_quantity(law.layer_thickness, Dimension::length) + " (docs/theory/chucks.md)";
         const std::string from =
             f.expanded ? "expansion pressure " + format_quantity(pressure, Dimension::pressure) + (p ? "" : " (assumed)")
             : one_sided ? "zero contact pressure (Pfeiffer's K1 = " + format_quantity(law.residual_pressure, Dimension::pressure) +

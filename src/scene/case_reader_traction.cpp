@@ -1,5 +1,5 @@
 // [traction]: one roller under the web, for Rice & Gans' traction model
-// (traction/traction_model.hpp, scene/traction_case.hpp, docs/traction.md).
+// (traction/traction_model.hpp, scene/traction_case.hpp, docs/how-to/traction.md).
 // Every mistake stops the reader with file:line:col, the key and what is
 // expected; what the model cannot take (a zero clearance, a groove wider
 // than its tool cuts, a speed at which the web's own inertia takes its whole
@@ -92,7 +92,7 @@ std::optional<TractionSpec> CaseReader::read_traction(const Section& top, std::v
     spec.tension = required(*t, "tension", "the web tension per unit width (high side), e.g. tension = \"350 N/m\"");
     spec.friction = required(*t, "friction", "the static coefficient of friction of web on roller, e.g. friction = 0.3");
     spec.roller_roughness = required(*t, "roller_roughness",
-                                     "the roller's asperity engagement height alpha_r, e.g. \"2.6 um\" (docs/traction.md)");
+                                     "the roller's asperity engagement height alpha_r, e.g. \"2.6 um\" (docs/how-to/traction.md)");
     spec.web_roughness = required(*t, "web_roughness", "the web's asperity engagement height alpha_w, e.g. \"1.1 um\"");
     spec.grooves = read_grooves(*t);
     if (const std::optional<double> mu = quantity(*t, "air_viscosity")) {
@@ -202,7 +202,7 @@ TractionCase read_document(const toml::table& root, const std::string& path) {
 }  // namespace
 
 std::optional<TractionCase> read_traction_case_text(std::string_view text, const std::string& path) {
-    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/case-files.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
     if (!root.get("traction")) return std::nullopt;
     try {
         return read_document(root, path);

@@ -1,5 +1,5 @@
 // [web]: the paper web leaving the roll (scene/scene.hpp WebSpec,
-// effects/web.hpp, docs/web.md). Every key but shear_modulus is required;
+// effects/web.hpp, docs/theory/web.md). Every key but shear_modulus is required;
 // its default is Baum's rule. What the model makes of the web goes into the
 // scene's assumptions, which every level echoes.
 #include "scene/case_reader.hpp"
@@ -18,7 +18,7 @@ std::optional<WebSpec> CaseReader::read_web(const Section& top, Scene& scene) co
     spec.thickness = required(*web, "thickness", "the web's thickness, e.g. thickness = \"80 um\"");
     spec.modulus = required(*web, "modulus", "the web's in-plane modulus along its length, e.g. modulus = \"5 GPa\"");
     // The web's stiffest spring is its stretch along the web, E t / s per
-    // unit length of the roll (docs/web.md): a span so short that it is
+    // unit length of the roll (docs/theory/web.md): a span so short that it is
     // beyond rigid is refused (a web into a nip is a support, not a span).
     const double shortest = spec.modulus * spec.thickness / beyond_rigid(scene.core, Dimension::line_force);
     if (spec.span < shortest)

@@ -35,7 +35,7 @@ constexpr int kMaxResponsePoints = 10000;
 constexpr int kMaxLimitsPoints = 200;
 // Relative damping of cores and rest rolls: 0.005-0.02 (Ilomäki,
 // I-1...4); 1 is critical damping, above which nothing oscillates.
-constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (Ilomäki I-1...I-4; docs/references.md)"};
+constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (Ilomäki I-1...I-4; docs/reference/references.md)"};
 // A material's loss factor (loss tangent tan delta, effects/damping.hpp):
 // no published range for cores is built in, the value is the user's; the
 // band catches slips (2 for 2 %): metals ~1e-4-1e-3, paper and polymers of
@@ -53,7 +53,7 @@ constexpr PlausibleRange kPlausibleOvality{0.0, 10e-3, 0.3e-3, "core roundness d
 constexpr PlausibleRange kPlausibleEccentricity{0.0, 20e-3, 0.5e-3, "an eccentric rest roll: ~0.1-5 mm"};
 // Unbalance: balancing grades put a 100 kg roll at ~1e-3-1e-2 kg m.
 constexpr PlausibleRange kPlausibleUnbalance{0.0, 1.0, 2e-3, "rolls and cores: ~0.1-100 g m (balancing grades, ISO 21940)"};
-// [web] (docs/web.md): running tensions of printing and converting webs are
+// [web] (docs/theory/web.md): running tensions of printing and converting webs are
 // ~100-1000 N/m (Roisum, The Mechanics of Web Handling, TAPPI 1998), a guide
 // roller sits tens of centimetres to a few metres from the roll, papers and
 // boards are 30 um to ~1 mm thick, and paper's in-plane moduli are a few GPa
@@ -62,7 +62,7 @@ constexpr PlausibleRange kPlausibleWebTension{5.0, 20e3, 300.0, "running web ten
 constexpr PlausibleRange kPlausibleWebSpan{0.02, 20.0, 1.0, "roll surface to the first guide roller: ~0.1-5 m"};
 constexpr PlausibleRange kPlausibleWebThickness{10e-6, 3e-3, 80e-6, "papers and boards are ~30 um to ~1 mm thick"};
 constexpr PlausibleRange kPlausibleWebModulus{0.2e9, 30e9, 5e9, "paper's in-plane moduli are ~2-10 GPa (Niskanen, Paper Physics)"};
-// [traction] (docs/traction.md): Rice & Gans' rollers are 50 mm in radius,
+// [traction] (docs/how-to/traction.md): Rice & Gans' rollers are 50 mm in radius,
 // their grooves 36-43 um deep and 254 um apart (3937 per metre), their
 // asperity engagement heights 0.4-26 um, their friction 0.13-0.55 (Tables 1-3
 // of "A simple model to predict web-to-roller traction"); idler rollers of
@@ -78,7 +78,7 @@ constexpr PlausibleRange kPlausibleViscosity{1e-5, 3e-5, 1.81e-5,
                                              "air: 1.7-2.0e-5 Pa*s from 0 to 100 C (Rice & Gans, Table 3: 1.81e-5)"};
 constexpr PlausibleRange kPlausibleWebDensity{100.0, 3000.0, 1000.0,
                                               "papers ~500-1200 kg/m^3, PET films 1358 kg/m^3 (Rice & Gans, Table 1)"};
-constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (Ilomäki, with I-5; docs/references.md)"};
+constexpr PlausibleRange kPlausibleLimit{0.1e-3, 0.1, 5e-3, "the field's limit is +-5 mm at mid-span (Ilomäki, with I-5; docs/reference/references.md)"};
 
 // Plausible ranges: one row per kind of value, each with its reason. They
 // catch unit slips, which are factors of 1e3 to 1e9, so they are wide.
@@ -91,13 +91,13 @@ constexpr std::string_view kModulusWhy =
 constexpr double kMinPlausibleModulus = 0.1e6, kMaxPlausibleModulus = 1.2e12;  // Pa
 // Typical moduli, the aim of a suggestion: paperboard in its plane (E_theta,
 // E_z, G_thetaz), across it (E_r; G_rtheta, G_rz), and isotropic E (steel and
-// aluminium tubes, steel chucks): docs/material-sources.md, the materials library.
+// aluminium tubes, steel chucks): docs/reference/material-sources.md, the materials library.
 constexpr double kTypicalInPlane = 5e9, kTypicalAcross = 30e6, kTypicalShearAcross = 100e6;
 constexpr double kTypicalShearInPlane = 2e9, kTypicalIsotropic = 70e9;  // Pa
 // Density: the lightest foams (~10 kg/m^3) to the densest metals (osmium 22 600).
 constexpr PlausibleRange kPlausibleDensity{10.0, 25e3, 1000.0,
                                            "from foams (~10 kg/m^3) to the densest metals (osmium, 22 600 kg/m^3)"};
-// Cores: 1 inch (25 mm) to 600 mm inside (ISO 11093 sizes; docs/references.md),
+// Cores: 1 inch (25 mm) to 600 mm inside (ISO 11093 sizes; docs/reference/references.md),
 // rolls up to ~4 m across; walls from under a millimetre; a test ring cut from
 // a core is a few millimetres long, the widest machines ~10 m.
 constexpr PlausibleRange kPlausibleDiameter{5e-3, 4.0, 0.1, "cores are 25-600 mm inside, rolls up to ~4 m across"};
@@ -138,7 +138,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "analysis", ValueKind::table),
         plain_key("", "mesh", ValueKind::table),
         // Read by `coremodal study` and `coremodal calibrate` (scene/case_sweep.hpp,
-        // docs/studies.md, docs/calibration.md); `coremodal run` ignores them.
+        // docs/how-to/studies.md, docs/how-to/calibration.md); `coremodal run` ignores them.
         plain_key("", "study", ValueKind::table),
         plain_key("", "calibration", ValueKind::table),
         plain_key("", "rotation", ValueKind::table),
@@ -146,7 +146,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("", "damping", ValueKind::table),
         plain_key("", "excitation", ValueKind::table),
         plain_key("", "response", ValueKind::table),
-        // Read by `coremodal traction` (docs/traction.md); other commands check it and ignore it.
+        // Read by `coremodal traction` (docs/how-to/traction.md); other commands check it and ignore it.
         plain_key("", "traction", ValueKind::table),
         plain_key("", "limits", ValueKind::table),
 
@@ -182,7 +182,7 @@ const std::vector<KeySpec>& case_schema() {
         {"clamp", "start", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
         {"clamp", "center", ValueKind::quantity, Dimension::length, 0.0, kMaxLength},
 
-        // [supports.left] / [supports.right] of type = "chucks" (docs/chucks.md).
+        // [supports.left] / [supports.right] of type = "chucks" (docs/theory/chucks.md).
         length_key("chuck", "inserted_length", kMaxLength),
         {"chuck", "clearance", ValueKind::quantity, Dimension::length, 0.0, kMaxDiameter},
         length_key("chuck", "body_diameter", kMaxDiameter),
@@ -222,7 +222,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("mesh", "element", ValueKind::text),
         plain_key("mesh", "file", ValueKind::text),
 
-        // [rotation]: the roll spins (docs/rotation.md).
+        // [rotation]: the roll spins (docs/how-to/campbell.md).
         {"rotation", "speed", ValueKind::quantity, Dimension::frequency, 0.0, kMaxRotationHz},
         plain_key("rotation", "speeds", ValueKind::list),
         integer_key("rotation", "points", 2, kMaxRotationPoints),
@@ -232,7 +232,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("rotation", "operating_speeds", ValueKind::list),
         plain_key("rotation", "centrifugal_stiffening", ValueKind::boolean),
 
-        // [web]: the paper web pulls on the roll along a line (docs/web.md).
+        // [web]: the paper web pulls on the roll along a line (docs/theory/web.md).
         {"web", "tension", ValueKind::quantity, Dimension::line_force, 0.0, 1e6, true, kPlausibleWebTension},
         {"web", "span", ValueKind::quantity, Dimension::length, 0.0, kMaxLength, true, kPlausibleWebSpan},
         {"web", "angle", ValueKind::quantity, Dimension::angle, -2 * M_PI, 2 * M_PI},
@@ -240,7 +240,7 @@ const std::vector<KeySpec>& case_schema() {
         {"web", "modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
         {"web", "shear_modulus", ValueKind::quantity, Dimension::pressure, 0.0, kMaxModulus, true, kPlausibleWebModulus},
 
-        // [traction]: web-to-roller traction on one roller (Rice & Gans; docs/traction.md).
+        // [traction]: web-to-roller traction on one roller (Rice & Gans; docs/how-to/traction.md).
         length_key("traction", "roller_radius", kMaxDiameter, kPlausibleRollerRadius),
         {"traction", "wrap", ValueKind::quantity, Dimension::angle, 0.0, 2 * M_PI, true},
         {"traction", "tension", ValueKind::quantity, Dimension::line_force, 0.0, 1e6, true, kPlausibleWebTension},
@@ -264,7 +264,7 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("traction", "web_speeds", ValueKind::list),
         integer_key("traction", "points", 2, kMaxResponsePoints),
 
-        // [damping], [excitation], [response]: the forced response (docs/response.md).
+        // [damping], [excitation], [response]: the forced response (docs/how-to/response.md).
         {"damping", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
         {"damping", "log_decrement", ValueKind::quantity, Dimension::dimensionless, 0.0, 2 * M_PI, true,
          kPlausibleLogDecrement},
@@ -305,7 +305,7 @@ const std::vector<KeySpec>& case_schema() {
         length_key("response", "limit", 1.0, kPlausibleLimit),
         plain_key("response", "probes", ValueKind::list),
 
-        // [limits]: one verdict over the rest-roll diameters (docs/limits.md).
+        // [limits]: one verdict over the rest-roll diameters (docs/how-to/limits.md).
         plain_key("limits", "diameters", ValueKind::list),
         integer_key("limits", "points", 2, kMaxLimitsPoints),
         {"limits", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed, true},
@@ -319,7 +319,7 @@ const std::vector<KeySpec>& case_schema() {
         {"study", "safe_factor", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true},
         {"study", "web_speed", ValueKind::quantity, Dimension::speed, 0.0, kMaxWebSpeed, true},
 
-        // [calibration]: a sweep whose chuck factors are fitted (docs/calibration.md).
+        // [calibration]: a sweep whose chuck factors are fitted (docs/how-to/calibration.md).
         plain_key("calibration", "parameters", ValueKind::tables),
         plain_key("calibration", "mesh", ValueKind::text),
         integer_key("calibration", "modes", 1, kMaxModes),

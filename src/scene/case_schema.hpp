@@ -1,6 +1,6 @@
 // The one table of case-file keys. It drives the check of every table in a
 // case file (unknown keys, value types, ranges) and the "did you mean"
-// suggestion; docs/case-files.md documents the same keys.
+// suggestion; docs/reference/case-files.md documents the same keys.
 #pragma once
 
 #include "scene/units.hpp"

@@ -1,5 +1,5 @@
 // A sweep over case-file keys: the [study] and [calibration] tables
-// (docs/studies.md, docs/calibration.md).
+// (docs/how-to/studies.md, docs/how-to/calibration.md).
 //
 //   [study]
 //   parameters = [
@@ -49,7 +49,7 @@ struct SweepOptions {
 };
 
 // Defaults of a sweep when the case file and the table do not say: fast
-// meshes, few modes (docs/studies.md explains the choice).
+// meshes, few modes (docs/how-to/studies.md explains the choice).
 inline constexpr std::string_view kSweepDefaultMesh = "coarse";
 inline constexpr int kStudyDefaultModes = 12;
 inline constexpr int kCalibrationDefaultModes = 6;
@@ -92,7 +92,7 @@ public:
     // The same point with its [rotation] and its forced response setup
     // ([damping], [excitation], [response]; none without [response]): a
     // study over a response case runs the response at every point
-    // (docs/studies.md). Throws as scene(point).
+    // (docs/how-to/studies.md). Throws as scene(point).
     ResponseCase response_case(int point) const;
 
     struct Impl;  // the case's text, the key paths and values (case_sweep_impl.hpp)

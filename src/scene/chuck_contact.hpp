@@ -1,5 +1,5 @@
 // Contact stiffness of an expanding element against the core bore, from the
-// expansion pressure (docs/chucks.md, "Interface stiffness").
+// expansion pressure (docs/theory/chucks.md, "Interface stiffness").
 //
 // The core wall itself is in the model; what the spring layer adds is the
 // compliance of the contact: the innermost plies and the surface roughness of
@@ -14,7 +14,7 @@
 //     k_t / k_n = 2 (1 - nu) / (2 - nu).
 // Every constant below is an assumption that the run summary echoes.
 //
-// A chuck that was not expanded (contact = "one-sided", docs/chucks.md): the
+// A chuck that was not expanded (contact = "one-sided", docs/theory/chucks.md): the
 // same law, with the pressure now the static contact pressure under gravity
 // and K1 (here `residual_pressure`, the layer's stiffness scale at zero
 // pressure) in its own role. Integrated, the stack law gives the pressure at
@@ -29,7 +29,7 @@
 
 namespace coremodal {
 
-// Sources and ranges of every constant: docs/material-sources.md, "Chuck
+// Sources and ranges of every constant: docs/reference/material-sources.md, "Chuck
 // contact". The form k_n proportional to pressure is supported by rough-contact
 // theory (Persson 2007: p ~ exp(-u/u0), so k_n = p/u0; Pastewka et al.:
 // interfacial stiffness linear in p); K2 and h enter only as u0 = h/K2, for
@@ -97,7 +97,7 @@ inline std::string one_sided_contact_assumption(const std::string& chuck, const 
            std::to_string(static_cast<int>(law.residual_pressure / 1e3)) +
            " kPa; static state frictionless (found by an active-set Newton iteration, 3D solid or coupled harmonics); the modes "
            "linearised about it: normal stiffness k_n0 (1 + p/K1) and tangential (Mindlin ratio) where the "
-           "contact is closed (stuck: vibration below friction), nothing where open (docs/chucks.md)";
+           "contact is closed (stuck: vibration below friction), nothing where open (docs/theory/chucks.md)";
 }
 
 }  // namespace coremodal

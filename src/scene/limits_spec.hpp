@@ -1,4 +1,4 @@
-// [limits] of a case file (docs/limits.md): how fast a rest roll may run in
+// [limits] of a case file (docs/how-to/limits.md): how fast a rest roll may run in
 // its stand as it unwinds, one verdict over the rest-roll diameters
 // (`coremodal limits`, analyses/limits). Like [response], the table is read
 // beside the Scene, not into it: the case reader checks it with every other
@@ -14,7 +14,7 @@
 
 namespace coremodal {
 
-// Rest-roll diameters the verdict is evaluated at by default (docs/limits.md).
+// Rest-roll diameters the verdict is evaluated at by default (docs/how-to/limits.md).
 inline constexpr int kDefaultLimitsPoints = 20;
 
 struct LimitsSpec {
@@ -24,7 +24,7 @@ struct LimitsSpec {
     int points = kDefaultLimitsPoints;
     std::optional<double> target_web_speed_m_s;  // the press's speed: where must the roll be changed
     std::optional<double> limit_m;               // the amplitude limit ([response] limit, else +-5 mm)
-    bool band = true;                            // propagate the uncertain inputs (docs/limits.md)
+    bool band = true;                            // propagate the uncertain inputs (docs/how-to/limits.md)
 };
 
 // The case at `path`, its response setup (none without [response]) and its

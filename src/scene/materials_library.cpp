@@ -11,20 +11,20 @@ constexpr std::string_view kIlomakiRestPaper =
 constexpr std::string_view kKoenig =
     "König & Müller, Hartpapierhülsen in Papierrollen im Tiefdruck (1988)";
 constexpr std::string_view kOutOfPlane =
-    "rule of thumb: out-of-plane modulus of paper near E_MD/200, docs/material-sources.md";
-constexpr std::string_view kTransverseShear = "rule of thumb: a few per cent of E_MD, docs/material-sources.md";
+    "rule of thumb: out-of-plane modulus of paper near E_MD/200, docs/reference/material-sources.md";
+constexpr std::string_view kTransverseShear = "rule of thumb: a few per cent of E_MD, docs/reference/material-sources.md";
 constexpr std::string_view kInPlaneAssumed =
-    "assumed: in-plane values typical of paperboard (CD stiffness about 60 % of MD), docs/material-sources.md";
+    "assumed: in-plane values typical of paperboard (CD stiffness about 60 % of MD), docs/reference/material-sources.md";
 constexpr std::string_view kSmallOutOfPlanePoisson =
-    "rule of thumb: out-of-plane Poisson ratios of paper are small, docs/material-sources.md";
+    "rule of thumb: out-of-plane Poisson ratios of paper are small, docs/reference/material-sources.md";
 constexpr std::string_view kJorkama =
-    "Jorkama & von Hertzen: wound roll radial modulus of order 10 MPa (Fig. 4), docs/references.md";
+    "Jorkama & von Hertzen: wound roll radial modulus of order 10 MPa (Fig. 4), docs/reference/references.md";
 constexpr std::string_view kInPlaneEqual =
     "assumed equal to the measured cylinder modulus E_z (a wound roll's MD lies around it)";
 constexpr std::string_view kSteel = "handbook value for structural steel";
 
 // Published values, checked sources and the range to use for every value
-// below: docs/material-sources.md. "Suggested" ranges are judgements, not
+// below: docs/reference/material-sources.md. "Suggested" ranges are judgements, not
 // measurements; no measured out-of-plane constant of a core wall was found.
 std::vector<LibraryValue> paperboard_core() {
     return {
@@ -59,7 +59,7 @@ std::vector<LibraryValue> paperboard_core() {
 
 // A wound rest roll is in-plane isotropic to the precision we know it: the
 // cylinder modulus Ep was measured on the roll, not split into MD and CD.
-// Sources and ranges: docs/material-sources.md, "Rest paper".
+// Sources and ranges: docs/reference/material-sources.md, "Rest paper".
 std::vector<LibraryValue> rest_paper(double E_inplane, double density, std::string_view source) {
     return {
         // Jorkama's 9.8 MPa example; a stack's modulus rises with interlayer

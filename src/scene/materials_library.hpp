@@ -1,7 +1,7 @@
 // Named materials a case file can use: material = "paperboard_core", or as the
 // base of an inline table that overrides some values. Every value carries its
 // source, and values that are rules of thumb rather than measurements are
-// flagged, so a scene can list them as assumptions (docs/material-sources.md).
+// flagged, so a scene can list them as assumptions (docs/reference/material-sources.md).
 #pragma once
 
 #include "material/material.hpp"

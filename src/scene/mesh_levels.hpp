@@ -20,7 +20,7 @@ struct MeshLevel {
 };
 
 // Chosen by the accuracy-vs-cost study (`coremodal converge`,
-// docs/accuracy-vs-cost.md): "default" is the cheapest level that puts both
+// docs/validation/accuracy-by-level.md): "default" is the cheapest level that puts both
 // f1 and the first ovalling mode within 1 % of the extrapolated frequency in
 // all three example scenes (worst: f1 of the clamped case 02, 0.6 %; ovalling
 // 0.2-0.4 %). "coarse" keeps f1 within about 1 % but not ovalling (2-3 %:
@@ -33,7 +33,7 @@ struct MeshLevel {
 // locking and reduced integration for curved elements", J. Appl. Mech. 49,
 // 1982). With s = 2 pi R / n_around, s^2 / (R t) = 1 / c^2 where c =
 // n_around / (2 pi sqrt(R / t)). Measured on the n = 2 ovalling mode against
-// the harmonic level (exact around; docs/accuracy-vs-cost.md, "Thin walls"):
+// the harmonic level (exact around; docs/validation/accuracy-by-level.md, "Thin walls"):
 // a steel ring of 0.5 m radius and 20 mm wall at c = 0.51: +45 %, 0.76:
 // +10.8 %, 1.02: +3.7 %, 1.53: +0.8 %; a 76 x 3 mm steel tube at c = 0.70:
 // +15 %, 1.05: +3.4 %, 1.40: +1.1 %. The per-level c keeps every shipped

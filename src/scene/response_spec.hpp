@@ -1,4 +1,4 @@
-// [damping], [excitation] and [response] of a case file (docs/response.md):
+// [damping], [excitation] and [response] of a case file (docs/how-to/response.md):
 // the forced response of a spinning roll to its own imperfections, and the
 // safe web speed read off the amplitude limit. Like [rotation], the tables
 // are read beside the Scene, not into it: the case reader checks them with

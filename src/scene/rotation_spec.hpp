@@ -1,4 +1,4 @@
-// [rotation] of a case file (docs/rotation.md): the roll, its chucks and
+// [rotation] of a case file (docs/how-to/campbell.md): the roll, its chucks and
 // shafts spin about the z axis. One speed: the modes at that speed (`run`);
 // several: a Campbell sweep (`coremodal campbell`). Like [study] and
 // [calibration], the table is read beside the Scene, not into it: the case
@@ -23,7 +23,7 @@ struct RotationSpec {
     bool from_web_speed = false;    // the file gave web speeds
     std::vector<int> excitation_orders = {1, 2};  // k in f = k f_rot: lines drawn, crossings reported
     // The steady centrifugal stress as geometric stiffness, where a level
-    // has a term for it (none at the beam level: docs/rotation.md).
+    // has a term for it (none at the beam level: docs/theory/rotation.md).
     bool centrifugal_stiffening = true;
     // operating_speeds: the speeds the machine runs at, [lowest, highest] in
     // Hz, inside the sweep (a critical speed is only known there); or none.

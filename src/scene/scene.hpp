@@ -42,7 +42,7 @@ struct ExpandingElement {
 };
 
 // How the core is held over the expanding elements (Ilomäki I-6,
-// docs/chucks.md): bonded = shared displacements; spring = a distributed
+// docs/theory/chucks.md): bonded = shared displacements; spring = a distributed
 // spring layer with normal and tangential stiffness per unit area.
 enum class InterfaceKind { bonded, spring };
 
@@ -50,7 +50,7 @@ enum class InterfaceKind { bonded, spring };
 // elements, in tension and compression alike (an expanded chuck); one_sided =
 // a not-expanded chuck: the bore rests on the chuck body across the radial
 // clearance under gravity, contact in compression only, closed over the arc
-// the static solve finds (docs/chucks.md, "A chuck that was not expanded").
+// the static solve finds (docs/theory/chucks.md, "A chuck that was not expanded").
 enum class ContactKind { uniform, one_sided };
 
 struct ChuckInterface {
@@ -92,7 +92,7 @@ struct ChuckSpec {
 };
 
 // [web]: the paper web leaving the roll along one line of its outer surface
-// towards the first guide roller (effects/web.hpp, docs/web.md).
+// towards the first guide roller (effects/web.hpp, docs/theory/web.md).
 struct WebSpec {
     double tension = 0;        // N/m, per unit width
     double span = 0;           // m, roll surface to the guide roller

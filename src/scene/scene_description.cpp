@@ -277,7 +277,7 @@ private:
                 add("[mesh] around", std::to_string(m.n_around),
                     from_level + ": its " + std::to_string(named->n_around) + " raised for the thin wall (" +
                         significant(named->around_per_slenderness, 2) +
-                        " x 2 pi sqrt(R / t), docs/accuracy-vs-cost.md, \"Thin walls\")");
+                        " x 2 pi sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")");
             } else {
                 count("around", m.n_around);
             }
@@ -317,7 +317,7 @@ std::string effect_detail(const Scene& s, const std::string& effect) {
         return out;
     }
     if (effect == "contact_compliance")
-        return "a spring layer between chuck and bore (k_n, k_t per unit area, contact law of docs/chucks.md) at the " +
+        return "a spring layer between chuck and bore (k_n, k_t per unit area, contact law of docs/theory/chucks.md) at the " +
                chuck_names(s, [](const ChuckSpec& c) { return c.interface.kind == InterfaceKind::spring; }) +
                " chuck(s)";
     if (effect == "one_sided_contact")

@@ -15,7 +15,7 @@
 namespace coremodal {
 
 // Which keys were given, as dotted paths in the style of a study's keys
-// (docs/studies.md): "core.wall", "core.material.E_z", "supports.left",
+// (docs/how-to/studies.md): "core.wall", "core.material.E_z", "supports.left",
 // "supports.left.expanding.1.width" (items of an array of tables from 1).
 struct KeySources {
     std::set<std::string> in_file;
@@ -40,7 +40,7 @@ std::string describe_effects(const Scene& scene);
 std::string describe_assumptions(const Scene& scene);
 
 // [damping], [excitation] and [response] as the forced response will use
-// them (docs/response.md), one line each: the damping's base, families and
+// them (docs/how-to/response.md), one line each: the damping's base, families and
 // single modes, the excitation, the speeds, the limit and the probes.
 std::string describe_response(const ResponseSetup& setup);
 

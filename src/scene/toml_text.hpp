@@ -6,7 +6,7 @@
 // U+FB26 to U+FEFE is whitespace (toml++ issue #190, fixed upstream after 3.3.0). It asks in keys,
 // in bare values and whatever follows them up to a terminator, between
 // tokens, and after a backslash in a multi-line string: a file holding only
-// "ä" is enough (the case fuzzer's first finding, docs/validation.md).
+// "ä" is enough (the case fuzzer's first finding, docs/validation/reliability.md).
 //
 // So toml++ never sees those characters: each becomes a private-use code
 // point (from U+E000 on), which toml++ handles like any other character,

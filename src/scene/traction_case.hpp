@@ -1,5 +1,5 @@
 // A case file's [traction] table: one roller under the web (Rice & Gans,
-// docs/traction.md), read through the case reader like every other table
+// docs/how-to/traction.md), read through the case reader like every other table
 // (scene/case_reader_traction.cpp): keys, units and ranges from
 // scene/case_schema.cpp, errors "FILE:LINE:COL: [traction] wrap = -5 deg
 // must be positive".

@@ -61,7 +61,7 @@ public:
         s.name = text(root, "", "name").value_or(std::filesystem::path(path_).stem().string());
         s.description = text(root, "", "description").value_or("");
         const toml::table* sel = root["selection"].as_table();
-        if (!sel) fail(root.source(), "no [selection] table; expected a core-selection file (docs/durability.md)");
+        if (!sel) fail(root.source(), "no [selection] table; expected a core-selection file (docs/how-to/durability.md)");
         check_keys(*sel, "[selection]", kSelectionKeys);
         const std::string t = "selection";
         take(*sel, t, "failure_probability", Dimension::dimensionless, 0, 0.5, s.failure_probability,
@@ -400,12 +400,12 @@ std::string selection_json_schema() {
                                   {"reel", list_of(table(kReelKeys, {"stand", "width", "diameter"}), 0)}});
     Json root = table(kTopKeys, {"selection"}, {{"selection", selection}});
     root["$schema"] = kJsonSchemaDraft;
-    root["title"] = "coremodal core-selection file ([selection], docs/durability.md)";
+    root["title"] = "coremodal core-selection file ([selection], docs/how-to/durability.md)";
     return root.dump(2) + "\n";
 }
 
 SelectionScene read_selection_text(const std::string& text, const std::string& path) {
-    const toml::table root = parse_toml_input(text, path, "a valid TOML core-selection file (docs/durability.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML core-selection file (docs/how-to/durability.md)");
     try {
         return SelectionReader(path).read(root);
     } catch (const InputError& e) {

@@ -1,4 +1,4 @@
-// A core-selection file's [selection] table (docs/durability.md, "Choosing a
+// A core-selection file's [selection] table (docs/how-to/durability.md, "Choosing a
 // core: coremodal select"): core grades with their durability, stands with
 // their unwinder chuck, winder and speed, the paper, and the reels to check.
 // All SI inside: m, Pa, kg/m^3, m/s, N. Defaults cite M. Ilomäki, "On the

@@ -23,7 +23,7 @@ double groove_depth_at(const Grooves& g, double y) {
     switch (g.shape) {
         case GrooveShape::none:
             return 0.0;
-        case GrooveShape::sine:  // one cosine dip, G_D deep: amplitude G_D / 2 (docs/traction.md, eq. 16)
+        case GrooveShape::sine:  // one cosine dip, G_D deep: amplitude G_D / 2 (docs/how-to/traction.md, eq. 16)
             return 0.5 * g.depth * (1.0 - std::cos(2.0 * std::numbers::pi * y / g.width));
         case GrooveShape::circular: {  // a circle of radius r_tool whose lowest point is G_D deep {18}
             const double x = y - 0.5 * g.width;

@@ -1,7 +1,7 @@
 // Web-to-roller traction: whether a web holds on a roller at speed, after
 // B. S. Rice and R. F. Gans, "A simple model to predict web-to-roller
 // traction" (Eastman Kodak Company / University of Rochester; equation
-// numbers {n} below are the paper's). docs/traction.md gives the theory, our
+// numbers {n} below are the paper's). docs/how-to/traction.md gives the theory, our
 // reading of each equation and the validity limits.
 //
 // The air dragged into the gap between web and roller carries part of the
@@ -108,7 +108,7 @@ double circular_groove_effective_depth(const Grooves& g, double offset = 0);
 
 // h_eff of the roller and web: {6} for a plain roller; for a grooved one
 // {16} or {18}+{19} with the asperity height alpha added to the local gap
-// everywhere (lands and grooves: our reading, docs/traction.md), so that
+// everywhere (lands and grooves: our reading, docs/how-to/traction.md), so that
 // alpha -> 0 gives the paper's printed clearances and G_D -> 0 the plain
 // roller's alpha.
 EffectiveClearance effective_clearance(const TractionSpec& spec);

@@ -1,6 +1,6 @@
 // Rice & Gans' traction model over a range of web speeds, beside the same
 // roller without its grooves: what `coremodal traction` reports
-// (docs/traction.md).
+// (docs/how-to/traction.md).
 #pragma once
 
 #include "traction/traction_model.hpp"

@@ -1,6 +1,6 @@
 // The nip of a paper roll pressed against a drum (or the rider roll) by a
 // line load: Jorkama & von Hertzen's contact of a soft roll on a hard
-// cylinder (Jorkama & von Hertzen eq. (5); docs/winder.md, "The nip").
+// cylinder (Jorkama & von Hertzen eq. (5); docs/how-to/winder.md, "The nip").
 //
 //   a      = sqrt(2 d* P / (pi E*)),   d* = (1/d + 1/d1)^-1,  E* = E / (1 - nu^2)
 //   delta  = P (1 - nu^2) / (pi E) * [2 ln(2d/a) - 1]

@@ -1,5 +1,5 @@
 // A closed-form estimate of the lowest drum bending frequency with the rolls
-// on the drums, for isotropic drum bearings (docs/winder.md, "The
+// on the drums, for isotropic drum bearings (docs/how-to/winder.md, "The
 // drum-frequency estimate").
 //
 // NOT the paper's eq. 9: Jorkama & von Hertzen's text was not available to

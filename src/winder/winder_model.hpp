@@ -1,4 +1,4 @@
-// The two-drum winder at one roll diameter as a beam network (docs/winder.md).
+// The two-drum winder at one roll diameter as a beam network (docs/how-to/winder.md).
 //
 // Geometry (a cross-section, looking along the drums): x horizontal from the
 // front drum towards the rear one, y up, z along the drums. The drum centres

@@ -152,7 +152,7 @@ public:
         }
         scene.description = text(root, "", "description").value_or("");
         const toml::table* winder = root["winder"].as_table();
-        if (!winder) fail(root.source(), "no [winder] table; expected a winder case file (docs/winder.md)");
+        if (!winder) fail(root.source(), "no [winder] table; expected a winder case file (docs/how-to/winder.md)");
         take(*winder, "winder", "web_speed", scene.web_speed);
         read_drums(sub(*winder, "drums"), scene.drums);
         read_rolls(sub(*winder, "rolls"), scene.rolls);
@@ -418,7 +418,7 @@ private:
 }  // namespace
 
 WinderScene read_winder_text(std::string_view text, const std::string& path) {
-    const toml::table root = parse_toml_input(text, path, "a valid TOML winder file (docs/winder.md)");
+    const toml::table root = parse_toml_input(text, path, "a valid TOML winder file (docs/how-to/winder.md)");
     try {
         return WinderReader(path).read(root);
     } catch (const InputError& e) {  // a key echoed in a message: the user's characters
@@ -486,7 +486,7 @@ std::string winder_json_schema() {
     }
     Json root = table_of("");
     root["$schema"] = kJsonSchemaDraft;
-    root["title"] = "coremodal two-drum winder case file ([winder], docs/winder.md)";
+    root["title"] = "coremodal two-drum winder case file ([winder], docs/how-to/winder.md)";
     root["required"] = Json::array({"winder"});
     Json definitions = Json::object();
     for (const auto& [name, table] : tables)

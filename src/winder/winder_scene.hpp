@@ -7,7 +7,7 @@
 // value (a 9.1 m winder, five 1.68 m rolls, 10 m drums of 0.85 m with a 50 mm
 // wall, roll radial modulus 9.8 MPa, nu = 0.3, roll diameters 0.4-1.8 m;
 // Jorkama & von Hertzen, Fig. 4, and the issue that asked for the winder). Every other
-// default is an assumption, marked so beside it with its range; docs/winder.md
+// default is an assumption, marked so beside it with its range; docs/how-to/winder.md
 // lists them all and cases/11-two-drum-winder.toml shows them in use.
 #pragma once
 
@@ -32,7 +32,7 @@ struct WinderDrums {
     std::string material = "steel";  // library name (scene/materials_library): E 210 GPa, 7850 kg/m^3
     // N/m of each bearing (and its housing and frame): an assumption, range
     // 1e7-1e11 N/m. Isotropic (equal) is the case of the drum-frequency
-    // estimate (docs/winder.md); horizontal defaults to vertical.
+    // estimate (docs/how-to/winder.md); horizontal defaults to vertical.
     double bearing_stiffness_vertical = 1e9;
     double bearing_stiffness_horizontal = 1e9;
     // N/m of the roll-drum nips. Unset (default): from the roll's equilibrium,
@@ -42,7 +42,7 @@ struct WinderDrums {
 };
 
 enum class RollModel {
-    rigid,  // each roll a rigid body: the default (docs/winder.md says why)
+    rigid,  // each roll a rigid body: the default (docs/how-to/winder.md says why)
     beam,   // each roll a Timoshenko beam of core and paper (its own bending)
 };
 
@@ -60,7 +60,7 @@ struct WinderRolls {
     // rest_paper, Ep = 5 GPa measured on rest rolls (Ilomäki).
     std::string paper_material = "rest_paper";
     // kg/m^3 of the wound paper: an assumption (fine papers' sheet densities are
-    // 700-850 kg/m^3, docs/material-sources.md); range 300-1500.
+    // 700-850 kg/m^3, docs/reference/material-sources.md); range 300-1500.
     double paper_density = 800.0;
     double radial_modulus = 9.8e6;  // Pa, E of the nip: the paper's 9.8 MPa; range 1-100 MPa
     double poisson = 0.3;           // nu of the nip: the paper's 0.3; range 0-0.49
@@ -85,7 +85,7 @@ struct WinderRider {
 };
 
 // Modal damping ratios by modal strain energy: each mode's ratio is the
-// energy-weighted mean of these (docs/winder.md, "Response").
+// energy-weighted mean of these (docs/how-to/winder.md, "Response").
 struct WinderDamping {
     double drums = 0.01;  // drum bending and bearings: assumed, ζ of steel structures 0.005-0.02 (Ilomäki I-1...I-4)
     double nips = 0.05;   // nip springs (the paper's compression): assumed, range 0.005-0.3
@@ -121,7 +121,7 @@ struct WinderScene {
 // The winder case file's keys as a JSON Schema (draft-07), generated from the
 // reader's key table: each key's table, type, unit pattern, the SI bounds of
 // plain numbers and the string choices (`coremodal schema --winder`; editors
-// as for the case schema, docs/case-files.md "Editor support").
+// as for the case schema, docs/reference/case-files.md "Editor support").
 std::string winder_json_schema();
 
 // Reads a winder case file. Throws InputError (file:line:col, the key, what

@@ -2,7 +2,7 @@
 // sweep, followed from diameter to diameter by MAC (modes/tracking), the roll
 // rotation harmonics f_k = k v / (pi d), their crossings with the
 // drum-dominated frequencies, and the response X/F at a drum's centre
-// (docs/winder.md, "The crossing diagram").
+// (docs/how-to/winder.md, "The crossing diagram").
 #pragma once
 
 #include "winder/winder_estimate.hpp"

@@ -140,7 +140,7 @@ TEST_CASE("coremodal check shows every default it filled in, with its origin", "
         INFO("stdout: " << t.out << "\nstderr: " << t.err);
         REQUIRE(t.exit_code == 0);
         CHECK(has_line(t.out, {"[mesh] around = 48", "from the level: its 32 raised for the thin wall (1.5 x 2 pi "
-                                                     "sqrt(R / t), docs/accuracy-vs-cost.md, \"Thin walls\")"}));
+                                                     "sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")"}));
         const Run coarse = run_coremodal(dir, "check thin.toml --mesh coarse");
         CHECK(has_line(coarse.out, {"[mesh] around = 32", "command line (--mesh): its 16 raised for the thin wall"}));
     }
@@ -179,7 +179,7 @@ TEST_CASE("coremodal check describes the forced response's damping, excitation a
         run_coremodal(dir, "check '" + std::string(COREMODAL_SOURCE_DIR) + "/cases/13-rest-roll-response-150x15.8-4320.toml'");
     INFO("stderr: " << r.err);
     REQUIRE(r.exit_code == 0);
-    CHECK(has_line(r.out, {"forced response (docs/response.md):"}));
+    CHECK(has_line(r.out, {"forced response (docs/how-to/response.md):"}));
     CHECK(has_line(r.out, {"damping of every mode not named below: [damping] ratio = 0.01"}));
     CHECK(has_line(r.out, {"excitation: bow 0.0005 m (half_sine)", "gravity on"}));
     CHECK(has_line(r.out, {"speeds: 301 rotation speeds from", "(from web speeds at the roll's outer diameter)"}));

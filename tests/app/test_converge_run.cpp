@@ -31,7 +31,7 @@ namespace {
 
 // The 3D orthotropic solid against the Timoshenko beam (Cowper's shear
 // factor) on this slender free tube: 1.001 at the default mesh
-// (docs/validation.md); the gap is model form, not mesh.
+// (docs/validation/models.md); the gap is model form, not mesh.
 constexpr double kSolidVersusTimoshenko = 0.005;
 
 struct Output {
@@ -117,7 +117,7 @@ TEST_CASE("Converge on case 01: f1 extrapolates to the Timoshenko value at the r
     CHECK(r.order > 3.0);
     CHECK(r.order < 5.0);
     // The extrapolated value agrees with the default mesh (133.36 Hz,
-    // docs/validation.md, to its printed digits) within the error estimate ...
+    // docs/validation/models.md, to its printed digits) within the error estimate ...
     CHECK(std::abs(r.f0 - 133.36) <= r.error_estimate + 0.005);
     // ... and with the Timoshenko free-free beam within the error estimate
     // plus the solid-versus-beam model gap.
@@ -198,7 +198,7 @@ TEST_CASE("The beam ladder on the free-free core: order 4, and the analytic Timo
 
     // The three-node Timoshenko element (quadratic w and phi, reduced shear
     // integration, consistent mass) converges eigenvalues as h^(2p) = h^4 for
-    // p = 2 (docs/beam.md). Measured on this ladder: 3.99 (coarser triple
+    // p = 2 (docs/theory/beam.md). Measured on this ladder: 3.99 (coarser triple
     // 3.98); the band is a few times the spread over cases 01, 03 and 07
     // (3.99 to 4.00 finest, 3.98 to 3.99 coarser) and far from h^2.
     const Scene scene = parse_case_file(case_file("01-iso-free-free-76x15.toml"));
@@ -380,7 +380,7 @@ TEST_CASE("The harmonic ladder on the free-free core: f1 asymptotic at the rate 
     CHECK(r.order == Approx(4.0).margin(0.25));
     REQUIRE(r.previous_order);
     CHECK(*r.previous_order == Approx(4.0).margin(0.25));
-    // The solid's six-level f0 (133.3596 Hz, docs/accuracy-vs-cost.md, to its
+    // The solid's six-level f0 (133.3596 Hz, docs/validation/accuracy-vs-cost.md, to its
     // printed digits): measured 133.35961 Hz, 1e-5 Hz apart.
     CHECK(std::abs(r.f0 - 133.3596) < 2e-4);
 }

@@ -73,7 +73,7 @@ TEST_CASE("coremodal select writes the chart, the table per stand and the reels'
     CHECK(r.out.find("select: stand news: 110 mm chucks (k = 0.85), two-drum winder, 15 m/s") != std::string::npos);
     CHECK(r.out.find("select: assumed: width limit: the `coremodal limits` verdict at the beam level") !=
           std::string::npos);
-    // The width limit is the limits verdict's (I-5 governs case 18 everywhere; docs/durability.md).
+    // The width limit is the limits verdict's (I-5 governs case 18 everywhere; docs/how-to/durability.md).
     CHECK(r.out.find("core A: max roll 1346 kg (13.2 kN), width for the speed 2.145 m (I-5 x0.7; I-7 alone 2.145 m)") !=
           std::string::npos);
     CHECK(r.out.find("select: reel 1 (news, 1.6 m x 1000 mm, 15 m/s): passes A, B; lightest A; cheapest A") !=

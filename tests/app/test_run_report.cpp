@@ -24,7 +24,7 @@ namespace {
 // A clamped steel tube 76 x 15 mm, 0.5 m, 3,168 DOFs: a second or two to
 // solve. 16 around, so that the run has nothing to warn about: at 8 around
 // its first ovalling pair was 14 % above the harmonic level's (exact around)
-// and the run said so; at 16 it is 1.2 % above (docs/accuracy-vs-cost.md,
+// and the run said so; at 16 it is 1.2 % above (docs/validation/accuracy-by-level.md,
 // "Does the mesh resolve the band"). Seven modes end on that complete pair.
 const std::string kClampedTube = R"(name = "clamped-tube"
 description = "A short clamped steel tube"

@@ -6,7 +6,7 @@
 namespace coremodal::testing {
 
 // A paperboard-like set: radial modulus two orders below the in-plane ones,
-// transverse shear soft, nu_zr = 0.002 * 6.5e9 / 33e6 = 0.39 (docs/material-sources.md).
+// transverse shear soft, nu_zr = 0.002 * 6.5e9 / 33e6 = 0.39 (docs/reference/material-sources.md).
 inline OrthotropicMaterial paperboard() {
     OrthotropicMaterial m;
     m.name = "paperboard";

@@ -1,5 +1,5 @@
 // The Timoshenko beam level against the solid level on the same scenes
-// (docs/validation.md; docs/beam.md, "When the beam level holds"). Slender
+// (docs/validation/models.md; docs/theory/beam.md, "When the beam level holds"). Slender
 // tubes: a beam is what they are, and the two models agree within 1 %. A
 // short thick tube: they differ, for reasons a beam cannot represent.
 #include "verification/tube_scenes.hpp"

@@ -143,7 +143,7 @@ TEST_CASE("A free thin ring spinning as fast as it vibrates: Bryan's exact form 
     // cancel for an inextensional wave, leaving in the stationary frame
     //   f = sqrt(f0^2 + beta^2 f_rot^2) +- beta f_rot,  beta = n (n^2 - 1)/(n^2 + 1) = 1.2.
     // Without M_L the ring comes out stiffer, without K_sigma1 softer, by
-    // ~(2 f_rot / f0)^2 of f0^2 (measured below when written: docs/rotation.md).
+    // ~(2 f_rot / f0)^2 of f0^2 (measured below when written: docs/theory/rotation.md).
     // The tolerance: the ring's beta at low speed is 1.20002 (its finite
     // thickness), and the thin-ring cancellation holds to ~(t/R)^2 = 1e-4.
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 128, 2, 16);

@@ -75,7 +75,7 @@ namespace {
 // without the free-span solve (f2 does not change with the chuck): the roll's
 // first lateral resonance in the vertical plane, whether its label is
 // bending or, where the roll moves almost rigidly on soft bearings or chucks,
-// support (docs/chucks.md). Stiffer supports raise it whichever side of the
+// support (docs/theory/chucks.md). Stiffer supports raise it whichever side of the
 // label's threshold it falls on: were f1 the first mode labelled bending,
 // these checks would follow the classifier's threshold, not the physics.
 double f1_of(const Scene& s) {

@@ -1,5 +1,5 @@
 // The one-sided contact of chucks not expanded at the coupled-harmonic level
-// (models/coupled/contact_layer, contact_static; docs/harmonic.md "The
+// (models/coupled/contact_layer, contact_static; docs/theory/coupled.md "The
 // one-sided contact"): the static state against the rigid-body closed form
 // and against the 3D solid, the parity of the couplings about the vertical,
 // the modes verified and falling with N, and against the solid mode by mode.
@@ -191,7 +191,7 @@ TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by 
     // 6 modes: the roll rocking on its arcs, then the split bending pair.
     // The solid at 16 and 32 around (check_within_solid_error); the contact
     // arc's edge cuts its faces, so it converges at first order at worst.
-    // Measured (docs/harmonic.md): the gap is the contact quadrature's.
+    // Measured (docs/theory/coupled.md): the gap is the contact quadrature's.
     const auto scene_at = [](int around, const std::string& level) {
         Scene s = not_expanded(paper_core(0.6, around, 12), 1e9);
         s.analysis.n_modes = 6;
@@ -208,7 +208,7 @@ TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by 
     check_within_solid_error(c, coarse, fine, false);
 }
 
-TEST_CASE("Coupled contact: convergence in N on case 09 (a measurement for docs/harmonic.md, not a check)",
+TEST_CASE("Coupled contact: convergence in N on case 09 (a measurement for docs/theory/coupled.md, not a check)",
           "[.][coupled][contact][convergence]") {
     // build/tests/coremodal_tests "[convergence]" -- prints the static state's
     // arc and peak for N = 8, 16, 32, then, for N = 2 ... 24 (the static state

@@ -1,4 +1,4 @@
-// The coupled-harmonic level (models/coupled, docs/harmonic.md "Coupled
+// The coupled-harmonic level (models/coupled, docs/theory/coupled.md "Coupled
 // harmonics"): with nothing to couple it is the harmonic level; with
 // segmented chucks it agrees with the 3D solid within the solid's own
 // circumferential error; and it converges in N from above. The paper web's
@@ -130,7 +130,7 @@ TEST_CASE("Coupled level: harmonics kept near the pads bound the whole ones from
     CHECK(kept_edge < kZoneEdgeTolerance);
     // A reach too short shows at the zone's edge, and the error it causes is
     // of the order of the edge amplitude squared (error / edge^2 measured
-    // 1 to 44 over reaches of 1/16 to 1 times the default: docs/harmonic.md).
+    // 1 to 44 over reaches of 1/16 to 1 times the default: docs/theory/coupled.md).
     CHECK(cut_edge > kZoneEdgeTolerance);
     CHECK(cut_error > kept_error);
     CHECK(cut_error < 100 * cut_edge * cut_edge);
@@ -250,7 +250,7 @@ TEST_CASE("Coupled level: the sin set of three pads is a signed copy of the cos 
     // diag(s_n) with s_n = +1 for n = 1 mod 3 and -1 for n = 2 mod 3: the
     // pads couple n and m of one class through C(n - m) alike in both
     // families, and of opposite classes through C(n + m), whose sign the sin
-    // family turns (docs/harmonic.md). Checked on the assembled matrices.
+    // family turns (docs/theory/coupled.md). Checked on the assembled matrices.
     const Scene scene = segmented_chucks(3, 60, 16, 8);
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");

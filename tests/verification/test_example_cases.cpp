@@ -55,7 +55,7 @@ TEST_CASE("Case 02: a core clamped over 70 mm bends well below the clamped beam 
     check_verified(r);
     CHECK(r.modes.modes[0].label.type == "bending");
     // Default mesh: 61.44 Hz = 0.889 x Timoshenko: the shear-soft wall lets a
-    // short clamp rotate (docs/validation.md: physics, not an error).
+    // short clamp rotate (docs/validation/models.md: physics, not an error).
     CHECK(r.beam.fe_first_bending_hz == Approx(61.44).epsilon(0.01));
     CHECK(r.beam.fe_over_timoshenko < 0.95);
 }
@@ -146,7 +146,7 @@ TEST_CASE("Case 13: the bowed rotogravure rest roll reaches +-5 mm only at its o
                                                "/cases/13-rest-roll-response-150x15.8-4320.toml");
     REQUIRE(c.response);
     const ResponseResult r = run_forced_response(c.scene, *c.response);
-    // The tutorial's numbers (docs/response.md): one order-1 peak of the
+    // The tutorial's numbers (docs/how-to/response.md): one order-1 peak of the
     // first bending pair, 5.155 mm at 16.74 m/s; the limit at 16.70 m/s.
     REQUIRE(r.peaks.size() == 1);
     CHECK(r.peaks[0].order == 1);
@@ -168,7 +168,7 @@ TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of 
     REQUIRE(c.response);
     c.scene.model = "harmonic";
     const ResponseResult r = run_forced_response(c.scene, *c.response);
-    // docs/response.md, "The beam and harmonic levels on one scene": f1
+    // docs/validation/response.md, "The three levels on one scene": f1
     // 25.789 Hz (beam 26.308), the peak 5.444 mm at 16.41 m/s (beam 5.155 mm
     // at 16.74 m/s: 0.980 of the speed, as f1), the limit at 16.34 m/s.
     REQUIRE(r.level == "harmonic");
@@ -184,7 +184,7 @@ TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of 
     CHECK(r.checks.direct_max_relative < 1e-2);
 }
 
-TEST_CASE("Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/response.md",
+TEST_CASE("Case 14: the study of case 13's rest paper gives the amplitude-based safe speed of docs/how-to/response.md",
           "[cases][response][study]") {
     const CaseSweep sweep = CaseSweep::read(std::string(COREMODAL_SOURCE_DIR) + "/cases/14-study-response-safe-speed.toml",
                                             "study");
@@ -192,7 +192,7 @@ TEST_CASE("Case 14: the study of case 13's rest paper gives the amplitude-based 
     const StudyResult result = run_sweep(sweep, {true}, progress);
     REQUIRE(result.n_failed() == 0);
     REQUIRE(result.points.size() == 5);
-    // docs/response.md's table, "by hand" and from the study alike: 5 mm of
+    // docs/how-to/response.md's table, "by hand" and from the study alike: 5 mm of
     // paper stays below +-5 mm (peak 4.78 mm); 10, 20, 40, 80 mm reach it at
     // 16.70, 16.72, 17.61, 20.54 m/s; I-5 x 0.7 is 11.89 ... 14.69 m/s.
     const StudyResponse& thin = *result.points[0].response;

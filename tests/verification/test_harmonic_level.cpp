@@ -56,7 +56,7 @@ TEST_CASE("Harmonic level against the solid: same modes, same names, the same fr
         // Measured on these 14 modes (bending, axial, torsion): -0.0006 % to
         // +0.002 %. The solid's elements around stiffen it; its quadratic arcs,
         // not exact circles (mass 1e-5 low at 24 around), can make it a hair
-        // softer: 1e-4 below is allowed, 0.5 % above (ovalling, docs/validation.md).
+        // softer: 1e-4 below is allowed, 0.5 % above (ovalling, docs/validation/models.md).
         CHECK(b.frequency_hz >= a.frequency_hz * (1 - 1e-4));
         CHECK(b.frequency_hz <= a.frequency_hz * 1.005);
     }

@@ -164,7 +164,7 @@ TEST_CASE("Harmonic and beam levels give the same response within their differen
     // A 4 m rest roll in rigid clamps (isotropic), bow, unbalance and an oval
     // core under gravity, 5-30 m/s: both levels find the order-1 peak at the
     // first bending pair and the order-2 peak at half its speed. Measured
-    // (docs/response.md, "The three levels"): f1 33.241 / 32.612 Hz (beam /
+    // (docs/validation/response.md, "The three levels"): f1 33.241 / 32.612 Hz (beam /
     // harmonic, coarse section; -1.9 %: the 3D wall against Timoshenko beam
     // theory at the clamp edges), order-1 peak 20.53 / 20.14 m/s and
     // 9.115 / 9.244 mm, order-2 peak 10.27 / 10.07 m/s and 0.161 / 0.167 mm,
@@ -256,7 +256,7 @@ TEST_CASE("Solid and harmonic levels give the same response on one section", "[r
     // The 2 m clamped roll on the coarse mesh at both levels: the solid's
     // 3D cells are the section turned (16 around), its G the same spin term
     // in Cartesian components, its loads the same fields as nodal forces.
-    // Measured on the 4 m roll (docs/response.md): f1 32.611 / 32.612 Hz,
+    // Measured on the 4 m roll (docs/validation/response.md): f1 32.611 / 32.612 Hz,
     // order-1 peak 9.244 mm at 20.14 m/s at both levels, order-2 0.1667 mm.
     ExcitationSpec x;
     x.bow_m = 0.5e-3;
@@ -267,7 +267,7 @@ TEST_CASE("Solid and harmonic levels give the same response on one section", "[r
     REQUIRE(solid.level == "solid");
     REQUIRE(harmonic.peaks.size() == 1);
     REQUIRE(solid.peaks.size() == 1);
-    // The solid's 16 quadratic cells around: 1e-4 stiffer (docs/harmonic.md).
+    // The solid's 16 quadratic cells around: 1e-4 stiffer (docs/theory/harmonic.md).
     CHECK(solid.speeds_at_rest.f1_hz == Approx(harmonic.speeds_at_rest.f1_hz).epsilon(1e-3));
     CHECK(solid.peaks[0].web_speed_m_s == Approx(harmonic.peaks[0].web_speed_m_s).epsilon(1e-3));
     CHECK(solid.peaks[0].amplitude_m == Approx(harmonic.peaks[0].amplitude_m).epsilon(1e-2));

@@ -1,4 +1,4 @@
-// An isotropic steel tube against closed forms (docs/validation.md): the
+// An isotropic steel tube against closed forms (docs/validation/models.md): the
 // whole pipeline (gmsh mesh, assembly, SLEPc solve, classification) at once.
 #include "verification/tube_scenes.hpp"
 

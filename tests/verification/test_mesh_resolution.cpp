@@ -129,7 +129,7 @@ TEST_CASE("A solid run whose mesh does not resolve its ovalling says so, by how 
     CHECK(h.warnings.empty());
 
     // 16 around (c = 16 / (2 pi sqrt(R / t)) = 0.51): the solid's n = 2 pair
-    // locks 45 % high (docs/accuracy-vs-cost.md, "Thin walls"); the run warns,
+    // locks 45 % high (docs/validation/accuracy-by-level.md, "Thin walls"); the run warns,
     // names the mode, both frequencies, and the level whose count fixes it
     // (default: 48 around, measured 0.8 %).
     const RunReport coarse = solve_quietly(ring);

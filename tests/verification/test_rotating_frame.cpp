@@ -1,5 +1,5 @@
 // The solid level's co-rotating path (models/solid/rotating_frame,
-// docs/rotation.md "Scenes that are not bodies of revolution"). The
+// docs/theory/rotation-solid.md "Scenes that are not bodies of revolution"). The
 // strongest truth it has is the stationary-frame path: on a body of
 // revolution both are exact, with different gyroscopic matrices (G_c =
 // 2 int rho N^T J N dV against element_gyroscopic's L) and different

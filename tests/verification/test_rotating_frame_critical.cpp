@@ -1,4 +1,4 @@
-// Critical speeds in co-rotating coordinates (docs/rotation.md, "Critical
+// Critical speeds in co-rotating coordinates (docs/theory/rotation-solid.md, "Critical
 // speeds in co-rotating coordinates"): the speeds where a mode's
 // rotating-frame frequency is zero are the eigenvalues Omega^2 of the pencil
 // (K, M_P - K_sigma1) (eigensolve/zero_frequency_speeds.hpp). Truths: the

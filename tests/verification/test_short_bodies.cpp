@@ -69,7 +69,7 @@ void check_same_modes(const RunReport& solid, const RunReport& harmonic) {
     }
 }
 
-// Thin ring in its plane, n waves around (docs/validation.md): a narrow ring
+// Thin ring in its plane, n waves around (docs/validation/models.md): a narrow ring
 // (L^2 / (R t) = 0.2) bends in plane stress, so E, not E / (1 - nu^2).
 double thin_ring_hz(const Scene& s, int n) {
     const double t = (s.core.outer_diameter - s.core.inner_diameter) / 2;

@@ -1,5 +1,5 @@
 // The winder's beam model against the axisymmetric-harmonic level, body by
-// body, at one roll diameter (docs/winder.md, "Against the harmonic level at
+// body, at one roll diameter (docs/how-to/winder.md, "Against the harmonic level at
 // one diameter"). The winder scene itself (two drums, rolls nipped along
 // lines) is not a body of revolution, so neither the solid nor the harmonic
 // level can take it whole; its components can: the drum tube (free-free and on
@@ -74,7 +74,7 @@ std::string drum_case(const WinderScene& s) {
 // The head must be stiff: the beam's bearing holds a rigid section. On rigid
 // bearings (1e13 N/m), against the simply supported Timoshenko tube of the
 // same span, the first two modes lie 0.54 % and 1.9 % low with a 20 mm head
-// (it bends and lets the end section deform; docs/winder.md), 0.13 % and
+// (it bends and lets the end section deform; docs/how-to/winder.md), 0.13 % and
 // 0.43 % with 60 mm, 0.02 % and 0.04 % with 100 mm.
 constexpr double kHeadThickness = 0.1;  // m
 constexpr double kStubShaft = 0.001;    // m
@@ -135,7 +135,7 @@ BeamSection drum_section(const WinderScene& s) {
 }
 
 // The thin ring's inextensional ovalling in plane strain, at the wall's
-// mid-surface radius (docs/validation.md), Hz.
+// mid-surface radius (docs/validation/models.md), Hz.
 double ring_ovalling_hz(const WinderScene& s, int n) {
     const OrthotropicMaterial steel = winder_material(s.drums.material);
     const double t = s.drums.wall, R = (s.drums.outer_diameter - t) / 2, I = t * t * t / 12;
@@ -288,7 +288,7 @@ TEST_CASE("A winder roll at 1.2 m: the beam roll is the Timoshenko beam of its s
     // measured 384 Hz against 513 Hz (the winder 33 % high) and 126 Hz.
     CHECK(f_harmonic < f_winder);
     CHECK(f_harmonic > f_soft);
-    CHECK(f_winder / f_harmonic - 1 > 0.2);  // the inconsistency docs/winder.md reports
+    CHECK(f_winder / f_harmonic - 1 > 0.2);  // the inconsistency docs/how-to/winder.md reports
 
     // The difference is the paper's out-of-plane compliance alone: with E_r,
     // G_rtheta and G_rz raised to the in-plane values the harmonic roll is the

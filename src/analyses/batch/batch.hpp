@@ -54,17 +54,17 @@ std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs
 // Whether a case file names its own mesh ([mesh] file = ...); false when
 // the file cannot be read or parsed (the child run will report that).
 bool case_has_mesh_file(const std::string& case_file);
-// Whether a case file describes a two-drum winder ([winder], docs/winder.md):
+// Whether a case file describes a two-drum winder ([winder], docs/how-to/winder.md):
 // batch runs it with `coremodal winder` rather than `coremodal run`.
 bool is_winder_file(const std::string& case_file);
-// Whether a file is a core-selection file ([selection], docs/durability.md):
+// Whether a file is a core-selection file ([selection], docs/how-to/durability.md):
 // batch runs it with `coremodal select`.
 bool is_selection_file(const std::string& case_file);
 // Whether the file is for `coremodal traction` alone: [traction] and no roll
-// ([core]) (docs/traction.md); batch runs it with that command.
+// ([core]) (docs/how-to/traction.md); batch runs it with that command.
 bool is_traction_file(const std::string& case_file);
 // Whether the file is a fit's measurements file ([[measurement]] or
-// parameters, and no roll; docs/calibration.md): batch runs it with `coremodal fit`.
+// parameters, and no roll; docs/how-to/calibration.md): batch runs it with `coremodal fit`.
 bool is_fit_file(const std::string& case_file);
 
 // Runs every case, at most `jobs` at a time, printing one progress line per

@@ -1,6 +1,6 @@
 // `coremodal calibrate`: the chuck factor k of every point of a
 // [calibration] sweep, fitted as a function of dimensionless groups
-// (beam/chuck_calibration.hpp), checked on held-out points (docs/calibration.md).
+// (beam/chuck_calibration.hpp), checked on held-out points (docs/how-to/calibration.md).
 // Its files: output/calibration_report.hpp and beam/chuck_calibration.hpp (calibration.toml).
 #pragma once
 

@@ -2,6 +2,7 @@
 
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 
+#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"
@@ -133,7 +134,7 @@ std::vector<std::string> solid_notes(const RotationSpec& rotation, const Rotatin
             "M_P)) q = 0, the Coriolis term G_c = 2 int rho N^T (e_z x) N dV and the spin softening M_P over every "
             "mass; each mode's rotating-frame frequency f is brought to the stationary frame by the dominant "
             "circumferential harmonic k of its shape on the roll's surface: f_stat = |f - k f_rot|, forward when "
-            "-k (f - k f_rot) > 0 (docs/rotation.md)");
+            "-k (f - k f_rot) > 0 (docs/theory/rotation-solid.md)");
     else
         notes.push_back(
             "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies "
@@ -348,7 +349,7 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     const ProjectedGyroscopic::CountStatistics counts = harmonics.count_statistics();
     out.completeness += "; of " + std::to_string(counts.speeds) + " counts at the band edge, " +
                         std::to_string(counts.certified) + " came from an earlier speed's gap certificate (Weyl's "
-                        "bound on the pencil, docs/rotation.md), " + std::to_string(counts.certificates) +
+                        "bound on the pencil, docs/theory/rotation-harmonic.md), " + std::to_string(counts.certificates) +
                         " made one (two counts; " + std::to_string(counts.certificate_failed) +
                         " failed and counted again) and " + std::to_string(counts.counted) + " counted";
 }

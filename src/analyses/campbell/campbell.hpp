@@ -1,4 +1,4 @@
-// A Campbell diagram of a spinning scene ([rotation], docs/rotation.md) at
+// A Campbell diagram of a spinning scene ([rotation], docs/theory/rotation.md) at
 // the beam level (beam/rotating_modes), the harmonic level
 // (models/harmonic/rotating_harmonics) or the solid level
 // (models/solid/rotating_solid): the modes at every speed of the sweep,
@@ -15,8 +15,8 @@
 #pragma once
 
 #include "beam/beam_model.hpp"
-#include "beam/rotating_modes.hpp"
 #include "beam/speeds.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 

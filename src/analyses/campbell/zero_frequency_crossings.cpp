@@ -69,7 +69,7 @@ std::string sweep_end_text(const RotationSpec& rotation, const RotationSpec& swe
            significant(kSweepEndBelowZeroFrequency, 2) + " of " + rpm_text(limit_hz) +
            ", the lowest speed where a mode's rotating-frame frequency is zero; above that speed the stiffness "
            "K + Omega^2 (K_sigma1 - M_P) is indefinite and the gyroscopic solver's inertia count cannot prove a "
-           "speed's modes complete (docs/rotation.md). The crossings above the sweep's end come from the pencils "
+           "speed's modes complete (docs/theory/rotation-solid.md). The crossings above the sweep's end come from the pencils "
            "only: every order asked of modes with harmonics |k| <= " + std::to_string(kMaxCrossingHarmonic) +
            " (and forward ones of order |k| for every k); other modes' crossings are not reported there";
 }

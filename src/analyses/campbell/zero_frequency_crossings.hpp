@@ -1,5 +1,5 @@
 // Critical speeds of a Campbell sweep in co-rotating coordinates (the solid
-// level's rotating frame, models/solid/rotating_frame.hpp; docs/rotation.md
+// level's rotating frame, models/solid/rotating_frame.hpp; docs/theory/rotation-solid.md
 // "Critical speeds in co-rotating coordinates").
 //
 // Above the lowest speed where a mode's rotating-frame frequency is zero,
@@ -33,7 +33,7 @@ namespace coremodal {
 constexpr double kSweepEndBelowZeroFrequency = 0.98;
 // The largest |k| whose crossings of every wanted order the pencils r > 0
 // cover: the bending pair (k = +-1) and harmonic 0. Each r costs one
-// pencil of twice the size (docs/performance.md); ovalling (|k| = 2) lies
+// pencil of twice the size (bench/results/log.md); ovalling (|k| = 2) lies
 // far above a core's operating speeds.
 constexpr int kMaxCrossingHarmonic = 1;
 // A sweep crossing of the same order and whirl within this share of a

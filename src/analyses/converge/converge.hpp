@@ -3,7 +3,7 @@
 // (median of repeated runs, ladder_runs.hpp), tracks the modes across levels
 // by label and extrapolates their frequencies (model_study.hpp), and writes
 // converge.csv, converge.json, converge.md and error_vs_time.png
-// (output/converge_report.hpp). docs/accuracy-vs-cost.md.
+// (output/converge_report.hpp). docs/validation/accuracy-vs-cost.md.
 #pragma once
 
 #include "analyses/converge/converge_study.hpp"
@@ -16,7 +16,7 @@
 namespace coremodal {
 
 // The finest level's default DOF bound: ~190 k DOFs solve in about 85 s on
-// the 2-core reference machine (docs/performance.md), so that a four-level
+// the 2-core reference machine (bench/results/log.md), so that a four-level
 // study of the 4.32 m rest roll fits in a few minutes.
 inline constexpr long kDefaultMaxDofs = 200000;
 

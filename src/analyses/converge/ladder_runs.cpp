@@ -71,7 +71,7 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     };
     if (!runs.empty()) show();
     // A slow level is timed once: its run-to-run noise is small against its
-    // time, and the study must fit in minutes (docs/performance.md).
+    // time, and the study must fit in minutes (bench/results/log.md).
     auto slow = [&] { return rank0_decides(runs.front().timing_s.total > o.repeat_limit_s); };
     // A ladder with a time budget per level (the beam) stops repeating when
     // its runs have used it.

@@ -4,7 +4,7 @@
 
 #include "analyses/converge/refinement_ladder.hpp"
 #include "modes/mode_set.hpp"
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <vector>
 

@@ -63,7 +63,7 @@ long estimate_dofs(const Scene& scene, const MeshSpec& mesh) {
     MeshSpec tube = mesh;
     tube.n_along = 0;
     for (const AxialSegment& seg : section.segments) tube.n_along += seg.n_elements;
-    // Chucks are meshed with hex20 (docs/chucks.md).
+    // Chucks are meshed with hex20 (docs/theory/chucks.md).
     return estimate_dofs(tube, scene.rest_paper.has_value()) + 3 * count_chuck_hex20_nodes(section);
 }
 

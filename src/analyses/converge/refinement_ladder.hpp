@@ -95,7 +95,7 @@ inline constexpr int kHarmonicExtraLevels = 2;
 // and in the chuck shafts. The three-node Timoshenko element (quadratic
 // interpolation) converges frequencies as h^4: with a unit of 4 elements the
 // triples from k = 2 on are in the asymptotic range for f1, torsion and axial
-// on cases 01, 03 and 07 (observed orders 3.98 to 4.00, docs/accuracy-vs-cost.md),
+// on cases 01, 03 and 07 (observed orders 3.98 to 4.00, docs/validation/accuracy-vs-cost.md),
 // and the finest change (k = 8 to 16, ~1e-6 of f1) stays far above the
 // solver's round-off (kSolverNoise).
 inline constexpr int kBeamUnitElements = 4;

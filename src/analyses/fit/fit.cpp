@@ -16,7 +16,7 @@ namespace {
 
 // Without bounds a parameter may move a factor 10 either way: material
 // constants of paperboard and contact stiffnesses are known to about a factor
-// 3 (docs/material-sources.md), so the truth lies inside and a runaway
+// 3 (docs/reference/material-sources.md), so the truth lies inside and a runaway
 // parameter is stopped where it stops being physical.
 constexpr double kDefaultBoundFactor = 10;
 constexpr int kMaxIterations = 40;

@@ -1,5 +1,5 @@
 // `coremodal fit`: case-file parameters fitted to measured frequencies
-// (docs/calibration.md, "Fitting the model to measured frequencies").
+// (docs/how-to/calibration.md, "Fitting the model to measured frequencies").
 //
 // Unknowns x = ln p (a modulus and a stiffness are positive and known to a
 // factor, not to a number of pascals), within bounds. Residuals

@@ -204,7 +204,7 @@ std::string fit_json_schema() {
               {"uncertainty", frequency},
               {"model", Json{{"enum", Json::array({"beam", "harmonic", "auto"})}}}}}};
     const Json root{{"$schema", kJsonSchemaDraft},
-                    {"title", "coremodal fit measurements file (docs/calibration.md, \"Fitting the model\")"},
+                    {"title", "coremodal fit measurements file (docs/how-to/calibration.md, \"Fitting the model\")"},
                     {"type", "object"},
                     {"additionalProperties", false},
                     {"required", Json::array({"parameters", "measurement"})},

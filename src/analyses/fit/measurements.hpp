@@ -1,4 +1,4 @@
-// The input of `coremodal fit` (docs/calibration.md, "Fitting the model to
+// The input of `coremodal fit` (docs/how-to/calibration.md, "Fitting the model to
 // measured frequencies"):
 //
 //   parameters = ["core.material.E_z", "core.material.G_thetaz"]   # any key a [study] can vary

@@ -115,14 +115,14 @@ void add_span(const BeamFormulaInputs& in, double case_length, BeamFormulas& r) 
     r.L = free_span(r.Lc, r.Li);
 }
 
-// k from a calibration file (coremodal calibrate; docs/calibration.md).
+// k from a calibration file (coremodal calibrate; docs/how-to/calibration.md).
 void apply_calibration(const std::string& file, bool k_given, BeamFormulas& r) {
     if (k_given) throw InputError("--k and --calibration both give the chuck factor; expected one of them");
     const Calibration c = read_calibration(file);
     if (!c.passed)
         throw InputError(file + ": this calibration failed its own check (largest f1 error " +
                          significant(100 * std::max(c.max_error_fit, c.max_error_held_out)) + " % against the stated " +
-                         significant(100 * c.stated_error) + " %); expected a calibration that passed (docs/calibration.md)");
+                         significant(100 * c.stated_error) + " %); expected a calibration that passed (docs/how-to/calibration.md)");
     r.groups = calibration_groups(r.beam, r.section.Ec * r.Ic, r.Li, r.L);
     r.k = calibrated_k(c, *r.groups, r.L, r.Li, r.section.Dp, r.notes);
     if (r.k > 1) {
@@ -199,7 +199,7 @@ void add_amplification(const BeamFormulaInputs& in, BeamFormulas& r) {
     a.d = amplification(a.ratio, a.zeta);
     if (a.zeta_assumed)
         r.notes.push_back("zeta = " + significant(a.zeta) + " assumed for the amplification (cores and rest rolls: "
-                          "0.005-0.02, Ilomäki; docs/references.md); give --zeta");
+                          "0.005-0.02, Ilomäki; docs/reference/references.md); give --zeta");
     r.amplification = a;
 }
 

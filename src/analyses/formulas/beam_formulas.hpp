@@ -1,7 +1,7 @@
 // `coremodal beam`'s analysis: the quick formulas of Ilomäki and König & Müller for
 // one core or rest roll (Ilomäki I-5..I-15, König K-1/K-2) and Euler–Bernoulli
 // and Timoshenko beam frequencies, from a case file and/or values given on
-// the command line. No mesh, no PETSc. Formulas: beam/formulas.hpp; docs/beam.md.
+// the command line. No mesh, no PETSc. Formulas: beam/formulas.hpp; docs/theory/beam.md.
 #pragma once
 
 #include "beam/beam_theory.hpp"
@@ -25,7 +25,7 @@ struct BeamFormulaInputs {
 };
 
 // I-2...4 at one web speed: the roll's first bending mode alone, driven at
-// f_rot = v / (pi Dp) by a load of constant amplitude (docs/response.md for
+// f_rot = v / (pi Dp) by a load of constant amplitude (docs/how-to/response.md for
 // the whole network).
 struct SingleModeAmplification {
     double web_speed_m_s = 0, f_rot_hz = 0, ratio = 0, zeta = 0, d = 0;

@@ -4,6 +4,7 @@
 #include "analyses/limits/limits_band.hpp"
 #include "analyses/run/run.hpp"
 #include "beam/beam_model.hpp"
+#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/join.hpp"
@@ -279,7 +280,7 @@ void warn(LimitsResult& r) {
                              " mm: " + criterion_name(Criterion::i5_low) + " " + range(i5) + " against " +
                              join(apart, ", ") +
                              ": they answer different questions; the verdict takes "
-                             "the lowest (docs/limits.md, "
+                             "the lowest (docs/how-to/limits.md, "
                              "\"Warnings\")");
     for (size_t i = 0; i + 1 < r.points.size(); ++i) {
         const LimitsPoint &a = r.points[i], &b = r.points[i + 1];
@@ -290,7 +291,7 @@ void warn(LimitsResult& r) {
     }
 }
 
-// The forced response's self-check, once per verdict (docs/limits.md, "Speed").
+// The forced response's self-check, once per verdict (docs/how-to/limits.md, "Speed").
 std::string checks_note(const LimitsChecks& c) {
     const ResponseChecks& k = c.checks;
     return "the forced response's superposition checked once, at " + significant(c.diameter_m * 1e3, 5) + " mm (" +
@@ -406,7 +407,7 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
                          ": model = \"coupled\" cannot carry the verdict's critical speeds and "
                          "forced response (the coupled harmonics have no spinning terms yet); "
                          "expected model = \"beam\" or \"harmonic\" (a body of revolution), or "
-                         "\"solid\" (docs/limits.md)");
+                         "\"solid\" (docs/how-to/limits.md)");
     Scene resolved = scene;
     resolved.model = level;
     require_spinning_level(resolved);

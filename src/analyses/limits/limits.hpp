@@ -1,5 +1,5 @@
 // How fast may this roll run in this stand: one verdict over the whole
-// unwind (`coremodal limits`, docs/limits.md). The rest roll unwinds from the
+// unwind (`coremodal limits`, docs/how-to/limits.md). The rest roll unwinds from the
 // case's roll (or [limits] diameters) down to the bare core; at every
 // rest-roll diameter every criterion the project computes gives a web speed,
 // the lowest that limits governs, and a band from the uncertain inputs'
@@ -52,7 +52,7 @@ constexpr double kRangeBottom = 0.05;
 // The band is sampled at every kBandStride-th diameter and the last; between
 // them each criterion's band, relative to its point value, is interpolated
 // linearly in the diameter (the ranges move the speeds by similar fractions
-// along one unwind; docs/limits.md, "The band").
+// along one unwind; docs/how-to/limits.md, "The band").
 constexpr int kBandStride = 4;
 // Speeds of the forced response's grid and of the Campbell sweep per diameter.
 constexpr int kResponsePoints = 121;
@@ -185,7 +185,7 @@ std::string stand_verdict_line(const std::string& case_file);
 
 // The traction criterion of a roller: the speed at which it can no longer
 // carry the tension difference it is given ([traction] tension_difference),
-// else the speed at which traction vanishes altogether (docs/traction.md).
+// else the speed at which traction vanishes altogether (docs/how-to/traction.md).
 // It does not depend on the rest roll's diameter nor on the band's inputs.
 CriterionSpeed traction_slip_criterion(const TractionSpec& spec);
 

@@ -12,11 +12,11 @@
 namespace coremodal {
 namespace {
 
-// The ranges (docs/limits.md, "The band", has the same table with sources).
+// The ranges (docs/how-to/limits.md, "The band", has the same table with sources).
 // Contact stiffness of the chuck's spring layer: uncertain by 3-5x
-// (docs/chucks.md, docs/material-sources.md "Sensitivities"); x/3 .. x3.
+// (docs/theory/chucks.md, docs/reference/material-sources.md "Sensitivities"); x/3 .. x3.
 constexpr double kContactFactor = 3.0;
-// The core's E_z: no general spread was found (docs/material-sources.md): the
+// The core's E_z: no general spread was found (docs/reference/material-sources.md): the
 // ISO 11093-8 value of the core in question. Assumed +-15 %.
 constexpr double kCoreModulusSpread = 0.15;
 // The stand's compliance (bearings, frame): Ilomaki names it ("the more the
@@ -155,7 +155,7 @@ std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseS
     std::vector<UncertainInput> out;
     UncertainInput damping = input("damping ratio", "0.005-0.02",
                                    "cores and rest rolls, measured (Ilomaki, On the durability "
-                                   "of cores and rest roll dynamics, I-1...I-4; docs/response.md)",
+                                   "of cores and rest roll dynamics, I-1...I-4; docs/how-to/response.md)",
                                    kDampingLow, kDampingHigh, "zeta");
     if (base.damping.rayleigh)
         damping.applies = false, damping.why_not = "Rayleigh damping: vary alpha and beta in the case";
@@ -171,22 +171,22 @@ std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseS
     if (!(bow > 0)) b.applies = false, b.why_not = "no bow in [excitation]";
     out.push_back(b);
     UncertainInput contact = input("chuck contact stiffness", "x1/3 - x3",
-                                   "uncertain by 3-5x (docs/chucks.md, "
-                                   "docs/material-sources.md)",
+                                   "uncertain by 3-5x (docs/theory/chucks.md, "
+                                   "docs/reference/material-sources.md)",
                                    1 / kContactFactor, kContactFactor, "factor on k_n and k_t");
     if (!spring_chucks(scene)) contact.applies = false, contact.why_not = "no spring layer (clamps or bonded chucks)";
     out.push_back(contact);
     out.push_back(input("core E_z", "+-15 %",
                         "assumed: no general spread published "
-                        "(docs/material-sources.md); the ISO "
+                        "(docs/reference/material-sources.md); the ISO "
                         "11093-8 value of the core in question narrows it",
                         1 - kCoreModulusSpread, 1 + kCoreModulusSpread, "factor on E_z"));
-    UncertainInput g = input("core G_rz", "50-650 MPa", "suggested range (docs/material-sources.md)", 0, 0, "Pa");
+    UncertainInput g = input("core G_rz", "50-650 MPa", "suggested range (docs/reference/material-sources.md)", 0, 0, "Pa");
     g.applies = false;
     g.why_not = scene.model == "beam" ? "the beam level has no through-wall "
                                         "shear; the harmonic level carries it"
                                       : "its effect on f1 is below 1 % per 10 % "
-                                        "(docs/material-sources.md); not sampled";
+                                        "(docs/reference/material-sources.md); not sampled";
     out.push_back(g);
     UncertainInput stand =
         input("stand stiffness", "x0.5 - x2", "assumed: Ilomaki names the frame's compliance, no number",
@@ -293,7 +293,7 @@ std::vector<std::string> limits_assumptions(const Scene& scene, bool case_respon
     out.push_back(
         "damping ratio 0.01 on every mode: the middle of the measured "
         "0.005-0.02 of cores and rest rolls "
-        "(Ilomaki, I-1...I-4; docs/response.md)");
+        "(Ilomaki, I-1...I-4; docs/how-to/response.md)");
     out.push_back("bow " + significant(base.excitation.bow_m * 1e3, 3) +
                   " mm at mid-core, a half sine: Ilomaki's "
                   "straightness tolerance +-0.5 mm per metre of core (" +

@@ -1,6 +1,6 @@
 // The verdict's pieces at one rest-roll diameter (analyses/limits/limits.hpp):
 // the criteria from one forced response and the critical speeds, and the
-// band from the uncertain inputs' documented ranges (docs/limits.md, "The
+// band from the uncertain inputs' documented ranges (docs/how-to/limits.md, "The
 // band"), each input at each end of its range, one at a time.
 #pragma once
 
@@ -36,7 +36,7 @@ ResponseSetup setup_for_range(const ResponseSetup& base, const Scene& at, double
 // sources, and why an input does not apply.
 std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseSetup& base);
 
-// The ranges a fit narrows (docs/limits.md, "Narrowing the band"): a fitted
+// The ranges a fit narrows (docs/how-to/limits.md, "Narrowing the band"): a fitted
 // chuck contact stiffness (supports.*.normal_stiffness or
 // expansion_pressure) replaces the contact's range by its fitted value +-
 // kFitSigmas standard uncertainties, a fitted core.material.E_z the core's

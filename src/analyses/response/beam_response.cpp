@@ -1,4 +1,4 @@
-// The forced response at the beam level (docs/response.md): the lateral
+// The forced response at the beam level (docs/theory/response.md): the lateral
 // problem of the Timoshenko network (both bending planes) with every mode
 // at rest, so that the truncated sum is checked against the complete basis
 // and the complete basis against the direct dense solve.

@@ -1,5 +1,5 @@
 // The harmonic level's sideways problem for the forced response
-// (docs/response.md, "At the harmonic level"): wave number n = 1 of the r-z
+// (docs/theory/response.md, "At the harmonic level"): wave number n = 1 of the r-z
 // section as sparse matrices (K, M, G = 2 Gamma: modal_response.hpp), the
 // probes as linear functionals of its DOFs, and the loads of [excitation]
 // on it, each the θ-integral of the beam level's load (effects/excitation.hpp):

@@ -1,4 +1,4 @@
-// The forced response at the harmonic level (docs/response.md, "At the
+// The forced response at the harmonic level (docs/theory/response.md, "At the
 // harmonic level"): the roll's sideways motion is wave number n = 1 of the
 // r-z section alone, its two planes one complex plane (modal_response.hpp);
 // the modes at rest of n = 1 up to the cutoff come from SLEPc (verified,

@@ -1,5 +1,5 @@
 // The steady forced response of a spinning beam network to loads turning at
-// omega = k Omega (docs/response.md), on its lateral problem (both bending
+// omega = k Omega (docs/theory/response.md), on its lateral problem (both bending
 // planes; G couples them):
 //
 //     (K - omega^2 M + i omega (Omega G + D) + i H) x = f,   q = Re(x e^{i omega t})

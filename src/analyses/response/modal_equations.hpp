@@ -1,5 +1,5 @@
 // The modal equations of the forced response, the same at every model level
-// (docs/response.md, "The solver", step 3): with x = Phi_n eta in the n
+// (docs/theory/response.md, "The solver", step 3): with x = Phi_n eta in the n
 // lowest modes at rest (M-orthonormal, eigenvalues lambda_j),
 //
 //     (Lambda_n - omega^2 I + i omega diag(c_n) + gyro_n) eta = Phi_n^T f

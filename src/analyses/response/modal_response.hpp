@@ -1,6 +1,6 @@
 // The steady forced response of a spinning model given as sparse matrices
 // (the harmonic level's wave number n = 1, the solid) to loads turning at
-// omega = k Omega (docs/response.md):
+// omega = k Omega (docs/theory/response.md):
 //
 //     (K - omega^2 M + g omega Omega G + i omega D + i H) x = f
 //
@@ -12,7 +12,7 @@
 // load turning forward is (p, -i p) on (cos, sin), and its response is
 // (a, -i a) with (K - omega^2 M + omega Omega 2 Gamma + i omega D) a = p (the
 // second row is the first times -i): the two planes as one complex plane
-// u = u_x + i u_y, exactly, for a body of revolution (docs/rotation.md: the
+// u = u_x + i u_y, exactly, for a body of revolution (docs/theory/rotation.md: the
 // beam level's plane path is the same).
 // Two ways, which check each other:
 //  - modal superposition in the n lowest modes at rest (K phi = lambda M

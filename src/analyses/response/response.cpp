@@ -58,7 +58,7 @@ std::vector<std::string> setup_assumptions(const ResponseSetup& setup) {
     std::vector<std::string> out;
     if (setup.response.limit_m == kDefaultAmplitudeLimit)
         out.push_back("amplitude limit 5 mm at " + setup.response.probes.front().name +
-                      ": the default, Ilomaki's +-5 mm at mid-span (Ilomäki; docs/references.md)");
+                      ": the default, Ilomaki's +-5 mm at mid-span (Ilomäki; docs/reference/references.md)");
     if (x.bow_m > 0)
         out.push_back(x.bow_shape == BowShape::half_sine
                           ? "bow: a half sine b sin(pi z / Lc) over the core length with its slope as the section "
@@ -120,13 +120,13 @@ void require_response_level(const Scene& scene) {
     const std::string level = chosen_level(scene);
     if (level == "coupled")
         throw InputError(scene.source_file + ": [response] at the coupled level: the coupled harmonics have no "
-                         "spinning terms yet (docs/harmonic.md); expected a body of revolution at model = "
+                         "spinning terms yet (docs/theory/harmonic.md); expected a body of revolution at model = "
                          "\"harmonic\", \"solid\" or \"beam\"");
     if (level == "harmonic") require_axisymmetric(scene);
     if (const auto why = why_not_axisymmetric(scene); why && level == "solid")
         throw InputError(scene.source_file + ": [response] at the solid level: " + *why +
                          "; the gyroscopic term is the stationary frame's, right for a body of revolution only "
-                         "(docs/rotation.md); expected full bands, no [mesh] file and expanded chucks");
+                         "(docs/theory/rotation-solid.md); expected full bands, no [mesh] file and expanded chucks");
 }
 
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,

@@ -1,5 +1,5 @@
 // The forced response of a spinning roll ([damping], [excitation],
-// [response]; docs/response.md) at the beam, harmonic or solid level: the
+// [response]; docs/how-to/response.md) at the beam, harmonic or solid level: the
 // amplitude of the orbit at the probes against web speed, the resonance
 // peaks with the modes that answer, and the safe web speed read off the
 // amplitude limit beside Ilomaki's I-5.

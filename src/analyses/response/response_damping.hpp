@@ -1,4 +1,4 @@
-// [damping] on the lateral problem's modes at rest (docs/response.md): which
+// [damping] on the lateral problem's modes at rest (docs/how-to/response.md): which
 // ratio each mode takes — its own (a mode number of the scene at rest, as in
 // modes.csv), its family's (its label's type), or the base (one ratio, or
 // Rayleigh's alpha/(2 omega) + beta omega/2) — and the damping it gives

@@ -1,5 +1,5 @@
 // What the forced response does the same way at every model level
-// (docs/response.md, "The solver", steps 3-6): the sweep over the speeds,
+// (docs/theory/response.md, "The solver", steps 3-6): the sweep over the speeds,
 // the peaks refined between grid speeds and labelled with the mode that
 // answers, the first speed where the amplitude reaches the limit, and the
 // checks of the superposition. A level hands these steps a ResponseModel:

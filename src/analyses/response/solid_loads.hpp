@@ -1,4 +1,4 @@
-// The solid level's model for the forced response (docs/response.md, "At
+// The solid level's model for the forced response (docs/theory/response.md, "At
 // the solid level"): the solid run's mesh, DOF map and couplings with the
 // cells' gyroscopic term as sparse matrices (G skew, both planes: the
 // gyroscopic unit i of modal_response.hpp), the probes as weights on the

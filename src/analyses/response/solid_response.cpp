@@ -1,10 +1,10 @@
-// The forced response at the solid level (docs/response.md, "At the solid
+// The forced response at the solid level (docs/theory/response.md, "At the solid
 // level"): the solid run's mesh with both planes (G skew, as the beam
 // network's), the modes at rest of the whole solid up to the cutoff from
 // SLEPc (verified, complete by inertia), the static part of the others from
 // a sparse factor of K, and the check by the direct sparse solve of the
 // whole 3D problem. For bodies of revolution only (the gyroscopic term is
-// the stationary frame's, docs/rotation.md), and for coarse meshes in
+// the stationary frame's, docs/theory/rotation-solid.md), and for coarse meshes in
 // practice: a sparse LU of the 3D problem per checked speed.
 #include "analyses/response/modal_response_model.hpp"
 #include "analyses/response/response_levels.hpp"

@@ -57,7 +57,7 @@ std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<
     const long lateral = std::count_if(modes.begin(), modes.end(), is_lateral);
     if (lateral > 0)
         return "the " + std::to_string(lateral) + " lateral (n = 1) modes found are all in the horizontal plane (f1 is "
-               "the first in the vertical plane, docs/chucks.md); " +
+               "the first in the vertical plane, docs/theory/chucks.md); " +
                (analysis.f_max_hz ? "widen the band" : "ask for more modes");
     if (analysis.f_max_hz) {
         const std::string band = "between " + significant(analysis.f_min_hz.value_or(0.0)) + " and " +
@@ -78,7 +78,7 @@ std::string why_no_bending_mode(const AnalysisSpec& analysis, const std::vector<
 constexpr double kNoPlaneFraction = 1e-9;
 
 // f1, and with it k = f1 / f2, is the roll's first lateral resonance in the
-// vertical plane (y-z; gravity acts along -y), docs/chucks.md: a stand whose
+// vertical plane (y-z; gravity acts along -y), docs/theory/chucks.md: a stand whose
 // chucks hold the roll less stiffly sideways than vertically (a chuck not
 // expanded sits on its contact arc) has a lower horizontal one, and a k that
 // took whichever came first would change plane from scene to scene. The plane
@@ -168,7 +168,7 @@ void check_rigid_modes(const RunReport& report) {
     MPI_Bcast(&rigid, 1, MPI_INT, 0, PETSC_COMM_WORLD);
     if (ok) return;
     throw SolveError(s.source_file + ": the free scene's lowest modes should be its six rigid-body motions "
-                     "(docs/validation.md), but " + std::to_string(rigid) + " of the lowest " +
+                     "(docs/validation/models.md), but " + std::to_string(rigid) + " of the lowest " +
                      std::to_string(modes.size()) + " are rigid: round-off in the stiffness matrix is as large as "
                      "the body's lowest elastic eigenvalues, so they cannot be told apart. A core " +
                      significant(s.core.length) + " m long and " + significant(s.core.outer_diameter) +

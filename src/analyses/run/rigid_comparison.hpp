@@ -4,7 +4,7 @@
 // and order (the k-th bending mode with the k-th), with the frequency shift.
 #pragma once
 
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 // tables and the results folder.
 #pragma once
 
-#include "output/run_report.hpp"
+#include "results/run_report.hpp"
 
 #include <optional>
 #include <string>

@@ -4,7 +4,7 @@
 // reel width at which the rest roll still meets the stand's speed and
 // amplitude limit, the chart of the two (the form of Figs. 18–19 of M.
 // Ilomäki, "On the durability of cores and rest roll dynamics") and the
-// verdict on each reel asked. docs/durability.md, "Choosing a core".
+// verdict on each reel asked. docs/how-to/durability.md, "Choosing a core".
 #pragma once
 
 #include "analyses/select/rest_roll_limit.hpp"

@@ -224,7 +224,7 @@ double max_width_for_speed(const CoreGrade& core, const Stand& stand, const Sele
 }
 
 std::vector<std::string> rest_roll_assumptions() {
-    return {"width limit: the `coremodal limits` verdict at the beam level (docs/limits.md) at the stand's "
+    return {"width limit: the `coremodal limits` verdict at the beam level (docs/how-to/limits.md) at the stand's "
             "rest_roll_diameter, without the band: I-5 at the stand's safe factor, Koenig K-1/K-2, the order-1 and "
             "order-2 critical speeds, the mid-span amplitude limit; the lowest governs",
             "the roll held rigidly over the chuck length at both ends, the axial moduli E_z of core and rest paper "
@@ -234,7 +234,7 @@ std::vector<std::string> rest_roll_assumptions() {
             "the verdict's excitation: damping ratio 0.01, a half-sine bow of 0.5 mm per metre of core "
             "(Ilomaki's straightness tolerance), gravity",
             "the core's other moduli from the library's paperboard_core, the rest paper's from rest_paper "
-            "(docs/material-sources.md)"};
+            "(docs/reference/material-sources.md)"};
 }
 
 }  // namespace coremodal

@@ -1,7 +1,7 @@
 // The width half of the core-selection chart: the widest reel whose rest
 // roll still meets a stand's speed and amplitude limits, by the verdict of
 // `coremodal limits` (analyses/limits) at the beam level, calibrated to the
-// stand's chuck factor k (docs/durability.md, "The width the rest roll
+// stand's chuck factor k (docs/how-to/durability.md, "The width the rest roll
 // allows").
 //
 // A candidate (core grade, stand, reel width) becomes a Scene: the core with

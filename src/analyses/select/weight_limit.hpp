@@ -1,7 +1,7 @@
 // A core grade's largest roll weight in a stand: its durability curve at the
 // failure probability asked, scaled from the test chuck to the stand's chuck
 // and by the winder (M. Ilomäki, "On the durability of cores and rest roll
-// dynamics", eqs. {28} and {32}; docs/durability.md). Apart from the width
+// dynamics", eqs. {28} and {32}; docs/how-to/durability.md). Apart from the width
 // limit (rest_roll_limit.hpp) so that it needs no solver: the fuzzer links it.
 #pragma once
 

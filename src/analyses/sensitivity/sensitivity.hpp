@@ -1,5 +1,5 @@
 // Eigenvalue sensitivities d ln f / d ln p of a scene's modes to case-file
-// keys (docs/calibration.md, "Sensitivities"). For an M-normalised mode φ,
+// keys (docs/how-to/calibration.md, "Sensitivities"). For an M-normalised mode φ,
 //
 //     dλ/dp = φᵀ (∂K/∂p − λ ∂M/∂p) φ,      d ln f / d ln p = p dλ/dp / (2λ),
 //

@@ -1,6 +1,6 @@
 // Running a sweep ([study] or [calibration]): every point through run_scene,
 // in this process or in child processes (study_workers.hpp), modes tracked
-// from point to point by MAC (docs/studies.md). The study's files are
+// from point to point by MAC (docs/how-to/studies.md). The study's files are
 // output/study_report.hpp.
 //
 // A point is "the case's document with some keys changed -> Scene ->
@@ -21,8 +21,8 @@
 
 namespace coremodal {
 
-// A point of a study over a case with [response] (docs/studies.md,
-// docs/response.md): what its forced response says about the safe speed,
+// A point of a study over a case with [response] (docs/how-to/studies.md,
+// docs/how-to/response.md): what its forced response says about the safe speed,
 // beside I-5 and König from the same f1 at rest.
 struct StudyResponse {
     double limit_m = 0;             // the amplitude limit at the first probe
@@ -115,7 +115,7 @@ StudyResult run_and_track(const CaseSweep& sweep, const std::string& command, co
                           bool quiet, unsigned jobs);
 
 // Where a safe-speed curve crosses the web speed: the rest roll diameter
-// below which the roll must be changed (docs/studies.md, König's chart).
+// below which the roll must be changed (docs/how-to/studies.md, König's chart).
 struct SpeedCrossing {
     std::string curve;           // "core.length = 3 m" ("" for a single curve)
     std::vector<double> change_diameters_m;  // v_safe = web speed, v_safe falling as D falls

@@ -33,7 +33,7 @@ Timing timing(const BeamModelTiming& t) {
 }
 
 // A body shorter than this many diameters is no beam: its section deforms
-// (ovalling, breathing) in modes the beam level cannot see (docs/beam.md).
+// (ovalling, breathing) in modes the beam level cannot see (docs/theory/beam.md).
 constexpr double kMinBeamSlenderness = 1.0;
 
 // What the user should know about this run of the beam level.
@@ -98,7 +98,7 @@ std::string BeamLevel::console_note() const {
     const BeamModelTiming& t = beam_->timing_s;
     std::snprintf(line, sizeof line,
                   "beam model: %.3f ms (build %.3f, assemble and solve %.3f, label %.3f; a first call, "
-                  "repeated calls are faster: docs/performance.md)\n",
+                  "repeated calls are faster: bench/results/log.md)\n",
                   1e3 * (t.build + t.solve + t.classify), 1e3 * t.build, 1e3 * t.solve, 1e3 * t.classify);
     return line;
 }

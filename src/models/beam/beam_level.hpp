@@ -1,4 +1,4 @@
-// The beam model level (model = "beam", docs/beam.md): the scene as a
+// The beam model level (model = "beam", docs/theory/beam.md): the scene as a
 // Timoshenko beam network (beam/beam_model.hpp), one dense problem per
 // motion family (beam/network_modes.hpp), each mode a Mode on the network's
 // nodes. No mesh, no PETSc solve; its shapes go to beam_shapes.csv.

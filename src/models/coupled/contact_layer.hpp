@@ -1,5 +1,5 @@
 // The one-sided contact of a chuck not expanded (effects/support_effects.hpp,
-// OneSidedContact) at the coupled-harmonic level (docs/harmonic.md, "The
+// OneSidedContact) at the coupled-harmonic level (docs/theory/coupled.md, "The
 // one-sided contact"). The contact's pressure varies with theta over an arc
 // the static state decides, so it is integrated by quadrature: on every
 // interface edge of a one-sided chuck, Gauss points along z times

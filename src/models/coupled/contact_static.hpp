@@ -1,5 +1,5 @@
 // The static state of a one-sided contact at the coupled-harmonic level
-// (docs/harmonic.md, "The one-sided contact"): the roll under its weight,
+// (docs/theory/coupled.md, "The one-sided contact"): the roll under its weight,
 // along -y, resting on chucks that were not expanded, by the active-set
 // Newton iteration of models/contact_active_set (the solid's, shared), each
 // step a Cholesky solve of the coupled harmonics with the contact's
@@ -29,7 +29,7 @@ namespace coremodal {
 // The static state is solved once, with the harmonics n = 0 ... this, and
 // the modes at every N are linearised about it (so that the modes' spaces
 // stay nested and their frequencies fall monotonically with N).
-// docs/harmonic.md measures the state's convergence in this N.
+// docs/theory/coupled.md measures the state's convergence in this N.
 inline constexpr int kContactStaticHarmonics = 16;
 
 // Whether block h is even under the mirror x -> -x (above).

@@ -1,4 +1,4 @@
-// The coupled-harmonic model level (model = "coupled", docs/harmonic.md,
+// The coupled-harmonic model level (model = "coupled", docs/theory/coupled.md,
 // "Coupled harmonics"): a scene whose bodies are bodies of revolution but
 // whose chucks hold the bore with segmented expanding elements, or rest on
 // it where gravity closes a chuck not expanded (the static state first:
@@ -34,12 +34,12 @@ namespace coremodal {
 // the bore's motion decays algebraically and N converges slowly: on case
 // 10 the step changes fall from 4.6e-4 (N = 13) to 7.9e-5 (N = 22) and
 // 9e-6 (N = 40), and the truncation error left at a step is about 1.5 times
-// the step (docs/harmonic.md). 1e-4 leaves ~1.5e-4, half the solid's
+// the step (docs/theory/coupled.md). 1e-4 leaves ~1.5e-4, half the solid's
 // circumferential error at its default 32 elements around (3e-4 on case 10).
 inline constexpr double kCoupledTolerance = 1e-4;
 // The largest amplitude a local harmonic may have at its zone's edge,
 // relative to the mode's largest, before the reach is doubled. The
-// eigenvalue's error measured 1 to 44 times this squared (docs/harmonic.md,
+// eigenvalue's error measured 1 to 44 times this squared (docs/theory/coupled.md,
 // "Local harmonics"): below 4e-6, 25 times inside kCoupledTolerance.
 inline constexpr double kZoneEdgeTolerance = 3e-4;
 
@@ -73,7 +73,7 @@ CoupledModes solve_coupled(const Scene& scene, const SectionMesh& section, const
 // relative to the mode's largest anywhere. The restriction holds the nodes
 // beyond that edge at zero: the energy it misses, and so the eigenvalue's
 // error, is of the order of this amplitude squared (measured in
-// docs/harmonic.md, "Local harmonics").
+// docs/theory/coupled.md, "Local harmonics").
 double zone_edge_amplitude(const CoupledModes& modes, const SectionMesh& section, const LocalHarmonics& local,
                            size_t n_wanted);
 

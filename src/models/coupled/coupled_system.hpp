@@ -1,4 +1,4 @@
-// K and M of the coupled-harmonic model (docs/harmonic.md, "Coupled
+// K and M of the coupled-harmonic model (docs/theory/coupled.md, "Coupled
 // harmonics"): the axisymmetric bodies expanded in wave numbers n = 0 ... N,
 // one family for n = 0 and both (cos, sin) for n >= 1, on the harmonic
 // level's r–z section; an attachment that acts over arcs of the bore (a

@@ -1,5 +1,5 @@
 // The theta integrals that couple circumferential harmonics through an
-// attachment that acts over arcs of the bore (docs/harmonic.md, "Coupled
+// attachment that acts over arcs of the bore (docs/theory/coupled.md, "Coupled
 // harmonics"). A spring layer of stiffness k chi(theta), chi = 1 on the
 // arcs and 0 between, stores per unit section length
 //     1/2 sum_c k_c int chi(theta) du_c(theta)^2 dtheta  (c = r, theta, z)

@@ -1,5 +1,5 @@
 // The steady stress of a spinning body of revolution (effects/rotation.hpp,
-// docs/rotation.md "Centrifugal stiffening"): the axisymmetric (n = 0)
+// docs/theory/rotation.md "Centrifugal stiffening"): the axisymmetric (n = 0)
 // static solve K_0 u_1 = f_1 under the body force rho r e_r per unit
 // Omega^2 on every section cell, with the scene's supports (clamps held,
 // spring layers and bearings as at rest), and its stress at every Gauss

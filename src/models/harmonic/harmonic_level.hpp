@@ -1,4 +1,4 @@
-// The axisymmetric-harmonic model level (model = "harmonic", docs/harmonic.md):
+// The axisymmetric-harmonic model level (model = "harmonic", docs/theory/harmonic.md):
 // the scene's r–z section meshed in 2D, one independent problem (an
 // OperatorSet) per circumferential wave number n, the modes merged in
 // frequency order, each expanded onto the section turned into 3D and named

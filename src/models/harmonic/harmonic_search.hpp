@@ -8,7 +8,7 @@
 // of a tube's harmonic falls with n while the membrane dominates and rises
 // once ring bending (~n^4) does, so two empty harmonics in a row whose
 // lowest eigenvalue rises from the one to the next end the search
-// (docs/harmonic.md).
+// (docs/theory/harmonic.md).
 #pragma once
 
 #include "assembly/operator_set.hpp"

@@ -1,4 +1,4 @@
-// The harmonic level of a spinning scene ([rotation], docs/rotation.md): per
+// The harmonic level of a spinning scene ([rotation], docs/theory/rotation-harmonic.md): per
 // wave number n the spinning operator set (spinning_harmonic.hpp) solved by
 // the quadratic solver (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every
 // mode verified by its residual, complete by the inertia of the Hermitian
@@ -22,11 +22,11 @@
 // speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
-#include "beam/rotating_modes.hpp"
 #include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "models/harmonic/spinning_harmonic.hpp"
 #include "modes/classify.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>

@@ -1,5 +1,5 @@
 // One wave number n of a spinning body of revolution (effects/rotation.hpp,
-// docs/rotation.md): the operator set M q'' + Omega G q' + K q = 0 the
+// docs/theory/rotation-harmonic.md): the operator set M q'' + Omega G q' + K q = 0 the
 // gyroscopic solver takes (eigensolve/gyroscopic_solver.hpp).
 //
 // n = 0: its one family, G = 2 Gamma_0 (skew: spinning material moving

@@ -1,5 +1,5 @@
 // The centrifugal prestress of a spinning solid (effects/rotation.hpp,
-// docs/rotation.md "The solid level"): per unit Omega^2,
+// docs/theory/rotation-solid.md "The solid level"): per unit Omega^2,
 //
 //   1. the static solve K u1 = f1, f1 = int rho N (x, y, 0) dV over every
 //      cell (every cell spins; springs, frames and bearings do not), with

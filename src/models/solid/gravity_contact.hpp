@@ -10,7 +10,7 @@
 // models/contact_active_set (shared with the coupled harmonics); each of
 // its Newton steps here is a solve with a direct Cholesky factor (PETSc
 // KSP, the eigensolver's factor package). The points run face-major over
-// ChuckSupports::contact_faces. docs/chucks.md, "A chuck that was not expanded".
+// ChuckSupports::contact_faces. docs/theory/chucks.md, "A chuck that was not expanded".
 #pragma once
 
 #include "assembly/chuck_supports.hpp"

@@ -78,7 +78,7 @@ std::optional<std::string> mesh_resolution_text(const MeshResolution& r, const S
                        " elements around) does not resolve mode " + std::to_string(r.mode_index) + " (" + r.label +
                        "): " + significant(r.solid_hz, 5) + " Hz here against " + significant(r.harmonic_hz, 5) +
                        " Hz at the harmonic level (same section, exact around), " + percent +
-                       " off (docs/accuracy-vs-cost.md)";
+                       " off (docs/validation/accuracy-by-level.md)";
     if (const auto level = level_that_resolves(r, scene)) {
         text += "; expected --mesh " + *level + " or finer";
     } else {

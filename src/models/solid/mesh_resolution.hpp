@@ -2,7 +2,7 @@
 // estimate for scenes that are bodies of revolution: the harmonic level
 // solves the same r-z section exactly in theta, so a solid mode's frequency
 // against the harmonic level's mode of the same label (type, n, m) is the
-// error of the mesh around the circumference (docs/accuracy-vs-cost.md,
+// error of the mesh around the circumference (docs/validation/accuracy-by-level.md,
 // "Does the mesh resolve the band"). It does not see the error through the
 // wall or along the core: both levels share the section's mesh.
 #pragma once
@@ -28,7 +28,7 @@ constexpr double kMeshGrossError = 0.20;
 // limit (quadratic cells, eigenvalue error of order h^4); measured on the
 // n = 2 ovalling mode 3.7 from 16 to 24 and 3.8 from 24 to 32 around on a
 // 76 x 3 mm steel tube, 3.8 from 32 to 48 on a steel ring of 0.5 m radius
-// and 20 mm wall (docs/accuracy-vs-cost.md, "Thin walls"). The lower value
+// and 20 mm wall (docs/validation/accuracy-by-level.md, "Thin walls"). The lower value
 // keeps the level named for a fix on the safe side.
 constexpr double kAroundConvergenceOrder = 3.5;
 

@@ -1,4 +1,4 @@
-// A spinning solid in co-rotating coordinates (docs/rotation.md, "Scenes
+// A spinning solid in co-rotating coordinates (docs/theory/rotation-solid.md, "Scenes
 // that are not bodies of revolution"). Segments, a user mesh: the spinning
 // parts carry their asymmetry round with them, so in the stationary frame
 // the coefficients are periodic in time; seen from axes turning with the

@@ -73,7 +73,7 @@ double squared_norm(const std::vector<double>& v) {
 void require_spinnable_by_solid(const Scene& scene) {
     if (const auto why = why_not_corotating(scene))
         throw InputError(scene.source_file + ": [rotation] at the solid level: " + *why +
-                         " (docs/rotation.md); expected expanded chucks (contact = \"uniform\" or bonded)");
+                         " (docs/theory/rotation-solid.md); expected expanded chucks (contact = \"uniform\" or bonded)");
 }
 
 RotatingSolid::RotatingSolid(const Scene& scene, int window, SolidSpinOptions options)
@@ -84,7 +84,7 @@ RotatingSolid::RotatingSolid(const Scene& scene, int window, SolidSpinOptions op
             throw InputError(scene.source_file + ": [rotation] at the solid level: " + *why +
                              ", and the scene is not a body of revolution (" +
                              why_not_axisymmetric(scene).value_or("asked for the rotating frame") +
-                             "): neither frame sees constant coefficients (docs/rotation.md)");
+                             "): neither frame sees constant coefficients (docs/theory/rotation-solid.md)");
     LevelModes summary;  // the model summary and warnings a run at rest reports; not repeated here
     dofs_ = solid_dofs(scene, mesh_, chucks, summary);
     assemble(scene, chucks, options.centrifugal_stiffening);

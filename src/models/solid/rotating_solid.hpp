@@ -1,4 +1,4 @@
-// The solid level of a spinning scene ([rotation], docs/rotation.md): the
+// The solid level of a spinning scene ([rotation], docs/theory/rotation-solid.md): the
 // solid level's mesh, DOF map and operator set with the spin terms,
 // assembled once; at each speed the quadratic solver
 // (eigensolve/gyroscopic_solver.hpp: SLEPc PEP, every mode verified by its
@@ -23,12 +23,12 @@
 #include "assembly/dof_map.hpp"
 #include "assembly/operator_set.hpp"
 #include "assembly/chuck_supports.hpp"
-#include "beam/rotating_modes.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "eigensolve/zero_frequency_speeds.hpp"
 #include "mesh/mesh.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
+#include "modes/rotating_mode.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>

@@ -98,7 +98,7 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
 namespace {
 
 // A model this large factors faster in as many processes as the machine has
-// cores (MUMPS's distributed factor and block Lanczos, docs/performance.md
+// cores (MUMPS's distributed factor and block Lanczos, bench/results/log.md
 // "Two processes"): case 03, 181,152 unknowns, 32.8 s under mpirun -n 2
 // against 43.7 s in one process on 2 cores (AVX-512 machine; 40.4 against
 // 44.7 s on a Zen 3 one); case 02, 101,760, 16.2 against 19.1 s.
@@ -109,7 +109,7 @@ std::string processes_hint(int n_dofs) {
     if (mpi_size() > 1 || cores < 2 || n_dofs < kProcessesHintDofs) return "";
     return "      running in one process on " + std::to_string(cores) + " cores: `mpirun -n " + std::to_string(cores) +
            " coremodal run ...` splits the factorization (case 03's 181,152 unknowns on 2 cores: 10-25 % "
-           "less time, by machine; docs/performance.md, \"Two processes\")";
+           "less time, by machine; bench/results/log.md, \"Two processes\")";
 }
 
 // Step 6: every eigenvector in the request's band expanded to the mesh's
@@ -157,7 +157,7 @@ constexpr int kPredictedExtraModes = 6;
 // On since the solves come in blocks (eigensolve/block_lanczos.hpp): one
 // MUMPS LDL^T at the predicted edge is the operator and the count, in place
 // of a CHOLMOD factor and a second (MUMPS) factor for the count. Case 03:
-// 58 -> 39 s wall (docs/performance.md, issue 19). With one-vector solves it
+// 58 -> 39 s wall (bench/results/log.md, issue 19). With one-vector solves it
 // did not pay (MUMPS's single solves are 1.7x CHOLMOD's); false returns to
 // the negative shift and the separate count.
 constexpr bool kPredictBandEdge = true;

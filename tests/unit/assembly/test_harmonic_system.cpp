@@ -1,6 +1,6 @@
 // The harmonic level's assembled K_n on a chuck scene in elastic bearings
 // with frames: rigid motions of the whole model load only the supports, by
-// exactly the stiffnesses the scene gives (docs/harmonic.md, "Supports").
+// exactly the stiffnesses the scene gives (docs/theory/harmonic.md, "Supports").
 #include "assembly/harmonic_system.hpp"
 
 #include "models/part_materials.hpp"

@@ -170,7 +170,7 @@ TEST_CASE("Chucks: a stiffer hold raises the first bending frequency towards the
         CHECK(nth_of_type(framed, "bending").frequency_hz != Approx(nth_of_type(r, "bending").frequency_hz));
     }
     SECTION("A stiffer and stiffer bonded chuck on rigid bearings tends to the rigid clamp of its element") {
-        // docs/validation.md: a stiff elastic chuck tends to the rigid clamp.
+        // docs/validation/models.md: a stiff elastic chuck tends to the rigid clamp.
         // What is left is the turn of the chuck's shaft and body under the
         // roll's end moment, inversely proportional to their modulus.
         const std::string clamp_at_element = "[supports]\ntype = \"clamped\"\n[supports.left]\nlength = \"100 mm\"\n"

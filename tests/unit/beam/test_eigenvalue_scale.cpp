@@ -49,7 +49,7 @@ TEST_CASE("Each family's estimate is its closed form", "[beam][scale]") {
     // Bar in tension and in torsion, free-free: (pi / L)^2 E / rho and G / rho.
     CHECK(estimate_of(tube, all, "axial") == Approx(std::pow(M_PI / L, 2) * E / rho).epsilon(1e-12));
     CHECK(estimate_of(tube, all, "torsion") == Approx(std::pow(M_PI / L, 2) * G / rho).epsilon(1e-12));
-    // Thin ring in its plane, n = 2 (docs/validation.md): E t^2 / 12 / (rho R^4) * 36 / 5.
+    // Thin ring in its plane, n = 2 (docs/validation/models.md): E t^2 / 12 / (rho R^4) * 36 / 5.
     const double t = ro - ri, R = (ro + ri) / 2;
     CHECK(estimate_of(tube, all, "ring in-plane n = 2") ==
           Approx(E * t * t / 12 / (rho * std::pow(R, 4)) * 36 / 5).epsilon(1e-12));

@@ -29,7 +29,7 @@ TEST_CASE("Table 3 is reproduced from equations {27} and {30}", "[durability][ta
             const double sf = safety_factor(l, kTable3RelativeDeviations[i]);
             // The one printed value that disagrees with {30}: 10 % at P = 1e-5
             // is 1/(1 - 4.265 0.10) = 1.744, printed 1.774 (two digits
-            // swapped; docs/durability.md). The test follows the equation.
+            // swapped; docs/how-to/durability.md). The test follows the equation.
             const double expected = (i == 1 && j == 4) ? 1.744 : printed[i][j];
             CHECK(sf == Approx(expected).margin(0.0006));  // 3 decimals, lambda's rounding included
         }

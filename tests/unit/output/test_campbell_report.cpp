@@ -1,6 +1,6 @@
 // The Campbell outputs say where each critical speed comes from (the
 // sweep, or the exact pencil of co-rotating coordinates) and where the
-// sweep stopped and why (docs/rotation.md, "Critical speeds in co-rotating
+// sweep stopped and why (docs/theory/rotation-solid.md, "Critical speeds in co-rotating
 // coordinates"). A hand-made result: no solve.
 #include "output/campbell_report.hpp"
 

@@ -69,11 +69,11 @@ TEST_CASE("Pictures travel inside the page; a missing one is said, links are tex
     const std::string png("\x89PNG\r\n\x1a\n", 8);  // the bytes do not matter here, only that they are carried
     folder.write("spectrum.png", png);
     const std::string html =
-        report_html("![spectrum](spectrum.png)\n\n![gone](gone.png)\n\nsee [the docs](docs/results.md)\n", folder.path);
+        report_html("![spectrum](spectrum.png)\n\n![gone](gone.png)\n\nsee [the docs](docs/reference/results.md)\n", folder.path);
     CHECK(has(html, "<img alt=\"spectrum\" src=\"data:image/png;base64," + base64(png) + "\">"));
     CHECK(has(html, "picture gone.png is missing"));
     CHECK_FALSE(has(html, "src=\"gone.png\""));
-    CHECK(has(html, "see the docs (docs/results.md)"));
+    CHECK(has(html, "see the docs (docs/reference/results.md)"));
     // Nothing may be fetched: no href, no external src, a policy that forbids it.
     CHECK_FALSE(has(html, "href="));
     CHECK_FALSE(has(html, "<script"));

@@ -107,7 +107,7 @@ TEST_CASE("[damping], [excitation], [response] mistakes are refused with the key
           "[response][scene]") {
     CHECK(error_of(kRoll + kDamping) ==
           "cases/x.toml:12:1: [damping] is used only by the forced response; expected a [response] table too "
-          "(web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or no [damping] (docs/response.md)");
+          "(web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or no [damping] (docs/how-to/response.md)");
     CHECK(error_of(kRoll + kExcitation + kResponse).starts_with("cases/x.toml:14:1: [response] needs [damping]; "));
     CHECK(error_of(kRoll + kDamping + kResponse).starts_with("cases/x.toml:14:1: [response] needs [excitation]; "));
     CHECK(error_of(kRoll + "[damping]\n" + kExcitation + kResponse) ==

@@ -162,7 +162,7 @@ TEST_CASE("[traction] mistakes are refused with the place, the key and what is e
 
 TEST_CASE("A [traction] file given to run is pointed to coremodal traction", "[traction][scene]") {
     CHECK(error_of(kGrooved) == "cases/x.toml:2: [traction] without [core] is a roller's traction file, not a roll's "
-                                "case file; run it with `coremodal traction cases/x.toml` (docs/traction.md)");
+                                "case file; run it with `coremodal traction cases/x.toml` (docs/how-to/traction.md)");
 }
 
 TEST_CASE("[traction] beside [web] in a stand scene: checked, and the scene is the same without it",

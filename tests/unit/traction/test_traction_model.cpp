@@ -60,7 +60,7 @@ TractionSpec without_asperities(TractionSpec s) {
 }  // namespace
 
 TEST_CASE("Eq. 6 combines the asperity heights of Tables 1 and 2 into Table 3's alpha", "[traction]") {
-    // Only the pairs whose alpha in Table 3 is eq. 6 of Tables 1-2 (docs/traction.md
+    // Only the pairs whose alpha in Table 3 is eq. 6 of Tables 1-2 (docs/how-to/traction.md
     // lists the others: roller 1's alphas come from Rice et al.'s profiler method).
     struct Pair { double roller, web, printed; };
     const Pair pairs[] = {{25.9, 1.54, 25.9}, {25.9, 0.66, 25.9}, {1.96, 1.54, 2.5},
@@ -96,7 +96,7 @@ TEST_CASE("Eq. 18 on a semicircular groove is its closed form", "[traction]") {
 
 TEST_CASE("Roller 4: eqs. 18 and 19 give the paper's 27.9 and 24.7 um within the rounding of G_D", "[traction]") {
     // Table 2 gives G_D = 36 um to the micrometre; 27.9 um is eq. 18 at G_D = 35.54 um,
-    // inside [35.5, 36.5): our 28.3 um at exactly 36 um is the same equation (docs/traction.md).
+    // inside [35.5, 36.5): our 28.3 um at exactly 36 um is the same equation (docs/how-to/traction.md).
     const auto at = [](double depth) { return effective_clearance(without_asperities(roller4_web8(depth))); };
     CHECK(*at(36 * kUm).groove_depth_eff == Approx(28.32 * kUm).epsilon(1e-3));
     CHECK(*at(35.5 * kUm).groove_depth_eff < 27.9 * kUm);

@@ -66,7 +66,7 @@ TEST_CASE("The DOF estimate of a tube mesh and the study's cost bound", "[conver
     const Scene rest_roll = parse_case_file(case_path("03-rest-roll-150x15.8-4320.toml"));
     MeshSpec m = rest_roll.mesh;
     m.n_wall = 4, m.n_rest_paper = 4, m.n_around = 32, m.n_along = 104;
-    // Measured: 346,944 DOFs after eliminating the clamped nodes (docs/accuracy-vs-cost.md).
+    // Measured: 346,944 DOFs after eliminating the clamped nodes (docs/validation/accuracy-vs-cost.md).
     CHECK(estimate_dofs(m, true) == 351936);
     CHECK(estimate_dofs(m, true) > 346944);
     CHECK(estimate_dofs(m, true) < 1.02 * 346944);

@@ -114,7 +114,7 @@ TEST_CASE("fit: bad measurements files are named with file, line and key", "[fit
     CHECK_THROWS_WITH(run_fit(in2), Catch::Contains("m.toml:2:1") && Catch::Contains("torsion n=0 m=7"));
 }
 
-TEST_CASE("fit: the field validation's measurements and cases read (docs/validation.md)", "[fit]") {
+TEST_CASE("fit: the field validation's measurements and cases read (docs/validation/models.md)", "[fit]") {
     const std::string dir = std::string(COREMODAL_SOURCE_DIR) + "/cases/validation/";
     const FitInput in = read_fit_input(dir + "ilomaki-table1.toml");
     REQUIRE(in.measurements.size() == 2);

@@ -118,7 +118,7 @@ TEST_CASE(
         CHECK(*p.chuck_factor == Approx(factor.chuck_factor).epsilon(1e-10));
     }
     // I-5 at 0.7 is below Koenig, the critical speeds and the amplitude limit
-    // here (docs/limits.md).
+    // here (docs/how-to/limits.md).
     CHECK(r.points[0].governing == static_cast<int>(Criterion::i5_low));
     CHECK(r.verdict.governed_by == criterion_name(Criterion::i5_low));
 }
@@ -209,7 +209,7 @@ TEST_CASE(
     bool knife = false;
     for (const std::string& w : r.warnings) knife = knife || w.rfind("knife edge", 0) == 0;
     CHECK(knife);
-    // With twice the damping the peak halves below the limit (docs/response.md):
+    // With twice the damping the peak halves below the limit (docs/how-to/response.md):
     // no knife edge.
     ResponseSetup damped = *c.response;
     damped.damping.ratio = 0.02;

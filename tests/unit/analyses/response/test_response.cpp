@@ -225,6 +225,6 @@ TEST_CASE("A bow that fits the clamps shows as its whole runout at low speed and
     // static part of the modes left out) is measured at 1.5e-5 here.
     CHECK(r.points[0].probes[0].total_m == Approx(bow.bow_m * single_mode(0.05, 0.01)).epsilon(1e-4));
     // 1e-2: at 3 f1 the gyroscopic coupling of the spinning roll moves the
-    // forward whirl a little (docs/rotation.md); measured 4e-3.
+    // forward whirl a little (docs/theory/rotation.md); measured 4e-3.
     CHECK(r.points[1].probes[0].total_m == Approx(bow.bow_m * single_mode(3.0, 0.01)).epsilon(1e-2));
 }

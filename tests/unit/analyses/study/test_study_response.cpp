@@ -1,4 +1,4 @@
-// A [study] over a case with [response] (docs/studies.md, docs/response.md):
+// A [study] over a case with [response] (docs/how-to/studies.md, docs/how-to/response.md):
 // every point runs the forced response of its own scene, which must be the
 // response of that scene run alone; the summary survives the worker record;
 // study.csv and report.md carry it.

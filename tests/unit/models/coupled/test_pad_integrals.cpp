@@ -1,5 +1,5 @@
 // The theta integrals of the coupled-harmonic level against a brute-force
-// quadrature, and the selection rules they imply (docs/harmonic.md,
+// quadrature, and the selection rules they imply (docs/theory/coupled.md,
 // "Coupled harmonics").
 #include "models/coupled/pad_integrals.hpp"
 
