@@ -70,7 +70,8 @@ public:
     void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
     // Structural damping H = sum_p eta_p K_p on the rows (effects/damping.hpp):
     // i H in the direct solve, i Phi^T H Phi in the modal equations; the static
-    // part of the modes left out stays K^-1's (modal_response.hpp: why).
+    // part of the modes left out stays K^-1's (their loss changes it by
+    // 1/(1 + i eta): in magnitude by about eta^2/2, 0.02 % at eta = 0.02).
     void set_hysteretic(Eigen::SparseMatrix<double> H);
     // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
     double modal_loss_factor(int j) const;

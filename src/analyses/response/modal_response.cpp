@@ -20,6 +20,10 @@ struct ModalResponse::StiffnessFactor {
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
 };
 
+struct ModalResponse::ComplexStiffnessFactor {
+    Eigen::UmfPackLU<ComplexSparse> lu;
+};
+
 ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
                              Eigen::SparseMatrix<double> G, std::complex<double> gyroscopic_unit, ModalBasis basis,
                              double lambda_scale)
@@ -48,6 +52,14 @@ void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == K_.rows() && H.cols() == K_.cols());
     H_ = std::move(H);
     Hhat_ = basis_.Phi.transpose() * (H_ * basis_.Phi);
+    auto factor = std::make_shared<ComplexStiffnessFactor>();
+    {
+        const SingleThreadBlas one_thread;
+        factor->lu.compute(ComplexSparse(K_.cast<cd>() + cd(0, 1) * H_.cast<cd>()));
+    }
+    if (factor->lu.info() != Eigen::Success)  // K is positive definite and H = sum eta_p K_p >= 0: not expected
+        throw SolveError("the complex stiffness K + i H of the structural damping could not be factored");
+    KH_factor_ = factor;
 }
 
 double ModalResponse::modal_loss_factor(int j) const {
@@ -82,10 +94,19 @@ Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omeg
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                           const Eigen::VectorXcd& static_p) const {
     // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
+    // With structural damping both static parts carry it: static_p is (K + i H)^-1 p and the
+    // kept modes' is (Lambda_n + i Hh_n)^-1 Phi_n^T p (exact when H = eta K).
     const auto Phi_n = basis_.Phi.leftCols(n);
     const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
-    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) -
-                                 (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    Eigen::VectorXcd kept_static;
+    if (Hhat_.size() == 0) {
+        kept_static = (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    } else {
+        Eigen::MatrixXcd A = hysteretic_term(Hhat_, n);
+        A.diagonal() += basis_.lambda.head(n).cast<cd>();
+        kept_static = A.partialPivLu().solve(kept);
+    }
+    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) - kept_static;
     return Phi_n.cast<cd>() * eta + static_p;
 }
 
@@ -95,6 +116,10 @@ Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const {
 }
 
 Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& p) const {
+    if (KH_factor_) {
+        const SingleThreadBlas one_thread;
+        return KH_factor_->lu.solve(p);
+    }
     return static_response(Eigen::VectorXd(p.real())).cast<cd>() + cd(0, 1) * static_response(Eigen::VectorXd(p.imag())).cast<cd>();
 }
 

@@ -66,8 +66,9 @@ public:
     void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
     // Structural damping H = sum_p eta_p K_p (effects/damping.hpp): i H in
     // the direct solve, i Phi^T H Phi in the modal equations (frequency
-    // independent); the static part of the modes above the basis stays K^-1's
-    // (their loss changes it by 1/(1 + i eta): |.| by eta^2/2, 0.05 % at eta = 0.03).
+    // independent), and the static part of the modes above the basis with
+    // their loss: (K + i H)^-1 p less the kept modes' (Lambda_n + i Hh_n)^-1
+    // part (complex_static_response then solves with K + i H, factored once).
     void set_hysteretic(Eigen::SparseMatrix<double> H);
     // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
     double modal_loss_factor(int j) const;
@@ -96,7 +97,8 @@ public:
     Eigen::VectorXcd direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const;
     // K^-1 p (a static load).
     Eigen::VectorXd static_response(const Eigen::VectorXd& p) const;
-    Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;  // K^-1 p, p complex
+    // K^-1 p, p complex; (K + i H)^-1 p with structural damping (the static part of the superposition).
+    Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;
 
 private:
     Eigen::SparseMatrix<double> K_, M_, G_;
@@ -110,6 +112,8 @@ private:
     RayleighDamping rayleigh_;
     struct StiffnessFactor;  // CHOLMOD's, kept out of this header (modal_response.cpp)
     std::shared_ptr<const StiffnessFactor> K_factor_;
+    struct ComplexStiffnessFactor;  // UMFPACK's LU of K + i H (structural damping only)
+    std::shared_ptr<const ComplexStiffnessFactor> KH_factor_;
 };
 
 }  // namespace coremodal

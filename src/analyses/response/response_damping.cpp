@@ -170,9 +170,7 @@ std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec,
                 ": the complex stiffness K_p (1 + i eta_p) of " + where +
                 ", frequency independent (H = sum eta_p K_p in the direct solve, Phi^T H Phi in the modal equations: "
                 "mode j's loss factor eta_j = phi_j^T H phi_j / lambda_j, at resonance as a viscous zeta_j = eta_j / 2); "
-                "springs (spring layers, bearings) carry no loss factor; the values are the user's (no default)",
-            "structural damping: the static part of the modes above the cutoff is taken without their loss (it changes "
-            "it by 1/(1 + i eta): in magnitude by about eta^2 / 2)"};
+                "springs (spring layers, bearings) carry no loss factor; the values are the user's (no default)"};
 }
 
 }  // namespace coremodal
