@@ -21,6 +21,7 @@ struct ModalResponse::StiffnessFactor {
 };
 
 struct ModalResponse::ComplexStiffnessFactor {
+    ComplexSparse K_iH;  // kept: UMFPACK's solve reads the matrix it factored
     Eigen::UmfPackLU<ComplexSparse> lu;
 };
 
@@ -55,7 +56,8 @@ void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     auto factor = std::make_shared<ComplexStiffnessFactor>();
     {
         const SingleThreadBlas one_thread;
-        factor->lu.compute(ComplexSparse(K_.cast<cd>() + cd(0, 1) * H_.cast<cd>()));
+        factor->K_iH = K_.cast<cd>() + cd(0, 1) * H_.cast<cd>();
+        factor->lu.compute(factor->K_iH);
     }
     if (factor->lu.info() != Eigen::Success)  // K is positive definite and H = sum eta_p K_p >= 0: not expected
         throw SolveError("the complex stiffness K + i H of the structural damping could not be factored");
