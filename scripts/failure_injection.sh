@@ -2,7 +2,7 @@
 # Failure injection (issue 33): coremodal under what a hostile but realistic
 # machine does to it, one row per trial and a total.
 #
-#   scripts/failure_injection.sh [--quick] [--keep] [BINARY]
+#   scripts/failure_injection.sh [--ci | --quick] [--no-mount] [--keep] [BINARY]
 #
 # Trials: a full disk (a small tmpfs; skipped with the reason where mount is
 # not allowed), memory limits (ulimit -v), every signal (INT, TERM, HUP,
@@ -23,7 +23,16 @@
 #           earlier result may only have moved to <out>.previous)
 # The exit status is 1 when any trial crashed, hung or lost data.
 #
-# --quick is the bounded form for CI (a few minutes): the tiny case, every
+# --ci is the form CI runs (ctest "failure_injection", under 2 minutes on 2
+# cores): each class once on the cheapest inputs (the beam level of case 05,
+# the tiny solid): one full disk (a small tmpfs, skipped where mount is not
+# allowed or --no-mount is given) and one file-size limit (ulimit -f: a write
+# past 8 KiB fails with EFBIG), one memory limit (ulimit -v 400 MB), each signal once (INT at the
+# start, TERM and QUIT while solving, HUP while writing, PIPE from a reader
+# that goes away), two runs into one folder at once, and `mpirun -n 2` on
+# two commands (one that runs across ranks, one that refuses them).
+#
+# --quick is the longer bounded form (about 15 minutes): the tiny case, every
 # signal at every moment, full disk, two runs at once, mpirun on every
 # command; memory limits with short time limits. The full form adds the
 # memory trials on case 08 at 400 MB and 600 MB (the hang of issue 33, 9),
@@ -32,13 +41,17 @@ set -uo pipefail
 
 here="$(cd "$(dirname "$0")/.." && pwd)"
 quick=0
+ci=0
+no_mount=0
 keep=0
 binary="$here/build/coremodal"
 for arg in "$@"; do
     case "$arg" in
         --quick) quick=1 ;;
+        --ci) ci=1; quick=1 ;;
+        --no-mount) no_mount=1 ;;
         --keep) keep=1 ;;
-        -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,40p' "$0"; exit 0 ;;
         *) binary="$(realpath "$arg")" ;;
     esac
 done
@@ -338,6 +351,10 @@ two_runs_trial() {
 # mount_small DIR SIZE: a tmpfs of SIZE at DIR; fails (with the reason on stdout) where not allowed.
 mount_small() {
     mkdir -p "$1"
+    if [[ $no_mount == 1 ]]; then
+        echo "skipped: --no-mount"
+        return 1
+    fi
     if ! mount -t tmpfs -o "size=$2" tmpfs "$1" 2>"$work/mount.err"; then
         echo "skipped: mount -t tmpfs not allowed here ($(head -c 100 "$work/mount.err"))"
         return 1
@@ -382,11 +399,69 @@ disk_trial() {
     umount "$d/disk" 2>/dev/null
 }
 
+# fsize_trial NAME KB ARGS...: the full disk where no tmpfs can be mounted:
+# ARGS run with --output under `ulimit -f KB` (a write past KB KiB fails as
+# on a full disk, EFBIG), after an earlier result written without it.
+fsize_trial() {
+    local name="$1" kb="$2"
+    shift 2
+    tried=$((tried + 1))
+    local d
+    d="$(new_trial_dir)"
+    (cd "$d" && COREMODAL_PYTHON=/nonexistent timeout 120 "$binary" "$@" -o out >/dev/null 2>&1)
+    local earlier rc
+    earlier="$(digest "$d/out")"
+    (cd "$d" && COREMODAL_PYTHON=/nonexistent timeout -k 5 120 bash -c "ulimit -f $kb; exec \"\$0\" \"\$@\"" \
+        "$binary" "$@" -o out >"$d/stdout.txt" 2>"$d/stderr.txt")
+    rc=$?
+    [[ $rc == 124 || $rc == 137 ]] && rc=hang
+    judge "$name" "$d" "$rc" 0 out "$earlier"
+}
+
+# A full disk: a tmpfs where mount is allowed; and a file-size limit (a
+# second way a write fails, which killed the run by SIGXFSZ before issue 33).
+full_disk_trial() {
+    local name="$1" size="$2" fill_kb="$3"
+    shift 3
+    local mark="$work/can-mount"
+    if [[ $no_mount == 0 ]] && mkdir -p "$mark" && mount -t tmpfs -o size=64k tmpfs "$mark" 2>/dev/null; then
+        umount "$mark"
+        disk_trial "$name" "$size" "$fill_kb" "$@"
+    else
+        printf '%-44s %s\n' "$name" "skipped: no tmpfs can be mounted here (or --no-mount)"
+    fi
+    fsize_trial "${name/full disk/ulimit -f 8 KiB}" 8 "$@"
+}
+
+ci_trials() {
+    local case05="$cases/05-beam-level-rest-roll-150x15.8-4320.toml"
+    echo "# full disk (a small tmpfs, or ulimit -f)"
+    full_disk_trial "full disk: run (beam level, case 05)" 1m 8 run "$case05" --no-plots
+    echo "# memory limit (ulimit -v, KiB)"
+    # 400 MB: the program loads (at 200 MB its shared libraries do not) and its solve does not fit.
+    run_trial "ulimit -v 400000: run tiny" 30 out 1 bash -c 'ulimit -v 400000; exec "$0" "$@"' -- run tiny.toml --no-plots
+    echo "# signals, each once"
+    signal_trial INT start
+    signal_trial TERM solve
+    signal_trial QUIT solve
+    signal_trial HUP write
+    pipe_trial
+    echo "# two runs at once"
+    two_runs_trial
+    echo "# mpirun -n 2"
+    local mpi=(mpirun -n 2 --oversubscribe)
+    run_trial "mpirun: run (beam, case 05)" 60 out 1 "${mpi[@]}" -- run "$case05" --no-plots
+    run_trial "mpirun: campbell (beam)" 60 out 1 "${mpi[@]}" -- campbell "$cases/12-rotation-tester-76x15.toml" --model beam --no-plots
+}
+
 # ---- the trials --------------------------------------------------------------
 
 printf '%-44s %-6s %-8s %s\n' "trial" "result" "exit" "note"
 printf '%s\n' "--------------------------------------------------------------------------------"
 
+if [[ $ci == 1 ]]; then
+    ci_trials
+else
 echo "# full disk (tmpfs)"
 disk_trial "full disk: run (solid, tiny)" 2m 40 run tiny.toml --no-plots
 disk_trial "full disk: run (beam level, case 05)" 1m 8 run "$cases/05-beam-level-rest-roll-150x15.8-4320.toml" --no-plots
@@ -436,6 +511,7 @@ run_trial "mpirun: fit" 120 out 1 "${mpi[@]}" -- fit m.toml -q
 run_trial "mpirun: campbell (beam)" 120 out 1 "${mpi[@]}" -- campbell "$cases/12-rotation-tester-76x15.toml" --model beam --no-plots
 run_trial "mpirun: response (beam)" 120 out 1 "${mpi[@]}" -- response "$cases/13-rest-roll-response-150x15.8-4320.toml" --model beam --no-plots
 run_trial "mpirun: response (harmonic)" 300 out 1 "${mpi[@]}" -- response "$cases/13-rest-roll-response-150x15.8-4320.toml" --model harmonic --no-plots
+fi
 
 printf '%s\n' "--------------------------------------------------------------------------------"
 printf 'tried %d: ok %d, clear error %d, crash %d, hang %d, data lost %d (%d s)\n' \

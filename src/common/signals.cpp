@@ -176,6 +176,11 @@ void install_interrupt_handling() {
         ours.sa_flags = SA_RESTART;
         ::sigaction(sig, &ours, nullptr);
     }
+    // A file-size limit (ulimit -f, a job's quota of that kind) reached while
+    // writing: by default SIGXFSZ kills the run, leaving its partial folder and
+    // lock file. Ignored, the write fails with EFBIG instead, and the writer
+    // reports it as it does a full disk (failure injection, issue 33).
+    ::signal(SIGXFSZ, SIG_IGN);
 }
 
 int interrupt_signal() { return state().signal; }

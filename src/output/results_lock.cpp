@@ -1,14 +1,17 @@
 #include "output/results_lock.hpp"
 
 #include "common/error.hpp"
+#include "common/warnings.hpp"
 #include "output/results_paths.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <map>
@@ -33,8 +36,8 @@ std::string utc_now() {
     return text;
 }
 
-// Who holds a lock, from its file: "pid 41872 on lab-pc, since ..., `coremodal run ...`".
-std::string holder(int fd) {
+// The fields of a lock file: pid, host, started, command (one a line).
+std::map<std::string, std::string> lock_fields(int fd) {
     std::string text(4096, '\0');
     const ssize_t n = ::pread(fd, text.data(), text.size(), 0);
     text.resize(n > 0 ? static_cast<size_t>(n) : 0);
@@ -44,9 +47,35 @@ std::string holder(int fd) {
         const size_t space = line.find(' ');
         if (space != std::string::npos) field[line.substr(0, space)] = line.substr(space + 1);
     }
-    if (field["pid"].empty()) return "a process that has not said who it is yet";
+    return field;
+}
+
+std::string holder_text(std::map<std::string, std::string> field) {
     return "pid " + field["pid"] + " on " + field["host"] + ", since " + field["started"] + ", `" + field["command"] +
            "`";
+}
+
+// Who holds a lock, from its file: "pid 41872 on lab-pc, since ..., `coremodal run ...`".
+std::string holder(int fd) {
+    const auto field = lock_fields(fd);
+    if (!field.count("pid") || field.at("pid").empty()) return "a process that has not said who it is yet";
+    return holder_text(field);
+}
+
+// A lock file that names a holder although nobody held its flock: a run
+// that ended without releasing it (SIGKILL, a power cut; the kernel dropped
+// the flock with the process). Said once, so that a user who sees the file
+// knows it was taken over and why that is safe.
+void say_if_taken_over(int fd, const fs::path& file) {
+    auto field = lock_fields(fd);
+    if (!field.count("pid") || field["pid"].empty()) return;
+    std::string state = "which ended without releasing it";
+    if (field["host"] == host_name()) {
+        const int pid = std::atoi(field["pid"].c_str());
+        if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH) state = "which no longer runs";
+    }
+    print_warnings({quoted(file) + " was left by " + holder_text(field) + ", " + state +
+                    " (killed?); its lock was free, this run has taken it over"});
 }
 
 // The locks this process holds, released (their files removed, the folders
@@ -124,6 +153,7 @@ bool take_lock(const fs::path& output) {
             ::close(fd);
             continue;
         }
+        say_if_taken_over(fd, held.file);
         const std::string who = "pid " + std::to_string(::getpid()) + "\nhost " + host_name() + "\nstarted " +
                                 utc_now() + "\ncommand " + command_line() + "\n";
         // Who holds it is a courtesy to the next run: a full disk does not stop this one here.

@@ -4,7 +4,8 @@
 // (or the results folder that took it is done); a second run into the same
 // output is refused naming who holds it. The kernel releases the lock when
 // its process dies, so a killed run never blocks the next (its lock file
-// stays, and the next run takes it over). Used by output/results_folder.cpp.
+// stays, and the next run takes it over, saying whose it was, and removes
+// it when done). Used by output/results_folder.cpp.
 #pragma once
 
 #include <filesystem>

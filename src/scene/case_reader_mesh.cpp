@@ -3,6 +3,7 @@
 #include "scene/case_reader.hpp"
 
 #include "common/error.hpp"
+#include "scene/mesh_rule.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -51,18 +52,22 @@ MeshSpec CaseReader::read_mesh(const Section& top, const Scene& scene) const {
     spec.level = level.name;
     spec.n_wall = level.n_wall;
     spec.n_rest_paper = level.n_rest_paper;
-    spec.n_around = elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter);
+    // The level's counts, raised where the band needs more (scene/mesh_rule.hpp).
+    const MeshRule rule = mesh_rule(scene, level_target_error(level));
+    spec.n_around =
+        std::max(elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter), rule.around);
     if (mesh) apply_mesh_overrides(*mesh, spec);
-    if (mesh && get(*mesh, "along")) return spec;
-    const std::optional<int> along = elements_along(
-        scene.core.length, scene.core.outer_diameter, spec.n_around, level.axial_aspect);
-    if (!along)
-        fail(mesh ? mesh->table->source() : top.table->source(),
-             "[mesh] level = \"" + spec.level + "\" would need more than " +
-                 std::to_string(kMaxElementsAlong) + " elements along [core] length = " +
-                 format_quantity(scene.core.length, Dimension::length) +
-                 "; expected a shorter core, or give [mesh] along");
-    spec.n_along = *along;
+    if (!mesh || !get(*mesh, "along")) {
+        const std::optional<int> along = elements_along(
+            scene.core.length, scene.core.outer_diameter, spec.n_around, level.axial_aspect);
+        if (!along)
+            fail(mesh ? mesh->table->source() : top.table->source(),
+                 "[mesh] level = \"" + spec.level + "\" would need more than " +
+                     std::to_string(kMaxElementsAlong) + " elements along [core] length = " +
+                     format_quantity(scene.core.length, Dimension::length) +
+                     "; expected a shorter core, or give [mesh] along");
+        spec.n_along = std::max(*along, rule.along);
+    }
     return spec;
 }
 

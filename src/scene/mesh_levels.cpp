@@ -1,6 +1,7 @@
 #include "scene/mesh_levels.hpp"
 
 #include "common/error.hpp"
+#include "scene/mesh_rule.hpp"
 #include "scene/scene.hpp"
 
 #include <string>
@@ -44,14 +45,17 @@ void apply_mesh_level(Scene& scene, std::string_view level_name) {
     if (scene.mesh.file)
         throw InputError("--mesh " + std::string(level_name) + ": the case uses the mesh file " + *scene.mesh.file +
                          "; a mesh level applies only to generated meshes");
-    const int around = elements_around(*level, scene.core.inner_diameter, scene.core.outer_diameter);
+    // The level's counts, raised where the band needs more (scene/mesh_rule.hpp).
+    const MeshRule rule = mesh_rule(scene, level_target_error(*level));
+    const int around =
+        std::max(elements_around(*level, scene.core.inner_diameter, scene.core.outer_diameter), rule.around);
     const auto along = elements_along(scene.core.length, scene.core.outer_diameter, around, level->axial_aspect);
     if (!along) throw InputError("--mesh " + std::string(level_name) + ": too many elements along the core");
     scene.mesh.level = std::string(level->name);
     scene.mesh.n_wall = level->n_wall;
     scene.mesh.n_rest_paper = level->n_rest_paper;
     scene.mesh.n_around = around;
-    scene.mesh.n_along = *along;
+    scene.mesh.n_along = std::max(*along, rule.along);
 }
 
 }  // namespace coremodal

@@ -3,6 +3,7 @@
 #include "common/format.hpp"
 #include "scene/chuck_contact.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/mesh_rule.hpp"
 
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
@@ -272,16 +273,30 @@ private:
             count("through_wall", m.n_wall);
             if (scene_.rest_paper) count("through_rest_paper", m.n_rest_paper);
             const MeshLevel* named = find_mesh_level(m.level);
+            const MeshRule rule = mesh_rule(scene_, named ? level_target_error(*named) : 0.01);
+            const int thin_wall = named ? elements_around(*named, scene_.core.inner_diameter,
+                                                          scene_.core.outer_diameter)
+                                        : 0;
             if (named && m.n_around > named->n_around && origin("mesh.around", from_level) == from_level) {
-                // A thin wall: the level's count is raised so that cells do not lock (mesh_levels.hpp).
+                // The level's count raised: for the band (mesh_rule.hpp) or so that a thin wall's cells do not lock (mesh_levels.hpp).
+                const bool band = m.n_around == rule.around && rule.around > thin_wall;
                 add("[mesh] around", std::to_string(m.n_around),
-                    from_level + ": its " + std::to_string(named->n_around) + " raised for the thin wall (" +
-                        significant(named->around_per_slenderness, 2) +
-                        " x 2 pi sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")");
+                    from_level + ": its " + std::to_string(named->n_around) +
+                        (band ? " raised for the band's n = " + std::to_string(rule.band.n_max) +
+                                    " (docs/validation/accuracy-by-level.md, \"The mesh from the band\")"
+                              : " raised for the thin wall (" + significant(named->around_per_slenderness, 2) +
+                                    " x 2 pi sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")"));
             } else {
                 count("around", m.n_around);
             }
-            count("along", m.n_along);
+            if (named && m.n_along == rule.along && rule.along > kMinElementsAlong &&
+                origin("mesh.along", from_level) == from_level)
+                add("[mesh] along", std::to_string(m.n_along),
+                    from_level + ": raised for the band's " + significant(rule.band.half_waves, 2) +
+                        " axial half-waves (docs/validation/accuracy-by-level.md, \"The mesh from the band\")");
+            else
+                count("along", m.n_along);
+            if (const auto text = mesh_rule_text(scene_)) add("[mesh] rule", *text, "scene/mesh_rule.hpp");
         }
         add("[mesh] element", quoted(m.element), origin("mesh.element"));
     }

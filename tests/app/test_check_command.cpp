@@ -133,7 +133,9 @@ TEST_CASE("coremodal check shows every default it filled in, with its origin", "
     SECTION("a thin wall's count around is raised, and says why") {
         // 76 x 1.52 mm (hard case 01): R = 38.76 mm, t = 1.52 mm, 2 pi sqrt(R / t)
         // = 31.7; the default level's 1.5 of it is 47.6, up to a multiple of 4: 48.
-        std::string thin = kBareCore;
+        // A band below its first ring mode (thin ring: n = 2 near 300 Hz), so
+        // that the band asks for nothing around (scene/mesh_rule.hpp).
+        std::string thin = kBareCore + "\n[analysis]\nband = [\"0 Hz\", \"250 Hz\"]\n";
         thin.replace(thin.find("wall = \"15 mm\""), std::string("wall = \"15 mm\"").size(), "wall = \"1.52 mm\"");
         dir.write("thin.toml", thin);
         const Run t = run_coremodal(dir, "check thin.toml");
@@ -141,8 +143,25 @@ TEST_CASE("coremodal check shows every default it filled in, with its origin", "
         REQUIRE(t.exit_code == 0);
         CHECK(has_line(t.out, {"[mesh] around = 48", "from the level: its 32 raised for the thin wall (1.5 x 2 pi "
                                                      "sqrt(R / t), docs/validation/accuracy-by-level.md, \"Thin walls\")"}));
+        CHECK(has_line(t.out, {"[mesh] rule = mesh from the band", "top 250 Hz ([analysis] band), no ring mode"}));
         const Run coarse = run_coremodal(dir, "check thin.toml --mesh coarse");
         CHECK(has_line(coarse.out, {"[mesh] around = 32", "command line (--mesh): its 16 raised for the thin wall"}));
+    }
+    SECTION("a band that holds higher ring modes raises the count further, and says why") {
+        // The same thin core's 20 lowest modes (six rigid): thin-ring n = 2, 3
+        // and 4 (about 300, 840, 1620 Hz) among the bending pairs; n = 4 at 1 %
+        // asks for 60 around, at `coarse`'s 3 % for 48 (scene/mesh_rule.hpp).
+        std::string thin = kBareCore;
+        thin.replace(thin.find("wall = \"15 mm\""), std::string("wall = \"15 mm\"").size(), "wall = \"1.52 mm\"");
+        dir.write("thin20.toml", thin);
+        const Run t = run_coremodal(dir, "check thin20.toml");
+        INFO("stdout: " << t.out << "\nstderr: " << t.err);
+        REQUIRE(t.exit_code == 0);
+        CHECK(has_line(t.out, {"[mesh] around = 60", "from the level: its 32 raised for the band's n = 4"}));
+        CHECK(has_line(t.out, {"[mesh] rule = mesh from the band", "(estimated for 20 modes", "highest n = 4",
+                               "it asks for 60 around"}));
+        const Run coarse = run_coremodal(dir, "check thin20.toml --mesh coarse");
+        CHECK(has_line(coarse.out, {"[mesh] around = 48", "command line (--mesh): its 16 raised for the band's n = 4"}));
     }
 }
 

@@ -20,6 +20,7 @@
 #include "modes/mode_shapes.hpp"
 #include "output/run_folder.hpp"
 
+#include "scene/mesh_rule.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -269,6 +270,11 @@ LevelModes HarmonicLevel::solve(const Scene& scene, const Printer& say) {
 
     // 2. Mesh: the r–z section in quad8 cells (and its revolution, for showing the modes).
     say("[2/7] meshing the r-z section");
+    // The counts and why (issue 33, 12): in the output and, as an assumption, in the summary.
+    if (const auto rule = mesh_rule_text(scene)) {
+        say("      " + *rule);
+        out.assumptions.push_back(*rule);
+    }
     const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
     revolved_ = revolve_section(section, std::min(scene.mesh.n_around, kMaxDisplayAround));
     add_frame_nodes(scene, revolved_->mesh);  // as the solid has them, for the frame's motion in the shapes

@@ -3,7 +3,9 @@
 #include "common/format.hpp"
 #include "modes/tracking.hpp"
 #include "scene/mesh_levels.hpp"
+#include "scene/mesh_rule.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace coremodal {
@@ -61,7 +63,9 @@ MeshResolution compare_with_harmonic(const std::vector<Mode>& solid, const std::
 std::optional<std::string> level_that_resolves(const MeshResolution& r, const Scene& scene) {
     const int n_around = scene.mesh.n_around;
     for (const MeshLevel& level : kMeshLevels) {
-        const int around = elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter);
+        // The level's count as a run at it would have it: raised for a thin wall or the band.
+        const int around = std::max(elements_around(level, scene.core.inner_diameter, scene.core.outer_diameter),
+                                    mesh_rule(scene, level_target_error(level)).around);
         if (around <= n_around) continue;
         const double predicted = std::abs(r.error()) * std::pow(double(n_around) / around, kAroundConvergenceOrder);
         if (predicted < kMeshWarnError) return std::string(level.name);

@@ -22,6 +22,7 @@
 #include "modes/mac.hpp"
 #include "modes/mode_shapes.hpp"
 #include "output/run_folder.hpp"
+#include "scene/mesh_rule.hpp"
 
 #include <cmath>
 #include <set>
@@ -269,6 +270,12 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     LevelModes out;
     // 2. Mesh: the section extruded into quadratic hexahedra (or the user's mesh).
     say("[2/7] meshing" + (scene.mesh.file ? " (reading " + *scene.mesh.file + ")" : std::string()));
+    // The counts and why (issue 33, 12): in the output and, as an assumption, in the summary.
+    if (const auto rule = mesh_rule_text(scene)) {
+        say("      " + *rule);
+        out.assumptions.push_back(*rule);
+    }
+    if (const auto coarse = explicit_mesh_warning(scene, true)) warn_about_model(scene.source_file, *coarse, out.warnings);
     {
         const Heartbeat beat("meshing", say);
         mesh_ = make_solid_mesh(scene);

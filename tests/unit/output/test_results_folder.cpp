@@ -14,10 +14,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -337,6 +340,59 @@ TEST_CASE("claim_output takes the output's lock once per process and says who ho
         CHECK(fs::exists(dir.path / "other.lock"));
     }
     CHECK_FALSE(fs::exists(dir.path / "other.lock"));
+}
+
+TEST_CASE("A lock left by a SIGKILLed run is taken over by the next run, which says whose it was (issue 33, 10)",
+          "[output][results_folder][lock][issue33]") {
+    TempDir dir("rf");
+    const fs::path out = dir.path / "out", lock = dir.path / "out.lock";
+    // A run that took the lock and was killed before releasing it.
+    const pid_t killed = ::fork();
+    if (killed == 0) {
+        try {
+            claim_output(out, false);
+        } catch (...) {
+            ::_exit(3);
+        }
+        ::raise(SIGKILL);
+        ::_exit(4);
+    }
+    int status = 0;
+    ::waitpid(killed, &status, 0);
+    REQUIRE(WIFSIGNALED(status));
+    REQUIRE(WTERMSIG(status) == SIGKILL);
+    REQUIRE(slurp(lock).find("pid " + std::to_string(killed) + "\n") == 0);  // left behind
+
+    std::ostringstream said;
+    std::streambuf* const stderr_buffer = std::cerr.rdbuf(said.rdbuf());
+    try {
+        ResultsFolder folder(out, false);  // not refused: the kernel released the dead run's flock
+        write(folder.file("a.txt"), "x");
+        folder.commit();
+    } catch (...) {
+        std::cerr.rdbuf(stderr_buffer);
+        throw;
+    }
+    std::cerr.rdbuf(stderr_buffer);
+    INFO(said.str());
+    CHECK(said.str().find("'" + lock.string() + "' was left by pid " + std::to_string(killed) + " on " + this_host()) !=
+          std::string::npos);
+    CHECK(said.str().find("which no longer runs (killed?); its lock was free, this run has taken it over") !=
+          std::string::npos);
+    CHECK(fs::exists(out / "a.txt"));
+    CHECK_FALSE(fs::exists(lock));  // the taker removed it when done
+
+    // A lock released normally leaves nothing to take over: no note.
+    std::ostringstream quiet;
+    std::cerr.rdbuf(quiet.rdbuf());
+    try {
+        ResultsFolder folder(dir.path / "other", false);
+    } catch (...) {
+        std::cerr.rdbuf(stderr_buffer);
+        throw;
+    }
+    std::cerr.rdbuf(stderr_buffer);
+    CHECK(quiet.str().empty());
 }
 
 TEST_CASE("A text file that cannot be written whole is an error, not 0 bytes (issue 33, 6)",
