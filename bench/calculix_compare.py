@@ -10,7 +10,13 @@ clock and peak resident memory of the child, os.wait4). Prints the medians,
 their ratio and the largest relative frequency difference (CalculiX prints 7
 significant digits, so agreement shows as ~1e-7 at best).
 
-    /usr/bin/python3 bench/calculix_compare.py [--repeats 3] [--threads 2] [--ranks 2] [--mesh coarse] CASE.toml...
+    /usr/bin/python3 bench/calculix_compare.py [--repeats 3] [--threads 2] [--ranks 2] [--mesh coarse]
+        [--precisions double,single] CASE.toml...
+
+--precisions runs coremodal once per -factor_precision value in each round
+(eigensolve/single_factor.hpp), then ccx: alternating in one sitting; each
+row's last column is its largest relative frequency difference to the first
+value's run.
 
 --mesh replaces the case's [mesh] by a level (coarse, default, fine); the
 default keeps the case's own. ccx runs with OMP_NUM_THREADS = --threads
@@ -76,29 +82,38 @@ def compare(case, args, work):
     out = subprocess.run([str(DECK), str(path), str(pathlib.Path(work) / "deck.inp")], check=True,
                          capture_output=True, text=True).stdout.strip()
     env = dict(os.environ, OMP_NUM_THREADS=str(args.threads))
-    runs = {"coremodal": [], "ccx": []}
+    variants = args.precisions.split(",") if args.precisions else [""]
+    runs = {v: [] for v in variants}
+    runs["ccx"] = []
     # --ranks N: coremodal under mpirun (MUMPS's distributed factor).
     launcher = [] if args.ranks == 1 else ["mpirun", "-n", str(args.ranks)]
     mpi_env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     for r in range(args.repeats):
-        folder = pathlib.Path(work) / f"run{r}"
-        # --model solid: under auto a body of revolution runs at the harmonic level.
-        wall, gib = timed(launcher + [str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model", "solid"],
-                          work, mpi_env)
-        if launcher:  # mpirun's peak is one rank's: the summary sums them
-            gib = json.loads((folder / "summary.json").read_text())["peak_memory_mb"] / 1024
-        runs["coremodal"].append((wall, gib))
+        for v in variants:  # alternating: each precision, then ccx, in one sitting
+            folder = pathlib.Path(work) / f"run{r}{v}"
+            options = ["-factor_precision", v] if v else []
+            # --model solid: under auto a body of revolution runs at the harmonic level.
+            wall, gib = timed(launcher + [str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model",
+                                          "solid"] + options, work, mpi_env)
+            if launcher:  # mpirun's peak is one rank's: the summary sums them
+                gib = json.loads((folder / "summary.json").read_text())["peak_memory_mb"] / 1024
+            runs[v].append((wall, gib))
         runs["ccx"].append(timed(["ccx", "-i", "deck"], work, env))
-    ours, summary = coremodal_frequencies(pathlib.Path(work) / "run0")
     theirs = ccx_frequencies(pathlib.Path(work) / "deck.dat")
-    n = min(len(ours), len(theirs))
-    diff = max(abs(a - b) / b for a, b in zip(ours[:n], theirs[:n]))
+    first, summary = coremodal_frequencies(pathlib.Path(work) / f"run0{variants[0]}")
     med = {k: (statistics.median(w for w, _ in v), max(m for _, m in v)) for k, v in runs.items()}
+    rows = []
+    for v in variants:
+        ours, _ = coremodal_frequencies(pathlib.Path(work) / f"run0{v}")
+        n = min(len(ours), len(theirs))
+        rows.append({"variant": v or "default", "modes": n, "coremodal_s": med[v][0], "coremodal_gib": med[v][1],
+                     "max_rel_diff": max(abs(a - b) / b for a, b in zip(ours[:n], theirs[:n])),
+                     # against the first variant (e.g. single against double): the precision's own effect
+                     "vs_first": max(abs(a - b) / abs(b) for a, b in zip(ours, first) if b)})
     return {"case": pathlib.Path(case).stem, "mesh": args.mesh or "case's", "deck": out,
-            "dofs": summary.get("model", {}).get("n_dofs") or summary.get("n_dofs"), "modes": n,
-            "coremodal_s": med["coremodal"][0], "coremodal_gib": med["coremodal"][1],
-            "ccx_s": med["ccx"][0], "ccx_gib": med["ccx"][1], "max_rel_diff": diff,
-            "all_s": {k: [round(w, 2) for w, _ in v] for k, v in runs.items()}}
+            "dofs": summary.get("model", {}).get("n_dofs") or summary.get("n_dofs"), "rows": rows,
+            "ccx_s": med["ccx"][0], "ccx_gib": med["ccx"][1],
+            "all_s": {k or "default": [round(w, 2) for w, _ in v] for k, v in runs.items()}}
 
 
 def main():
@@ -108,6 +123,9 @@ def main():
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--mesh", default="")
     ap.add_argument("--ranks", type=int, default=1, help="coremodal under mpirun -n RANKS")
+    ap.add_argument("--precisions", default="",
+                    help="comma-separated -factor_precision values run alternately (e.g. double,single); "
+                         "default: coremodal's own choice")
     args = ap.parse_args()
     for tool in (CORE, DECK):
         if not tool.exists():
@@ -116,14 +134,17 @@ def main():
         sys.exit("ccx is missing: apt-get install calculix-ccx")
     print(f"machine: {platform.node()}, {os.cpu_count()} cores; load before: {os.getloadavg()[0]:.2f}; "
           f"coremodal on {args.ranks} MPI rank(s); OPENBLAS_CORETYPE={os.environ.get('OPENBLAS_CORETYPE', '(unset)')}")
-    print("| case | mesh | DOFs | modes | coremodal s | GiB | CalculiX s | GiB | CalculiX / coremodal | max rel. freq. diff |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| case | mesh | DOFs | modes | factor | coremodal s | GiB | CalculiX s | GiB | CalculiX / coremodal | "
+          "max rel. freq. diff to CalculiX | to the first factor |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for case in args.cases:
         with tempfile.TemporaryDirectory(prefix="ccx-") as work:
             r = compare(case, args, work)
-        print(f"| {r['case']} | {r['mesh']} | {r['dofs']} | {r['modes']} | {r['coremodal_s']:.1f} | "
-              f"{r['coremodal_gib']:.2f} | {r['ccx_s']:.1f} | {r['ccx_gib']:.2f} | "
-              f"{r['ccx_s'] / r['coremodal_s']:.2f} | {r['max_rel_diff']:.1e} |", flush=True)
+        for row in r["rows"]:
+            print(f"| {r['case']} | {r['mesh']} | {r['dofs']} | {row['modes']} | {row['variant']} | "
+                  f"{row['coremodal_s']:.1f} | {row['coremodal_gib']:.2f} | {r['ccx_s']:.1f} | {r['ccx_gib']:.2f} | "
+                  f"{r['ccx_s'] / row['coremodal_s']:.2f} | {row['max_rel_diff']:.1e} | {row['vs_first']:.1e} |",
+                  flush=True)
         print(f"<!-- {r['case']}: runs {r['all_s']}; deck: {r['deck']} -->", flush=True)
     print(f"load after: {os.getloadavg()[0]:.2f}")
 

@@ -2,6 +2,7 @@
 """Measures what docs/architecture.md claims about src/ (issue 34).
 
     python3 scripts/architecture_metrics.py [ROOT] [--max-level-comparisons N] [--max-circles N]
+                                            [--max-long-files N] [--max-long-functions N]
 
 Prints three things about ROOT/src (ROOT: the repository, default the one
 this script is in):
@@ -241,6 +242,10 @@ def main(argv=None):
                         help="fail when there are more comparisons of level names than this")
     parser.add_argument("--max-circles", type=int, default=None,
                         help="fail when more include edges between folders lie on a circle than this")
+    parser.add_argument("--max-long-files", type=int, default=None,
+                        help="fail when more files than this are over %d lines" % LONG_FILE)
+    parser.add_argument("--max-long-functions", type=int, default=None,
+                        help="fail when more function bodies than this are over %d lines" % LONG_FUNCTION)
     args = parser.parse_args(argv)
     root = Path(args.root).resolve()
     files = source_files(root)
@@ -286,7 +291,10 @@ def main(argv=None):
 
     failed = False
     for name, count, limit in (("level-name comparisons", n_comparisons, args.max_level_comparisons),
-                               ("include edges on circles", len(circle_edges), args.max_circles)):
+                               ("include edges on circles", len(circle_edges), args.max_circles),
+                               ("files over %d lines" % LONG_FILE, len(long_files), args.max_long_files),
+                               ("functions over %d lines" % LONG_FUNCTION, len(long_functions),
+                                args.max_long_functions)):
         if limit is not None and count > limit:
             print("architecture_metrics: %d %s, above the maximum %d: remove them rather than raise it" %
                   (count, name, limit), file=sys.stderr)

@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "common/signals.hpp"
 #include "output/batch_report.hpp"
+#include "output/results_folder.hpp"
 #include "output/text_file.hpp"
 
 #include <filesystem>
@@ -34,7 +35,10 @@ Command add_batch_command(CLI::App& app) {
     auto run = [options, mesh_level, no_plots] {
         if (!mesh_level->empty()) options->mesh_level = *mesh_level;
         options->plots = !*no_plots;
-        const auto cases = run_batch(*options, std::cout);
+        std::vector<BatchCase> cases = batch_cases(*options);
+        // OUT is written in place: an earlier batch there moves to OUT.previous first.
+        start_folder_in_place(options->output_dir, options->force, batch_folder_contents(cases));
+        run_batch(cases, *options, std::cout);
         const std::filesystem::path out = options->output_dir;
         unless_interrupted([&] {  // no table of cases an interrupt stopped
             write_text_file(out / "batch.csv", batch_csv(cases));

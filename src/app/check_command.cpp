@@ -101,7 +101,7 @@ int check_case(const CheckOptions& options) {
         scene.model = options.model;
         sources.on_command_line.insert("model");
     }
-    if (scene.model == "harmonic") require_axisymmetric(scene);
+    if (level_traits(chosen_level(scene)).axisymmetric_only) require_axisymmetric(scene);
 
     std::cout << options.case_file << ": valid case \"" << scene.name << "\"\n\n"
               << "model level: " << model_choice(scene, sources) << "\n\n"

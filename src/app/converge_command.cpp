@@ -2,6 +2,7 @@
 // study (analyses/converge/converge.hpp runs it; docs/validation/accuracy-vs-cost.md).
 #include "analyses/converge/converge.hpp"
 #include "app/commands.hpp"
+#include "output/converge_report.hpp"
 
 #include <iostream>
 #include <memory>
@@ -92,6 +93,7 @@ Command add_converge_command(CLI::App& app) {
         if (!line->unit.empty()) o.unit = line->unit;
         if (line->n_modes > 0) o.n_modes = line->n_modes;
         o.plots = !line->no_plots;
+        attach_converge_writers(o);
         run_converge(o, std::cout);
         return 0;
     };

@@ -242,6 +242,45 @@ void require_address_space() {
                                                " MB) and the least a run takes beside them"));
 }
 
+// A command without PETSc has no work to share among MPI ranks: under
+// mpirun each rank would run it whole and write the same folder.
+int run_without_petsc(const coremodal::Command& chosen) {
+    if (launched_processes() > 1) {
+        if (launched_rank() == 0)
+            std::cerr << "coremodal: error: `coremodal " << chosen.cli->get_name() << "` runs in one process ("
+                      << launched_processes() << " MPI ranks would each run it and write the same output); run "
+                      << "it without mpirun" << std::endl;
+        // Only rank 0 exits 1 (the job's status): mpirun ends the whole
+        // job at the first non-zero exit, which could stop rank 0 before
+        // it has said why (seen in scripts/failure_injection.sh --quick).
+        return launched_rank() == 0 ? 1 : 0;
+    }
+    const int status = run_guarded(chosen);
+    coremodal::wait_if_interrupted();
+    return status;
+}
+
+// PETSc and SLEPc started with their own options (`petsc_arguments`), the
+// command run, and both finished.
+int run_with_petsc(const coremodal::Command& chosen, std::vector<std::string>& petsc_arguments) {
+    auto petsc = coremodal::c_strings(petsc_arguments);
+    int petsc_argc = static_cast<int>(petsc_arguments.size());
+    char** petsc_argv = petsc.data();
+    coremodal::IsolatedMpiSingleton isolated;          // common/mpi_start.hpp: why
+    coremodal::MpiSharedMemoryFolder shared_memory;    // ... and why
+    if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
+    isolated.started();
+    shared_memory.started();
+    // PETSc errors become exceptions with coremodal's message; no tracebacks.
+    PetscPushErrorHandler(remember_petsc_error, nullptr);
+    coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
+    const int status = run_guarded(chosen, require_address_space);
+    coremodal::wait_if_interrupted();
+    PetscPopErrorHandler();  // PETSc's -malloc_dump lists the handler's 32 bytes otherwise
+    SlepcFinalize();
+    return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -280,38 +319,5 @@ int main(int argc, char** argv) {
     for (const auto& c : commands)
         if (c.cli->parsed()) chosen = &c;
     if (!chosen) return 2;
-    if (!chosen->needs_petsc) {
-        // Without PETSc a command has no work to share among MPI ranks: under
-        // mpirun each rank would run it whole and write the same folder.
-        if (launched_processes() > 1) {
-            if (launched_rank() == 0)
-                std::cerr << "coremodal: error: `coremodal " << chosen->cli->get_name() << "` runs in one process ("
-                          << launched_processes() << " MPI ranks would each run it and write the same output); run "
-                          << "it without mpirun" << std::endl;
-            // Only rank 0 exits 1 (the job's status): mpirun ends the whole
-            // job at the first non-zero exit, which could stop rank 0 before
-            // it has said why (seen in scripts/failure_injection.sh --quick).
-            return launched_rank() == 0 ? 1 : 0;
-        }
-        const int status = run_guarded(*chosen);
-        coremodal::wait_if_interrupted();
-        return status;
-    }
-
-    auto petsc = coremodal::c_strings(args.petsc);
-    int petsc_argc = static_cast<int>(args.petsc.size());
-    char** petsc_argv = petsc.data();
-    coremodal::IsolatedMpiSingleton isolated;          // common/mpi_start.hpp: why
-    coremodal::MpiSharedMemoryFolder shared_memory;    // ... and why
-    if (SlepcInitialize(&petsc_argc, &petsc_argv, nullptr, nullptr)) return 2;
-    isolated.started();
-    shared_memory.started();
-    // PETSc errors become exceptions with coremodal's message; no tracebacks.
-    PetscPushErrorHandler(remember_petsc_error, nullptr);
-    coremodal::install_interrupt_handling();  // again: PETSc has put its own SIGTERM handler in place
-    const int status = run_guarded(*chosen, require_address_space);
-    coremodal::wait_if_interrupted();
-    PetscPopErrorHandler();  // PETSc's -malloc_dump lists the handler's 32 bytes otherwise
-    SlepcFinalize();
-    return status;
+    return chosen->needs_petsc ? run_with_petsc(*chosen, args.petsc) : run_without_petsc(*chosen);
 }

@@ -5,6 +5,7 @@
 #include "app/folder_case.hpp"
 #include "common/petsc_handle.hpp"
 #include "output/results_folder.hpp"
+#include "output/run_writer.hpp"
 #include "scene/case_file.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/rotation_spec.hpp"
@@ -56,6 +57,7 @@ int run_command(RunLine& line) {
     // The results folder is checked before any work (its default needs the case's name).
     options.output_dir = output_of(parse_case_file(options.case_file).name).string();
     claim_output(*options.output_dir, options.force);
+    options.write = write_run;
     run_case(options);
     return with_verdict(0);
 }

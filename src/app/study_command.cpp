@@ -26,9 +26,11 @@ std::optional<std::string> mesh_option(const std::string& mesh) {
 }
 
 int run_study_command(const StudyCommandOptions& o) {
-    if (!o.worker_output.empty())
-        return run_worker_point(
-            {o.case_file, o.worker_table, mesh_option(o.mesh), o.model, o.worker_point, o.worker_output});
+    if (!o.worker_output.empty()) {
+        const StudyPoint p = run_worker_point({o.case_file, o.worker_table, mesh_option(o.mesh), o.model, o.worker_point});
+        if (mpi_rank() == 0) write_text_file(o.worker_output, point_record(p));
+        return 0;
+    }
     const bool root = mpi_rank() == 0;
     const CaseSweep sweep = CaseSweep::read(o.case_file, "study", mesh_option(o.mesh)).with_model(o.model);
     print_warnings(sweep.warnings());

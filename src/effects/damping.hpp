@@ -32,6 +32,8 @@
 //     d(r) = 1 / sqrt((1 - r^2)^2 + (2 zeta r)^2),   r = f / fn.
 #pragma once
 
+#include "scene/damping_input.hpp"
+
 #include <cmath>
 #include <map>
 #include <string>
@@ -59,18 +61,10 @@ struct RayleighDamping {
     // (rad/s, distinct): zeta(omega) = zeta there, below zeta between them
     // and above it outside (Chopra, Dynamics of Structures, chapter 11: Rayleigh damping).
     static RayleighDamping at_two_frequencies(double zeta, double omega_1, double omega_2) {
-        return {2 * zeta * omega_1 * omega_2 / (omega_1 + omega_2), 2 * zeta / (omega_1 + omega_2)};
+        const RayleighSpec s = rayleigh_at_two_frequencies(zeta, omega_1, omega_2);
+        return {s.alpha, s.beta};
     }
 };
-
-// I-1: zeta = ln(X0 / XN) / (2 pi N) from a free decay over N cycles; the
-// logarithmic decrement delta = ln(X0 / X1) gives zeta = delta / (2 pi).
-// (The light-damping form the field uses; exact would be
-// delta / sqrt(4 pi^2 + delta^2), 0.05 % lower at zeta = 0.02.)
-inline double zeta_from_decay(double amplitude_ratio, double cycles) {
-    return std::log(amplitude_ratio) / (2 * M_PI * cycles);
-}
-inline double zeta_from_log_decrement(double delta) { return zeta_from_decay(std::exp(delta), 1.0); }
 
 // I-2...4: the dynamic amplification of a single mode, d(r) above.
 inline double amplification(double frequency_ratio, double zeta) {

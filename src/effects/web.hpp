@@ -23,20 +23,16 @@
 
 #include "material/material.hpp"  // Matrix6
 #include "scene/scene.hpp"
+#include "scene/web_springs.hpp"
 
 #include <Eigen/Dense>
 
 namespace coremodal {
 
+// The springs themselves (k_d, k_n, k_z), the shear modulus's default and
+// the run's assumptions about them: scene/web_springs.hpp.
 struct PaperWeb {
     static constexpr const char* kName = "web";
-    // The default in-plane shear modulus: G = 0.387 sqrt(E_MD E_CD) (Baum,
-    // Brennan & Habeger, Tappi 64(8), 1981, for machine-made papers) with
-    // E_CD = E_MD / 2 (MD/CD stiffness ratios of 1.5-3: Niskanen, Paper
-    // Physics, 2nd ed., ch. 5): 0.274 E_MD.
-    static constexpr const char* kShearRule =
-        "shear_modulus = 0.387 sqrt(E_MD E_CD) with E_CD = E_MD / 2 (Baum et al. 1981; MD/CD ratio 2): 0.274 x modulus";
-    static double default_shear_modulus(double modulus) { return 0.387 * std::sqrt(modulus * modulus / 2); }
 };
 
 // The web's direction d, the unit normal n out of its plane (from the axis
@@ -52,8 +48,5 @@ Eigen::Matrix3d web_line_stiffness(const WebSpec& web);
 // roll's axis, the line at radius R: the surface point moves by u + r x p,
 // so K6 = A^T K_line A with A = [I, -[p]x].
 Matrix6 web_beam_stiffness_per_length(const WebSpec& web, double radius);
-
-// The run's assumptions: the three springs and what is left out.
-std::vector<std::string> web_assumptions(const WebSpec& web);
 
 }  // namespace coremodal

@@ -73,10 +73,13 @@ void multiply(Mat M, PetscInt n, int cols, double* in, double* out) {
     COREMODAL_PETSC(MatDenseRestoreArrayRead(Y, &y));
 }
 
-// out = (K - sigma M)^-1 in, for `cols` columns: one pass over the factor.
-void solve(Mat F, Mat M, PetscInt n, int cols, double* in, double* out) {
-    PetscMatrix B = dense_view(M, n, cols, in), X = dense_view(M, n, cols, out);
-    COREMODAL_PETSC(MatMatSolve(F, B, X));
+// out = (K - sigma M)^-1 in, for `cols` columns: one pass over PETSc's
+// factor F.
+BlockSolve factor_solve(Mat F, Mat M, PetscInt n) {
+    return [F, M, n](int cols, const double* in, double* out) {
+        PetscMatrix B = dense_view(M, n, cols, const_cast<double*>(in)), X = dense_view(M, n, cols, out);
+        COREMODAL_PETSC(MatMatSolve(F, B, X));
+    };
 }
 
 // The dense algebra's time in -log_view and in `coremodal converge`'s
@@ -102,8 +105,8 @@ struct OrthogonalizationScope {
 class BlockLanczos {
 public:
     // n: the rows of the basis this process holds (M's local rows).
-    BlockLanczos(Mat F, Mat M, PetscInt n, int block, int capacity)
-        : F_(F), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity),
+    BlockLanczos(BlockSolve solve, Mat M, PetscInt n, int block, int capacity)
+        : solve_(std::move(solve)), M_(M), comm_(PetscObjectComm((PetscObject)M)), n_(n), b_(block), cap_(capacity),
           V_(n, capacity + block), MV_(n, capacity + block),
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
           H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
@@ -124,7 +127,7 @@ public:
     // T applied to the oldest block not yet applied; the result, made
     // M-orthonormal to the basis, is the basis's next block.
     void expand() {
-        solve(F_, M_, n_, b_, MV_.col(applied_), V_.col(m_));
+        solve_(b_, MV_.col(applied_), V_.col(m_));
         ++blocks_solved_;
         const Eigen::MatrixXd C1 = orthogonalise_against_basis(m_, b_);
         const Eigen::MatrixXd R1 = normalise_new_block(m_, b_, &C1);
@@ -299,7 +302,8 @@ private:
         else multiply(M_, n_, cols, in, out);
     }
 
-    Mat F_, M_;
+    BlockSolve solve_;
+    Mat M_;
     MPI_Comm comm_;
     PetscInt n_;
     int b_, cap_;
@@ -355,6 +359,13 @@ bool block_lanczos_fits(PetscInt n, int wanted) {
 }
 
 BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockLanczosRequest& request) {
+    PetscInt n_local;
+    COREMODAL_PETSC(MatGetLocalSize(M, &n_local, nullptr));
+    return block_lanczos_lowest(factor_solve(F, M, n_local), M, sigma, request);
+}
+
+BlockLanczosResult block_lanczos_lowest(const BlockSolve& solve, Mat M, double sigma,
+                                        const BlockLanczosRequest& request) {
     PetscInt n, n_local;
     COREMODAL_PETSC(MatGetSize(M, &n, nullptr));
     COREMODAL_PETSC(MatGetLocalSize(M, &n_local, nullptr));
@@ -370,7 +381,7 @@ BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockL
                          std::to_string(capacity) + " for " + std::to_string(request.wanted) + " pairs of a model with " +
                          std::to_string(n) + " unknowns: expected a block of at least 1 and a basis of at least " +
                          "the pairs + 4 blocks and at most the unknowns - 1 block");
-    BlockLanczos lanczos(F, M, n_local, block, capacity);
+    BlockLanczos lanczos(solve, M, n_local, block, capacity);
     lanczos.start();
     BlockLanczosResult out;
     out.block_size = block;

@@ -39,6 +39,7 @@
 
 #include <petscmat.h>
 
+#include <functional>
 #include <vector>
 
 namespace coremodal {
@@ -66,6 +67,13 @@ struct BlockLanczosResult {
 // models on SLEPc). The block size and basis follow `wanted`; experts set
 // them with -block_lanczos_bs and -block_lanczos_ncv.
 BlockLanczosResult block_lanczos_lowest(Mat F, Mat M, double sigma, const BlockLanczosRequest& request);
+
+// The operator as a function: out = (K - sigma M)^-1 in for `cols` columns
+// of this process's rows (column-major, leading dimension the local rows),
+// e.g. the single-precision factor's refined solve (single_factor.hpp).
+using BlockSolve = std::function<void(int cols, const double* in, double* out)>;
+BlockLanczosResult block_lanczos_lowest(const BlockSolve& solve, Mat M, double sigma,
+                                        const BlockLanczosRequest& request);
 
 // Whether the method takes `wanted` pairs of an n-unknown model: its basis
 // (about 3 x wanted vectors, twice over with their M-images) must fit the

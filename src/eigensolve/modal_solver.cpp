@@ -291,9 +291,8 @@ bool block_lanczos_applies(PetscInt n_dofs, int wanted) {
     return on && !eps_type && !st_factor;
 }
 
-Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
-                              const Progress& progress) {
-    BlockLanczosResult r = block_lanczos_lowest(F, M, sigma, {wanted, request.tolerance, request.max_iterations});
+// The pairs block Lanczos found, its passes said through `progress`.
+static Attempt as_attempt(BlockLanczosResult r, const Progress& progress) {
     progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
              std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
     Attempt a;
@@ -301,6 +300,17 @@ Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const Solv
     a.lambdas = std::move(r.eigenvalues);
     a.vectors = std::move(r.vectors);
     return a;
+}
+
+Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
+                              const Progress& progress) {
+    return as_attempt(block_lanczos_lowest(F, M, sigma, {wanted, request.tolerance, request.max_iterations}), progress);
+}
+
+Attempt block_lanczos_attempt(const BlockSolve& solve, Mat M, double sigma, int wanted, const SolveRequest& request,
+                              const Progress& progress) {
+    return as_attempt(block_lanczos_lowest(solve, M, sigma, {wanted, request.tolerance, request.max_iterations}),
+                      progress);
 }
 
 void say_if_out_of_core(Mat F, const Progress& progress) {

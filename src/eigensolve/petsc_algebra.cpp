@@ -57,30 +57,35 @@ double memory_allowed_mb() {
 
 // MUMPS out of core when its estimate does not fit (factor_fits_in_memory).
 void out_of_core_if_too_large(Mat F) {
-    PetscBool users_choice = PETSC_FALSE;
-    COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_22", &users_choice));
-    if (users_choice) return;
-    PetscInt estimate_mb = 0;
+    PetscInt estimate_mb = 0, out_of_core_mb = 0;
     COREMODAL_PETSC(MatMumpsGetInfog(F, 17, &estimate_mb));
+    COREMODAL_PETSC(MatMumpsGetInfog(F, 27, &out_of_core_mb));
+    if (factor_goes_out_of_core(PetscObjectComm((PetscObject)F), double(estimate_mb), double(out_of_core_mb)))
+        COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+}
+
+}  // namespace
+
+bool factor_goes_out_of_core(MPI_Comm comm, double estimate_mb, double out_of_core_mb) {
+    PetscInt users_value = 0;
+    PetscBool users_choice = PETSC_FALSE;
+    COREMODAL_PETSC(PetscOptionsGetInt(nullptr, nullptr, "-mat_mumps_icntl_22", &users_value, &users_choice));
+    if (users_choice) return users_value == 1;
     double allowed_mb = memory_allowed_mb();
-    MPI_Bcast(&allowed_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
-    if (factor_fits_in_memory(double(estimate_mb), allowed_mb)) return;
+    MPI_Bcast(&allowed_mb, 1, MPI_DOUBLE, 0, comm);
+    if (factor_fits_in_memory(estimate_mb, allowed_mb)) return false;
     // Out of core needs less, INFOG(27) (MUMPS 5 users' guide, section 6.2):
     // when even that does not fit in the memory the machine or the job has,
     // the factor would fail deep inside MUMPS (or the process be killed):
     // say so before it starts.
-    PetscInt out_of_core_mb = 0;
-    COREMODAL_PETSC(MatMumpsGetInfog(F, 27, &out_of_core_mb));
     // Against the machine's or the job's memory, not a user's -max_memory_mb:
     // that cap asks for the factor on disk, which is what follows.
     double physical_mb = free_memory_mb();
-    MPI_Bcast(&physical_mb, 1, MPI_DOUBLE, 0, PetscObjectComm((PetscObject)F));
-    if (physical_mb > 0 && !factor_fits_in_memory(double(out_of_core_mb), physical_mb / kInCoreShare))
-        throw SolveError(out_of_memory_text(double(out_of_core_mb)));
-    COREMODAL_PETSC(MatMumpsSetIcntl(F, 22, 1));
+    MPI_Bcast(&physical_mb, 1, MPI_DOUBLE, 0, comm);
+    if (physical_mb > 0 && !factor_fits_in_memory(out_of_core_mb, physical_mb / kInCoreShare))
+        throw SolveError(out_of_memory_text(out_of_core_mb));
+    return true;
 }
-
-}  // namespace
 
 bool factor_fits_in_memory(double estimate_mb, double allowed_mb) {
     return allowed_mb <= 0 || estimate_mb <= kInCoreShare * allowed_mb;

@@ -41,6 +41,12 @@ inline constexpr double kInCoreShare = 0.6;
 // Whether a factor MUMPS estimates at estimate_mb stays in memory when the
 // run may take allowed_mb (0: unknown, it stays).
 bool factor_fits_in_memory(double estimate_mb, double allowed_mb);
+// Whether a MUMPS factor (double or single precision, eigensolve/
+// single_factor.hpp) goes out of core: its analysis's in-core estimate
+// INFOG(17) does not fit (above), or the user's -mat_mumps_icntl_22 says 1.
+// SolveError when even its out-of-core estimate INFOG(27) exceeds the
+// machine's memory.
+bool factor_goes_out_of_core(MPI_Comm comm, double estimate_mb, double out_of_core_mb);
 
 // The factor of the symmetric A by `package` (MATSOLVERCHOLMOD: Cholesky;
 // MATSOLVERMUMPS: LDL^T with pivoting, which also counts): symbolic and

@@ -6,6 +6,7 @@
 #include "eigensolve/block_lanczos.hpp"
 #include "eigensolve/petsc_algebra.hpp"
 #include "eigensolve/shift_invert_steps.hpp"
+#include "eigensolve/single_factor.hpp"
 
 #include <slepceps.h>
 
@@ -203,6 +204,86 @@ std::optional<SolvedModes> solve_at_edge_one_vector(Mat K, Mat M, const SolveReq
     return std::nullopt;
 }
 
+// What the single-precision pass gave: the modes, proven complete; or
+// whether the double factor should be tried (the single one failed, its
+// refinement stalled, or its count could not be proven), said through
+// `progress`.
+struct SinglePass {
+    std::optional<SolvedModes> modes;
+    bool try_double = true;
+};
+
+std::string scientific(double x) {
+    std::ostringstream s;
+    s.precision(2);
+    s << std::scientific << x;
+    return s.str();
+}
+
+// The one-factor path on the single-precision LDL^T (single_factor.hpp):
+// block Lanczos on its refined solves, the count from its inertia when the
+// modes found prove it (single_count_proven), else from a double LDL^T.
+SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma,
+                                const Progress& progress) {
+    const PetscMatrix A = shifted(K, M, sigma);
+    std::optional<SingleLdlt> F;
+    try {
+        F.emplace(A);
+    } catch (const SolveError& e) {
+        progress(std::string(e.what()) + ": the double-precision factor instead");
+        return {};
+    }
+    if (F->out_of_core())
+        progress("the single-precision factor is kept on disk (MUMPS out of core: its analysis estimated " +
+                 std::to_string(F->estimate_mb()) + " MB; petsc_algebra.hpp, kInCoreShare)");
+    const long below = F->negative_pivots();
+    if (below < wanted || below > most_below_one_shift(wanted)) {
+        progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +
+                 std::to_string(wanted) + " wanted; solving with a negative shift");
+        return {std::nullopt, false};
+    }
+    Attempt a;
+    try {
+        a = block_lanczos_attempt([&](int cols, const double* in, double* out) { F->solve(cols, in, out); }, M, sigma,
+                                  int(below), request, progress);
+    } catch (const RefinementStalled& e) {
+        progress(std::string(e.what()) + ": falling back to the double-precision factor");
+        return {};
+    }
+    progress("single-precision factor: " + std::to_string(F->solves()) + " block solves refined in double, at most " +
+             std::to_string(F->most_steps()) + " correction(s) each, to a backward error below " +
+             scientific(kRefinedBackwardError));
+    const long found_below = count_below_shift(a, sigma);
+    const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
+    if (n_report < wanted || n_report > found_below) {
+        progress("found " + std::to_string(found_below) + " modes below sigma for " + std::to_string(wanted) +
+                 " wanted: solving with a negative shift");
+        return {std::nullopt, false};
+    }
+    const std::string margin = "no eigenvalue of K - sigma M within " + scientific(count_margin(*F)) +
+                               " (10 x the factor's backward error " + scientific(F->factor_backward_error()) +
+                               " x ||K - sigma M||_1) of zero";
+    if (found_below == below && single_count_proven(*F, M, sigma, a.lambdas, a.vectors)) {
+        progress("count from the single-precision factor's inertia, proven: " + margin +
+                 " (docs/theory/methods.md, \"A count from a single-precision factor\")");
+        return {verified_modes(K, M, a, n_report, sigma, below, found_below), false};
+    }
+    progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +
+             std::to_string(found_below) + " found) is not proven (" + margin +
+             " fails): counting with the double-precision LDL^T");
+    long double_below = 0;
+    try {
+        double_below = negative_eigenvalue_count(A, "K - sigma M at the predicted band edge");
+    } catch (const SolveError& e) {
+        progress(std::string(e.what()) + ": solving with a negative shift");
+        return {std::nullopt, false};
+    }
+    if (double_below == found_below) return {verified_modes(K, M, a, n_report, sigma, double_below, found_below), false};
+    progress("found " + std::to_string(found_below) + " modes below sigma, where the double factor counts " +
+             std::to_string(double_below) + ": solving with a negative shift");
+    return {std::nullopt, false};
+}
+
 // The one-factor path with block Lanczos on MUMPS's multi-right-hand-side
 // solves (block_lanczos.hpp): one LDL^T factor of K - sigma M at the
 // predicted edge counts the eigenvalues below sigma and is the operator
@@ -210,12 +291,20 @@ std::optional<SolvedModes> solve_at_edge_one_vector(Mat K, Mat M, const SolveReq
 // complete when exactly that many are found below sigma. None, said
 // through `progress`, when the factor fails, the shift lies below too few
 // or above too many modes, or the solve finds another number below it: the
-// caller then takes the negative shift and a separate count.
+// caller then takes the negative shift and a separate count. In one
+// process the factor is single precision unless the user asks for double
+// (factor_precision_choice); the double one when the single one fails.
 std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma,
                                                    const Progress& progress) {
-    progress("factorising K - sigma M (MUMPS LDL^T) at the predicted band edge, " + shift_text(sigma) +
-             ": one factor for the solve (block Lanczos) and the count");
+    const FactorPrecision precision = factor_precision_choice(PetscObjectComm((PetscObject)K));
+    progress("factorising K - sigma M (MUMPS LDL^T, " + precision.why + ") at the predicted band edge, " +
+             shift_text(sigma) + ": one factor for the solve (block Lanczos) and the count");
     const Heartbeat beat("factorising K - sigma M and solving", progress);
+    if (precision.single) {
+        SinglePass p = solve_at_edge_single(K, M, request, wanted, sigma, progress);
+        if (p.modes || !p.try_double) return std::move(p.modes);
+        progress("factorising K - sigma M in double precision (MUMPS LDL^T) at the predicted band edge");
+    }
     PetscMatrix F;
     try {
         F = ldlt_factor(shifted(K, M, sigma), "K - sigma M at the predicted band edge");

@@ -92,6 +92,47 @@ struct ProjectedGyroscopic::Basis {
 
     Eigen::Index m() const { return V.cols(); }
 
+    // 3. Every term projected once, and the R factor of the residual's columns
+    // (the operators: K + K_sigma, K_Omega or null, M, G, as the basis was built from).
+    void project(Mat k0_op, Mat k_omega_op, Mat m_op, Mat g_op, PetscInt n_dofs) {
+        std::vector<Dense> columns{V, apply_columns(k0_op, V)};
+        K0 = V.transpose() * columns.back();
+        K_omega = Dense::Zero(m(), m());
+        if (centrifugal) {
+            columns.push_back(apply_columns(k_omega_op, V));
+            K_omega = V.transpose() * columns.back();
+        }
+        columns.push_back(apply_columns(m_op, V));
+        columns.push_back(apply_columns(g_op, V));
+        G = V.transpose() * columns.back();
+        G = family ? Dense(0.5 * (G + G.transpose())) : Dense(0.5 * (G - G.transpose()));
+        Dense W(n_dofs, m() * columns.size());
+        for (size_t k = 0; k < columns.size(); ++k) W.middleCols(k * m(), m()) = columns[k];
+        columns.clear();
+        // R is W's upper trapezoidal factor: as many rows as W has columns, or as
+        // it has rows when a small problem has fewer DOFs than W has columns
+        // (||W c|| = ||R c|| either way).
+        const LogEvent qr_event("CmProjQR");
+        R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(std::min(W.rows(), W.cols())).triangularView<Eigen::Upper>();
+    }
+
+    // 4. The norms of the residual's scale.
+    void residual_norms(Mat k0_op, Mat k_omega_op, Mat m_op, Mat g_op) {
+        norm_K0 = norm_1(k0_op);
+        norm_G = norm_1(g_op);
+        norm_M = norm_1(m_op);
+        if (centrifugal) {
+            COREMODAL_PETSC(MatDuplicate(k0_op, MAT_COPY_VALUES, k0_union.out()));
+            COREMODAL_PETSC(MatAXPY(k0_union, 1.0, k_omega_op, DIFFERENT_NONZERO_PATTERN));
+            COREMODAL_PETSC(MatDuplicate(k0_union, MAT_DO_NOT_COPY_VALUES, k_omega_union.out()));
+            COREMODAL_PETSC(MatZeroEntries(k0_union));  // the union's pattern, then k0_op's values on it
+            COREMODAL_PETSC(MatAXPY(k0_union, 1.0, k0_op, SUBSET_NONZERO_PATTERN));
+            COREMODAL_PETSC(MatZeroEntries(k_omega_union));
+            COREMODAL_PETSC(MatAXPY(k_omega_union, 1.0, k_omega_op, SUBSET_NONZERO_PATTERN));
+            COREMODAL_PETSC(MatDuplicate(k0_union, MAT_DO_NOT_COPY_VALUES, k_work.out()));
+        }
+    }
+
     double norm_K(double spin) const {
         if (!centrifugal || spin == 0) return norm_K0;
         COREMODAL_PETSC(MatCopy(k0_union, k_work, SAME_NONZERO_PATTERN));
@@ -406,41 +447,8 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
         b.V = m_orthonormal_pass(M, m_orthonormal_pass(M, V));
     }
 
-    // 3. Every term projected once, and the R factor of the residual's columns.
-    std::vector<Dense> columns{b.V, apply_columns(K0, b.V)};
-    b.K0 = b.V.transpose() * columns.back();
-    b.K_omega = Dense::Zero(b.m(), b.m());
-    if (b.centrifugal) {
-        columns.push_back(apply_columns(K_omega, b.V));
-        b.K_omega = b.V.transpose() * columns.back();
-    }
-    columns.push_back(apply_columns(M, b.V));
-    columns.push_back(apply_columns(G, b.V));
-    b.G = b.V.transpose() * columns.back();
-    b.G = b.family ? Dense(0.5 * (b.G + b.G.transpose())) : Dense(0.5 * (b.G - b.G.transpose()));
-    Dense W(n_dofs, b.m() * columns.size());
-    for (size_t k = 0; k < columns.size(); ++k) W.middleCols(k * b.m(), b.m()) = columns[k];
-    columns.clear();
-    // R is W's upper trapezoidal factor: as many rows as W has columns, or as
-    // it has rows when a small problem has fewer DOFs than W has columns
-    // (||W c|| = ||R c|| either way).
-    const LogEvent qr_event("CmProjQR");
-    b.R = Eigen::HouseholderQR<Dense>(W).matrixQR().topRows(std::min(W.rows(), W.cols())).triangularView<Eigen::Upper>();
-
-    // 4. The norms of the residual's scale.
-    b.norm_K0 = norm_1(K0);
-    b.norm_G = norm_1(G);
-    b.norm_M = norm_1(M);
-    if (b.centrifugal) {
-        COREMODAL_PETSC(MatDuplicate(K0, MAT_COPY_VALUES, b.k0_union.out()));
-        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, K_omega, DIFFERENT_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_omega_union.out()));
-        COREMODAL_PETSC(MatZeroEntries(b.k0_union));  // the union's pattern, then K0's values on it
-        COREMODAL_PETSC(MatAXPY(b.k0_union, 1.0, K0, SUBSET_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatZeroEntries(b.k_omega_union));
-        COREMODAL_PETSC(MatAXPY(b.k_omega_union, 1.0, K_omega, SUBSET_NONZERO_PATTERN));
-        COREMODAL_PETSC(MatDuplicate(b.k0_union, MAT_DO_NOT_COPY_VALUES, b.k_work.out()));
-    }
+    b.project(K0, K_omega, M, G, n_dofs);  // 3
+    b.residual_norms(K0, K_omega, M, G);   // 4
 }
 
 std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const {

@@ -4,6 +4,7 @@
 // that is operator and count). Internal to eigensolve/.
 #pragma once
 
+#include "eigensolve/block_lanczos.hpp"
 #include "eigensolve/modal_solver.hpp"
 
 #include <slepceps.h>
@@ -47,6 +48,9 @@ bool block_lanczos_applies(PetscInt n_dofs, int wanted);
 // lowest; with sigma inside the spectrum, those below it), the passes said
 // through `progress`; the pairs come lambda-ascending.
 Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
+                              const Progress& progress);
+// The same on an operator given as a function (block_lanczos.hpp: BlockSolve).
+Attempt block_lanczos_attempt(const BlockSolve& solve, Mat M, double sigma, int wanted, const SolveRequest& request,
                               const Progress& progress);
 
 // Says through `progress` when the factor F lives on disk (MUMPS out of

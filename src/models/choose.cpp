@@ -64,23 +64,32 @@ void require_axisymmetric(const Scene& scene) {
                          "; expected full bands and no [mesh] file, or model = \"solid\"");
 }
 
-std::string chosen_level(const Scene& scene) {
-    if (scene.model != "auto") return scene.model;
-    if (!why_not_axisymmetric(scene)) return "harmonic";
-    return why_coupled(scene) ? "coupled" : "solid";
+ModelChoice chosen_level(const Scene& scene) {
+    const ModelChoice asked = model_choice_named(scene.model);
+    if (asked != ModelChoice::automatic) return asked;
+    if (!why_not_axisymmetric(scene)) return ModelChoice::harmonic;
+    return why_coupled(scene) ? ModelChoice::coupled : ModelChoice::solid;
+}
+
+ModelChoice chosen_spinning_level(const Scene& scene) {
+    const ModelChoice level = chosen_level(scene);
+    if (model_choice_named(scene.model) == ModelChoice::automatic && !level_traits(level).spins)
+        return ModelChoice::solid;
+    return level;
 }
 
 std::string level_choice_text(const Scene& scene, const std::string& given) {
-    if (scene.model == "beam") return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
-    if (scene.model == "harmonic")
+    const ModelChoice asked = model_choice_named(scene.model);
+    if (asked == ModelChoice::beam) return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
+    if (asked == ModelChoice::harmonic)
         return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";
-    if (scene.model == "coupled")
+    if (asked == ModelChoice::coupled)
         return "coupled (" + given + "): the r-z section, harmonics n = 0 ... N coupled by segmented expanding "
                "elements, the paper web or a one-sided contact in one 2D-cost eigenproblem per independent set";
     const std::optional<std::string> not_axisymmetric = why_not_axisymmetric(scene);
-    if (scene.model == "auto" && not_axisymmetric)
+    if (asked == ModelChoice::automatic && not_axisymmetric)
         if (const auto coupled = why_coupled(scene)) return "coupled (" + given + "; " + *coupled + ")";
-    if (scene.model == "auto")
+    if (asked == ModelChoice::automatic)
         return not_axisymmetric ? "solid (" + given + "; not a body of revolution: " + *not_axisymmetric + ")"
                                 : "harmonic (" + given + "; a body of revolution: no segmented expanding element, "
                                                          "no [mesh] file)";
@@ -91,10 +100,13 @@ std::string level_choice_text(const Scene& scene, const std::string& given) {
 }
 
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
-    const std::string level = chosen_level(scene);
-    if (level == "beam") return std::make_unique<BeamLevel>();
-    if (level == "harmonic") return std::make_unique<HarmonicLevel>();
-    if (level == "coupled") return std::make_unique<CoupledLevel>();
+    switch (chosen_level(scene)) {
+        case ModelChoice::beam: return std::make_unique<BeamLevel>();
+        case ModelChoice::harmonic: return std::make_unique<HarmonicLevel>();
+        case ModelChoice::coupled: return std::make_unique<CoupledLevel>();
+        case ModelChoice::solid:
+        case ModelChoice::automatic: break;  // chosen_level resolves "auto"
+    }
     return std::make_unique<SolidLevel>();
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "models/model_level.hpp"
+#include "scene/level_traits.hpp"
 #include "scene/scene.hpp"
 
 #include <memory>
@@ -36,13 +37,18 @@ void require_axisymmetric(const Scene& scene);
 // when the scene is a body of revolution, coupled when only segmented
 // expanding elements on a spring layer, a one-sided contact or the web
 // break the symmetry, else the solid.
-std::string chosen_level(const Scene& scene);
+ModelChoice chosen_level(const Scene& scene);
+
+// The level a spinning run of the scene uses: chosen_level, except that
+// where "auto" picks a level that cannot spin (the coupled harmonics), the
+// solid spins the scene in co-rotating coordinates.
+ModelChoice chosen_spinning_level(const Scene& scene);
 
 // The level chosen_level picks and why, in words (`coremodal check`);
 // `given`: where the scene's model key came from.
 std::string level_choice_text(const Scene& scene, const std::string& given);
 
-// The level named chosen_level(scene) ("solid", "harmonic", "coupled" or "beam").
+// The level chosen_level(scene) names (solid, harmonic, coupled or beam).
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
 
 }  // namespace coremodal

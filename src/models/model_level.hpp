@@ -12,7 +12,7 @@
 // Why solve() is one call and not problems() + expand(): docs/architecture.md.
 #pragma once
 
-#include "output/run_pictures.hpp"
+#include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
 #include <iostream>
@@ -21,8 +21,6 @@
 #include <vector>
 
 namespace coremodal {
-
-class ResultsFolder;
 
 // Progress lines on standard output, when on.
 struct Printer {
@@ -54,10 +52,11 @@ public:
     // proven complete), expand and name the modes. Collective over
     // PETSC_COMM_WORLD; InputError / SolveError with a message for the user.
     virtual LevelModes solve(const Scene& scene, const Printer& say) = 0;
-    // Step 8 (rank 0): the level's mode shapes in the results folder
-    // (modes.h5 + modes.xdmf on the display mesh, or beam_shapes.csv) and
-    // the pictures of report.md drawn from them.
-    virtual RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const = 0;
+    // Step 8 (rank 0): where the level's mode shapes live (the display mesh,
+    // or the beam network), for output/run_folder to write them into the
+    // results folder (modes.h5 + modes.xdmf, or beam_shapes.csv) and draw
+    // the pictures of report.md from them.
+    virtual LevelShapes shapes() const = 0;
     // A line after the console tables, or "".
     virtual std::string console_note() const { return ""; }
 };

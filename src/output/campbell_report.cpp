@@ -6,6 +6,7 @@
 #include "output/i5_speeds.hpp"
 #include "output/summary_json.hpp"
 #include "output/text_file.hpp"
+#include "scene/level_traits.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -178,7 +179,7 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     std::ostringstream out;
     out << "# Campbell diagram: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << (r.level == "beam" ? "Beam" : r.level == "harmonic" ? "Harmonic" : "Solid") << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
+    out << level_traits(r.level).title << " level, " << r.n_dofs << " DOFs (" << r.solver << "); " << r.points.size() << " speeds from " << rpm(r.points.front().speed_hz)
         << " to " << rpm(r.points.back().speed_hz) << "; excitation orders";
     for (int k : r.excitation_orders) out << " " << k;
     if (r.operating_hz) out << "; operating range " << rpm((*r.operating_hz)[0]) << " to " << rpm((*r.operating_hz)[1]);

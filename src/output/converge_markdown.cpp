@@ -38,7 +38,7 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
     const TrackedMode* oval = find_role(m, "ovalling");
     // The beam builds a network instead of a mesh and assembles inside its
     // solve (problem by problem): its columns say so.
-    const bool beam = m.model == "beam";
+    const bool beam = !m.traits.meshed;
     if (beam)
         s << "| k | elements (core/network) | DOFs | runs | network [s] | assemble+solve [s] | labels [s] | "
              "total [s] | CPU [s] | peak memory [MiB] |";
@@ -117,7 +117,7 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
     const LevelResult& l = m.levels.back();
     const Timing& t = l.median_s;
     const double total = t.total > 0 ? t.total : 1;
-    if (m.model == "beam") {
+    if (!m.traits.meshed) {
         s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
           << l.runs << " runs): building the beam network " << seconds(t.mesh) << " s (" << percent(t.mesh / total)
           << "), assembly, eigensolve and inertia count " << seconds(t.factor_and_solve) << " s ("
@@ -129,10 +129,7 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
                                << formatted("%.2f", *m.time_exponent) << ".\n";
         return;
     }
-    if (m.model == "harmonic")
-        s << "\nHarmonic level: mesh = the r–z section and its revolution (for naming the modes); assembly and "
-             "factorization and solve sum over the wave numbers n solved or counted; DOFs = the largest one-harmonic "
-             "problem.\n";
+    s << m.traits.cost_note;
     s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
       << l.runs << (l.runs == 1 ? " run" : " runs") << "): mesh " << seconds(t.mesh) << " s ("
       << percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s (" << percent(t.assemble / total)
@@ -185,12 +182,12 @@ void markdown_same_section(std::ostringstream& s, const ModelStudy& harmonic, co
 
 // One line per role: where each model level converges and how far apart.
 void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
-    const ModelStudy* solid = find_model(study.models, "solid");
+    const ModelStudy* solid = find_reference(study.models);
     if (!solid) return;
     const std::vector<ModelError> errors = model_errors(study.models);
     for (const auto& m : study.models) {
-        if (m.model == "solid") continue;
-        const bool harmonic = m.model == "harmonic";
+        if (m.traits.reference) continue;
+        const bool harmonic = m.traits.same_section;
         s << "\n## Model error: " << m.model << " against solid\n\n";
         if (harmonic)
             s << "The harmonic level solves the solid's own r–z section (level k meshes the same section as the "
@@ -259,7 +256,7 @@ void markdown_checks(std::ostringstream& s, const ConvergeStudy& study) {
     s << "\n## Named mesh levels against the extrapolated values (solid)\n\n"
          "| level | mesh (wall/paper/around/along) | DOFs | total [s] | peak memory [MiB] | f1 [Hz] | error f1 | "
          "ovalling [Hz] | error ovalling |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    const ModelStudy* solid = find_model(study.models, "solid");
+    const ModelStudy* solid = find_reference(study.models);
     for (const auto& c : study.checks) {
         s << "| " << c.name << " | " << c.mesh << " | " << c.result.n_dofs << " | "
           << seconds(c.result.median_s.total) << " | " << formatted("%.0f", c.result.peak_memory_mb) << " |";

@@ -53,7 +53,7 @@ std::string csv_mode_cells(const TrackedMode& mode, std::size_t i, const std::ve
 // Each tracked mode's error against the solid's f0 per level (empty for the solid itself).
 std::vector<std::optional<double>> vs_solid(const ModelStudy& model, const TrackedMode& mode,
                                             const ConvergeStudy& study) {
-    return model.model == "solid" ? std::vector<std::optional<double>>() : error_against_solid(mode, study.models);
+    return model.traits.reference ? std::vector<std::optional<double>>() : error_against_solid(mode, study.models);
 }
 
 }  // namespace
@@ -133,18 +133,6 @@ Json mode_table(const ModelStudy& model, const TrackedMode& mode, const Converge
     return t;
 }
 
-// What the timing columns mean for the levels that are not a meshed solid.
-const char* timing_parts(const std::string& model) {
-    if (model == "beam")
-        return "mesh: building the beam network; factor_and_solve: assembly, eigensolve and inertia count (assemble "
-               "is inside it, 0 here); classify: labels and effective masses";
-    if (model == "harmonic")
-        return "mesh: the r-z section and its revolution (for naming the modes); assemble and factor_and_solve: "
-               "summed over the wave numbers n (eigensolves and inertia counts); n_dofs: the largest one-harmonic "
-               "problem";
-    return nullptr;
-}
-
 Json model_table(const ModelStudy& model, const ConvergeStudy& study) {
     Json levels = Json::array(), modes = Json::array();
     for (const auto& l : model.levels) levels.push_back(level_table(l));
@@ -154,7 +142,7 @@ Json model_table(const ModelStudy& model, const ConvergeStudy& study) {
                   {"refined_dimensions", model.refined_dimensions},
                   {"levels", levels},
                   {"modes", modes}};
-    if (const char* parts = timing_parts(model.model)) m["timing_parts"] = (parts);
+    if (!model.traits.timing_parts.empty()) m["timing_parts"] = model.traits.timing_parts;
     Json unseen = Json::array();
     for (const auto& [role, why] : model.unseen_roles) unseen.push_back(Json{{"role", role}, {"reason", why}});
     m["not_in_model"] = (unseen);
@@ -179,7 +167,7 @@ Json model_errors_array(const ConvergeStudy& study) {
 
 Json checks_array(const ConvergeStudy& study) {
     Json checks = Json::array();
-    const ModelStudy* solid = find_model(study.models, "solid");
+    const ModelStudy* solid = find_reference(study.models);
     for (const auto& c : study.checks) {
         Json modes = Json::array();
         for (const auto& d : distinct_modes(c.result.modes)) {

@@ -5,6 +5,7 @@
 // converge_markdown.cpp the report, converge_summary.cpp the console lines.
 #pragma once
 
+#include "analyses/converge/converge.hpp"
 #include "analyses/converge/converge_study.hpp"
 
 #include <filesystem>
@@ -33,8 +34,9 @@ void write_converge_results(const ConvergeStudy& study, const std::filesystem::p
 // levels reaching each accuracy target, the model errors, the times.
 void print_converge_summary(const ConvergeStudy& study, std::ostream& out);
 
-// Seconds in progress lines: `format` ("%.1f"), but two significant digits
-// below 0.1 s (a beam run takes ~1e-3 s).
-std::string progress_seconds(double s, const char* format);
+// What `coremodal converge` gives run_converge (ConvergeOptions::claim and
+// ::write): claim_output before any work; after it, with write_results,
+// write_converge_results, and the console summary unless quiet.
+void attach_converge_writers(ConvergeOptions& options);
 
 }  // namespace coremodal

@@ -1,15 +1,12 @@
 #include "output/converge_report.hpp"
 
+#include "analyses/converge/ladder_runs.hpp"
 #include "common/format.hpp"
 
 #include <cmath>
 #include <cstdio>
 
 namespace coremodal {
-
-std::string progress_seconds(double s, const char* format) {
-    return s > 0 && s < 0.1 ? formatted("%.2g", s) : formatted(format, s);
-}
 
 namespace {
 

@@ -6,6 +6,7 @@
 #include "output/i5_speeds.hpp"
 #include "output/summary_json.hpp"
 #include "output/text_file.hpp"
+#include "scene/level_traits.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -224,7 +225,7 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
     std::ostringstream out;
     out << "# Forced response: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << (r.level == "harmonic" ? "Harmonic level (wave number n = 1), " : r.level == "solid" ? "Solid level, " : "Beam level, ")
+    out << level_traits(r.level).response_heading
         << r.n_dofs
         << " lateral DOFs; " << r.points.size() << " speeds from "
         << m_s(r.points.front().web_speed_m_s) << " to " << m_s(r.points.back().web_speed_m_s) << " web speed ("
@@ -250,7 +251,7 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
         << (c.complete_basis ? "complete basis" : "direct solve") << " by " << significant(c.truncation_max_relative, 2)
         << " (relative, amplitude at " << r.probes.front().name << "); the "
         << (c.complete_basis ? "complete basis" : "truncated sum") << " differs from the direct solve of "
-        << (r.level == "harmonic" ? "(K - w^2 M + w W G + i w D) a = p (wave number n = 1)" : "(K - w^2 M + i w (W G + D)) x = f")
+        << level_traits(r.level).response_equation
         << " by " << significant(c.direct_max_relative, 2) << " (relative norm)"
         << (c.complete_basis ? "" : ": both are the truncation's effect (no complete basis of a mesh)") << ".\n\n"
         << "Tables: response.csv (per speed and probe), peaks.csv, summary.json. Solve "

@@ -1,5 +1,6 @@
 #include "output/run_folder.hpp"
 
+#include "output/beam_shapes.hpp"
 #include "output/modes_h5.hpp"
 #include "output/run_markdown.hpp"
 #include "output/side_by_side.hpp"
@@ -31,6 +32,14 @@ RunPictures write_mesh_shapes(ResultsFolder& folder, const RunReport& report, co
     if (plots && !pictures.problem.empty())
         std::cerr << "coremodal: warning: no pictures in report.md: " << pictures.problem << std::endl;
     return pictures;
+}
+
+RunPictures write_level_shapes(ResultsFolder& folder, const RunReport& report, const LevelShapes& shapes, bool plots) {
+    if (shapes.mesh) return write_mesh_shapes(folder, report, *shapes.mesh, plots);
+    write_beam_shapes_csv(folder.file("beam_shapes.csv"), *shapes.beam);
+    RunPictures none;
+    none.problem = "the beam model level has no mesh to draw (its mode shapes are in beam_shapes.csv)";
+    return none;
 }
 
 }  // namespace coremodal

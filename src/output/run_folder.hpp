@@ -6,6 +6,7 @@
 #include "mesh/mesh.hpp"
 #include "output/results_folder.hpp"
 #include "output/run_pictures.hpp"
+#include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
 #include <filesystem>
@@ -22,5 +23,9 @@ void write_run_folder(const RunReport& report, const std::filesystem::path& dir,
 // then the pictures, which read modes.h5 (none when `plots` is false; the
 // run stays complete without them, and report.md says why).
 RunPictures write_mesh_shapes(ResultsFolder& folder, const RunReport& report, const Mesh& mesh, bool plots);
+
+// The shapes of any level (ModelLevel::shapes): on its mesh as above, or the
+// beam network's beam_shapes.csv, which has no pictures (report.md says why).
+RunPictures write_level_shapes(ResultsFolder& folder, const RunReport& report, const LevelShapes& shapes, bool plots);
 
 }  // namespace coremodal

@@ -4,6 +4,7 @@
 #include "beam/formulas.hpp"
 #include "beam/iso_test.hpp"
 #include "common/format.hpp"
+#include "scene/level_traits.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -82,21 +83,16 @@ void scene_section(std::ostream& out, const Scene& s) {
 
 void model_section(std::ostream& out, const RunReport& r) {
     const ModelInfo& m = r.model;
+    const LevelTraits& level = level_traits(m.level);
     const Verification& v = r.modes.verification;
     out << "## Model and verification\n\n";
     out << "- model: " << m.level << ", " << m.element << ", " << m.n_elements << " elements, " << m.n_nodes
-        << " nodes, " << m.n_dofs << (m.level == "harmonic" ? " DOFs per wave number n (" : " DOFs (")
+        << " nodes, " << m.n_dofs << " " << level.dofs_counted << " ("
         << m.n_eliminated_nodes << " clamped nodes eliminated); mesh: "
         << m.mesh_source;
-    if (m.level != "beam" && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
+    if (level.meshed && !r.scene.mesh.file) out << ", level " << r.scene.mesh.level;
     out << "\n";
-    if (!m.harmonics.empty() && m.level == "coupled")
-        out << "- coupled harmonics (segmented chucks, a chuck not expanded, the web), one problem per independent set "
-               "of wave numbers "
-               "(docs/theory/harmonic.md): " << m.harmonics << "\n";
-    else if (!m.harmonics.empty())
-        out << "- one 2D problem per wave number n (modes with n >= 1 come in pairs turned by 90°/n): " << m.harmonics
-            << "\n";
+    if (!m.harmonics.empty()) out << "- " << level.problems_line << ": " << m.harmonics << "\n";
     out << "- mass: model " << significant(m.mass_kg, 6) << " kg, from the dimensions "
         << significant(m.expected_mass_kg, 6) << " kg";
     if (m.expected_mass_kg > 0) out << " (" << formatted("%+.2e", m.mass_kg / m.expected_mass_kg - 1) << ")";
@@ -125,9 +121,7 @@ void model_section(std::ostream& out, const RunReport& r) {
             << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << found
             << " modes found there" << counted << ": **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
     else
-        out << (m.level == "coupled" ? "- inertia counts, one per independent set of the coupled harmonics, summed: "
-                                     : "- inertia counts, one per harmonic at its own shift (listed above), summed with pairs twice: ")
-            << v.negative_pivots_at_shift << " eigenvalues, " << found << " modes found" << counted << ": **"
+        out << "- " << level.inertia_counts << ": " << v.negative_pivots_at_shift << " eigenvalues, " << found << " modes found" << counted << ": **"
             << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
 }
 

@@ -2,6 +2,7 @@
 
 #include "output/summary_json.hpp"
 #include "output/text_file.hpp"
+#include "scene/level_traits.hpp"
 
 #include "beam/iso_test.hpp"
 
@@ -316,7 +317,7 @@ void print_verification_and_beam(std::ostream& out, const RunReport& r) {
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots for %ld modes "
                       "found%s, summed over the %s own counts: %s\n",
                       v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift, found,
-                      counted.c_str(), r.model.level == "coupled" ? "independent sets'" : "harmonics'",
+                      counted.c_str(), level_traits(r.model.level).count_owners,
                       v.complete ? "complete" : "INCOMPLETE");
     out << line;
     if (!r.model.harmonics.empty()) out << "harmonics: " << r.model.harmonics << "\n";

@@ -250,27 +250,8 @@ std::optional<std::string> CaseReader::likely_unit(double v, Dimension d, const 
 
 void CaseReader::check_range(const Section& s, const KeySpec& spec, const toml::node& node,
                              double v) const {
-    const std::string what = name_of(s, spec.key) + " = " + format_quantity(v, spec.dimension);
-    if (spec.min_exclusive && !(v > spec.min))
-        fail(node,
-             what + " must be " +
-                 (spec.min == 0 ? std::string("positive")
-                                : "larger than " + format_quantity(spec.min, spec.dimension)));
-    if (!spec.min_exclusive && v < spec.min)
-        fail(node,
-             what + " must be " +
-                 (spec.min == 0 ? std::string("zero or positive")
-                                : "at least " + format_quantity(spec.min, spec.dimension)));
-    if (v > spec.max) {
-        std::string msg = what + " is too large: expected at most " +
-                          format_quantity(spec.max, spec.dimension);
-        if (node.is_number() && spec.dimension != Dimension::dimensionless)
-            msg += std::string("; plain numbers are in ") + si_unit(spec.dimension) +
-                   (spec.dimension == Dimension::length
-                        ? ", for millimetres write \"" + show(node) + " mm\""
-                        : "");
-        fail(node, msg);
-    }
+    if (const std::optional<std::string> why = out_of_range(spec, v, node.is_number() ? show(node) : ""))
+        fail(node, name_of(s, spec.key) + " = " + format_quantity(v, spec.dimension) + " " + *why);
 }
 
 std::optional<int> CaseReader::integer(const Section& s, std::string_view key) const {
@@ -279,11 +260,7 @@ std::optional<int> CaseReader::integer(const Section& s, std::string_view key) c
     const KeySpec* spec = find_key(s.schema, key);
     COREMODAL_ASSERT(spec && spec->kind == ValueKind::integer);
     const std::int64_t v = *node->value<std::int64_t>();
-    // Compared as doubles: the bounds are far inside both ranges.
-    if (static_cast<double>(v) < spec->min || static_cast<double>(v) > spec->max)
-        fail(*node, echo(s, key, *node) + " is out of range; expected " +
-                        std::to_string(static_cast<long long>(spec->min)) + " to " +
-                        std::to_string(static_cast<long long>(spec->max)));
+    if (const std::optional<std::string> why = integer_out_of_range(*spec, v)) fail(*node, echo(s, key, *node) + " " + *why);
     return static_cast<int>(v);
 }
 

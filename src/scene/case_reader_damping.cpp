@@ -9,7 +9,7 @@
 #include "scene/case_reader.hpp"
 
 #include "common/error.hpp"
-#include "effects/damping.hpp"
+#include "scene/damping_input.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -115,7 +115,7 @@ RayleighSpec CaseReader::read_rayleigh(const Section& damping, std::string& sour
     const double f1 = to_si(items[0], Dimension::frequency, what), f2 = to_si(items[1], Dimension::frequency, what);
     if (!(f1 > 0)) fail(items[0], what + ": a frequency must be above 0 (alpha M damps a mode at rest infinitely)");
     if (!(f2 > f1)) fail(items[1], what + ": expected two different frequencies, the lower first");
-    const RayleighDamping d = RayleighDamping::at_two_frequencies(zeta, 2 * M_PI * f1, 2 * M_PI * f2);
+    const RayleighSpec d = rayleigh_at_two_frequencies(zeta, 2 * M_PI * f1, 2 * M_PI * f2);
     spec.alpha = d.alpha, spec.beta = d.beta;
     source = "[damping] rayleigh: zeta = " + format_quantity(zeta, Dimension::dimensionless) + " at " +
              format_quantity(f1, Dimension::frequency) + " and " + format_quantity(f2, Dimension::frequency) +

@@ -1,10 +1,10 @@
 // [web]: the paper web leaving the roll (scene/scene.hpp WebSpec,
-// effects/web.hpp, docs/theory/web.md). Every key but shear_modulus is required;
+// scene/web_springs.hpp, effects/web.hpp, docs/theory/web.md). Every key but shear_modulus is required;
 // its default is Baum's rule. What the model makes of the web goes into the
 // scene's assumptions, which every level echoes.
 #include "scene/case_reader.hpp"
 
-#include "effects/web.hpp"
+#include "scene/web_springs.hpp"
 
 namespace coremodal::case_reading {
 
@@ -33,8 +33,8 @@ std::optional<WebSpec> CaseReader::read_web(const Section& top, Scene& scene) co
         spec.shear_modulus = *g;
         spec.shear_source = "[web] shear_modulus";
     } else {
-        spec.shear_modulus = PaperWeb::default_shear_modulus(spec.modulus);
-        spec.shear_source = PaperWeb::kShearRule;
+        spec.shear_modulus = default_web_shear_modulus(spec.modulus);
+        spec.shear_source = kWebShearRule;
     }
     for (std::string& line : web_assumptions(spec)) scene.assumptions.push_back(std::move(line));
     return spec;

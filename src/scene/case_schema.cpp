@@ -1,6 +1,7 @@
 #include "scene/case_schema.hpp"
 
 #include "common/join.hpp"
+#include "scene/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -411,6 +412,30 @@ std::string did_you_mean(std::string_view word, const std::vector<std::string_vi
 std::string did_you_mean_or_choices(std::string_view word, const std::vector<std::string_view>& candidates) {
     const std::string typo = did_you_mean(word, candidates);
     return typo.empty() ? "; expected one of " + join(candidates) : typo;
+}
+
+std::optional<std::string> out_of_range(const KeySpec& spec, double v, std::string_view plain_number) {
+    if (spec.min_exclusive && !(v > spec.min))
+        return "must be " + (spec.min == 0 ? std::string("positive")
+                                           : "larger than " + format_quantity(spec.min, spec.dimension));
+    if (!spec.min_exclusive && v < spec.min)
+        return "must be " + (spec.min == 0 ? std::string("zero or positive")
+                                           : "at least " + format_quantity(spec.min, spec.dimension));
+    if (!(v > spec.max)) return std::nullopt;
+    std::string why = "is too large: expected at most " + format_quantity(spec.max, spec.dimension);
+    if (!plain_number.empty() && spec.dimension != Dimension::dimensionless)
+        why += std::string("; plain numbers are in ") + si_unit(spec.dimension) +
+               (spec.dimension == Dimension::length
+                    ? ", for millimetres write \"" + std::string(plain_number) + " mm\""
+                    : "");
+    return why;
+}
+
+std::optional<std::string> integer_out_of_range(const KeySpec& spec, std::int64_t v) {
+    // Compared as doubles: the bounds are far inside both ranges.
+    if (static_cast<double>(v) >= spec.min && static_cast<double>(v) <= spec.max) return std::nullopt;
+    return "is out of range; expected " + std::to_string(static_cast<long long>(spec.min)) + " to " +
+           std::to_string(static_cast<long long>(spec.max));
 }
 
 }  // namespace coremodal

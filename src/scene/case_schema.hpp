@@ -5,7 +5,9 @@
 
 #include "scene/units.hpp"
 
+#include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,6 +62,16 @@ inline constexpr std::string_view kDefaultChuckMaterial = "steel";
 std::string_view default_material(std::string_view owner_table);
 
 const std::vector<KeySpec>& case_schema();
+
+// The one range check of a key's value, for every reader of case keys (the
+// case reader, the [study]/[calibration] sweep reader): what is wrong with
+// `v`, worded to follow "KEY = VALUE" ("must be positive", "is too large:
+// expected at most 50 m; plain numbers are in m, ..."), or nothing when it is
+// inside the key's bounds. `plain_number`: the value as written when the file
+// gave a plain number (the hint that plain numbers are SI), else "".
+std::optional<std::string> out_of_range(const KeySpec& spec, double v, std::string_view plain_number = "");
+// The same for an integer key: "is out of range; expected 1 to 10000".
+std::optional<std::string> integer_out_of_range(const KeySpec& spec, std::int64_t v);
 // The schema table of the table at `key` inside schema table `parent`: the
 // key itself, except [supports.left]/[supports.right] ("clamp" or "chuck" as
 // `support_type` says) and every material table ("material").

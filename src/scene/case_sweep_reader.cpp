@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/join.hpp"
+#include "scene/case_reader.hpp"
 #include "scene/case_schema.hpp"
 #include "scene/case_table.hpp"
 #include "scene/mesh_levels.hpp"
@@ -123,24 +124,17 @@ private:
         return v;
     }
 
+    // The case reader's own check and words (case_schema.hpp: out_of_range).
     void check_range(const toml::node& node, const KeySpec& spec, double v, const std::string& what) const {
-        const bool low = spec.min_exclusive ? !(v > spec.min) : v < spec.min;
-        if (low)
-            fail(node, what + " = " + format_quantity(v, spec.dimension) + " must be " +
-                           (spec.min_exclusive ? "larger than " : "at least ") +
-                           format_quantity(spec.min, spec.dimension));
-        if (v > spec.max)
-            fail(node, what + " = " + format_quantity(v, spec.dimension) + " is too large; expected at most " +
-                           format_quantity(spec.max, spec.dimension));
+        if (const std::optional<std::string> why = out_of_range(spec, v, node.is_number() ? case_reading::show(node) : ""))
+            fail(node, what + " = " + format_quantity(v, spec.dimension) + " " + *why);
     }
 
     std::int64_t integer(const toml::node& node, const KeySpec& spec, const std::string& what) const {
         if (!node.is_integer()) fail(node, what + ": expected a whole number");
         const std::int64_t v = *node.value<std::int64_t>();
-        if (static_cast<double>(v) < spec.min || static_cast<double>(v) > spec.max)
-            fail(node, what + " = " + std::to_string(v) + " is out of range; expected " +
-                           std::to_string(static_cast<long long>(spec.min)) + " to " +
-                           std::to_string(static_cast<long long>(spec.max)));
+        if (const std::optional<std::string> why = integer_out_of_range(spec, v))
+            fail(node, what + " = " + std::to_string(v) + " " + *why);
         return v;
     }
 

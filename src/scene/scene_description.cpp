@@ -4,6 +4,7 @@
 #include "scene/chuck_contact.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/mesh_rule.hpp"
+#include "scene/model_choice.hpp"
 
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
@@ -254,7 +255,7 @@ private:
             add("[analysis] modes", std::to_string(a.n_modes), origin("analysis.modes"));
         }
         add("[analysis] tolerance", format_quantity(a.tolerance, Dimension::dimensionless), origin("analysis.tolerance"));
-        add("[analysis] max_iterations", std::to_string(a.max_iterations) + (scene_.model == "beam" ? " (not used by the beam level)" : ""),
+        add("[analysis] max_iterations", std::to_string(a.max_iterations) + (model_choice_named(scene_.model) == ModelChoice::beam ? " (not used by the beam level)" : ""),
             origin("analysis.max_iterations"));
     }
 

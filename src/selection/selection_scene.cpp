@@ -318,10 +318,11 @@ private:
     }
 };
 
-}  // namespace
+using SchemaJson = nlohmann::ordered_json;
 
-std::string selection_json_schema() {
-    using Json = nlohmann::ordered_json;
+// The schema of every key of a selection file by name, as the reader takes it.
+std::map<std::string_view, SchemaJson> selection_key_types() {
+    using Json = SchemaJson;
     // A quantity as the reader takes it: a plain number in SI within
     // (min, max], or a string with a unit of its dimension.
     const auto quantity = [](Dimension d, double min, double max) {
@@ -339,7 +340,7 @@ std::string selection_json_schema() {
     const Json weight{{"type", "string"},
                       {"pattern", R"(^[+]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)? (N|kN|kg|t)$)"},
                       {"description", "a weight with its unit: N, kN, kg or t, e.g. \"28 kN\""}};
-    const std::map<std::string_view, Json> types = {
+    return {
         {"name", text},
         {"description", text},
         {"failure_probability", quantity(Dimension::dimensionless, 0, 0.5)},
@@ -374,6 +375,13 @@ std::string selection_json_schema() {
         {"width", quantity(Dimension::length, 0, kMaxWidth)},
         {"diameter", length},
     };
+}
+
+}  // namespace
+
+std::string selection_json_schema() {
+    using Json = SchemaJson;
+    const std::map<std::string_view, Json> types = selection_key_types();
     // A table of the reader's keys (its key lists above), so that the schema
     // and the reader cannot disagree on which keys exist.
     const auto table = [&](const std::vector<std::string_view>& keys, std::vector<std::string> required,

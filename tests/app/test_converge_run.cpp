@@ -6,6 +6,7 @@
 
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"
+#include "output/converge_report.hpp"
 #include "scene/case_file.hpp"
 
 #include "support/program_run.hpp"
@@ -54,6 +55,7 @@ TEST_CASE("Converge on case 01: f1 extrapolates to the Timoshenko value at the r
           "[converge][e2e]") {
     TempDir dir;
     ConvergeOptions o;
+    attach_converge_writers(o);  // what `coremodal converge` writes
     o.case_file = case_file("01-iso-free-free-76x15.toml");
     o.output_dir = (dir.path / "out").string();
     o.unit = "1/1/8/3";
@@ -154,6 +156,7 @@ namespace {
 // A beam-only study (no PETSc solve; about a second): every level 200 runs.
 ConvergeStudy beam_study(const std::string& case_name) {
     ConvergeOptions o;
+    attach_converge_writers(o);  // what `coremodal converge` writes
     o.case_file = case_file(case_name);
     o.models = {"beam"};
     o.quiet = true;
@@ -331,6 +334,7 @@ namespace {
 ConvergeOptions small_study(const std::string& case_name, const std::string& unit, int levels,
                             std::vector<std::string> models) {
     ConvergeOptions o;
+    attach_converge_writers(o);  // what `coremodal converge` writes
     o.case_file = case_file(case_name);
     o.unit = unit;
     o.levels = levels;

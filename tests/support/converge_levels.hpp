@@ -52,8 +52,8 @@ inline ConvergeStudy beam_against_solid_study() {
     ConvergeStudy study;
     study.case_name = "synthetic";
     study.source_file = "synthetic.toml";
-    study.models.push_back(analyse_levels("solid", "solid ladder", solid_levels));
-    study.models.push_back(analyse_levels("beam", "beam ladder", beam_levels));
+    study.models.push_back(analyse_levels(ModelChoice::solid, "solid ladder", solid_levels));
+    study.models.push_back(analyse_levels(ModelChoice::beam, "beam ladder", beam_levels));
     study.models[1].refined_dimensions = 1;
     study.models[1].unseen_roles = {{"ovalling", "rigid cross-sections"}};
     return study;

@@ -1,6 +1,7 @@
 // Case 05 (cases/05-beam-level-rest-roll-150x15.8-4320.toml), the beam model
 // level of case 03's rest roll, run as a user runs it: results in a folder.
 #include "analyses/run/run.hpp"
+#include "output/run_writer.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -34,6 +35,7 @@ TEST_CASE("Case 05: the rest roll as a beam, written like a solid run", "[cases]
     options.case_file = std::string(COREMODAL_SOURCE_DIR) + "/cases/05-beam-level-rest-roll-150x15.8-4320.toml";
     options.quiet = true;
     options.output_dir = out.string();
+    options.write = write_run;  // what `coremodal run` writes
     const RunReport r = run_case(options);
 
     CHECK(r.scene.model == "beam");

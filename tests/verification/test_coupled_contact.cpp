@@ -172,7 +172,7 @@ TEST_CASE("Coupled contact: auto runs a chuck not expanded at the coupled level 
           "[coupled][contact][long]") {
     Scene s = not_expanded(paper_core(0.6, 16, 12), 1e9);
     s.analysis.n_modes = 4;
-    CHECK(chosen_level(at_level(s, "auto")) == "coupled");
+    CHECK(chosen_level(at_level(s, "auto")) == ModelChoice::coupled);
     const RunReport r = solve_without_chuck_factor(at_level(s, "auto"));
     CHECK(r.model.level == "coupled");
     REQUIRE(r.modes.verification.complete);

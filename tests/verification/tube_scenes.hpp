@@ -140,7 +140,7 @@ inline WebSpec web_along(double angle_deg, double tension = 300, double modulus 
     w.angle = angle_deg * M_PI / 180;
     w.thickness = 80e-6;
     w.modulus = modulus;
-    w.shear_modulus = PaperWeb::default_shear_modulus(modulus);
+    w.shear_modulus = default_web_shear_modulus(modulus);
     return w;
 }
 

@@ -2,7 +2,6 @@
 
 #include "common/child_process.hpp"
 #include "common/error.hpp"
-#include "output/results_folder.hpp"
 #include "scene/toml_text.hpp"
 
 #include <nlohmann/json.hpp>
@@ -203,7 +202,7 @@ std::vector<std::string> batch_case_files(const std::vector<std::string>& inputs
     return files;
 }
 
-std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) {
+std::vector<BatchCase> batch_cases(const BatchOptions& o) {
     const auto files = batch_case_files(o.inputs);
 
     // One result folder per case, named by the file stem; a stem seen before
@@ -220,18 +219,19 @@ std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) 
         c.log_file = (fs::path(o.output_dir) / (c.name + ".log")).string();
         cases.push_back(std::move(c));
     }
-    // OUT is written in place, so that finished cases can be read while
-    // the others run: an earlier batch there moves to OUT.previous first.
-    // Its marker lists what the batch writes into it (the cases' folders
-    // with all in them, their logs, the tables): anything else found there
-    // later is the user's, and keeps the folder from being replaced.
+    return cases;
+}
+
+std::vector<std::string> batch_folder_contents(const std::vector<BatchCase>& cases) {
     std::vector<std::string> contents = {"batch.csv", "batch.md"};
     for (const BatchCase& c : cases) {
         contents.push_back(c.name + "/");
         contents.push_back(c.name + ".log");
     }
-    start_folder_in_place(o.output_dir, o.force, contents);
+    return contents;
+}
 
+void run_batch(std::vector<BatchCase>& cases, const BatchOptions& o, std::ostream& progress) {
     unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
     jobs = std::min<unsigned>(jobs, static_cast<unsigned>(cases.size()));
     std::vector<std::string> env = child_environment(jobs > 1);
@@ -265,7 +265,6 @@ std::vector<BatchCase> run_batch(const BatchOptions& o, std::ostream& progress) 
     std::vector<std::thread> threads;
     for (unsigned j = 0; j < jobs; ++j) threads.emplace_back(worker);
     for (auto& t : threads) t.join();
-    return cases;
 }
 
 

@@ -67,9 +67,21 @@ bool is_traction_file(const std::string& case_file);
 // parameters, and no roll; docs/how-to/calibration.md): batch runs it with `coremodal fit`.
 bool is_fit_file(const std::string& case_file);
 
+// The batch's cases: one per case file (batch_case_files), named by its file
+// stem (a stem seen before, the same name in two folders, gets -2, -3, ...),
+// its results in OUT/<name> and its log in OUT/<name>.log.
+std::vector<BatchCase> batch_cases(const BatchOptions& options);
+
+// What the batch writes into OUT, for the marker of the folder the caller
+// starts in place (output/results_folder.hpp: start_folder_in_place) before
+// run_batch, so that finished cases can be read while the others run: the
+// cases' folders with all in them, their logs, the tables. Anything else
+// found there later is the user's, and keeps the folder from being replaced.
+std::vector<std::string> batch_folder_contents(const std::vector<BatchCase>& cases);
+
 // Runs every case, at most `jobs` at a time, printing one progress line per
 // finished case to `progress`. Never throws for a failing case.
-std::vector<BatchCase> run_batch(const BatchOptions& options, std::ostream& progress);
+void run_batch(std::vector<BatchCase>& cases, const BatchOptions& options, std::ostream& progress);
 
 // Fills the summary fields of `c` from the text of its summary.json (read
 // with nlohmann-json). Throws std::runtime_error when the text is not JSON

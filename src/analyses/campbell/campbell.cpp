@@ -165,9 +165,6 @@ std::vector<std::string> solid_notes(const RotationSpec& rotation, const Rotatin
     return notes;
 }
 
-// The levels with a centrifugal term (effects/rotation.hpp).
-bool level_has_centrifugal(const std::string& level) { return level == "harmonic" || level == "solid"; }
-
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
     for (const RotatingMode& m : rest)
         if (m.label.type == "bending") return m.frequency_hz;
@@ -327,7 +324,6 @@ void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t re
 
 void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
     require_one_process(scene, "harmonic");
-    out.level = "harmonic";
     out.completeness = "per wave number n and speed, the inertia of the full Hermitian Q(omega) = K - omega^2 M + i "
                        "omega Omega G at the band edge and at the rigid line counts the modes between them (every "
                        "eigenvalue of Q crosses zero downwards)";
@@ -356,7 +352,6 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
 
 void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
     require_one_process(scene, "solid");
-    out.level = "solid";
     out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
     out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
                        "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
@@ -387,14 +382,13 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
 }  // namespace
 
 void require_spinning_level(const Scene& scene) {
-    const std::string level = chosen_level(scene);
     // A chuck not expanded (auto picks the coupled level at rest): only the
     // solid could spin the scene, and it refuses why (time-periodic).
-    if (level == "coupled" && scene.model == "auto") require_spinnable_by_solid(scene);
-    if (level != "beam" && level != "harmonic" && level != "solid")
-        throw InputError(scene.source_file + ": [rotation] at model = \"" + level +
+    const LevelTraits& level = level_traits(chosen_spinning_level(scene));
+    if (!level.spins)
+        throw InputError(scene.source_file + ": [rotation] at model = \"" + to_string(level.level) +
                          "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");
-    if (level == "solid") require_spinnable_by_solid(scene);
+    if (level.spins_in_rotating_frame) require_spinnable_by_solid(scene);
 }
 
 const WhirlCrossing* CampbellResult::first_order_one() const {
@@ -445,13 +439,19 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.from_web_speed = rotation.from_web_speed;
     out.operating_hz = rotation.operating_hz;
-    out.effects = rotating_effect_names(scene, rotation, level_has_centrifugal(scene.model));
-    if (scene.model == "beam")
-        run_beam_campbell(scene, rotation, options, out);
-    else if (scene.model == "harmonic")
-        run_harmonic_campbell(scene, rotation, out);
-    else
-        run_solid_campbell(scene, rotation, out);
+    const LevelTraits& level = level_traits(chosen_spinning_level(scene));
+    out.effects = rotating_effect_names(scene, rotation, level.centrifugal);
+    out.level = to_string(level.level);
+    // The per-level sweeps of this file (a level's spinning terms live with it: beam/rotating_modes,
+    // models/harmonic/rotating_harmonics, models/solid/rotating_solid); require_spinning_level
+    // refused a level that cannot spin.
+    switch (level.level) {
+        case ModelChoice::beam: run_beam_campbell(scene, rotation, options, out); break;
+        case ModelChoice::harmonic: run_harmonic_campbell(scene, rotation, out); break;
+        case ModelChoice::solid: run_solid_campbell(scene, rotation, out); break;
+        case ModelChoice::coupled:
+        case ModelChoice::automatic: COREMODAL_ASSERT(false);
+    }
     out.solve_seconds = clock.lap();
     return out;
 }

@@ -7,8 +7,7 @@
 #include "common/petsc_handle.hpp"
 #include "common/stopwatch.hpp"
 #include "common/warnings.hpp"
-#include "output/converge_report.hpp"
-#include "output/results_folder.hpp"
+#include "scene/level_traits.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 
@@ -39,7 +38,8 @@ void check_options(const ConvergeOptions& o) {
     const std::string valid = "expected solid, harmonic, beam (comma-separated, any of them)";
     if (o.models.empty()) throw InputError("--models: no model level; " + valid);
     for (const auto& name : o.models)
-        if (name != "solid" && name != "beam" && name != "harmonic")
+        if (const auto level = parse_model_choice(name);
+            !level || *level == ModelChoice::automatic || !level_traits(*level).converge_ladder)
             throw InputError("--models " + name + ": unknown model level; " + valid);
     if (!o.check_levels.empty() && !wants_model(o, "solid"))
         throw InputError("--check-levels: named mesh levels are solid meshes; add solid to --models");
@@ -87,16 +87,16 @@ std::vector<ModelLadder> model_ladders(const Scene& scene, const ConvergeOptions
 void run_ladders(const Scene& scene, std::vector<ModelLadder>& ladders, const ConvergeOptions& o, int& n_modes,
                  std::ostream& progress, ConvergeStudy& study) {
     std::optional<LevelRun> first_run;
-    std::string first_run_model;
+    std::optional<ModelChoice> first_run_model;
     for (const auto& ladder : ladders)
-        if (ladder.model == "solid" || ladder.model == "harmonic") {
+        if (level_traits(ladder.model).meshed) {
             first_run = choose_mode_count(scene, ladder, o, n_modes, progress, study.notes);
             first_run_model = ladder.model;
             break;
         }
     study.n_modes = n_modes;
     for (auto& ladder : ladders)
-        if (ladder.model == "solid" || ladder.model == "harmonic") ladder.n_modes = n_modes;
+        if (level_traits(ladder.model).meshed) ladder.n_modes = n_modes;
     for (auto& ladder : ladders) {
         std::vector<LevelResult> levels;
         for (std::size_t i = 0; i < ladder.steps.size(); ++i) {
@@ -143,7 +143,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     print_warnings(scene.warnings);
     const std::filesystem::path out = o.output_dir ? std::filesystem::path(*o.output_dir)
                                                    : std::filesystem::path("results") / (scene.name + "-converge");
-    if (o.write_results) claim_output(out, o.force);
+    if (o.write_results && o.claim) o.claim(out, o);
     ConvergeStudy study;
     study.load_start = load_average();
     study.n_cores = static_cast<int>(std::thread::hardware_concurrency());
@@ -165,8 +165,7 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.load_end = load_average();
 
     // 4. Write (rank 0): numbers first, then the picture, then the report.
-    if (root && o.write_results) write_converge_results(study, out, {o.force, o.quiet, o.plots}, progress);
-    if (root && !o.quiet) print_converge_summary(study, progress);
+    if (root && o.write) o.write(study, out, o, progress);
     return study;
 }
 

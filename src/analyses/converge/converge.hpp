@@ -8,6 +8,8 @@
 
 #include "analyses/converge/converge_study.hpp"
 
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -39,13 +41,22 @@ struct ConvergeOptions {
     bool quiet = false;
     bool write_results = true;
     bool plots = true;  // error_vs_time.png (python); false: --no-plots
+    // Where the study goes, given by the caller (output/converge_report.hpp:
+    // attach_converge_writers, what `coremodal converge` passes), so that the
+    // study itself writes nothing: `claim` checks and takes the results
+    // folder before any work (with write_results), `write` writes it and
+    // prints the summary (rank 0). Empty: nothing claimed, written or printed.
+    std::function<void(const std::filesystem::path& out, const ConvergeOptions& options)> claim;
+    std::function<void(const ConvergeStudy& study, const std::filesystem::path& out, const ConvergeOptions& options,
+                       std::ostream& progress)>
+        write;
 };
 
 // Most modes asked per run while looking for the first ovalling mode.
 inline constexpr int kMaxModesForOvalling = 64;
 
-// Runs the study and writes the results folder; collective. Throws InputError
-// for bad options or case files.
+// Runs the study and hands it to options.write; collective. Throws
+// InputError for bad options or case files.
 ConvergeStudy run_converge(const ConvergeOptions& options, std::ostream& progress);
 
 }  // namespace coremodal

@@ -4,9 +4,9 @@
 
 namespace coremodal {
 
-const ModelStudy* find_model(const std::vector<ModelStudy>& models, const std::string& name) {
+const ModelStudy* find_reference(const std::vector<ModelStudy>& models) {
     for (const auto& m : models)
-        if (m.model == name) return &m;
+        if (m.traits.reference) return &m;
     return nullptr;
 }
 
@@ -32,10 +32,10 @@ ModelError model_error(const std::string& model, const std::string& role, const 
 
 std::vector<ModelError> model_errors(const std::vector<ModelStudy>& models) {
     std::vector<ModelError> out;
-    const ModelStudy* solid = find_model(models, "solid");
+    const ModelStudy* solid = find_reference(models);
     if (!solid) return out;
     for (const auto& m : models) {
-        if (m.model == "solid") continue;
+        if (m.traits.reference) continue;
         for (const auto& [role, type] : kModeRoles) {
             const TrackedMode* a = find_role(m, role);
             const TrackedMode* b = find_role(*solid, role);
@@ -46,7 +46,7 @@ std::vector<ModelError> model_errors(const std::vector<ModelStudy>& models) {
 }
 
 std::vector<std::optional<double>> error_against_solid(const TrackedMode& mode, const std::vector<ModelStudy>& models) {
-    const ModelStudy* solid = find_model(models, "solid");
+    const ModelStudy* solid = find_reference(models);
     const TrackedMode* reference = solid && !mode.role.empty() ? find_role(*solid, mode.role) : nullptr;
     if (!reference || !reference->richardson) return {};
     const double f0 = reference->richardson->f0;

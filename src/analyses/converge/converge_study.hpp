@@ -35,8 +35,8 @@ struct ConvergeStudy {
     int n_cores = 0;
 };
 
-// The study of a model level ("solid", "beam", "harmonic"), or nullptr.
-const ModelStudy* find_model(const std::vector<ModelStudy>& models, const std::string& name);
+// The study the others' model error is measured against (the solid's), or nullptr.
+const ModelStudy* find_reference(const std::vector<ModelStudy>& models);
 
 // A model level's converged value of a role against the solid's: the model
 // error, which no refinement of the simpler model removes (a beam never

@@ -3,7 +3,6 @@
 #include "common/format.hpp"
 #include "common/petsc_handle.hpp"
 #include "modes/label_tracking.hpp"
-#include "output/converge_report.hpp"
 #include "scene/mesh_levels.hpp"
 
 #include <algorithm>
@@ -114,6 +113,10 @@ NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int
         progress << " " << run.n_dofs << " DOFs, " << formatted("%.1f", run.timing_s.total) << " s" << role_values(run)
                  << std::endl;
     return check;
+}
+
+std::string progress_seconds(double s, const char* format) {
+    return s > 0 && s < 0.1 ? formatted("%.2g", s) : formatted(format, s);
 }
 
 }  // namespace coremodal

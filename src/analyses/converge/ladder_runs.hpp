@@ -33,4 +33,8 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
 NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int n_modes, const ConvergeOptions& o,
                                 std::ostream& progress);
 
+// Seconds in progress lines: `format` ("%.1f"), but two significant digits
+// below 0.1 s (a beam run takes ~1e-3 s).
+std::string progress_seconds(double s, const char* format);
+
 }  // namespace coremodal

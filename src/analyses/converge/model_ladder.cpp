@@ -191,7 +191,7 @@ ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int
     std::string budget_note;
     const UnitMesh unit = solid_unit(scene, o, budget_note);
     ModelLadder ladder;
-    ladder.model = "solid";
+    ladder.model = ModelChoice::solid;
     ladder.steps = refinement_ladder(scene, unit, o.first, o.levels);
     const long finest = estimate_dofs(scene, ladder.steps.back().mesh);
     if (o.unit && o.max_dofs > 0 && finest > o.max_dofs)
@@ -216,7 +216,7 @@ std::optional<ModelLadder> harmonic_ladder(const Scene& scene, const ConvergeOpt
     std::string budget_note;
     const UnitMesh unit = solid_unit(scene, o, budget_note);
     ModelLadder ladder;
-    ladder.model = "harmonic";
+    ladder.model = ModelChoice::harmonic;
     ladder.refined_dimensions = 2;
     ladder.steps = refinement_ladder(scene, unit, o.first, o.levels + kHarmonicExtraLevels);
     ladder.note = "Ladder (r–z section only; exact in theta): level k meshes the r–z section of the solid's level k "
@@ -236,7 +236,7 @@ std::optional<ModelLadder> harmonic_ladder(const Scene& scene, const ConvergeOpt
 std::optional<ModelLadder> beam_ladder(const Scene& scene, const ConvergeOptions& o, std::ostream& progress,
                                        std::vector<std::string>& notes) {
     ModelLadder ladder;
-    ladder.model = "beam";
+    ladder.model = ModelChoice::beam;
     ladder.runs_per_level = kBeamRunsPerLevel;
     ladder.level_budget_s = kBeamLevelBudget;
     ladder.refined_dimensions = 1;

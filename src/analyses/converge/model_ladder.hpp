@@ -7,6 +7,7 @@
 
 #include "analyses/converge/converge.hpp"
 #include "analyses/converge/level_result.hpp"
+#include "scene/model_choice.hpp"
 
 #include <functional>
 #include <optional>
@@ -21,7 +22,7 @@ namespace coremodal {
 // The solid ladder is refinement_ladder(), the harmonic's the same with
 // kHarmonicExtraLevels more, the beam's beam_refinement_ladder().
 struct ModelLadder {
-    std::string model;   // "solid", "beam", "harmonic"
+    ModelChoice model;   // solid, beam or harmonic (level_traits: converge_ladder)
     std::string note;    // how the ladder was built, for the report
     std::vector<MeshStep> steps;
     std::function<LevelRun(const MeshStep&)> run_once;  // collective over PETSC_COMM_WORLD

@@ -1,5 +1,6 @@
 #include "analyses/converge/model_study.hpp"
 
+#include "scene/level_traits.hpp"
 #include "numerics/power_law.hpp"
 
 #include <cmath>
@@ -40,9 +41,28 @@ std::vector<TrackedMode> track_modes(const std::vector<LevelResult>& levels) {
     return tracked;
 }
 
-ModelStudy analyse_levels(std::string model, std::string ladder_note, std::vector<LevelResult> levels) {
+LadderTraits ladder_traits(ModelChoice level) {
+    const LevelTraits& t = level_traits(level);
+    LadderTraits out{.reference = t.converge_reference, .meshed = t.meshed, .same_section = t.axisymmetric_only};
+    if (!t.meshed)
+        out.timing_parts = "mesh: building the beam network; factor_and_solve: assembly, eigensolve and inertia count "
+                           "(assemble is inside it, 0 here); classify: labels and effective masses";
+    if (t.axisymmetric_only) {  // one 2D problem per wave number n
+        out.timing_parts = "mesh: the r-z section and its revolution (for naming the modes); assemble and "
+                           "factor_and_solve: summed over the wave numbers n (eigensolves and inertia counts); "
+                           "n_dofs: the largest one-harmonic problem";
+        out.cost_note = "\n" + std::string(t.title) +
+                        " level: mesh = the r–z section and its revolution (for naming the modes); assembly and "
+                        "factorization and solve sum over the wave numbers n solved or counted; DOFs = the largest "
+                        "one-harmonic problem.\n";
+    }
+    return out;
+}
+
+ModelStudy analyse_levels(ModelChoice level, std::string ladder_note, std::vector<LevelResult> levels) {
     ModelStudy s;
-    s.model = std::move(model);
+    s.model = to_string(level);
+    s.traits = ladder_traits(level);
     s.ladder_note = std::move(ladder_note);
     s.levels = std::move(levels);
     s.modes = track_modes(s.levels);

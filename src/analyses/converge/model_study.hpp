@@ -7,6 +7,7 @@
 #include "analyses/converge/level_result.hpp"
 #include "modes/label_tracking.hpp"
 #include "numerics/richardson.hpp"
+#include "scene/model_choice.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -35,9 +36,21 @@ struct TrackedMode {
 // lacks them. Sorted by the finest level's frequency.
 std::vector<TrackedMode> track_modes(const std::vector<LevelResult>& levels);
 
+// What a converge study says of a model level's ladder beyond its numbers:
+// set by the level's ladder (model_ladder.cpp, from scene/level_traits.hpp
+// and the ladder's own words) and read by the writers (output/converge_*).
+struct LadderTraits {
+    bool reference = false;     // the solid: the others' model error is measured against it
+    bool meshed = true;         // a mesh ladder (not the beam network): its timing columns, a shared mode count
+    bool same_section = false;  // the harmonic: the reference's own r-z section, so a difference is its error
+    std::string timing_parts;   // what the timing columns mean, where not a meshed solid's ("" there)
+    std::string cost_note;      // the paragraph before the cost of the finest level, or ""
+};
+
 // All levels of one model level ("solid", "beam", "harmonic") and what they say.
 struct ModelStudy {
     std::string model;
+    LadderTraits traits;
     std::string ladder_note;  // how the ladder was built, for the report
     std::vector<LevelResult> levels;
     std::vector<TrackedMode> modes;
@@ -50,7 +63,11 @@ struct ModelStudy {
     std::vector<std::pair<std::string, std::string>> unseen_roles;
 };
 
-ModelStudy analyse_levels(std::string model, std::string ladder_note, std::vector<LevelResult> levels);
+// A level's ladder traits, from what the level can do (scene/level_traits.hpp).
+LadderTraits ladder_traits(ModelChoice level);
+
+// The study of a level's ladder: its modes tracked, extrapolated, and the cost's scaling.
+ModelStudy analyse_levels(ModelChoice level, std::string ladder_note, std::vector<LevelResult> levels);
 
 // The tracked mode of a role, or nullptr.
 const TrackedMode* find_role(const ModelStudy& model, const std::string& role);

@@ -2,6 +2,7 @@
 #include "analyses/fit/measurements.hpp"
 
 #include "common/error.hpp"
+#include "scene/level_traits.hpp"
 #include "scene/case_json_schema.hpp"  // quantity_pattern, the draft
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
@@ -121,7 +122,8 @@ public:
         }
         if (const toml::node* model = t.get("model")) {
             const auto s = model->value<std::string>();
-            if (!s || (*s != "beam" && *s != "harmonic" && *s != "auto"))
+            const std::optional<ModelChoice> choice = s ? parse_model_choice(*s) : std::nullopt;
+            if (!choice || !(*choice == ModelChoice::automatic || level_traits(*choice).sensitivities))
                 fail(model->source(), display + " model: expected \"beam\", \"harmonic\" or \"auto\" (the levels a fit "
                                                 "differentiates at)");
             m.model = *s;

@@ -105,7 +105,7 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
         run_forced_response(at, setup, {}, check ? ResponseChecking::full : ResponseChecking::none);
     if (check) result.checks = LimitsChecks{d, response.checks};
     std::optional<CriticalSpeeds> critical;
-    if (at.model == "beam") critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
+    if (level_traits(at.model).pencil_critical_speeds) critical = pencil_speeds(beam, roll_outer_diameter(at), f1_estimate, p.order1_mode);
     if (!critical && !result.campbell_sweep)
         throw InputError("the roll's bending planes differ (a web or unlike supports), so its critical speeds need "
                          "the Campbell sweep");
@@ -401,15 +401,15 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
                          ": [supports] is free-free; `coremodal limits` needs a roll held in "
                          "its "
                          "stand: expected [supports] type = \"clamped\" or \"chucks\"");
-    const std::string level = chosen_level(scene);
-    if (level == "coupled")
-        throw InputError(scene.source_file +
-                         ": model = \"coupled\" cannot carry the verdict's critical speeds and "
-                         "forced response (the coupled harmonics have no spinning terms yet); "
+    const ModelChoice level = chosen_level(scene);
+    if (!level_traits(level).spins)
+        throw InputError(scene.source_file + ": model = \"" + to_string(level) +
+                         "\" cannot carry the verdict's critical speeds and forced response (" +
+                         level_traits(level).why_not_spinning + "); "
                          "expected model = \"beam\" or \"harmonic\" (a body of revolution), or "
                          "\"solid\" (docs/how-to/limits.md)");
     Scene resolved = scene;
-    resolved.model = level;
+    resolved.model = to_string(level);
     require_spinning_level(resolved);
     require_response_level(resolved);
     const std::optional<double> target =
@@ -423,7 +423,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     require_limits_scene(case_scene, request);
     Stopwatch clock;
     Scene scene = case_scene;
-    scene.model = chosen_level(case_scene);
+    scene.model = to_string(chosen_level(case_scene));
     LimitsResult r;
     r.level = scene.model;
     r.band = request.spec.band;

@@ -3,6 +3,7 @@
 #include "beam/speeds.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
+#include "models/choose.hpp"
 #include "scene/rotation_spec.hpp"
 
 #include <algorithm>
@@ -183,7 +184,7 @@ std::vector<UncertainInput> uncertain_inputs(const Scene& scene, const ResponseS
                         1 - kCoreModulusSpread, 1 + kCoreModulusSpread, "factor on E_z"));
     UncertainInput g = input("core G_rz", "50-650 MPa", "suggested range (docs/reference/material-sources.md)", 0, 0, "Pa");
     g.applies = false;
-    g.why_not = scene.model == "beam" ? "the beam level has no through-wall "
+    g.why_not = !level_traits(chosen_level(scene)).through_wall_shear ? "the beam level has no through-wall "
                                         "shear; the harmonic level carries it"
                                       : "its effect on f1 is below 1 % per 10 % "
                                         "(docs/reference/material-sources.md); not sampled";

@@ -181,10 +181,15 @@ LateralResponse lateral_basis(const BeamModelResult& rest, const ResponseSetup& 
 
 }  // namespace
 
+const ResponseLevel kBeamResponse{
+    .level = ModelChoice::beam,
+    .note = "forced response at the beam level: modal superposition in the modes at rest with the gyroscopic coupling of "
+            "the spinning beams projected, checked against the direct solve of the full network"};
+
 ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
                                  ResponseChecking checking) {
     Stopwatch clock;
-    ResponseResult out = response_result_for(scene, setup, "beam");
+    ResponseResult out = response_result_for(scene, setup, kBeamResponse);
     out.solver = "modal superposition in the modes at rest (gyroscopic coupling projected), checked by a direct dense solve";
     const ResponseRange& range = setup.response;
     // 1. At rest.

@@ -57,6 +57,13 @@ Eigen::VectorXd first_bending_mode(const ModalBasis& basis, const std::vector<Mo
 
 }  // namespace
 
+const ResponseLevel kHarmonicResponse{
+    .level = ModelChoice::harmonic,
+    .note = "forced response at the harmonic level: modal superposition in the modes at rest of wave number n = 1 "
+            "(the cos and sin families are the two bending planes) with the gyroscopic coupling of the spinning "
+            "bodies of revolution projected, and the static part of the modes above the cutoff; checked against "
+            "the direct sparse solve of the full n = 1 problem"};
+
 ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
@@ -64,7 +71,7 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
     // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers them).
     LevelModes rest;
     ResponseResult out = start_mesh_level_response(
-        scene, setup,
+        scene, setup, kHarmonicResponse,
         "modal superposition in the modes at rest of wave number n = 1 (gyroscopic coupling projected) with the "
         "static part of the others, checked by a direct sparse solve",
         rest);

@@ -125,12 +125,12 @@ void sort_orders(LevelLoads& out) {
     std::sort(out.orders.begin(), out.orders.end(), [](const OrderLoad& a, const OrderLoad& b) { return a.order < b.order; });
 }
 
-ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const std::string& solver,
-                                         LevelModes& rest) {
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
+                                         const std::string& solver, LevelModes& rest) {
     if (mpi_size() > 1)
         throw InputError(scene.source_file + ": the forced response at the " + scene.model +
                          " level runs in one process; run it without mpirun");
-    ResponseResult out = response_result_for(scene, setup, scene.model);
+    ResponseResult out = response_result_for(scene, setup, level);
     out.solver = solver;
     rest = make_model_level(scene)->solve(scene, Printer{false});
     // A response in modes that are not verified is no response: no --keep-going here.

@@ -6,6 +6,7 @@
 
 #include "analyses/response/modal_response.hpp"
 #include "analyses/response/response_damping.hpp"
+#include "analyses/response/response_levels.hpp"
 #include "analyses/response/response_loads.hpp"
 #include "analyses/response/response_sweep.hpp"
 #include "assembly/operator_set.hpp"
@@ -61,8 +62,8 @@ void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& ra
 // process, the result's level-independent fields and `solver`, the level's
 // run at rest into `rest` (the modes as modes.csv numbers them) and I-5
 // from its first bending frequency.
-ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const std::string& solver,
-                                         LevelModes& rest);
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
+                                         const std::string& solver, LevelModes& rest);
 
 // The lowest modes at rest of `operators` up to cutoff_hz (at least
 // min_modes), M-orthonormal, solved as the level's run solves them (SLEPc,

@@ -19,24 +19,10 @@ namespace {
 using cd = std::complex<double>;
 
 // The level's own first note, then what every level shares.
-std::string level_note(const std::string& level) {
-    if (level == "harmonic")
-        return "forced response at the harmonic level: modal superposition in the modes at rest of wave number n = 1 "
-               "(the cos and sin families are the two bending planes) with the gyroscopic coupling of the spinning "
-               "bodies of revolution projected, and the static part of the modes above the cutoff; checked against "
-               "the direct sparse solve of the full n = 1 problem";
-    if (level == "solid")
-        return "forced response at the solid level: modal superposition in the solid's modes at rest with the "
-               "gyroscopic coupling of the spinning cells projected, and the static part of the modes above the "
-               "cutoff; checked against the direct sparse solve of the whole solid";
-    return "forced response at the beam level: modal superposition in the modes at rest with the gyroscopic coupling of "
-           "the spinning beams projected, checked against the direct solve of the full network";
-}
-
-std::vector<std::string> response_notes(const ResponseSetup& setup, const std::string& level) {
+std::vector<std::string> response_notes(const ResponseSetup& setup, const ResponseLevel& level) {
     const ExcitationSpec& x = setup.excitation;
     std::vector<std::string> notes{
-        level_note(level),
+        level.note,
         "damping in the stationary frame (bearings, air, web), per mode at rest (ratios, Rayleigh's alpha M + beta K); "
         "no rotating (internal) damping, " +
             std::string(structural_damping_of(setup.damping).given()
@@ -48,7 +34,7 @@ std::vector<std::string> response_notes(const ResponseSetup& setup, const std::s
     if (x.gravity)
         notes.push_back("gravity: the static sag is reported, not counted as vibration");
     if (x.ovality_m > 0 && !x.gravity)
-        notes.push_back("[excitation] ovality without gravity excites nothing at the " + level + " level (gravity = false)");
+        notes.push_back("[excitation] ovality without gravity excites nothing at the " + to_string(level.level) + " level (gravity = false)");
     return notes;
 }
 
@@ -97,9 +83,9 @@ double orbit_semi_major(cd ux, cd uy) {
     return 0.5 * (std::abs(ux + I * uy) + std::abs(std::conj(ux) + I * std::conj(uy)));
 }
 
-ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setup, const std::string& level) {
+ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level) {
     ResponseResult out;
-    out.level = level;
+    out.level = to_string(level.level);
     const ResponseRange& range = setup.response;
     out.probes = range.probes, out.limit_m = range.limit_m, out.from_web_speed = range.from_web_speed;
     out.damping = setup.damping, out.damping_summary = damping_summary(setup.damping);
@@ -117,14 +103,14 @@ std::string kept_modes_assumption(const ResponseChecks& checks, const std::strin
 }
 
 void require_response_level(const Scene& scene) {
-    const std::string level = chosen_level(scene);
-    if (level == "coupled")
-        throw InputError(scene.source_file + ": [response] at the coupled level: the coupled harmonics have no "
-                         "spinning terms yet (docs/theory/harmonic.md); expected a body of revolution at model = "
+    const LevelTraits& level = level_traits(chosen_level(scene));
+    if (!level.spins)
+        throw InputError(scene.source_file + ": [response] at the " + to_string(level.level) + " level: " +
+                         level.why_not_spinning + " (docs/theory/coupled.md); expected a body of revolution at model = "
                          "\"harmonic\", \"solid\" or \"beam\"");
-    if (level == "harmonic") require_axisymmetric(scene);
-    if (const auto why = why_not_axisymmetric(scene); why && level == "solid")
-        throw InputError(scene.source_file + ": [response] at the solid level: " + *why +
+    if (level.axisymmetric_only) require_axisymmetric(scene);
+    if (const auto why = why_not_axisymmetric(scene); why && level.response_needs_revolution)
+        throw InputError(scene.source_file + ": [response] at the " + to_string(level.level) + " level: " + *why +
                          "; the gyroscopic term is the stationary frame's, right for a body of revolution only "
                          "(docs/theory/rotation-solid.md); expected full bands, no [mesh] file and expanded chucks");
 }
@@ -132,10 +118,17 @@ void require_response_level(const Scene& scene) {
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
                                    ResponseChecking checking) {
     require_response_level(scene);
-    const std::string level = chosen_level(scene);
-    if (level == "beam") return run_beam_response(scene, setup, options, checking);
-    if (level == "harmonic") return run_harmonic_response(scene, setup, checking);
-    return run_solid_response(scene, setup, checking);
+    // The per-level responses (response_levels.hpp); require_response_level
+    // refused a level without one.
+    switch (chosen_level(scene)) {
+        case ModelChoice::beam: return run_beam_response(scene, setup, options, checking);
+        case ModelChoice::harmonic: return run_harmonic_response(scene, setup, checking);
+        case ModelChoice::solid: return run_solid_response(scene, setup, checking);
+        case ModelChoice::coupled:
+        case ModelChoice::automatic: break;
+    }
+    COREMODAL_ASSERT(false);
+    return {};
 }
 
 }  // namespace coremodal

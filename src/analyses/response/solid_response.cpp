@@ -59,6 +59,12 @@ Eigen::MatrixXd first_bending_pair(const ModalBasis& basis, const std::vector<Mo
 
 }  // namespace
 
+const ResponseLevel kSolidResponse{
+    .level = ModelChoice::solid,
+    .note = "forced response at the solid level: modal superposition in the solid's modes at rest with the "
+            "gyroscopic coupling of the spinning cells projected, and the static part of the modes above the "
+            "cutoff; checked against the direct sparse solve of the whole solid"};
+
 ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
@@ -67,7 +73,7 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
     // 1. At rest: the solid level's run (f1, the modes as modes.csv numbers them).
     LevelModes rest;
     ResponseResult out = start_mesh_level_response(
-        scene, setup,
+        scene, setup, kSolidResponse,
         "modal superposition in the solid's modes at rest (gyroscopic coupling projected) with the static part of "
         "the others, checked by a direct sparse solve",
         rest);

@@ -8,9 +8,6 @@
 #include "common/warnings.hpp"
 #include "models/choose.hpp"
 #include "modes/verification_check.hpp"
-#include "output/run_folder.hpp"
-#include "output/side_by_side.hpp"
-#include "output/summary.hpp"
 #include "scene/case_file.hpp"
 #include "scene/mesh_levels.hpp"
 
@@ -78,23 +75,6 @@ void compare(RunReport& report, const ModelLevel& level, const RunOptions& optio
     }
 }
 
-// Step 8: console tables, then the results folder (complete or not at all).
-void write(const RunReport& report, const ModelLevel& level, const RunOptions& options, const Printer& say) {
-    if (mpi_rank() != 0) return;
-    if (!options.quiet) {
-        print_mode_table(std::cout, report);
-        print_verification_and_beam(std::cout, report);
-        if (!report.rigid_comparison.empty()) print_side_by_side(std::cout, report.rigid_comparison);
-        std::cout << level.console_note();
-    }
-    if (!options.write_results) return;
-    const std::filesystem::path dir = options.output_dir ? std::filesystem::path(*options.output_dir)
-                                                         : std::filesystem::path("results") / report.scene.name;
-    say(step(level.steps(), level) + " writing " + dir.string());
-    write_run_folder(report, dir, options.force,
-                     [&](ResultsFolder& folder) { return level.write_shapes(folder, report, options.plots); });
-}
-
 }  // namespace
 
 void print_scene_warnings(const Scene& scene) { print_warnings(scene.warnings); }
@@ -110,7 +90,7 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene, const RunOptions& options) {
-    scene.model = chosen_level(scene);  // "auto" resolved, for the summary and the derived scenes
+    scene.model = to_string(chosen_level(scene));  // "auto" resolved, for the summary and the derived scenes
     const Printer say{mpi_rank() == 0 && !options.quiet};
     Stopwatch total;
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
@@ -120,12 +100,12 @@ RunReport run_scene(Scene scene, const RunOptions& options) {
     double peak = peak_memory_mb();
     MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     report.timing_s.total = total.seconds();
-    write(report, *level, options, say);  // 8
+    if (options.write) options.write(report, *level, options);  // 8
     return report;
 }
 
 RunReport analyse_derived_scene(Scene scene) {
-    scene.model = chosen_level(scene);
+    scene.model = to_string(chosen_level(scene));
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     RunReport report = level_report(std::move(scene), *level, Printer{false});
     require_verified_report(report, false);

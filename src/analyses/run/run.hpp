@@ -3,15 +3,25 @@
 // read the case; 2–6 the level builds, solves and names (ModelLevel::solve);
 // 7 beam theory, the chuck factor (a run of the derived free-span scene) and
 // the rigid-clamp variant (a run of the derived clamped scene); 8 the console
-// tables and the results folder.
+// tables and the results folder, by the writer the caller gives (RunWriter).
 #pragma once
 
 #include "results/run_report.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 
 namespace coremodal {
+
+class ModelLevel;
+struct RunOptions;
+
+// Step 8, given by the caller: the console tables and the results folder
+// (output/run_writer.hpp: write_run, what `coremodal run` passes), called
+// with the finished report and its level, which holds the mode shapes. The
+// run itself writes nothing, so analyses/ stays below output/.
+using RunWriter = std::function<void(const RunReport& report, const ModelLevel& level, const RunOptions& options)>;
 
 struct RunOptions {
     std::string case_file;
@@ -33,6 +43,8 @@ struct RunOptions {
     // Modes that fail their verification (modes/verification_check.hpp) are
     // written, marked as not verified, instead of ending the run non-zero.
     bool keep_going = false;
+    // Step 8; empty: nothing printed or written (derived scenes, sweeps, tests).
+    RunWriter write;
 };
 
 // Runs the whole pipeline; collective over PETSC_COMM_WORLD. Throws

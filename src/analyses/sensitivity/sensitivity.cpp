@@ -160,11 +160,10 @@ Linearised harmonic_linearised(const Scene& scene) {
 
 }  // namespace
 
-std::string sensitivity_level(const Scene& scene) {
-    std::string level = scene.model;
-    if (level == "auto") level = why_not_axisymmetric(scene) ? "solid" : "harmonic";
-    if (level != "beam" && level != "harmonic")
-        throw InputError(scene.source_file + ": model = \"" + level + "\": sensitivities are computed at the beam and "
+ModelChoice sensitivity_level(const Scene& scene) {
+    const ModelChoice level = chosen_level(scene);
+    if (!level_traits(level).sensitivities)
+        throw InputError(scene.source_file + ": model = \"" + to_string(level) + "\": sensitivities are computed at the beam and "
                          "the harmonic level; expected model = \"harmonic\" (axisymmetric scenes) or \"beam\" "
                          "(--model)");
     return level;
@@ -173,7 +172,16 @@ std::string sensitivity_level(const Scene& scene) {
 namespace {
 
 Linearised linearised(const Scene& scene) {
-    return sensitivity_level(scene) == "beam" ? beam_linearised(scene) : harmonic_linearised(scene);
+    // The levels' linearisations of this file; sensitivity_level refused the others.
+    switch (sensitivity_level(scene)) {
+        case ModelChoice::beam: return beam_linearised(scene);
+        case ModelChoice::harmonic: return harmonic_linearised(scene);
+        case ModelChoice::coupled:
+        case ModelChoice::solid:
+        case ModelChoice::automatic: break;
+    }
+    COREMODAL_ASSERT(false);
+    return {};
 }
 
 // The free–free roll over the free span (as `run`'s chuck factor,
@@ -277,7 +285,7 @@ SensitivityResult eigen_sensitivities(const CaseParameters& c, const std::vector
     r.parameters = c.parameters();
     r.values = values;
     const Scene scene = c.scene(values);
-    r.level = sensitivity_level(scene);
+    r.level = to_string(sensitivity_level(scene));
     const auto same = [](Scene s) { return s; };
     const Derivatives d = derivatives(c, values, options.step, same);
     r.methods = d.methods;

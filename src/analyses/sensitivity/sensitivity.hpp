@@ -18,6 +18,7 @@
 
 #include "modes/label_tracking.hpp"
 #include "scene/case_parameters.hpp"
+#include "scene/model_choice.hpp"
 
 #include <optional>
 #include <string>
@@ -66,8 +67,9 @@ SensitivityResult eigen_sensitivities(const CaseParameters& c, const std::vector
 // (supports.left: the right chuck mirrors it unless the case gives it).
 std::vector<std::string> material_and_contact_keys(const Scene& scene);
 
-// The level a scene is differentiated at: its model ("auto": harmonic where
-// the scene is axisymmetric). InputError for the solid level.
-std::string sensitivity_level(const Scene& scene);
+// The level a scene is differentiated at: the level a run would use
+// (models/choose.hpp). InputError for a level without sensitivities (the
+// solid, the coupled harmonics).
+ModelChoice sensitivity_level(const Scene& scene);
 
 }  // namespace coremodal

@@ -5,7 +5,6 @@
 #include "common/petsc_handle.hpp"
 #include "common/process_folders.hpp"
 #include "common/signals.hpp"
-#include "output/text_file.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -240,7 +239,7 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
     keep_on_interrupt(folder);
 }
 
-int run_worker_point(const WorkerPoint& w) {
+StudyPoint run_worker_point(const WorkerPoint& w) {
     // A worker ends with its study: a study killed with SIGKILL cannot stop
     // it, so the kernel sends it SIGTERM (common/signals.hpp) when the
     // study's thread that started it is gone. If the study died before this
@@ -260,8 +259,7 @@ int run_worker_point(const WorkerPoint& w) {
     } catch (const InputError& e) {
         p.error = e.what();
     }
-    if (mpi_rank() == 0) write_text_file(w.output, point_record(p));
-    return 0;
+    return p;
 }
 
 }  // namespace coremodal

@@ -33,19 +33,19 @@ void run_points_in_children(const CaseSweep& sweep, const std::vector<int>& todo
                             const std::function<void(int)>& finished);
 
 // What a worker child is asked to do: point `point` of the sweep in `table`
-// of `case_file`, its record written to `output`.
+// of `case_file` (its record goes to --worker-output: app/study_command).
 struct WorkerPoint {
     std::string case_file;
     std::string table = "study";
     std::optional<std::string> mesh_level;
     std::string model;  // --model of the parent; "" = the case's
     int point = -1;
-    std::string output;
 };
 
-// The worker child's whole work: reads the sweep, runs the point in this
-// process (run_point) and writes its record on rank 0, also when the point
-// fails. Throws InputError for a point that is not in the sweep.
-int run_worker_point(const WorkerPoint& worker);
+// The worker child's whole work but the writing: reads the sweep, runs the
+// point in this process (run_point) and returns it, also when the point
+// fails (with its error), for the caller to write its point_record on rank
+// 0. Throws InputError for a point that is not in the sweep.
+StudyPoint run_worker_point(const WorkerPoint& worker);
 
 }  // namespace coremodal

@@ -2,8 +2,6 @@
 #include "models/beam/beam_level.hpp"
 
 #include "common/format.hpp"
-#include "output/beam_shapes.hpp"
-#include "output/results_folder.hpp"
 
 #include <cstdio>
 
@@ -86,12 +84,7 @@ LevelModes BeamLevel::solve(const Scene& scene, const Printer& say) {
     return out;
 }
 
-RunPictures BeamLevel::write_shapes(ResultsFolder& folder, const RunReport&, bool) const {
-    write_beam_shapes_csv(folder.file("beam_shapes.csv"), *beam_);
-    RunPictures none;
-    none.problem = "the beam model level has no mesh to draw (its mode shapes are in beam_shapes.csv)";
-    return none;
-}
+LevelShapes BeamLevel::shapes() const { return {nullptr, &*beam_}; }
 
 std::string BeamLevel::console_note() const {
     char line[160];

@@ -19,7 +19,7 @@ class BeamLevel : public ModelLevel {
 public:
     int steps() const override { return 4; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
-    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+    LevelShapes shapes() const override;
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

@@ -19,7 +19,6 @@
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "modes/mode_shapes.hpp"
-#include "output/run_folder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -496,9 +495,9 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
     return out;
 }
 
-RunPictures CoupledLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
-    if (axisymmetric_) return axisymmetric_->write_shapes(folder, report, plots);
-    return write_mesh_shapes(folder, report, revolved_->mesh, plots);
+LevelShapes CoupledLevel::shapes() const {
+    if (axisymmetric_) return axisymmetric_->shapes();
+    return {&revolved_->mesh};
 }
 
 }  // namespace coremodal

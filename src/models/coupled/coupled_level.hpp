@@ -96,7 +96,7 @@ class CoupledLevel : public ModelLevel {
 public:
     int steps() const override { return 7; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
-    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+    LevelShapes shapes() const override;
     // The steps of the search for N (empty when the harmonic level solved the scene).
     const std::vector<CoupledStep>& convergence() const { return steps_; }
 

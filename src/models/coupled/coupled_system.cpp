@@ -449,6 +449,25 @@ CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, cons
     return assemble_coupled(scene, mesh, materials, dofs, attachments(scene), comm);
 }
 
+namespace {
+
+// The symmetric n x n AIJ matrix of the coordinate entries (i, j, values),
+// duplicates added; i and j are copies: PETSc may reorder the arrays it is given.
+PetscMatrix symmetric_coo_matrix(MPI_Comm comm, PetscInt n, std::vector<PetscInt> i, std::vector<PetscInt> j,
+                                 const std::vector<PetscScalar>& values) {
+    PetscMatrix A;
+    COREMODAL_PETSC(MatCreate(comm, A.out()));
+    COREMODAL_PETSC(MatSetSizes(A, PETSC_DECIDE, PETSC_DECIDE, n, n));
+    COREMODAL_PETSC(MatSetType(A, MATAIJ));
+    COREMODAL_PETSC(MatSetPreallocationCOO(A, static_cast<PetscCount>(i.size()), i.data(), j.data()));
+    COREMODAL_PETSC(MatSetValuesCOO(A, values.data(), ADD_VALUES));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+    COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
+    return A;
+}
+
+}  // namespace
+
 CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                const CoupledDofs& dofs, const Attachments& attached, MPI_Comm comm) {
     CoupledSystem system;
@@ -499,18 +518,9 @@ CoupledSystem assemble_coupled(const Scene& scene, const SectionMesh& mesh, cons
         if (k_values[e] != 0 && block_of_dof(static_cast<int>(i[e])) != block_of_dof(static_cast<int>(j[e])))
             ++system.n_coupling_entries;
     MPI_Bcast(&system.operators.model_mass, 1, MPI_DOUBLE, 0, comm);
-    for (Term t : {Term::stiffness, Term::mass}) {
-        std::vector<PetscInt> ii = i, jj = j;  // PETSc may reorder the arrays it is given
-        PetscMatrix A;
-        COREMODAL_PETSC(MatCreate(comm, A.out()));
-        COREMODAL_PETSC(MatSetSizes(A, PETSC_DECIDE, PETSC_DECIDE, system.dofs.n_dofs, system.dofs.n_dofs));
-        COREMODAL_PETSC(MatSetType(A, MATAIJ));
-        COREMODAL_PETSC(MatSetPreallocationCOO(A, static_cast<PetscCount>(ii.size()), ii.data(), jj.data()));
-        COREMODAL_PETSC(MatSetValuesCOO(A, (t == Term::stiffness ? k_values : m_values).data(), ADD_VALUES));
-        COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
-        COREMODAL_PETSC(MatSetOption(A, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-        system.operators.matrices[t] = std::move(A);
-    }
+    for (Term t : {Term::stiffness, Term::mass})
+        system.operators.matrices[t] =
+            symmetric_coo_matrix(comm, system.dofs.n_dofs, i, j, t == Term::stiffness ? k_values : m_values);
     return system;
 }
 

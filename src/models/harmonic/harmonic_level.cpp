@@ -18,7 +18,6 @@
 #include "models/part_materials.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/mode_shapes.hpp"
-#include "output/run_folder.hpp"
 
 #include "scene/mesh_rule.hpp"
 #include <algorithm>
@@ -301,8 +300,6 @@ LevelModes HarmonicLevel::solve(const Scene& scene, const Printer& say) {
     return out;
 }
 
-RunPictures HarmonicLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
-    return write_mesh_shapes(folder, report, revolved_->mesh, plots);
-}
+LevelShapes HarmonicLevel::shapes() const { return {&revolved_->mesh}; }
 
 }  // namespace coremodal

@@ -17,7 +17,7 @@ public:
     int steps() const override { return 7; }
     // require_axisymmetric (models/choose.hpp) first.
     LevelModes solve(const Scene& scene, const Printer& say) override;
-    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+    LevelShapes shapes() const override;
 
 private:
     std::optional<RevolvedMesh> revolved_;  // after solve: where the shapes live

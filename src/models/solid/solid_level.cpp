@@ -21,7 +21,6 @@
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "modes/mode_shapes.hpp"
-#include "output/run_folder.hpp"
 #include "scene/mesh_rule.hpp"
 
 #include <cmath>
@@ -323,8 +322,6 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     return out;
 }
 
-RunPictures SolidLevel::write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const {
-    return write_mesh_shapes(folder, report, *mesh_, plots);
-}
+LevelShapes SolidLevel::shapes() const { return {&*mesh_}; }
 
 }  // namespace coremodal

@@ -18,7 +18,7 @@ class SolidLevel : public ModelLevel {
 public:
     int steps() const override { return 7; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
-    RunPictures write_shapes(ResultsFolder& folder, const RunReport& report, bool plots) const override;
+    LevelShapes shapes() const override;
 
 private:
     std::optional<Mesh> mesh_;  // after solve: where the shapes live

@@ -25,12 +25,12 @@ Scene with_model(const std::string& model) {
 
 TEST_CASE("auto picks the harmonic level for a body of revolution, else the coupled level or the solid", "[model][choose]") {
     Scene plain = with_model("auto");
-    CHECK(chosen_level(plain) == "harmonic");
+    CHECK(chosen_level(plain) == ModelChoice::harmonic);
     CHECK(dynamic_cast<HarmonicLevel*>(make_model_level(plain).get()) != nullptr);
 
     Scene user_mesh = with_model("auto");
     user_mesh.mesh.file = "tube.msh";
-    CHECK(chosen_level(user_mesh) == "solid");
+    CHECK(chosen_level(user_mesh) == ModelChoice::solid);
     CHECK(dynamic_cast<SolidLevel*>(make_model_level(user_mesh).get()) != nullptr);
 
     Scene segmented = with_model("auto");
@@ -40,7 +40,7 @@ TEST_CASE("auto picks the harmonic level for a body of revolution, else the coup
     element.segments = 3;
     chuck.expanding.push_back(element);
     segmented.supports.chucks.push_back(chuck);
-    CHECK(chosen_level(segmented) == "coupled");
+    CHECK(chosen_level(segmented) == ModelChoice::coupled);
     CHECK_THAT(*why_not_axisymmetric(segmented), Catch::Contains("3 segments"));
 }
 
@@ -53,7 +53,7 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
     element.segments = 3;
     chuck.expanding.push_back(element);
     segmented.supports.chucks.push_back(chuck);
-    CHECK(chosen_level(segmented) == "coupled");
+    CHECK(chosen_level(segmented) == ModelChoice::coupled);
     CHECK(dynamic_cast<CoupledLevel*>(make_model_level(segmented).get()) != nullptr);
     CHECK_THAT(*why_coupled(segmented), Catch::Contains("3 segments") && Catch::Contains("coupled harmonics"));
     CHECK_THAT(level_choice_text(segmented, "the case file"), Catch::StartsWith("coupled (the case file; "));
@@ -65,7 +65,7 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
         loose.interface.contact = ContactKind::one_sided;
         loose.expanding.push_back(element);  // retracted: its segments do not matter
         one_sided.supports.chucks.push_back(loose);
-        CHECK(chosen_level(one_sided) == "coupled");
+        CHECK(chosen_level(one_sided) == ModelChoice::coupled);
         CHECK_THAT(*why_coupled(one_sided), Catch::Contains("not expanded") && Catch::Contains("the contact's arc") &&
                                                 Catch::Contains("coupled harmonics"));
         CHECK_THAT(level_choice_text(one_sided, "the case file"), Catch::StartsWith("coupled (the case file; "));
@@ -73,25 +73,25 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
     SECTION("but not bonded segments (ties over arcs) or a [mesh] file: the solid") {
         Scene bonded = segmented;
         bonded.supports.chucks[0].interface.kind = InterfaceKind::bonded;
-        CHECK(chosen_level(bonded) == "solid");
+        CHECK(chosen_level(bonded) == ModelChoice::solid);
         Scene one_sided_bonded = bonded;  // a bonded segment beside a one-sided contact: still the solid
         one_sided_bonded.supports.chucks.push_back(bonded.supports.chucks[0]);
         one_sided_bonded.supports.chucks[1].name = "right";
         one_sided_bonded.supports.chucks[1].interface = {};
         one_sided_bonded.supports.chucks[1].interface.contact = ContactKind::one_sided;
-        CHECK(chosen_level(one_sided_bonded) == "solid");
+        CHECK(chosen_level(one_sided_bonded) == ModelChoice::solid);
         Scene user_mesh = segmented;
         user_mesh.mesh.file = "tube.msh";
-        CHECK(chosen_level(user_mesh) == "solid");
+        CHECK(chosen_level(user_mesh) == ModelChoice::solid);
     }
     SECTION("and a body of revolution stays at the harmonic level") {
         CHECK(!why_coupled(with_model("auto")));
-        CHECK(chosen_level(with_model("auto")) == "harmonic");
+        CHECK(chosen_level(with_model("auto")) == ModelChoice::harmonic);
     }
 }
 
 TEST_CASE("a named model level is kept, and each has its own step count", "[model][choose]") {
-    for (const std::string level : {"solid", "harmonic", "coupled", "beam"}) CHECK(chosen_level(with_model(level)) == level);
+    for (const std::string level : {"solid", "harmonic", "coupled", "beam"}) CHECK(to_string(chosen_level(with_model(level))) == level);
     CHECK(make_model_level(with_model("beam"))->steps() == 4);
     CHECK(make_model_level(with_model("solid"))->steps() == 7);
     CHECK(dynamic_cast<BeamLevel*>(make_model_level(with_model("beam")).get()) != nullptr);

@@ -4,6 +4,8 @@
 // summary.
 #include "output/converge_report.hpp"
 
+#include "analyses/converge/ladder_runs.hpp"  // progress_seconds
+
 #include "support/json_lookup.hpp"  // json_number, json_string: read back converge.json
 #include "output/csv.hpp"
 
@@ -34,7 +36,7 @@ TEST_CASE("The report files hold every level and tracked mode", "[converge]") {
     study.n_modes = 3;
     study.repeats = 3;
     study.repeat_limit_s = 30;
-    study.models.push_back(analyse_levels("solid", "unit 1/1/8/10", levels));
+    study.models.push_back(analyse_levels(ModelChoice::solid, "unit 1/1/8/10", levels));
     study.total_time_s = 99;
 
     const std::string csv = converge_csv(study);
@@ -69,7 +71,7 @@ TEST_CASE("A target beyond the ladder is reported with its predicted level", "[c
     std::vector<LevelResult> levels;
     for (int k = 1; k <= 4; ++k) levels.push_back(level(k, {mode(1, 100 + 10 * std::pow(1.0 / k, 4), "ovalling", 2, 0)}));
     ConvergeStudy study;
-    study.models.push_back(analyse_levels("solid", "", levels));
+    study.models.push_back(analyse_levels(ModelChoice::solid, "", levels));
     CHECK_THAT(converge_markdown(study, ""), Catch::Contains("predicted k ≈ 5.6"));
     std::ostringstream console;
     print_converge_summary(study, console);

@@ -73,13 +73,13 @@ TEST_CASE("The effects list names exactly the one-sided contact and the gravity 
 TEST_CASE("The coupled harmonics and the 3D solid model a one-sided contact: auto chooses the first, harmonic and beam refuse",
           "[model][choose][contact]") {
     const Scene loose = scene_of("expanded = false\n");
-    CHECK(chosen_level(loose) == "coupled");
+    CHECK(chosen_level(loose) == ModelChoice::coupled);
     CHECK_THAT(*why_not_axisymmetric(loose), Catch::Contains("not expanded"));
     CHECK_THROWS_WITH(require_axisymmetric(scene_of("expanded = false\n", "harmonic")),
                       Catch::Contains("model = \"harmonic\"") && Catch::Contains("contact = \"uniform\""));
     CHECK_THROWS_WITH(solve_beam_model(scene_of("expanded = false\n", "beam")),
                       Catch::Contains("model = \"beam\"") && Catch::Contains("the coupled harmonics model"));
-    CHECK(chosen_level(scene_of("expanded = false\ncontact = \"uniform\"\n")) == "harmonic");
+    CHECK(chosen_level(scene_of("expanded = false\ncontact = \"uniform\"\n")) == ModelChoice::harmonic);
 }
 
 TEST_CASE("StackContact: the integrated stack law and its tangent", "[scene][chucks][contact]") {

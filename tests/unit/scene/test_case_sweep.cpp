@@ -169,9 +169,9 @@ TEST_CASE("Bad [study] tables are refused with file, line, key and what is expec
         CHECK_THAT(e, Catch::Contains("cases/s.toml:19:55:"));
         CHECK_THAT(e, Catch::Contains("unit 'kg' is a mass, expected a length"));
     }
-    SECTION("A value out of the schema's range") {
+    SECTION("A value out of the schema's range: the case reader's words (one check, case_schema's out_of_range)") {
         CHECK_THAT(error_of("\n[study]\nparameters = [{ key = \"core.length\", values = [\"-2 m\"] }]\n"),
-                   Catch::Contains("must be larger than 0 m"));
+                   Catch::Contains("(core.length) = -2 m must be positive"));
     }
     SECTION("Values and a range together, or neither") {
         CHECK_THAT(error_of("\n[study]\nparameters = [{ key = \"core.length\", values = [1], from = 1, to = 2, "
@@ -242,4 +242,49 @@ TEST_CASE("The example study (case 06) reads: 4 widths x 10 thicknesses, every p
     CHECK(s.options().modes == 8);
     CHECK(s.parameters()[1].labels.front() == "10 mm");
     for (int i = 0; i < s.n_points(); ++i) CHECK_NOTHROW(s.scene(i));
+}
+
+namespace {
+
+// The case reader's message for `core.length = VALUE` in an otherwise good
+// case, from "= " on (the sweep names the key by its parameter and path, the
+// reader by its table, and their file positions differ).
+std::string reader_words(const std::string& value) {
+    std::string text = kCase;
+    text.replace(text.find("length = \"2 m\""), std::string("length = \"2 m\"").size(), "length = " + value);
+    try {
+        parse_case_text(text, kFile);
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        return what.substr(what.find("= "));
+    }
+    return "(no error)";
+}
+
+std::string sweep_words(const std::string& value) {
+    const std::string what = error_of("\n[study]\nparameters = [{ key = \"core.length\", values = [" + value + "] }]\n");
+    return what.substr(what.find("(core.length) = ") + std::string("(core.length) ").size());
+}
+
+}  // namespace
+
+TEST_CASE("A swept value out of range is refused in the case reader's words", "[scene][sweep]") {
+    // [core] length is > 0 and at most 50 m (case_schema.cpp: kMaxLength, a
+    // unit slip's bound), so -2 m, 60 m and a plain 76 (76 m, meant as mm)
+    // are out of range with the messages written out here.
+    const std::string negative = "= -2 m must be positive";
+    const std::string too_long = "= 60 m is too large: expected at most 50 m";
+    const std::string plain =
+        "= 76 m is too large: expected at most 50 m; plain numbers are in m, for millimetres write \"76 mm\"";
+    CHECK_THAT(reader_words("\"-2 m\""), Catch::StartsWith(negative));
+    CHECK_THAT(sweep_words("\"-2 m\""), Catch::StartsWith(negative));
+    CHECK_THAT(reader_words("\"60 m\""), Catch::StartsWith(too_long));
+    CHECK_THAT(sweep_words("\"60 m\""), Catch::StartsWith(too_long));
+    CHECK_THAT(reader_words("76"), Catch::StartsWith(plain));
+    CHECK_THAT(sweep_words("76"), Catch::StartsWith(plain));
+    CHECK(sweep_words("76") == reader_words("76"));
+    // Integer keys alike: [analysis] modes is 1 to 10000.
+    const std::string modes =
+        error_of("\n[analysis]\nmodes = 12\n[study]\nparameters = [{ key = \"analysis.modes\", values = [0] }]\n");
+    CHECK_THAT(modes, Catch::Contains("(analysis.modes) = 0 is out of range; expected 1 to 10000"));
 }

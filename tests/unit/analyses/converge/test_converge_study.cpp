@@ -14,8 +14,8 @@ using namespace coremodal;
 
 TEST_CASE("Model error: a beam level's extrapolated values against the solid's, role by role", "[converge][beam]") {
     const ConvergeStudy study = coremodal::testing::beam_against_solid_study();
-    CHECK(find_model(study.models, "beam") == &study.models[1]);
-    CHECK_FALSE(find_model(study.models, "harmonic"));
+    CHECK(find_reference(study.models) == &study.models[0]);  // the solid's
+    CHECK_FALSE(find_reference({study.models[1]}));
 
     const std::vector<ModelError> errors = model_errors(study.models);
     REQUIRE(errors.size() == 2);  // f1 and torsion: the beam has no ovalling

@@ -82,7 +82,7 @@ TEST_CASE("Time and memory scale as power laws of the DOFs, the coarsest level l
     std::vector<LevelResult> levels;
     for (int k = 1; k <= 4; ++k) levels.push_back(level(k, {mode(1, 61.3 + std::pow(1.0 / k, 4), "bending", 1, 0)}));
     levels[0].median_s.total = 1e3;  // start-up costs of the coarsest level: not in the fit
-    const ModelStudy m = analyse_levels("solid", "", levels);
+    const ModelStudy m = analyse_levels(ModelChoice::solid, "", levels);
     REQUIRE(m.time_exponent);
     CHECK(*m.time_exponent == Approx(1.0).epsilon(1e-9));  // time ~ k^3, DOFs ~ k^3
     REQUIRE(m.memory_exponent);
@@ -97,7 +97,7 @@ TEST_CASE("A target beyond the ladder is predicted from the observed order and t
         const double e = std::pow(1.0 / k, 4);
         levels.push_back(level(k, {mode(1, 100 + 10 * e, "ovalling", 2, 0)}));
     }
-    const ModelStudy m = analyse_levels("solid", "", levels);
+    const ModelStudy m = analyse_levels(ModelChoice::solid, "", levels);
     const TrackedMode& oval = m.modes.at(0);
     REQUIRE(oval.richardson);
     // Finest error 10/256/100 = 3.9e-4: 1e-4 needs k = 4 (3.9)^(1/4) = 5.59.
