@@ -6,6 +6,10 @@
 //                     the solid's modes below the cutoff)
 //   rayleigh_damping  alpha M + beta K: the matrix in the direct solve,
 //                     zeta_j = alpha/(2 omega_j) + beta omega_j/2 in the modes
+//   structural_damping  a loss factor eta per part: the complex stiffness
+//                     K_p (1 + i eta_p) of each part's cells (solid, harmonic)
+//                     or elements (beam), H = sum_p eta_p K_p in the direct
+//                     solve, Phi^T H Phi in the modes (StructuralDamping below)
 //
 // Modal damping gives each mode at rest (K phi = lambda M phi, M-orthonormal)
 // the modal damping force 2 zeta omega_j eta_j', omega_j = sqrt(lambda_j):
@@ -19,8 +23,9 @@
 // matrix is alpha M + beta K + M Phi diag(the differences) Phi^T M. Either
 // acts on the absolute velocity in the stationary frame (bearings, air, the
 // web); a rotating (internal) damping, which drives whirl instability above
-// the first critical speed, is not modelled, nor loss factors per part (the
-// field measures one relative damping per roll, a decay, I-1).
+// the first critical speed, is not modelled (the field measures one relative
+// damping per roll, a decay, I-1). A loss factor per part (below) is the
+// material's own loss, in the same stationary-frame equations.
 //
 // The single-mode check (I-2...4): a force of constant amplitude F at
 // frequency f on a mode of frequency fn gives F / k times
@@ -30,6 +35,10 @@
 #include "scene/damping_input.hpp"
 
 #include <cmath>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace coremodal {
 
@@ -61,6 +70,64 @@ struct RayleighDamping {
 inline double amplification(double frequency_ratio, double zeta) {
     const double r2 = frequency_ratio * frequency_ratio;
     return 1.0 / std::sqrt((1 - r2) * (1 - r2) + 4 * zeta * zeta * r2);
+}
+
+// Structural (hysteretic) damping: each part's material loses the fraction
+// 2 pi eta of its peak strain energy per cycle whatever the frequency (a
+// complex modulus E (1 + i eta); Nashif, Jones & Henderson, Vibration
+// Damping, Wiley 1985, ch. 2; eta is the loss tangent tan delta of dynamic
+// mechanical analysis, measured for paper in-plane by Lif & Fellers, Nordic
+// Pulp & Paper Research Journal 14(1) 82-91, 1999). In the frequency domain
+// the stiffness of part p becomes K_p (1 + i eta_p), so the equations of
+// motion gain the frequency-independent term i H a with
+//     H = sum_p eta_p K_p                     (hysteretic_operator below)
+// and a mode at rest (M-normalised, K phi = lambda phi) the modal term
+// i phi^T H phi = i eta_j lambda_j with the modal loss factor
+//     eta_j = sum_p eta_p phi^T K_p phi / phi^T K phi   (the parts' strain-energy shares).
+// A single mode of frequency fn under a force F at f (r = f/fn) moves F/k times
+//     d_h(r) = 1 / sqrt((1 - r^2)^2 + eta^2),
+// which at resonance (r = 1) is 1/eta, the viscous 1/(2 zeta) with
+// zeta = eta / 2, and off resonance differs from the viscous d(r) as
+// eta against 2 zeta r (less damping above resonance, more below).
+// Springs (spring layers, bearings) are effects, not parts: they carry no
+// loss factor here (their losses are in the modal ratios).
+struct StructuralDamping {
+    static constexpr const char* kName = "structural_damping";
+    double base = 0;                       // eta of every part not named
+    std::map<std::string, double> parts;   // "core", "rest_paper", "chucks"
+    bool given() const {
+        if (base > 0) return true;
+        for (const auto& [part, eta] : parts)
+            if (eta > 0) return true;
+        return false;
+    }
+    // eta of a part of a mesh or network: "core", "rest_paper", "chuck_<end>" (the "chucks" key).
+    double of(std::string_view part) const {
+        const std::string key = part.starts_with("chuck") ? "chucks" : std::string(part);
+        const auto it = parts.find(key);
+        return it != parts.end() ? it->second : base;
+    }
+    // eta_j of an M-normalised mode of eigenvalue lambda (rad^2/s^2), given phi^T H phi.
+    static double modal_loss_factor(double phi_H_phi, double lambda) { return lambda > 0 ? phi_H_phi / lambda : 0.0; }
+    // The viscous ratio with the same response at resonance.
+    static double equivalent_zeta(double eta) { return eta / 2; }
+};
+
+// H = sum_p eta_p K_p over the parts (each part's stiffness from part_stiffness(name),
+// only for parts with eta_p > 0): the one place the loss factors become an operator,
+// for dense and sparse matrices alike.
+template <class Matrix, class PartStiffness>
+Matrix hysteretic_operator(const StructuralDamping& d, const std::vector<std::string>& part_names, Matrix zero,
+                           PartStiffness part_stiffness) {
+    for (const std::string& part : part_names)
+        if (const double eta = d.of(part); eta > 0) zero += eta * part_stiffness(part);
+    return zero;
+}
+
+// The single-mode amplification with a loss factor, d_h(r) above.
+inline double hysteretic_amplification(double frequency_ratio, double eta) {
+    const double r2 = frequency_ratio * frequency_ratio;
+    return 1.0 / std::sqrt((1 - r2) * (1 - r2) + eta * eta);
 }
 
 }  // namespace coremodal

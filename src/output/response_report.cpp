@@ -8,6 +8,7 @@
 #include "output/text_file.hpp"
 #include "scene/level_traits.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace coremodal {
@@ -82,14 +83,22 @@ Json damping_json(const ResponseResult& r) {
     Json families = Json::object();
     for (const DampingSpec::FamilyRatio& f : d.families) families[f.family] = (f.ratio);
     t["families"] = (families);
+    if (d.loss_factor > 0 || !d.part_loss_factors.empty()) {  // structural damping, only when the case names it
+        Json parts = Json::object();
+        for (const auto& [part, eta] : d.part_loss_factors) parts[part] = eta;
+        t["loss_factor"] = d.loss_factor;
+        t["loss_factors"] = parts;
+    }
     Json given = Json::array(), kept = Json::array();
     for (const DampingSpec::ModeRatio& m : d.modes) given.push_back(Json{{"mode", m.mode}, {"ratio", m.ratio}});
     t["modes"] = (given);
     for (const ModeDamping& m : r.mode_damping) {
         Json rest = Json::array();
         for (int k : m.rest_modes) rest.push_back(k);
-        kept.push_back(Json{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
-                                   {"zeta", m.zeta}, {"from", m.from}});
+        Json mode{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
+                  {"zeta", m.zeta}, {"from", m.from}};
+        if (m.loss_factor > 0) mode["loss_factor"] = m.loss_factor;  // eta_j; at resonance as zeta = eta_j / 2
+        kept.push_back(mode);
     }
     t["kept_modes"] = (kept);
     return t;
@@ -97,13 +106,17 @@ Json damping_json(const ResponseResult& r) {
 
 // The kept modes' damping as a table for people.
 std::string damping_table(const ResponseResult& r) {
-    std::string out = "| lateral mode | mode at rest | label | f at rest | zeta | from |\n|---|---|---|---|---|---|\n";
+    const bool structural = std::any_of(r.mode_damping.begin(), r.mode_damping.end(),
+                                        [](const ModeDamping& m) { return m.loss_factor > 0; });
+    std::string out = std::string("| lateral mode | mode at rest | label | f at rest | zeta | from |") +
+                      (structural ? " loss factor eta_j |\n|---|---|---|---|---|---|---|\n" : "\n|---|---|---|---|---|---|\n");
     for (size_t j = 0; j < r.mode_damping.size(); ++j) {
         const ModeDamping& m = r.mode_damping[j];
         std::string rest;
         for (int k : m.rest_modes) rest += (rest.empty() ? "" : ", ") + std::to_string(k);
         out += "| " + std::to_string(j + 1) + " | " + (rest.empty() ? "-" : rest) + " | " + label_text(m.label) + " | " +
-               significant(m.frequency_hz, 5) + " Hz | " + significant(m.zeta, 4) + " | " + m.from + " |\n";
+               significant(m.frequency_hz, 5) + " Hz | " + significant(m.zeta, 4) + " | " + m.from + " |" +
+               (structural ? " " + significant(m.loss_factor, 4) + " |" : "") + "\n";
     }
     return out;
 }

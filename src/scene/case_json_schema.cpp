@@ -275,6 +275,7 @@ constexpr TableTitle kTables[] = {
     {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},
     {"rayleigh", "[damping] rayleigh: D = alpha M + beta K, from alpha and beta or from zeta at two frequencies"},
     {"modes", "[damping] modes: the relative damping of single modes at rest, { mode = 1, ratio = 0.02 }"},
+    {"loss_factors", "[damping.loss_factors]: the loss factor eta per part (structural damping, K_p (1 + i eta_p))"},
     {"excitation", "[excitation]: what excites the spinning roll (docs/how-to/response.md)"},
     {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
     {"limits", "[limits]: one verdict over the rest-roll diameters, for `coremodal limits` (docs/how-to/limits.md)"},

@@ -1,6 +1,7 @@
 // [damping]: the base damping of every mode (one ratio from ratio,
 // log_decrement or a measured decay, or Rayleigh's alpha M + beta K), ratios
-// per mode family and per single mode on top of it (scene/response_spec.hpp,
+// per mode family and per single mode on top of it, and structural damping:
+// a loss factor for every part and per part (loss_factor, [damping.loss_factors]) (scene/response_spec.hpp,
 // docs/how-to/response.md). Every mistake stops the reader with file:line:col, the
 // key and what is expected. Mode numbers are checked against the modes at
 // rest by the run (analyses/response/response_damping.cpp), which alone knows
@@ -10,6 +11,7 @@
 #include "common/error.hpp"
 #include "scene/damping_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace coremodal::case_reading {
@@ -18,7 +20,8 @@ namespace {
 
 constexpr const char* kDampingExpected =
     "exactly one of ratio = 0.01, log_decrement = 0.06, decay = { amplitude_ratio = 3.2, cycles = 10 } or "
-    "rayleigh = { zeta = 0.01, frequencies = [\"20 Hz\", \"200 Hz\"] }";
+    "rayleigh = { zeta = 0.01, frequencies = [\"20 Hz\", \"200 Hz\"] }, and/or a loss factor: loss_factor = 0.03 "
+    "or [damping.loss_factors] core = 0.03";
 constexpr const char* kRayleighExpected =
     "either alpha and beta (1/s and s, plain numbers), e.g. { alpha = 0.5, beta = 1e-5 }, or zeta at two "
     "frequencies, e.g. { zeta = 0.01, frequencies = [\"20 Hz\", \"200 Hz\"] }";
@@ -28,6 +31,12 @@ const std::vector<std::string_view> kBaseKeys = {"ratio", "log_decrement", "deca
 
 DampingSpec CaseReader::read_damping(const Section& damping) const {
     DampingSpec spec;
+    // The loss factors first: they may be all the damping there is. Their
+    // ranges (0 <= eta <= 1) are the schema's, checked with file:line:col.
+    spec.loss_factor = quantity(damping, "loss_factor").value_or(0.0);
+    if (const std::optional<Section> parts = section(damping, "loss_factors", "loss_factors"))
+        for (std::string_view part : kLossFactorParts)
+            if (const std::optional<double> eta = quantity(*parts, part)) spec.part_loss_factors[std::string(part)] = *eta;
     read_damping_base(damping, spec);
     for (std::string_view family : kDampingFamilies)
         if (const std::optional<double> zeta = quantity(damping, family))
@@ -40,6 +49,12 @@ void CaseReader::read_damping_base(const Section& damping, DampingSpec& spec) co
     std::vector<std::string_view> given;
     for (std::string_view key : kBaseKeys)
         if (get(damping, key)) given.push_back(key);
+    const bool structural = spec.loss_factor > 0 || std::any_of(spec.part_loss_factors.begin(), spec.part_loss_factors.end(),
+                                                                [](const auto& p) { return p.second > 0; });
+    if (given.empty() && structural) {  // structural damping alone: no viscous ratio
+        spec.source = "[damping] no viscous damping: the loss factors alone";
+        return;
+    }
     if (given.empty())
         fail(damping.table->source(), "[damping] gives no damping for the modes it does not name; expected " +
                                           std::string(kDampingExpected));

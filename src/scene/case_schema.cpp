@@ -37,6 +37,12 @@ constexpr int kMaxLimitsPoints = 200;
 // Relative damping of cores and rest rolls: 0.005-0.02 (Ilomäki,
 // I-1...4); 1 is critical damping, above which nothing oscillates.
 constexpr PlausibleRange kPlausibleDampingRatio{1e-3, 0.2, 0.01, "cores and rest rolls: 0.005-0.02 (Ilomäki I-1...I-4; docs/reference/references.md)"};
+// A material's loss factor (loss tangent tan delta, effects/damping.hpp):
+// no published range for cores is built in, the value is the user's; the
+// band catches slips (2 for 2 %): metals ~1e-4-1e-3, paper and polymers of
+// order 1e-2-1e-1 (Nashif, Jones & Henderson, Vibration Damping, 1985, ch. 2).
+// Above 1 the loss modulus exceeds the storage modulus: no roll part.
+constexpr PlausibleRange kPlausibleLossFactor{1e-4, 0.2, 0.03, "loss factors of solids: ~1e-4 (steel) to ~0.1 (paper, polymers); the value is the user's"};
 // The same as a logarithmic decrement, delta = 2 pi zeta (I-1).
 constexpr PlausibleRange kPlausibleLogDecrement{6e-3, 1.3, 0.06, "2 pi times 0.001-0.2 (cores and rest rolls: 0.03-0.13)"};
 // Straightness deviations of cores (ISO 11093-5) are tenths of a millimetre
@@ -282,6 +288,12 @@ const std::vector<KeySpec>& case_schema() {
         plain_key("damping", "modes", ValueKind::tables),
         integer_key("modes", "mode", 1, kMaxModes),
         {"modes", "ratio", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleDampingRatio},
+        // Structural damping: 0 < eta <= 1 for every part, 0 <= eta <= 1 per part (0: a lossless part).
+        {"damping", "loss_factor", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, true, kPlausibleLossFactor},
+        plain_key("damping", "loss_factors", ValueKind::table),
+        {"loss_factors", "core", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, false, kPlausibleLossFactor},
+        {"loss_factors", "rest_paper", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, false, kPlausibleLossFactor},
+        {"loss_factors", "chucks", ValueKind::quantity, Dimension::dimensionless, 0.0, 1.0, false, kPlausibleLossFactor},
         {"excitation", "bow", ValueKind::quantity, Dimension::length, 0.0, 0.1, false, kPlausibleBow},
         plain_key("excitation", "bow_shape", ValueKind::text),
         {"excitation", "unbalance", ValueKind::quantity, Dimension::unbalance, 0.0, 100.0, false, kPlausibleUnbalance},

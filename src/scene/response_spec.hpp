@@ -11,6 +11,7 @@
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,7 +50,16 @@ struct DampingSpec {
         std::string where;  // "FILE:LINE:COL: [damping.modes #1]": the run checks the number against the modes at rest
     };
     std::vector<ModeRatio> modes;
+    // Structural damping: a loss factor eta for every part ([damping]
+    // loss_factor) and per part ([damping.loss_factors] core, rest_paper,
+    // chucks), effects/damping.hpp StructuralDamping. With no viscous base
+    // (ratio ... rayleigh) the loss factors are the only damping (ratio 0).
+    double loss_factor = 0;
+    std::map<std::string, double> part_loss_factors;
 };
+
+// The parts a loss factor can name ([damping.loss_factors]).
+inline const std::vector<std::string_view> kLossFactorParts = {"core", "rest_paper", "chucks"};
 
 // The shape of a bow (straightness deviation) along the core, scaled to the
 // bow at mid-core: a half sine over the core length, or the roll's first

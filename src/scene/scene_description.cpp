@@ -399,6 +399,11 @@ std::string damping_lines(const DampingSpec& d) {
     for (const DampingSpec::ModeRatio& m : d.modes)
         out += "  damping of mode " + std::to_string(m.mode) + " at rest (shared by a degenerate partner): zeta = " +
                format_quantity(m.ratio, Dimension::dimensionless) + "\n";
+    if (d.loss_factor > 0)
+        out += "  structural damping of every part: loss factor eta = " +
+               format_quantity(d.loss_factor, Dimension::dimensionless) + " (stiffness K_p (1 + i eta))\n";
+    for (const auto& [part, eta] : d.part_loss_factors)
+        out += "  structural damping of the " + part + ": loss factor eta = " + format_quantity(eta, Dimension::dimensionless) + "\n";
     return out;
 }
 

@@ -7,7 +7,10 @@
 #include "analyses/response/response_levels.hpp"
 #include "analyses/response/response_loads.hpp"
 #include "analyses/response/response_sweep.hpp"
+#include "beam/beam_theory.hpp"
 #include "beam/rotating_modes.hpp"
+#include "beam/timoshenko_element.hpp"
+#include "effects/damping.hpp"
 #include "modes/verification_check.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -15,6 +18,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <optional>
+#include <string>
 
 namespace coremodal {
 namespace {
@@ -101,6 +106,50 @@ private:
     std::vector<int> orders_;
 };
 
+// Structural damping on the lateral rows, H = sum_p eta_p K_p
+// (effects/damping.hpp): the core's elements split into their layers (the
+// core's wall and the rest paper, beam_theory.hpp: K_e is linear in the
+// section's stiffnesses, so K_e(core) + K_e(rest paper) is the element's
+// K_e), the chucks' elements whole; springs carry none.
+Eigen::SparseMatrix<double> beam_hysteretic(const Scene& scene, const BeamNetwork& net, const LateralResponse& lateral,
+                                            const StructuralDamping& damping) {
+    const std::vector<int>& free = lateral.matrices().free_dofs;
+    std::vector<int> row_of(net.held.size(), -1);
+    for (size_t r = 0; r < free.size(); ++r) row_of[static_cast<size_t>(free[r])] = static_cast<int>(r);
+    const auto n = static_cast<Eigen::Index>(free.size());
+    // The element stiffness of one part's section, summed on the rows over the beams that carry it.
+    const auto part_stiffness = [&](const std::string& part) {
+        std::vector<Eigen::Triplet<double>> triplets;
+        for (const BeamNetwork::Beam& beam : net.beams) {
+            std::optional<BeamSection> layer;  // none: the part is not in this beam
+            if (beam.name == "core" && part == "core")
+                layer = tube_beam_section(scene.core.outer_diameter, scene.core.inner_diameter, scene.core.material);
+            if (beam.name == "core" && part == "rest_paper" && scene.rest_paper)
+                layer = tube_beam_section(scene.rest_paper->outer_diameter, scene.core.outer_diameter,
+                                          scene.rest_paper->material);
+            const bool chuck = beam.name.starts_with("chuck") && part == "chucks";
+            if (!layer && !chuck) continue;
+            for (size_t e = 0; e < beam.sections.size(); ++e) {
+                const int nodes[kElementNodes] = {beam.nodes[2 * e], beam.nodes[2 * e + 1], beam.nodes[2 * e + 2]};
+                const TimoshenkoElement element{net.node_z[nodes[2]] - net.node_z[nodes[0]],
+                                                chuck ? beam.sections[e] : *layer};
+                const BeamElementMatrix K = element_matrices(element).K;
+                for (int i = 0; i < kElementDofs; ++i)
+                    for (int j = 0; j < kElementDofs; ++j) {
+                        const int ri = row_of[beam_dof::per_node * nodes[i / beam_dof::per_node] + i % beam_dof::per_node];
+                        const int rj = row_of[beam_dof::per_node * nodes[j / beam_dof::per_node] + j % beam_dof::per_node];
+                        if (ri >= 0 && rj >= 0 && K(i, j) != 0) triplets.emplace_back(ri, rj, K(i, j));
+                    }
+            }
+        }
+        Eigen::SparseMatrix<double> K(n, n);
+        K.setFromTriplets(triplets.begin(), triplets.end());
+        return K;
+    };
+    const std::vector<std::string> parts(kLossFactorParts.begin(), kLossFactorParts.end());
+    return hysteretic_operator(damping, parts, Eigen::SparseMatrix<double>(n, n), part_stiffness);
+}
+
 double first_bending_hz(const BeamModelResult& rest) {
     for (const BeamMode& m : rest.modes)
         if (m.label.type == "bending") return m.frequency_hz;
@@ -154,12 +203,20 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     LateralResponse lateral = lateral_basis(rest, setup, checking, scene.analysis.tolerance);
     const LateralDampingPlan damping = plan_damping(setup.damping, rest, lateral);
     lateral.set_damping(damping.rayleigh, damping.zeta);
+    const StructuralDamping structural = structural_damping_of(setup.damping);
+    if (structural.given()) lateral.set_hysteretic(beam_hysteretic(scene, rest.network, lateral, structural));
     out.n_dofs = lateral.matrices().K.rows();
     const Eigen::VectorXd first_shape =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
     const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
     COREMODAL_ASSERT(!loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
     for (const std::string& a : damping.assumptions) out.assumptions.push_back(a);
+    for (const std::string& a :
+         structural_damping_assumptions(setup.damping, "the core's and rest paper's layers of each core element and the chucks' elements"))
+        out.assumptions.push_back(a);
+    if (structural.given())
+        out.assumptions.push_back("structural damping: the static part of the modes above the cutoff is taken without "
+                                  "their loss (it changes it by 1/(1 + i eta): in magnitude by about eta^2 / 2)");
     for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
     for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
     std::vector<CorePoint> probes;
@@ -176,6 +233,7 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     const int n_used = std::max(std::min(2, lateral.n_modes()), lateral.modes_below(2 * M_PI * out.checks.cutoff_hz));
     out.checks.n_modes_used = n_used;
     out.mode_damping.assign(damping.modes.begin(), damping.modes.begin() + n_used);
+    for (int j = 0; j < n_used; ++j) out.mode_damping[static_cast<size_t>(j)].loss_factor = lateral.modal_loss_factor(j);
     const BeamResponseModel model(rest, lateral, loads, probes, n_used);
     sweep_response(model, range, f1, out.roll_outer_diameter, out, checking);
     out.assumptions.push_back(kept_modes_assumption(out.checks, "lateral modes at rest"));

@@ -83,6 +83,13 @@ Eigen::VectorXd sideways_translation(const HarmonicPlane& plane) {
 
 }  // namespace
 
+Eigen::SparseMatrix<double> harmonic_hysteretic(const HarmonicPlane& plane, const StructuralDamping& damping) {
+    const auto n = static_cast<Eigen::Index>(plane.K.rows());
+    return hysteretic_operator(damping, plane.section.part_names, Eigen::SparseMatrix<double>(n, n), [&](const std::string& part) {
+        return cells_matrix(plane, [&](int c) { return in_part(plane, c, part); }, Term::stiffness);
+    });
+}
+
 HarmonicPlane assemble_harmonic_plane(const Scene& scene) {
     HarmonicPlane plane;
     plane.section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);

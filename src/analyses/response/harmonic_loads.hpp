@@ -17,6 +17,7 @@
 
 #include "analyses/response/modal_response.hpp"
 #include "analyses/response/modal_response_model.hpp"
+#include "effects/damping.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "geometry/section_mesh.hpp"
 #include "material/material.hpp"
@@ -52,5 +53,8 @@ Eigen::VectorXd section_probe(const HarmonicPlane& plane, double z);
 // first_mode: the first bending mode at rest per DOF (bow_shape = "first_mode" only).
 LevelLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& excitation, const HarmonicPlane& plane,
                                    const ModalResponse& response, const Eigen::VectorXd& first_mode);
+
+// Structural damping H = sum_p eta_p K_p over the parts' cells (effects/damping.hpp).
+Eigen::SparseMatrix<double> harmonic_hysteretic(const HarmonicPlane& plane, const StructuralDamping& damping);
 
 }  // namespace coremodal

@@ -111,14 +111,23 @@ std::optional<LateralResponse> LateralResponse::truncated(const BeamNetwork& net
 void LateralResponse::project_gyroscopic() { Ghat_ = Phi_.transpose() * (G_ * Phi_); }
 
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
-    modal_damping_ = modal_damping_coefficients(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
-    Eigen::VectorXd own(lambda_.size());  // c_j less Rayleigh's part: what the matrix form adds in the modes
-    for (Eigen::Index j = 0; j < lambda_.size(); ++j) own(j) = modal_damping_(j) - rayleigh.coefficient(lambda_(j));
+    const ModalDampingSplit split = split_modal_damping(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
+    modal_damping_ = split.total;
     if (!complete_) return;  // no direct solve: the damping matrix would need every mode
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
-    D_ = MPhi * own.asDiagonal() * MPhi.transpose();
+    D_ = MPhi * split.own.asDiagonal() * MPhi.transpose();
     if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
     if (rayleigh.beta != 0) D_ += rayleigh.beta * Eigen::MatrixXd(m_.K);
+}
+
+void LateralResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
+    COREMODAL_ASSERT(H.rows() == m_.K.rows() && H.cols() == m_.K.cols());
+    H_ = std::move(H);
+    Hhat_ = Phi_.transpose() * (H_ * Phi_);
+}
+
+double LateralResponse::modal_loss_factor(int j) const {
+    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), lambda_(j));
 }
 
 double LateralResponse::modal_damping_ratio(int j) const {
@@ -156,8 +165,8 @@ Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, d
                                                     int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
-    return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>(), lambda_,
-                                 modal_damping_, omega, load);
+    return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>() + hysteretic_term(Hhat_, n),
+                                 lambda_, modal_damping_, omega, load);
 }
 
 Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
@@ -183,7 +192,8 @@ Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double om
 Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
     COREMODAL_ASSERT(complete_);
     const Eigen::MatrixXd K(m_.K), M(m_.M), G(G_);
-    const Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
+    Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
+    if (H_.size() > 0) A += cd(0, 1) * Eigen::MatrixXd(H_).cast<cd>();  // structural damping
     return A.partialPivLu().solve(f);
 }
 

@@ -30,4 +30,16 @@ Eigen::VectorXd modal_damping_coefficients(const RayleighDamping& rayleigh,
     return c;
 }
 
+ModalDampingSplit split_modal_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta,
+                                      const Eigen::VectorXd& lambda, double rigid_line) {
+    ModalDampingSplit out{modal_damping_coefficients(rayleigh, zeta, lambda, rigid_line), Eigen::VectorXd(lambda.size())};
+    for (Eigen::Index j = 0; j < lambda.size(); ++j) out.own(j) = out.total(j) - rayleigh.coefficient(lambda(j));
+    return out;
+}
+
+Eigen::MatrixXcd hysteretic_term(const Eigen::MatrixXd& H_hat, int n) {
+    if (H_hat.size() == 0) return Eigen::MatrixXcd::Zero(n, n);  // no structural damping
+    return cd(0, 1) * H_hat.topLeftCorner(n, n).cast<cd>();
+}
+
 }  // namespace coremodal

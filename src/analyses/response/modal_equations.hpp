@@ -8,8 +8,10 @@
 // and load frequency: i omega Omega Gh_n for the beam network's two planes
 // (G skew), omega Omega Gh_n for the complex plane u = u_x + i u_y of an
 // axisymmetric model under a load turning forward (G symmetric; the
-// harmonic level's n = 1, modal_response.hpp). Gh is kept dense: the
-// whirl's coupling of the modes is not diagonalised away.
+// harmonic level's n = 1, modal_response.hpp), plus i Phi_n^T H Phi_n of a
+// structural damping H = sum_p eta_p K_p (effects/damping.hpp; its diagonal
+// eta_j lambda_j). Gh and Hh are kept dense: the whirl's coupling of the
+// modes (and a loss factor that differs per part) is not diagonalised away.
 #pragma once
 
 #include "effects/damping.hpp"
@@ -32,5 +34,20 @@ Eigen::VectorXcd solve_modal_equations(Eigen::MatrixXcd gyro_n, const Eigen::Vec
 Eigen::VectorXd modal_damping_coefficients(const RayleighDamping& rayleigh,
                                            const std::vector<std::optional<double>>& zeta,
                                            const Eigen::VectorXd& lambda, double rigid_line);
+
+// The viscous damping of a basis in the one split both matrix forms use
+// (LateralResponse's dense D, ModalResponse's sparse alpha M + beta K plus
+// Woodbury): c_j as above, and `own`, c_j less Rayleigh's alpha + beta
+// lambda_j, the modes' low-rank part M Phi diag(own) Phi^T M.
+struct ModalDampingSplit {
+    Eigen::VectorXd total, own;
+};
+ModalDampingSplit split_modal_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta,
+                                      const Eigen::VectorXd& lambda, double rigid_line);
+
+// The modal equations' hysteretic term for structural damping (effects/damping.hpp):
+// i Phi_n^T H Phi_n, added to gyro_n (dense: a loss factor that differs per
+// part couples the modes, as G does).
+Eigen::MatrixXcd hysteretic_term(const Eigen::MatrixXd& H_hat, int n);
 
 }  // namespace coremodal

@@ -20,6 +20,11 @@ struct ModalResponse::StiffnessFactor {
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> llt;
 };
 
+struct ModalResponse::ComplexStiffnessFactor {
+    ComplexSparse K_iH;  // kept: UMFPACK's solve reads the matrix it factored
+    Eigen::UmfPackLU<ComplexSparse> lu;
+};
+
 ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<double> M,
                              Eigen::SparseMatrix<double> G, std::complex<double> gyroscopic_unit, ModalBasis basis,
                              double lambda_scale)
@@ -39,9 +44,28 @@ ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<
 
 void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     rayleigh_ = rayleigh;
-    damping_ = modal_damping_coefficients(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
-    own_damping_.resize(n_modes());
-    for (int j = 0; j < n_modes(); ++j) own_damping_(j) = damping_(j) - rayleigh.coefficient(basis_.lambda(j));
+    ModalDampingSplit split = split_modal_damping(rayleigh, zeta, basis_.lambda, kRigidEigenvalueFraction * lambda_scale_);
+    damping_ = std::move(split.total);
+    own_damping_ = std::move(split.own);
+}
+
+void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
+    COREMODAL_ASSERT(H.rows() == K_.rows() && H.cols() == K_.cols());
+    H_ = std::move(H);
+    Hhat_ = basis_.Phi.transpose() * (H_ * basis_.Phi);
+    auto factor = std::make_shared<ComplexStiffnessFactor>();
+    {
+        const SingleThreadBlas one_thread;
+        factor->K_iH = K_.cast<cd>() + cd(0, 1) * H_.cast<cd>();
+        factor->lu.compute(factor->K_iH);
+    }
+    if (factor->lu.info() != Eigen::Success)  // K is positive definite and H = sum eta_p K_p >= 0: not expected
+        throw SolveError("the complex stiffness K + i H of the structural damping could not be factored");
+    KH_factor_ = factor;
+}
+
+double ModalResponse::modal_loss_factor(int j) const {
+    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), basis_.lambda(j));
 }
 
 int ModalResponse::modes_below(double omega_cut) const {
@@ -58,8 +82,9 @@ Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, dou
                                                   int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = basis_.Phi.leftCols(n).transpose().cast<cd>() * p;
-    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>(), basis_.lambda,
-                                 damping_, omega, load);
+    return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>() +
+                                     hysteretic_term(Hhat_, n),
+                                 basis_.lambda, damping_, omega, load);
 }
 
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
@@ -71,10 +96,19 @@ Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omeg
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                           const Eigen::VectorXcd& static_p) const {
     // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
+    // With structural damping both static parts carry it: static_p is (K + i H)^-1 p and the
+    // kept modes' is (Lambda_n + i Hh_n)^-1 Phi_n^T p (exact when H = eta K).
     const auto Phi_n = basis_.Phi.leftCols(n);
     const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
-    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) -
-                                 (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    Eigen::VectorXcd kept_static;
+    if (Hhat_.size() == 0) {
+        kept_static = (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
+    } else {
+        Eigen::MatrixXcd A = hysteretic_term(Hhat_, n);
+        A.diagonal() += basis_.lambda.head(n).cast<cd>();
+        kept_static = A.partialPivLu().solve(kept);
+    }
+    const Eigen::VectorXcd eta = modal_coordinates(p, omega_spin, omega, n) - kept_static;
     return Phi_n.cast<cd>() * eta + static_p;
 }
 
@@ -84,6 +118,10 @@ Eigen::VectorXd ModalResponse::static_response(const Eigen::VectorXd& p) const {
 }
 
 Eigen::VectorXcd ModalResponse::complex_static_response(const Eigen::VectorXcd& p) const {
+    if (KH_factor_) {
+        const SingleThreadBlas one_thread;
+        return KH_factor_->lu.solve(p);
+    }
     return static_response(Eigen::VectorXd(p.real())).cast<cd>() + cd(0, 1) * static_response(Eigen::VectorXd(p.imag())).cast<cd>();
 }
 
@@ -120,12 +158,13 @@ std::vector<ModalResponse::SynchronousCrossing> ModalResponse::synchronous_cross
 }
 
 Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const {
-    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K), sparse;
+    // A0 = K - omega^2 M + g omega Omega G + i omega (alpha M + beta K) + i H, sparse;
     // the modes' own damping is the low-rank term i omega U diag(d) U^T,
     // U = M Phi, d = own_damping_: (A0 + U C U^T)^-1 p = y - Z (I + C U^T Z)^-1 C U^T y,
     // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
-    const ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
-                             cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
+    ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
+                       cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
+    if (H_.nonZeros() > 0) A0 += cd(0, 1) * H_.cast<cd>();  // structural damping, frequency independent
     Eigen::UmfPackLU<ComplexSparse> lu;
     {
         const SingleThreadBlas one_thread;

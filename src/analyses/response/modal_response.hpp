@@ -2,8 +2,9 @@
 // (the harmonic level's wave number n = 1, the solid) to loads turning at
 // omega = k Omega (docs/theory/response.md):
 //
-//     (K - omega^2 M + g omega Omega G + i omega D) x = f
+//     (K - omega^2 M + g omega Omega G + i omega D + i H) x = f
 //
+// (H: structural damping, a loss factor per part, effects/damping.hpp)
 // with g the gyroscopic unit: i for a model with both planes, where G is
 // skew (the solid, as the beam network: effects/rotation.hpp), or 1 for the
 // harmonic level's n = 1 as one complex plane. There the two families are
@@ -63,6 +64,14 @@ public:
     // empty (and every mode above the basis), 2 zeta[j] omega_j for the
     // others. zeta has n_modes() entries.
     void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
+    // Structural damping H = sum_p eta_p K_p (effects/damping.hpp): i H in
+    // the direct solve, i Phi^T H Phi in the modal equations (frequency
+    // independent), and the static part of the modes above the basis with
+    // their loss: (K + i H)^-1 p less the kept modes' (Lambda_n + i Hh_n)^-1
+    // part (complex_static_response then solves with K + i H, factored once).
+    void set_hysteretic(Eigen::SparseMatrix<double> H);
+    // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
+    double modal_loss_factor(int j) const;
 
     int n_modes() const { return static_cast<int>(basis_.lambda.size()); }
     long n_dofs() const { return static_cast<long>(K_.rows()); }
@@ -88,7 +97,8 @@ public:
     Eigen::VectorXcd direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const;
     // K^-1 p (a static load).
     Eigen::VectorXd static_response(const Eigen::VectorXd& p) const;
-    Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;  // K^-1 p, p complex
+    // K^-1 p, p complex; (K + i H)^-1 p with structural damping (the static part of the superposition).
+    Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;
 
     // The spins at which a mode of the projected model whirls at
     // omega = order x Omega, forward (direction +1) or backward (-1), for one
@@ -112,10 +122,14 @@ private:
     ModalBasis basis_;
     double lambda_scale_;
     Eigen::MatrixXd Ghat_, MPhi_;  // Phi^T G Phi; M Phi
+    Eigen::SparseMatrix<double> H_;  // structural damping (empty: none)
+    Eigen::MatrixXd Hhat_;           // Phi^T H Phi
     Eigen::VectorXd damping_, own_damping_;  // c_j; c_j less Rayleigh's part (the matrix form's low-rank term)
     RayleighDamping rayleigh_;
     struct StiffnessFactor;  // CHOLMOD's, kept out of this header (modal_response.cpp)
     std::shared_ptr<const StiffnessFactor> K_factor_;
+    struct ComplexStiffnessFactor;  // UMFPACK's LU of K + i H (structural damping only)
+    std::shared_ptr<const ComplexStiffnessFactor> KH_factor_;
 };
 
 }  // namespace coremodal

@@ -144,13 +144,33 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
     return plan_modal_damping(spec, numbered, basis, "bending only");
 }
 
+namespace {
+// "loss factor 0.03 (every part); core 0.02", or "" without.
+std::string loss_factor_words(const DampingSpec& spec) {
+    if (!structural_damping_of(spec).given()) return "";
+    std::string out = "loss factor " + significant(spec.loss_factor, 4) + " (every part)";
+    for (const auto& [part, eta] : spec.part_loss_factors) out += "; " + part + " " + significant(eta, 4);
+    return out;
+}
+}  // namespace
+
 std::string damping_summary(const DampingSpec& spec) {
     // The source of a Rayleigh base names alpha and beta already.
     std::string out = spec.rayleigh ? spec.source : "zeta = " + significant(spec.ratio, 4) + " (" + spec.source + ")";
     for (const DampingSpec::FamilyRatio& f : spec.families) out += "; " + f.family + " " + significant(f.ratio, 4);
     for (const DampingSpec::ModeRatio& m : spec.modes)
         out += "; mode " + std::to_string(m.mode) + " " + significant(m.ratio, 4);
+    if (const std::string words = loss_factor_words(spec); !words.empty()) out += "; structural damping: " + words;
     return out;
+}
+
+std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where) {
+    if (!structural_damping_of(spec).given()) return {};
+    return {"structural (hysteretic) damping, " + loss_factor_words(spec) +
+                ": the complex stiffness K_p (1 + i eta_p) of " + where +
+                ", frequency independent (H = sum eta_p K_p in the direct solve, Phi^T H Phi in the modal equations: "
+                "mode j's loss factor eta_j = phi_j^T H phi_j / lambda_j, at resonance as a viscous zeta_j = eta_j / 2); "
+                "springs (spring layers, bearings) carry no loss factor; the values are the user's (no default)"};
 }
 
 }  // namespace coremodal

@@ -13,6 +13,7 @@
 
 #include "analyses/response/lateral_response.hpp"
 #include "beam/beam_model.hpp"
+#include "effects/damping.hpp"
 #include "scene/response_spec.hpp"
 
 #include <optional>
@@ -28,6 +29,7 @@ struct ModeDamping {
     double frequency_hz = 0;
     double zeta = 0;
     std::string from;  // "mode 1", "bending", "ratio", "rayleigh"
+    double loss_factor = 0;  // eta_j = phi^T H phi / lambda_j of structural damping (0: none)
 };
 
 struct LateralDampingPlan {
@@ -65,5 +67,14 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
 
 // One line for people: "ratio 0.01 (...)", "Rayleigh ..."; with the families and modes given.
 std::string damping_summary(const DampingSpec& spec);
+
+// The loss factors of [damping] as the effect (effects/damping.hpp).
+inline StructuralDamping structural_damping_of(const DampingSpec& spec) {
+    return {spec.loss_factor, spec.part_loss_factors};
+}
+// What a run with structural damping assumes, echoed; `where` says what a
+// part's stiffness is at the level ("the core's and rest paper's element
+// stiffness", "each part's cells"). Empty without loss factors.
+std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where);
 
 }  // namespace coremodal

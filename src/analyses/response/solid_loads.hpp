@@ -17,6 +17,7 @@
 
 #include "analyses/response/modal_response.hpp"
 #include "analyses/response/modal_response_model.hpp"
+#include "effects/damping.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/dof_map.hpp"
 #include "material/material.hpp"
@@ -53,5 +54,8 @@ ProbeWeights solid_section_probe(const SolidResponseModel& model, double z);
 // for bow_shape = "first_mode" only (else empty).
 LevelLoads build_solid_loads(const Scene& scene, const ExcitationSpec& excitation, const SolidResponseModel& model,
                              const ModalResponse& response, const Eigen::MatrixXd& first_pair);
+
+// Structural damping H = sum_p eta_p K_p over the parts' cells (effects/damping.hpp).
+Eigen::SparseMatrix<double> solid_hysteretic(const SolidResponseModel& m, const StructuralDamping& damping);
 
 }  // namespace coremodal

@@ -146,3 +146,40 @@ TEST_CASE("`check` describes the damping the forced response will use", "[respon
     CHECK(text.find("damping of mode 1 at rest (shared by a degenerate partner): zeta = 0.005") != std::string::npos);
     CHECK(text.find("amplitude limit: 0.005 m at mid-span") != std::string::npos);
 }
+
+TEST_CASE("[damping] loss factors: for every part and per part, alone or over a viscous base", "[damping][scene]") {
+    const DampingSpec alone = damping_of("loss_factor = 0.03\n");
+    CHECK(alone.loss_factor == 0.03);
+    CHECK(alone.ratio == 0.0);  // no viscous base: the loss factors are all the damping
+    CHECK(!alone.rayleigh);
+    CHECK(alone.source == "[damping] no viscous damping: the loss factors alone");
+    const DampingSpec both = damping_of("ratio = 0.01\nloss_factor = 0.02\nloss_factors = { core = 0.04, chucks = 0 }\n");
+    CHECK(both.ratio == 0.01);
+    CHECK(both.loss_factor == 0.02);
+    REQUIRE(both.part_loss_factors.size() == 2);
+    CHECK(both.part_loss_factors.at("core") == 0.04);
+    CHECK(both.part_loss_factors.at("chucks") == 0.0);
+    const StructuralDamping effect{both.loss_factor, both.part_loss_factors};
+    CHECK(effect.of("core") == 0.04);
+    CHECK(effect.of("rest_paper") == 0.02);  // the base
+    CHECK(effect.of("chuck_left") == 0.0);   // a chuck's mesh part takes the chucks' key
+    // Per part alone, as a table of its own.
+    CHECK(damping_of("[damping.loss_factors]\nrest_paper = 0.05\n").part_loss_factors.at("rest_paper") == 0.05);
+    CHECK_FALSE(damping_of("ratio = 0.01\n").loss_factor > 0);
+}
+
+TEST_CASE("[damping] loss factor mistakes are refused with the key, the place and what is expected", "[damping][scene]") {
+    CHECK(error_with("loss_factor = -0.1\n") == "cases/x.toml:13:15: [damping] loss_factor = -0.1 must be positive");
+    CHECK(error_with("loss_factor = 0\n") == "cases/x.toml:13:15: [damping] loss_factor = 0 must be positive");
+    CHECK(error_with("loss_factor = 1.5\n") == "cases/x.toml:13:15: [damping] loss_factor = 1.5 is too large: expected at most 1");
+    CHECK(error_with("loss_factors = { core = -0.01 }\n")
+              .starts_with("cases/x.toml:13:25: [damping.loss_factors] core = -0.01 must be zero or positive"));
+    CHECK(error_with("loss_factors = { core = 2 }\n")
+              .starts_with("cases/x.toml:13:25: [damping.loss_factors] core = 2 is too large: expected at most 1"));
+    CHECK(error_with("loss_factors = { shaft = 0.01 }\n")
+              .starts_with("cases/x.toml:13:18: unknown key 'shaft' in [damping.loss_factors]; expected one of core, rest_paper, chucks"));
+    // A per-part table that damps nothing is no damping.
+    CHECK(error_with("loss_factors = { core = 0 }\n")
+              .starts_with("cases/x.toml:12:1: [damping] gives no damping for the modes it does not name; expected "
+                           "exactly one of"));
+}

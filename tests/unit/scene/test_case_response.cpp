@@ -113,7 +113,8 @@ TEST_CASE("[damping], [excitation], [response] mistakes are refused with the key
     CHECK(error_of(kRoll + "[damping]\n" + kExcitation + kResponse) ==
           "cases/x.toml:12:1: [damping] gives no damping for the modes it does not name; expected exactly one of "
           "ratio = 0.01, log_decrement = 0.06, decay = { amplitude_ratio = 3.2, cycles = 10 } or rayleigh = { zeta = "
-          "0.01, frequencies = [\"20 Hz\", \"200 Hz\"] }");
+          "0.01, frequencies = [\"20 Hz\", \"200 Hz\"] }, and/or a loss factor: loss_factor = 0.03 or "
+          "[damping.loss_factors] core = 0.03");
     CHECK(error_of(kRoll + "[damping]\nratio = 0.01\nlog_decrement = 0.06\n" + kExcitation + kResponse)
               .starts_with("cases/x.toml:14:17: [damping] log_decrement = 0.06 and [damping] ratio = 0.01 are both given"));
     CHECK(error_of(kRoll + "[damping]\nratio = 1.5\n" + kExcitation + kResponse) ==
