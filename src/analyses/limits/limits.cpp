@@ -71,7 +71,7 @@ std::optional<CriticalSpeeds> pencil_speeds(const BeamModelResult& beam, double 
 // model, instead of a Campbell sweep over every wave number (the criteria
 // need the n = 1 family only: every load of the verdict is lateral). They
 // agree with the sweep's refined crossings within 0.2 % (tests/unit/analyses/
-// limits; docs/limits.md, "Speed").
+// limits; docs/how-to/limits.md, "Speed").
 CriticalSpeeds response_crossing_speeds(const ResponseResult& response, std::string& mode) {
     CriticalSpeeds out;
     for (const ResponseCrossing& c : response.crossings) {  // ascending speed

@@ -108,7 +108,7 @@ public:
     // solved as the eigenvalues nu = 1 / Omega^2 of Lambda^-1/2 (order^2 I -+
     // order Gh) Lambda^-1/2 (dense, the basis' size). The crossings of the
     // truncated model, exactly: what its forced response resonates at
-    // (docs/limits.md, "Speed"). Ascending spin (rad/s) up to omega_spin_max,
+    // (docs/how-to/limits.md, "Speed"). Ascending spin (rad/s) up to omega_spin_max,
     // each with its modal coordinates y.
     struct SynchronousCrossing {
         double omega_spin = 0;
