@@ -90,10 +90,18 @@ ChuckSpec CaseReader::read_chuck(const Section& s, std::string name, Scene& scen
                                         format_quantity(kDefaultChuckClearance, Dimension::length) +
                                         " assumed (body diameter = bore - 2 x clearance)");
         c.body_diameter = bore - 2 * clearance;
-        if (c.body_diameter <= 0.2 * bore)
+        if (c.body_diameter <= 0.2 * bore) {
+            // Without a clearance of its own the default leaves no body: the bore itself is implausible.
+            if (!get(s, "clearance"))
+                fail(*s.table, "the default radial clearance " +
+                                   format_quantity(kDefaultChuckClearance, Dimension::length) +
+                                   " leaves no chuck body in a core bore of " + format_quantity(bore, Dimension::length) +
+                                   " ([core] inner_diameter); expected a core bore of tens of millimetres or a "
+                                   "smaller clearance or body_diameter in [" + s.display + "]");
             fail(*get(s, "clearance"), echo(s, "clearance", *get(s, "clearance")) +
                                            " leaves no chuck body; expected a radial clearance of "
                                            "a fraction of a millimetre to a few millimetres");
+        }
     }
     c.shaft_diameter = quantity(s, "shaft_diameter").value_or(c.body_diameter);
     // The shaft leaves the body's end face: it cannot be wider than the body.
