@@ -305,7 +305,10 @@ TEST_CASE("A reader that stops reading (run | head -2) ends the run quietly with
     const std::string err = slurp(dir.path / "stderr.txt");
     INFO("stderr: " << err);
     CHECK(std::stoi(slurp(dir.path / "status.txt")) == 128 + SIGPIPE);
-    CHECK(err.empty());  // quietly: no dump, no message
+    // Quietly: no dump, no message of its own — the case's warnings, written
+    // before the pipe closed (the tiny case's mesh is coarser than its band), may stand.
+    std::istringstream lines(err);
+    for (std::string line; std::getline(lines, line);) CHECK(line.rfind("coremodal: warning: ", 0) == 0);
     CHECK_FALSE(any_partial(dir.path));
     CHECK_FALSE(fs::exists(dir.path / "out" / "summary.json"));
 }

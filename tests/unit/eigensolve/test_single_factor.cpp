@@ -245,7 +245,7 @@ TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve
 }
 
 // A user's value the option does not know is refused by name.
-TEST_CASE("-factor_precision takes single, double or auto", "[eigensolve][single_factor]") {
+TEST_CASE("The option -factor_precision takes single, double or auto", "[eigensolve][single_factor]") {
     COREMODAL_PETSC(PetscOptionsSetValue(nullptr, "-factor_precision", "half"));
     CHECK_THROWS_WITH(factor_precision_choice(PETSC_COMM_SELF), Catch::Contains("expected single, double or auto"));
     COREMODAL_PETSC(PetscOptionsClearValue(nullptr, "-factor_precision"));
