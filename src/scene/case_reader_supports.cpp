@@ -97,7 +97,7 @@ ChuckSpec CaseReader::read_chuck(const Section& s, std::string name, Scene& scen
                                    format_quantity(kDefaultChuckClearance, Dimension::length) +
                                    " leaves no chuck body in a core bore of " + format_quantity(bore, Dimension::length) +
                                    " ([core] inner_diameter); expected a core bore of tens of millimetres or a "
-                                   "smaller clearance or body_diameter in [" + s.display + "]");
+                                   "smaller clearance or body_diameter in " + s.display);
             fail(*get(s, "clearance"), echo(s, "clearance", *get(s, "clearance")) +
                                            " leaves no chuck body; expected a radial clearance of "
                                            "a fraction of a millimetre to a few millimetres");
