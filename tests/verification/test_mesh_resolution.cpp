@@ -160,7 +160,7 @@ TEST_CASE("A solid run whose mesh does not resolve its ovalling says so, by how 
 }
 
 TEST_CASE("The rule's mesh resolves the band's highest n within its target at the solid level",
-          "[verification][mesh][mesh_rule]") {
+          "[verification][mesh][mesh_rule][long]") {
     // Issue 33's ring with a band to 700 Hz: thin-ring theory puts n = 6 at
     // 656 Hz inside it. `default` asks for 68 around (scene/mesh_rule.hpp);
     // the thin-wall count alone (48) leaves n = 6 2.0 % stiff (measured,

@@ -167,7 +167,7 @@ TEST_CASE("Single-precision count stands only when no eigenvalue lies within its
 // stalls, or its count is not proven); the run says so, takes the double
 // factor, and gives the closed-form modes, proven complete. -factor_precision
 // double skips the single factor and says why.
-TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eigensolve][single_factor]") {
+TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eigensolve][single_factor][long]") {
     constexpr int kX = 200, kY = 150, kModes = 12;
     OperatorSet ops;
     ops.matrices.emplace(Term::stiffness, grid_matrix(kX, kY, false));
@@ -213,7 +213,7 @@ TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eige
 // (the exact prediction). Its refined solves give the closed-form modes to
 // 1e-9 (as the double factor's, test_block_lanczos.cpp) and its count is
 // accepted by the margin and is the closed form's.
-TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve][single_factor]") {
+TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve][single_factor][long]") {
     constexpr int kX = 200, kY = 150, kModes = 12;
     OperatorSet ops;
     ops.matrices.emplace(Term::stiffness, grid_matrix(kX, kY, false));

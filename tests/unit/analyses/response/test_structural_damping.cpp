@@ -156,7 +156,7 @@ TEST_CASE("Beam level: a loss factor on every part is K (1 + i eta); per part, s
 }
 
 TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 with a loss factor per part is the direct solve",
-          "[damping][response]") {
+          "[damping][response][long]") {
     const Scene scene = parse_case_text(clamped_roll_text("harmonic", "2 m"), "roll.toml");
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
     REQUIRE(plane.dofs.n_dofs < 1500);  // a dense basis in well under a second
