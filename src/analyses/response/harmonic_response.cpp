@@ -111,12 +111,9 @@ ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSet
                                                           [](const ModeLabel& l) { return l.n == 1; },
                                                           "wave number n = 1 only");
     response.set_damping(damping.rayleigh, damping.zeta);
-    const StructuralDamping structural = structural_damping_of(setup.damping);
-    if (structural.given()) response.set_hysteretic(harmonic_hysteretic(plane, structural));
-    for (const std::string& a : structural_damping_assumptions(setup.damping, "each part's cells of wave number n = 1 (core, rest paper, chucks)")) out.assumptions.push_back(a);
-    if (structural.given())
-        out.assumptions.push_back("structural damping: the static part of the modes above the cutoff with their loss, "
-                                  "(K + i H)^-1 p less the kept modes' (Lambda + i Phi^T H Phi)^-1 part");
+    add_structural_damping(
+        response, setup.damping, [&](const StructuralDamping& s) { return harmonic_hysteretic(plane, s); },
+        "each part's cells of wave number n = 1 (core, rest paper, chucks)", out.assumptions);
     const Eigen::VectorXd first_mode =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(basis, labels) : Eigen::VectorXd();
     const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, plane, response, first_mode);

@@ -77,4 +77,19 @@ inline StructuralDamping structural_damping_of(const DampingSpec& spec) {
 // stiffness", "each part's cells"). Empty without loss factors.
 std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where);
 
+// The loss factors of [damping] on a modal response whose static part keeps
+// them (harmonic and solid levels): H from the level's parts, built only when
+// a loss factor is given, and what that assumes, echoed.
+template <class Response, class Hysteretic>
+void add_structural_damping(Response& response, const DampingSpec& spec, Hysteretic&& hysteretic,
+                            const std::string& where, std::vector<std::string>& assumptions) {
+    const StructuralDamping structural = structural_damping_of(spec);
+    if (!structural.given()) return;
+    response.set_hysteretic(hysteretic(structural));
+    for (std::string& a : structural_damping_assumptions(spec, where)) assumptions.push_back(std::move(a));
+    assumptions.push_back(
+        "structural damping: the static part of the modes above the cutoff with their loss, "
+        "(K + i H)^-1 p less the kept modes' (Lambda + i Phi^T H Phi)^-1 part");
+}
+
 }  // namespace coremodal

@@ -92,12 +92,9 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
                                                           [](const ModeLabel&) { return true; },
                                                           "every mode of the solid below the cutoff");
     response.set_damping(damping.rayleigh, damping.zeta);
-    const StructuralDamping structural = structural_damping_of(setup.damping);
-    if (structural.given()) response.set_hysteretic(solid_hysteretic(model, structural));
-    for (const std::string& a : structural_damping_assumptions(setup.damping, "each part's cells (core, rest paper, chucks)")) out.assumptions.push_back(a);
-    if (structural.given())
-        out.assumptions.push_back("structural damping: the static part of the modes above the cutoff with their loss, "
-                                  "(K + i H)^-1 p less the kept modes' (Lambda + i Phi^T H Phi)^-1 part");
+    add_structural_damping(
+        response, setup.damping, [&](const StructuralDamping& s) { return solid_hysteretic(model, s); },
+        "each part's cells (core, rest paper, chucks)", out.assumptions);
     const Eigen::MatrixXd first_pair =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_pair(basis, labels) : Eigen::MatrixXd();
     const LevelLoads loads = build_solid_loads(scene, setup.excitation, model, response, first_pair);
