@@ -161,6 +161,32 @@ TEST_CASE("Single-precision count stands only when no eigenvalue lies within its
     CHECK(negative_eigenvalue_count(A, "the test's K - sigma M") == 5);
 }
 
+namespace {
+
+// A 200 x 150 membrane of springs and masses (30,000 unknowns) and its
+// lowest closed-form eigenvalues, kMembraneModes + 6 of them, ascending.
+constexpr int kMembraneModes = 12;
+struct Membrane {
+    OperatorSet ops;
+    std::vector<double> exact;
+};
+Membrane membrane() {
+    constexpr int kX = 200, kY = 150;
+    Membrane m;
+    m.ops.matrices.emplace(Term::stiffness, grid_matrix(kX, kY, false));
+    m.ops.matrices.emplace(Term::mass, grid_matrix(kX, kY, true));
+    for (int p = 1; p <= 20; ++p)
+        for (int q = 1; q <= 20; ++q) {
+            const double sx = std::sin(p * M_PI / (2.0 * (kX + 1))), sy = std::sin(q * M_PI / (2.0 * (kY + 1)));
+            m.exact.push_back(4 * kSpring / kMass * (sx * sx + sy * sy));
+        }
+    std::sort(m.exact.begin(), m.exact.end());
+    m.exact.resize(kMembraneModes + 6);
+    return m;
+}
+
+}  // namespace
+
 // Through the solver: a membrane of 30,000 unknowns (the block method's
 // size) with a prediction that places the shift a millionth below its
 // 13th eigenvalue. The single factor cannot serve there (its refinement
@@ -168,18 +194,10 @@ TEST_CASE("Single-precision count stands only when no eigenvalue lies within its
 // factor, and gives the closed-form modes, proven complete. -factor_precision
 // double skips the single factor and says why.
 TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eigensolve][single_factor][long]") {
-    constexpr int kX = 200, kY = 150, kModes = 12;
-    OperatorSet ops;
-    ops.matrices.emplace(Term::stiffness, grid_matrix(kX, kY, false));
-    ops.matrices.emplace(Term::mass, grid_matrix(kX, kY, true));
-    std::vector<double> exact;
-    for (int p = 1; p <= 20; ++p)
-        for (int q = 1; q <= 20; ++q) {
-            const double sx = std::sin(p * M_PI / (2.0 * (kX + 1))), sy = std::sin(q * M_PI / (2.0 * (kY + 1)));
-            exact.push_back(4 * kSpring / kMass * (sx * sx + sy * sy));
-        }
-    std::sort(exact.begin(), exact.end());
-    exact.resize(kModes + 6);
+    constexpr int kModes = kMembraneModes;
+    const Membrane grid = membrane();
+    const OperatorSet& ops = grid.ops;
+    const std::vector<double>& exact = grid.exact;
     REQUIRE(exact[kModes] - exact[kModes - 1] > 1e-3 * exact[kModes]);  // a distinct 13th eigenvalue
     SolveRequest request;
     request.n_modes = kModes;
@@ -214,18 +232,10 @@ TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eige
 // 1e-9 (as the double factor's, test_block_lanczos.cpp) and its count is
 // accepted by the margin and is the closed form's.
 TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve][single_factor][long]") {
-    constexpr int kX = 200, kY = 150, kModes = 12;
-    OperatorSet ops;
-    ops.matrices.emplace(Term::stiffness, grid_matrix(kX, kY, false));
-    ops.matrices.emplace(Term::mass, grid_matrix(kX, kY, true));
-    std::vector<double> exact;
-    for (int p = 1; p <= 20; ++p)
-        for (int q = 1; q <= 20; ++q) {
-            const double sx = std::sin(p * M_PI / (2.0 * (kX + 1))), sy = std::sin(q * M_PI / (2.0 * (kY + 1)));
-            exact.push_back(4 * kSpring / kMass * (sx * sx + sy * sy));
-        }
-    std::sort(exact.begin(), exact.end());
-    exact.resize(kModes + 6);
+    constexpr int kModes = kMembraneModes;
+    const Membrane grid = membrane();
+    const OperatorSet& ops = grid.ops;
+    const std::vector<double>& exact = grid.exact;
     SolveRequest request;
     request.n_modes = kModes;
     request.lambda_scale = exact[0];
