@@ -119,7 +119,7 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     const ResponseSetup setup = setup_for_range(base, at, f1_estimate);
     const bool check = result.check_response && !result.checks;
     const ResponseResult response =
-        run_forced_response(at, setup, {}, check ? ResponseChecking::light : ResponseChecking::none);
+        run_forced_response(at, setup, {}, check ? ResponseChecking::light : ResponseChecking::none, RestModes::lateral);
     if (check) result.checks = LimitsChecks{d, response.checks};
     std::optional<CriticalSpeeds> critical;
     if (level_traits(at.model).pencil_critical_speeds)

@@ -170,7 +170,7 @@ Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, d
 }
 
 Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
-                                            bool static_correction) const {
+                                            bool static_correction, const Eigen::VectorXcd* K_inverse_f) const {
     Eigen::VectorXcd x = times(Phi_.leftCols(n), modal_coordinates(f, omega_spin, omega, n));
     if (!static_correction || (complete_ && n == n_modes())) return x;
     // The static part of the modes left out: K^-1 f less the kept modes'
@@ -178,7 +178,7 @@ Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double om
     // complete basis) their own sum.
     if (K_factor_) {
         const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
-        return x + solve_static(*K_factor_, f) -
+        return x + (K_inverse_f ? *K_inverse_f : solve_static(*K_factor_, f)) -
                times(Phi_.leftCols(n), (load.array() / lambda_.head(n).array().cast<cd>()).matrix());
     }
     COREMODAL_ASSERT(complete_);
@@ -187,6 +187,11 @@ Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double om
     const Eigen::VectorXcd load = Phi_r.transpose().cast<cd>() * f;
     x += Phi_r.cast<cd>() * (load.array() / lambda_.tail(rest).array().cast<cd>()).matrix();
     return x;
+}
+
+std::optional<Eigen::VectorXcd> LateralResponse::static_solve(const Eigen::VectorXcd& f) const {
+    if (!K_factor_) return std::nullopt;
+    return solve_static(*K_factor_, f);
 }
 
 Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {

@@ -95,8 +95,13 @@ public:
     // x on the rows for the load f on the rows, at spin Omega and load
     // frequency omega (rad/s), by superposition of the n lowest modes (n =
     // n_modes(): exact), with the static part of the others when asked.
+    // K_inverse_f: K^-1 f when the caller has it (a sweep's load is
+    // c + Omega^2 p: K^-1 c and K^-1 p once for every speed, static_solve).
     Eigen::VectorXcd superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
-                               bool static_correction = false) const;
+                               bool static_correction = false, const Eigen::VectorXcd* K_inverse_f = nullptr) const;
+    // K^-1 f on the rows by the factor of K; none without one (the complete
+    // basis of a free rotor).
+    std::optional<Eigen::VectorXcd> static_solve(const Eigen::VectorXcd& f) const;
     // The modal coordinates eta of that sum (which mode answers).
     Eigen::VectorXcd modal_coordinates(const Eigen::VectorXcd& f, double omega_spin, double omega, int n) const;
     // The same by the direct dense solve of the full system.

@@ -126,12 +126,18 @@ void sort_orders(LevelLoads& out) {
 }
 
 ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
-                                         const std::string& solver, LevelModes& rest) {
+                                         const std::string& solver) {
     if (mpi_size() > 1)
         throw InputError(scene.source_file + ": the forced response at the " + scene.model +
                          " level runs in one process; run it without mpirun");
     ResponseResult out = response_result_for(scene, setup, level);
     out.solver = solver;
+    return out;
+}
+
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
+                                         const std::string& solver, LevelModes& rest) {
+    ResponseResult out = start_mesh_level_response(scene, setup, level, solver);
     rest = make_model_level(scene)->solve(scene, Printer{false});
     // A response in modes that are not verified is no response: no --keep-going here.
     require_verified("the modes at rest of " + scene.name + " (" + scene.model + " level)",

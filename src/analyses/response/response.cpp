@@ -116,19 +116,28 @@ void require_response_level(const Scene& scene) {
 }
 
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
-                                   ResponseChecking checking) {
+                                   ResponseChecking checking, RestModes rest) {
     require_response_level(scene);
     // The per-level responses (response_levels.hpp); require_response_level
     // refused a level without one.
     switch (chosen_level(scene)) {
         case ModelChoice::beam: return run_beam_response(scene, setup, options, checking);
-        case ModelChoice::harmonic: return run_harmonic_response(scene, setup, checking);
+        case ModelChoice::harmonic: return run_harmonic_response(scene, setup, checking, rest);
         case ModelChoice::solid: return run_solid_response(scene, setup, checking);
         case ModelChoice::coupled:
         case ModelChoice::automatic: break;
     }
     COREMODAL_ASSERT(false);
     return {};
+}
+
+std::vector<ResponseResult> run_forced_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
+                                                 ResponseChecking checking, RestModes rest) {
+    require_response_level(scene);
+    if (chosen_level(scene) == ModelChoice::harmonic) return run_harmonic_responses(scene, setups, checking, rest);
+    std::vector<ResponseResult> out;
+    for (const ResponseSetup& s : setups) out.push_back(run_forced_response(scene, s, {}, checking, rest));
+    return out;
 }
 
 }  // namespace coremodal

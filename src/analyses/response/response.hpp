@@ -137,11 +137,33 @@ struct ResponseResult {
 // basis (harmonic, solid) it is `full`.
 enum class ResponseChecking { full, light, none };
 
+// What step 1 solves at rest at the harmonic level. `every_wave_number`:
+// the level's whole run (modes.csv's numbering, which [damping] mode numbers
+// name). `lateral`: wave number n = 1 only, the response's own basis (f1 is
+// its lowest bending mode, the same operators and eigensolver, so the same
+// f1 to the solver's tolerance): for a caller that needs f1 and the
+// response only (`coremodal limits`: half of its harmonic time). A
+// [damping] naming mode numbers still gets the whole run. The beam and
+// solid levels' runs at rest are the lateral problem's already.
+enum class RestModes { every_wave_number, lateral };
+
 // At the scene's level ("auto" resolved as models/choose does): beam,
 // harmonic or solid. Throws InputError for a scene the level cannot take;
 // SolveError from the solvers.
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {},
-                                   ResponseChecking checking = ResponseChecking::full);
+                                   ResponseChecking checking = ResponseChecking::full,
+                                   RestModes rest = RestModes::every_wave_number);
+
+// The forced responses of one scene to setups that differ only in what
+// changes neither K nor M (the viscous damping, the excitation; the same
+// speeds, probes, highest order and loss factors): `coremodal limits`'
+// damping and bow samples of its band. The harmonic level assembles, solves
+// and labels its n = 1 basis, factors K and runs at rest once for all of
+// them (each is then the single run's numbers, the same arithmetic); the
+// other levels run each setup.
+std::vector<ResponseResult> run_forced_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
+                                                 ResponseChecking checking = ResponseChecking::full,
+                                                 RestModes rest = RestModes::every_wave_number);
 
 // InputError, before any work, when the scene's level cannot take it: the
 // harmonic and solid levels need a body of revolution.
