@@ -180,12 +180,12 @@ Eigen::VectorXd first_bending_shape(const BeamModelResult& rest) {
 
 // The lateral problem's modes: every one (a run that checks its sum against
 // the complete basis and the direct solve), or those up to the cutoff of the
-// highest order the excitation can load, when the caller checks elsewhere
-// (lateral_response.hpp); the complete basis where the truncated one cannot
-// be had.
+// highest order the excitation can load, when the caller checks elsewhere or
+// lightly against the sparse direct solve (lateral_response.hpp); the
+// complete basis where the truncated one cannot be had.
 LateralResponse lateral_basis(const BeamModelResult& rest, const ResponseSetup& setup, ResponseChecking checking,
                               double tolerance) {
-    if (checking == ResponseChecking::none) {
+    if (checking != ResponseChecking::full) {
         const double cutoff_hz =
             kTruncationFactor * highest_order(setup.excitation) * setup.response.speeds_hz.back();
         if (std::optional<LateralResponse> truncated =

@@ -113,7 +113,9 @@ void LateralResponse::project_gyroscopic() { Ghat_ = Phi_.transpose() * (G_ * Ph
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     const ModalDampingSplit split = split_modal_damping(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
     modal_damping_ = split.total;
-    if (!complete_) return;  // no direct solve: the damping matrix would need every mode
+    rayleigh_ = rayleigh;
+    own_damping_ = split.own;
+    if (!complete_) return;  // the sparse direct solve takes the low-rank part as it is (direct)
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
     D_ = MPhi * split.own.asDiagonal() * MPhi.transpose();
     if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
@@ -195,11 +197,35 @@ std::optional<Eigen::VectorXcd> LateralResponse::static_solve(const Eigen::Vecto
 }
 
 Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
-    COREMODAL_ASSERT(complete_);
+    if (!complete_) return sparse_direct(f, omega_spin, omega);
     const Eigen::MatrixXd K(m_.K), M(m_.M), G(G_);
     Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
     if (H_.size() > 0) A += cd(0, 1) * Eigen::MatrixXd(H_).cast<cd>();  // structural damping
     return A.partialPivLu().solve(f);
+}
+
+// (A_s + U C U^T) x = f with A_s = K - omega^2 M + i omega (Omega G + alpha M
+// + beta K) + i H sparse (LU) and U = M Phi_n, C = i omega diag(own c_j):
+// x = y - Z (I + C U^T Z)^-1 C U^T y, y = A_s^-1 f, Z = A_s^-1 U (no C^-1:
+// a mode with no own damping has c_j = 0).
+Eigen::VectorXcd LateralResponse::sparse_direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
+    using SparseC = Eigen::SparseMatrix<cd>;
+    const cd i_omega(0, omega);
+    SparseC A = (m_.K - omega * omega * m_.M).cast<cd>() + i_omega * (omega_spin * G_).cast<cd>();
+    if (rayleigh_.alpha != 0) A += i_omega * (rayleigh_.alpha * m_.M).cast<cd>();
+    if (rayleigh_.beta != 0) A += i_omega * (rayleigh_.beta * m_.K).cast<cd>();
+    if (H_.size() > 0) A += cd(0, 1) * H_.cast<cd>();
+    A.makeCompressed();
+    Eigen::SparseLU<SparseC> lu(A);
+    if (lu.info() != Eigen::Success) throw SolveError("the direct solve of the lateral problem: the system is singular");
+    const Eigen::VectorXcd y = lu.solve(f);
+    const Eigen::MatrixXcd U = (m_.M * Phi_).cast<cd>();
+    const Eigen::MatrixXcd Z = lu.solve(U);
+    const Eigen::VectorXcd c = i_omega * own_damping_.cast<cd>();
+    const Eigen::Index n = Phi_.cols();
+    const Eigen::MatrixXcd small = Eigen::MatrixXcd::Identity(n, n) + c.asDiagonal() * (U.transpose() * Z);
+    const Eigen::VectorXcd w = small.partialPivLu().solve(c.asDiagonal() * (U.transpose() * y));
+    return y - Z * w;
 }
 
 Eigen::VectorXd LateralResponse::static_response(const Eigen::VectorXd& f) const {

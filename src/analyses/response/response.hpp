@@ -128,13 +128,12 @@ struct ResponseResult {
 // (lateral_response.hpp), which is the same truncated sum without a dense
 // eigensolve of every mode. ResponseChecks then holds no differences
 // (speeds_checked = 0).
-// `light` is for the same caller's one check (`coremodal limits`, whose
-// beam-level time it halves): the truncated sum against the complete basis
-// at every check speed as `full`, the complete basis against the direct
-// dense solve at one speed only (the last checked: the highest peak where
-// there is one), since that difference is round-off wherever the assembly
-// is right (tests/verification hold it at every speed). Without a complete
-// basis (harmonic, solid) it is `full`.
+// `light` is for the same caller's one check (`coremodal limits`): at the
+// beam level the modes up to the cutoff as `none` (no dense eigensolve of
+// every mode) and the truncated sum against the direct sparse solve at every
+// check speed (lateral_response.hpp: the kept modes' damping by Woodbury's
+// identity), as the harmonic and solid levels check; there, without a
+// complete basis, it is `full`.
 enum class ResponseChecking { full, light, none };
 
 // What step 1 solves at rest at the harmonic level. `every_wave_number`:
