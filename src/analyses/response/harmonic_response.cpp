@@ -85,6 +85,54 @@ double first_bending_hz(const ModalBasis& basis, const std::vector<ModeLabel>& l
     return 0;
 }
 
+// The setups one n = 1 model serves (run_harmonic_responses): the same
+// basis (speeds, highest order) and structural damping.
+void require_one_model(const std::vector<ResponseSetup>& setups) {
+    const ResponseSetup& first = setups.front();
+    for (const ResponseSetup& s : setups)
+        COREMODAL_ASSERT(s.response.speeds_hz == first.response.speeds_hz &&
+                         highest_order(s.excitation) == highest_order(first.excitation) &&
+                         s.damping.loss_factor == first.damping.loss_factor &&
+                         s.damping.part_loss_factors == first.damping.part_loss_factors);
+}
+
+// The probes on the section: u_y = -i u_x (the sin family is -i a).
+std::vector<ProbeWeights> section_probes(const HarmonicPlane& plane, const ResponseRange& range) {
+    std::vector<ProbeWeights> out;
+    for (const ResponseRange::Probe& p : range.probes) {
+        const Eigen::VectorXcd w = section_probe(plane, p.z_m).cast<cd>();
+        out.push_back({w, cd(0, -1) * w});
+    }
+    return out;
+}
+
+// The shared n = 1 model of run_harmonic_responses.
+struct PlaneModel {
+    const HarmonicPlane& plane;
+    const ModalBasis& basis;
+    const std::vector<ModeLabel>& labels;
+    double lambda_scale;
+    ModalResponse& response;
+    const std::vector<ProbeWeights>& probes;
+};
+
+// One setup's damping and loads on the shared model; 3-5. its sweep, peaks,
+// speed at the limit and checks.
+void respond(const Scene& scene, const ResponseSetup& setup, const LevelModes& rest, const PlaneModel& m,
+             ResponseChecking checking, ResponseResult& out) {
+    // Each n = 1 mode is the pair at rest of its eigenvalue (both members numbered in modes.csv).
+    const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, m.basis, m.labels, m.lambda_scale,
+                                                          [](const ModeLabel& l) { return l.n == 1; },
+                                                          "wave number n = 1 only");
+    m.response.set_damping(damping.rayleigh, damping.zeta);
+    const Eigen::VectorXd first_mode =
+        setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(m.basis, m.labels) : Eigen::VectorXd();
+    const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, m.plane, m.response, first_mode);
+    finish_modal_response(
+        {m.response, damping, loads, m.probes, m.labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
+        setup.response, out.speeds_at_rest.f1_hz, out, checking);
+}
+
 }  // namespace
 
 const ResponseLevel kHarmonicResponse{
@@ -102,15 +150,11 @@ ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& se
 std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, const std::vector<ResponseSetup>& setups,
                                                    ResponseChecking checking, RestModes rest_modes) {
     COREMODAL_ASSERT(!setups.empty());
+    require_one_model(setups);
     Stopwatch clock;
     Scene scene = scene_given;
     scene.model = "harmonic";  // "auto" resolved
     const ResponseSetup& first = setups.front();
-    for (const ResponseSetup& s : setups)  // the same basis and structural damping serve every setup
-        COREMODAL_ASSERT(s.response.speeds_hz == first.response.speeds_hz &&
-                         highest_order(s.excitation) == highest_order(first.excitation) &&
-                         s.damping.loss_factor == first.damping.loss_factor &&
-                         s.damping.part_loss_factors == first.damping.part_loss_factors);
     // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers
     // them), or only n = 1's own basis below (RestModes::lateral; mode numbers
     // in [damping] need the whole run's numbering).
@@ -143,32 +187,16 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
     add_structural_damping(
         response, first.damping, [&](const StructuralDamping& s) { return harmonic_hysteretic(plane, s); },
         "each part's cells of wave number n = 1 (core, rest paper, chucks)", structural);
-    std::vector<ProbeWeights> probes;
-    for (const ResponseRange::Probe& p : first.response.probes) {  // u_y = -i u_x: the sin family is -i a
-        const Eigen::VectorXcd w = section_probe(plane, p.z_m).cast<cd>();
-        probes.push_back({w, cd(0, -1) * w});
-    }
+    const std::vector<ProbeWeights> probes = section_probes(plane, first.response);
     const std::vector<ResponseCrossing> crossings =
         crossings_of(response, labels, first.response.speeds_hz.back(), outs.front().roll_outer_diameter);
-    // Each setup's damping and loads on the same model; 3-5. its sweep, peaks,
-    // speed at the limit and checks.
+    const PlaneModel model{plane, basis, labels, lambda_scale, response, probes};
     for (size_t k = 0; k < setups.size(); ++k) {
-        const ResponseSetup& setup = setups[k];
         ResponseResult& out = outs[k];
         out.speeds_at_rest = at_rest;
         out.checks.cutoff_hz = cutoff_hz;
-        for (const std::string& a : structural) out.assumptions.push_back(a);
-        // Each n = 1 mode is the pair at rest of its eigenvalue (both members numbered in modes.csv).
-        const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, basis, labels, lambda_scale,
-                                                              [](const ModeLabel& l) { return l.n == 1; },
-                                                              "wave number n = 1 only");
-        response.set_damping(damping.rayleigh, damping.zeta);
-        const Eigen::VectorXd first_mode =
-            setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(basis, labels) : Eigen::VectorXd();
-        const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, plane, response, first_mode);
-        finish_modal_response(
-            {response, damping, loads, probes, labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
-            setup.response, out.speeds_at_rest.f1_hz, out, checking);
+        out.assumptions.insert(out.assumptions.end(), structural.begin(), structural.end());
+        respond(scene, setups[k], rest, model, checking, out);
         out.crossings = crossings;
     }
     const double seconds = clock.lap();

@@ -81,15 +81,15 @@ TEST_CASE("The band's damping and bow samples on the point's own n = 1 model giv
     // round-off (1e-9 relative).
     const LimitsCase c = small_harmonic_roll();
     ResponseSetup damped = *c.response, bowed = *c.response;
-    damped.damping.ratio = 0.03;   // the band's damping sample
-    bowed.excitation.bow_m = 1e-3; // the band's bow sample: twice the case's bow
+    damped.damping.ratio = 0.03;    // the band's damping sample
+    bowed.excitation.bow_m = 1e-3;  // the band's bow sample: twice the case's bow
     const std::vector<ResponseResult> shared =
         run_forced_responses(c.scene, {damped, bowed}, ResponseChecking::none, RestModes::lateral);
     REQUIRE(shared.size() == 2);
-    check_same_response(shared[0],
-                        run_forced_response(c.scene, damped, {}, ResponseChecking::none, RestModes::lateral), 1e-9);
-    check_same_response(shared[1],
-                        run_forced_response(c.scene, bowed, {}, ResponseChecking::none, RestModes::lateral), 1e-9);
+    check_same_response(shared[0], run_forced_response(c.scene, damped, {}, ResponseChecking::none, RestModes::lateral),
+                        1e-9);
+    check_same_response(shared[1], run_forced_response(c.scene, bowed, {}, ResponseChecking::none, RestModes::lateral),
+                        1e-9);
     // and the samples differ from each other (the test can fail): more
     // damping lowers the resonant peak.
     REQUIRE(!shared[0].peaks.empty());
@@ -113,8 +113,7 @@ TEST_CASE("The band's damping and bow samples on one n = 1 model are the re-solv
     for (size_t k = 0; k < setups.size(); ++k) {
         INFO("setup " << k);
         check_same_response(
-            together[k], run_forced_response(c.scene, setups[k], {}, ResponseChecking::none, RestModes::lateral),
-            1e-7);
+            together[k], run_forced_response(c.scene, setups[k], {}, ResponseChecking::none, RestModes::lateral), 1e-7);
         CHECK(together[k].crossings.size() == together[0].crossings.size());
     }
     // More damping: a lower first peak.
