@@ -16,11 +16,15 @@
 // Nothing of the small problem is trusted: each mode's relative residual is
 // computed on the full set,
 //     ||Q(lambda) x|| / ((||K(Omega)|| + ||H|| + |lambda| (||D|| + Omega ||G||) + |lambda|^2 ||M||) ||x||),
-// (1-norms of the full matrices, once per set), for the caller to hold to
-// kMaxProjectedResidual as the undamped branch does. Completeness is not
-// proven by a count (a damped pencil has no inertia); a mode with Rayleigh
-// damping is a mode at rest with the same shape, so the rest basis carries
-// it exactly, and the residual says when a basis does not carry a mode.
+// (1-norms of the full matrices, once per set). For a lightly damped,
+// nearly normal problem (eigenvalue condition ~1) it bounds the eigenvalue's
+// relative error to first order; measured far below it, of the order of its square: 1e-12 at a residual of
+// 3e-8, 1.4e-10 at 1.6e-6, tests/unit/eigensolve/test_projected_damped.cpp). Completeness is not proven by a count (a
+// damped pencil has no inertia); a mode with Rayleigh damping is a mode at rest with the same shape, so the rest basis
+// carries it exactly, and the residual says how well a basis carries the
+// others. Which residual to accept is the caller's: the undamped branch's
+// kMaxProjectedResidual bounds the shape, and is stricter than the
+// frequency needs.
 // One process (as the undamped branch).
 #pragma once
 
