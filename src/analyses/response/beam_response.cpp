@@ -248,8 +248,7 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     out.checks.cutoff_hz = kTruncationFactor * top_hz;
     const int n_used = std::max(std::min(2, lateral.n_modes()), lateral.modes_below(2 * M_PI * out.checks.cutoff_hz));
     out.checks.n_modes_used = n_used;
-    out.mode_damping.assign(damping.modes.begin(), damping.modes.begin() + n_used);
-    for (int j = 0; j < n_used; ++j) out.mode_damping[static_cast<size_t>(j)].loss_factor = lateral.modal_loss_factor(j);
+    out.mode_damping = kept_mode_damping(damping, lateral, n_used);
     const BeamResponseModel model(rest, lateral, loads, probes, n_used);
     sweep_response(model, range, f1, out.roll_outer_diameter, out, checking);
     out.assumptions.push_back(kept_modes_assumption(out.checks, "lateral modes at rest"));

@@ -108,7 +108,7 @@ std::optional<LateralResponse> LateralResponse::truncated(const BeamNetwork& net
     return out;
 }
 
-void LateralResponse::project_gyroscopic() { Ghat_ = Phi_.transpose() * (G_ * Phi_); }
+void LateralResponse::project_gyroscopic() { Ghat_ = project_on_modes(G_, Phi_); }
 
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     const ModalDampingSplit split = split_modal_damping(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
@@ -125,11 +125,7 @@ void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::ve
 void LateralResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == m_.K.rows() && H.cols() == m_.K.cols());
     H_ = std::move(H);
-    Hhat_ = Phi_.transpose() * (H_ * Phi_);
-}
-
-double LateralResponse::modal_loss_factor(int j) const {
-    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), lambda_(j));
+    Hhat_ = project_on_modes(H_, Phi_);
 }
 
 double LateralResponse::modal_damping_ratio(int j) const {

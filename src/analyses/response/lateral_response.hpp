@@ -76,8 +76,8 @@ public:
     // part of the modes left out stays K^-1's (their loss changes it by
     // 1/(1 + i eta): in magnitude by about eta^2/2, 0.02 % at eta = 0.02).
     void set_hysteretic(Eigen::SparseMatrix<double> H);
-    // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
-    double modal_loss_factor(int j) const;
+    // Phi^T H Phi on the basis (project_on_modes; empty without H).
+    const Eigen::MatrixXd& hysteretic_on_modes() const { return Hhat_; }
 
     int n_modes() const { return static_cast<int>(lambda_.size()); }
     // How many modes lie at or below omega_cut (rad/s): the truncated basis.

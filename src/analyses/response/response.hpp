@@ -107,6 +107,7 @@ struct ResponseResult {
     double limit_m = 0;
     DampingSpec damping;                    // as the case gave it
     std::string damping_summary;            // one line for people (response_damping.hpp)
+    std::vector<DampingValue> damping_values;  // the damping terms' inputs beyond the ratios, for the report
     std::vector<ModeDamping> mode_damping;  // the kept modes' damping, lowest first
     double sag_m = 0;  // static sag under gravity at the first probe (0 without gravity)
     double ovality_split = 0;
