@@ -9,9 +9,12 @@
 #   bash bench/limits_verdict.sh [REPEATS] [extra coremodal options]
 #
 # LEVELS chooses the levels (default "beam harmonic"), CASES the case files
-# (default case 16; case 17 is the news stand). The coupled level is not
-# among them: `limits` refuses it (no spinning terms; bench/results/log.md,
-# "fourth pass"). Targets (issue 36): beam <= 2 s, harmonic <= 30 s CPU.
+# (default case 16; case 17 is the news stand). The coupled level (segmented
+# chucks: f1, k, I-5, Koenig coupled; the spinning criteria from the
+# axisymmetric equivalent's harmonic level; bench/results/log.md, "fifth
+# pass"):
+#   CASES=bench/limits-news-segmented-76x15-2200.toml LEVELS=coupled bash bench/limits_verdict.sh 1
+# Targets (issue 36): beam <= 2 s, harmonic <= 30 s, coupled <= 2 min CPU.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats=${1:-3}

@@ -1,6 +1,7 @@
 #include "output/limits_report.hpp"
 
 #include "common/format.hpp"
+#include "common/join.hpp"
 #include "output/csv.hpp"
 #include "output/summary_json.hpp"
 #include "output/text_file.hpp"
@@ -47,6 +48,16 @@ std::string amplitude_rows(const LimitsResult& r) {
     return out;
 }
 
+// Where the verdict mixes levels (a coupled scene): " (I-5 x0.7: coupled;
+// ...)", else empty.
+std::string criteria_levels(const LimitsResult& r) {
+    if (r.points.empty()) return "";
+    std::vector<std::string> out;
+    for (const CriterionSpeed& c : r.points.front().criteria)
+        if (!c.level.empty()) out.push_back(std::string(criterion_name(c.criterion)) + ": " + c.level);
+    return out.empty() ? "" : " (" + join(out, "; ") + ")";
+}
+
 Json criterion_json(const CriterionSpeed& c) {
     Json t{{"id", criterion_id(c.criterion)},
            {"name", criterion_name(c.criterion)},
@@ -55,6 +66,7 @@ Json criterion_json(const CriterionSpeed& c) {
     if (c.given) t["web_speed_m_s"] = c.web_speed_m_s;
     if (c.given || c.band_low_m_s > 0) t["band_m_s"] = Json::array({c.band_low_m_s, c.band_high_m_s});
     if (!c.note.empty()) t["note"] = c.note;
+    if (!c.level.empty()) t["level"] = c.level;
     return t;
 }
 
@@ -163,7 +175,7 @@ std::string limits_report_markdown(const Scene& scene, const LimitsResult& r, co
            "inputs below; * a diameter added where the verdict changes fast). "
            "The safe speed is the conservative end "
            "(bold), then the point value and the band. Level: "
-        << r.level << ".\n\n";
+        << r.level << criteria_levels(r) << ".\n\n";
     out << verdict_table(r) << "\n";
     for (const std::string& png : pngs) out << "![web speed against rest-roll diameter](" << png << ")\n\n";
     if (pngs.empty()) out << "(No picture: " << plot_problem << ")\n\n";
@@ -201,7 +213,12 @@ std::string limits_console_summary(const Scene& scene, const LimitsResult& r) {
             << criterion_name(criterion(p.governing))
             << std::string(23 - std::string(criterion_name(criterion(p.governing))).size(), ' ')
             << formatted("%10.2f", p.safe_m_s) << "  " << speed(p.safe_low_m_s) << "-" << speed(p.safe_high_m_s)
+            << (p.equivalent_f1_hz ? "  (f1 of the axisymmetric equivalent " + formatted("%.3f", *p.equivalent_f1_hz) + " Hz)"
+                                   : std::string())
             << "\n";
+    if (!criteria_levels(r).empty()) out << "  levels" << criteria_levels(r) << "\n";
+    for (const std::string& a : r.assumptions)
+        if (a.rfind("axisymmetric equivalent", 0) == 0) out << "  assumed: " << a << "\n";
     for (const std::string& w : r.warnings) out << "  warning: " << w << "\n";
     return out.str();
 }

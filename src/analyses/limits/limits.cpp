@@ -11,6 +11,7 @@
 #include "common/stopwatch.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
+#include "models/coupled/axisymmetric_equivalent.hpp"
 #include "modes/tracking.hpp"
 #include "scene/limits_spec.hpp"
 #include "scene/rotation_spec.hpp"
@@ -26,6 +27,15 @@ std::vector<double> spaced(double first, double last, int n) {
     std::vector<double> out(n);
     for (int i = 0; i < n; ++i) out[i] = first + (last - first) * i / (n - 1);
     return out;
+}
+
+// Whether some chuck presses on the bore with segmented pads (the coupled
+// level's verdict: coupled_verdict).
+bool has_pads(const Scene& scene) {
+    for (const ChuckSpec& chuck : scene.supports.chucks)
+        for (const ExpandingElement& e : chuck.expanding)
+            if (e.segments > 0) return true;
+    return false;
 }
 
 // The scene at the beam level (Eigen only, milliseconds): its f1 sets the
@@ -326,12 +336,18 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
                          "its "
                          "stand: expected [supports] type = \"clamped\" or \"chucks\"");
     const ModelChoice level = chosen_level(scene);
+    if (level == ModelChoice::coupled && has_pads(scene)) {  // the spinning criteria from the axisymmetric equivalent
+        Scene equivalent = axisymmetric_equivalent(scene).scene;
+        equivalent.model = "harmonic";
+        require_limits_scene(equivalent, request);
+        return;
+    }
     if (!level_traits(level).spins)
         throw InputError(scene.source_file + ": model = \"" + to_string(level) +
                          "\" cannot carry the verdict's critical speeds and forced response (" +
                          level_traits(level).why_not_spinning + "); "
                          "expected model = \"beam\" or \"harmonic\" (a body of revolution), or "
-                         "\"solid\" (docs/how-to/limits.md)");
+                         "\"solid\", or \"coupled\" with segmented chucks (docs/how-to/limits.md)");
     Scene resolved = scene;
     resolved.model = to_string(level);
     require_spinning_level(resolved);
@@ -345,6 +361,7 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
 LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>& response,
                      const LimitsRequest& request) {
     require_limits_scene(case_scene, request);
+    if (chosen_level(case_scene) == ModelChoice::coupled && has_pads(case_scene)) return coupled_verdict(case_scene, response, request);
     Stopwatch clock;
     Scene scene = case_scene;
     scene.model = to_string(chosen_level(case_scene));
@@ -388,15 +405,20 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     std::sort(r.points.begin(), r.points.end(),
               [](const LimitsPoint& a, const LimitsPoint& b) { return a.diameter_m > b.diameter_m; });
     if (r.band) interpolate_bands(r.points);
-    // 4. The roll change.
+    conclude(r, request);
+    r.seconds = clock.lap();
+    return r;
+}
+
+// Steps 4 and 5 on the governed points.
+void conclude(LimitsResult& r, const LimitsRequest& request) {
     const std::optional<double> target =
         request.target_web_speed_m_s ? request.target_web_speed_m_s : request.spec.target_web_speed_m_s;
     if (target) r.change = roll_change(r.points, *target);
     r.verdict = the_verdict(r);
+    r.warnings.clear();
     warn(r);
     r.notes = limits_notes(r);
-    r.seconds = clock.lap();
-    return r;
 }
 
 std::string verdict_line(const LimitsResult& r) {

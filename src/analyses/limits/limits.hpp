@@ -74,6 +74,10 @@ struct CriterionSpeed {
     double web_speed_m_s = 0;
     double band_low_m_s = 0, band_high_m_s = 0;  // = web_speed without a band
     std::string note;
+    // The level that gives it, where the verdict mixes levels (a coupled
+    // scene: "coupled", or "harmonic, axisymmetric equivalent (...)"); empty:
+    // the verdict's level.
+    std::string level;
 };
 
 struct LimitsPoint {
@@ -84,6 +88,9 @@ struct LimitsPoint {
     double f1_hz = 0;                    // first bending at rest, the scene's level
     std::optional<double> chuck_factor;  // k = f1 / f2 (chucks only)
     double f2_hz = 0;
+    // A coupled scene: f1 of the axisymmetric equivalent the spinning
+    // criteria come from (f1_hz is the coupled level's).
+    std::optional<double> equivalent_f1_hz;
     std::vector<CriterionSpeed> criteria;  // kCriteria, in Criterion order
     int governing = -1;                    // index of the lowest limiting criterion given
     double safe_m_s = 0, safe_low_m_s = 0, safe_high_m_s = 0;
@@ -196,6 +203,17 @@ CriterionSpeed traction_slip_criterion(const TractionSpec& spec);
 // level that cannot spin or respond (naming the levels that can), a
 // negative target; SolveError from the solvers.
 LimitsResult verdict(const Scene& scene, const std::optional<ResponseSetup>& response, const LimitsRequest& request);
+
+// A scene at the coupled level (segmented chucks): f1, the chuck factor k,
+// I-5 and Koenig from the coupled level's modes at every diameter (what the
+// pads change); the spinning criteria (critical speeds, the forced response
+// and their band) from the harmonic level of the axisymmetric equivalent
+// (models/coupled/axisymmetric_equivalent.hpp: the pads as a full band with
+// its contact stiffness scaled by their coverage, exact for n = 1). The
+// difference of the two f1 is reported, a warning where it exceeds I-5's band.
+// `verdict` takes this path for a coupled scene.
+LimitsResult coupled_verdict(const Scene& scene, const std::optional<ResponseSetup>& response,
+                             const LimitsRequest& request);
 
 // The checks of `verdict` before any work (InputError).
 void require_limits_scene(const Scene& scene, const LimitsRequest& request);

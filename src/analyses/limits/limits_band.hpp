@@ -58,6 +58,9 @@ std::vector<std::string> limits_assumptions(const Scene& scene, bool case_respon
 // Step 5 of the verdict (limits_warnings.cpp): the warnings on r, from its
 // points, and the notes of what every criterion is and what is left out.
 void warn(LimitsResult& r);
+// Steps 4 and 5 on governed points (limits.cpp): the roll change for the
+// request's target, the verdict, the warnings (warn) and the notes.
+void conclude(LimitsResult& r, const LimitsRequest& request);
 std::vector<std::string> limits_notes(const LimitsResult& r);
 
 }  // namespace coremodal

@@ -80,8 +80,12 @@ void warn(LimitsResult& r) {
 }
 
 std::vector<std::string> limits_notes(const LimitsResult& r) {
-    std::vector<std::string> out = {"every criterion at the " + r.level +
-                                        " level; a criterion's web speed is pi Dp f_rot at that "
+    std::vector<std::string> out = {(!r.points.empty() && r.points.front().equivalent_f1_hz ? std::string("f1, k, I-5 and Koenig at the coupled level, the "
+                                                                         "spinning criteria and the band at the "
+                                                                         "harmonic level of the axisymmetric "
+                                                                         "equivalent")
+                                                             : "every criterion at the " + r.level + " level") +
+                                        "; a criterion's web speed is pi Dp f_rot at that "
                                         "rest-roll diameter",
                                     "limiting: I-5 at 0.7 (Ilomaki, without a safety cage), Koenig's "
                                     "critical speed (K-1/K-2 with his experience "
