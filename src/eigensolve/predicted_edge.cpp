@@ -7,6 +7,7 @@
 #include "eigensolve/petsc_algebra.hpp"
 #include "eigensolve/shift_invert_steps.hpp"
 #include "eigensolve/single_factor.hpp"
+#include "eigensolve/single_refinement.hpp"
 
 #include <slepceps.h>
 
@@ -243,16 +244,25 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
         return {std::nullopt, false};
     }
     Attempt a;
+    int ritz_steps = 0;
+    const double pass_error = pass_backward_error();
     try {
-        a = block_lanczos_attempt([&](int cols, const double* in, double* out) { F->solve(cols, in, out); }, M, sigma,
-                                  int(below), request, progress);
+        SolveRequest loose = request;
+        loose.tolerance = std::max(request.tolerance, single_lanczos_tolerance());
+        a = block_lanczos_attempt(
+            [&](int cols, const double* in, double* out) { F->solve(cols, in, out, pass_error); }, M, sigma,
+            int(below), loose, progress);
+        ritz_steps = refine_pairs_in_double(*F, K, M, a.lambdas, a.vectors);
     } catch (const RefinementStalled& e) {
         progress(std::string(e.what()) + ": falling back to the double-precision factor");
         return {};
     }
-    progress("single-precision factor: " + std::to_string(F->solves()) + " block solves refined in double, at most " +
-             std::to_string(F->most_steps()) + " correction(s) each, to a backward error below " +
-             scientific(kRefinedBackwardError));
+    progress("single-precision factor: " + std::to_string(F->solves()) + " block solves refined in double to a "
+             "backward error below " + scientific(pass_error) + " (at most " + std::to_string(F->most_steps()) +
+             " solve(s) each), " + std::to_string(ritz_steps) +
+             " Rayleigh-Ritz step(s) with the double K and M on a solve refined below " +
+             scientific(kRefinedBackwardError) + "; " + std::to_string(F->factor_passes()) +
+             " passes over the factor in all");
     const long found_below = count_below_shift(a, sigma);
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (n_report < wanted || n_report > found_below) {

@@ -128,7 +128,7 @@ long SingleLdlt::negative_pivots() const { return mumps_->infog(12); }
 bool SingleLdlt::out_of_core() const { return mumps_->id.icntl[21] == 1; }
 long SingleLdlt::estimate_mb() const { return mumps_->infog(17); }
 
-void SingleLdlt::solve(int cols, const double* in, double* out) {
+void SingleLdlt::solve(int cols, const double* in, double* out, double target) {
     const size_t size = size_t(n_) * size_t(cols);
     rhs_.resize(size);
     residual_.assign(in, in + size);
@@ -154,6 +154,7 @@ void SingleLdlt::solve(int cols, const double* in, double* out) {
         m.id.lrhs = MUMPS_INT(n_);
         m.id.rhs = rhs_.data();
         m.run(3);
+        ++factor_passes_;
         if (m.infog(1) < 0) throw SolveError(mumps_failure_text(m.infog(1), m.infog(2)));
         for (int c = 0; c < cols; ++c)
             for (PetscInt i = 0; i < n_; ++i) out[size_t(c) * n_ + i] += scale[c] * double(rhs_[size_t(c) * n_ + i]);
@@ -166,7 +167,7 @@ void SingleLdlt::solve(int cols, const double* in, double* out) {
             worst = std::max(worst, backward_error(n_, residual_.data() + o, out + o, in + o, norm_1_));
         }
         if (step == 1) first_error_ = std::max(first_error_, worst);
-        if (worst <= kRefinedBackwardError) {
+        if (worst <= target) {
             most_steps_ = std::max(most_steps_, step);
             ++solves_;
             return;
@@ -176,7 +177,7 @@ void SingleLdlt::solve(int cols, const double* in, double* out) {
         if (step >= kMaxRefinementSteps || (step > 1 && worst > 0.5 * previous))
             throw RefinementStalled("the single-precision solve's refinement stalled at a backward error of " +
                                     std::to_string(worst) + " after " + std::to_string(step) + " corrections (wanted " +
-                                    std::to_string(kRefinedBackwardError) + ")");
+                                    std::to_string(target) + ")");
         previous = worst;
     }
 }

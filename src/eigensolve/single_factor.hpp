@@ -80,8 +80,9 @@ public:
     long estimate_mb() const;
 
     // out = A^-1 in for `cols` columns (column-major, leading dimension the
-    // row count), refined in double (RefinementStalled when it stalls).
-    void solve(int cols, const double* in, double* out);
+    // row count), refined in double until every column's backward error is
+    // below `target` (RefinementStalled when it stalls).
+    void solve(int cols, const double* in, double* out, double target = kRefinedBackwardError);
 
     // The largest normwise backward error of a first, unrefined solve
     // measured so far: the factor's backward error, ||E|| <= this x ||A||_1
@@ -92,6 +93,9 @@ public:
     // The most corrections one solve took, for the run's report.
     int most_steps() const { return most_steps_; }
     int solves() const { return solves_; }
+    // Every pass over the factor (a block of right-hand sides each): the
+    // cost the refinement is judged by.
+    int factor_passes() const { return factor_passes_; }
 
 private:
     struct Mumps;
@@ -100,7 +104,7 @@ private:
     PetscInt n_ = 0;
     double norm_1_ = 0;
     double first_error_ = 0;
-    int most_steps_ = 0, solves_ = 0;
+    int most_steps_ = 0, solves_ = 0, factor_passes_ = 0;
     std::vector<float> rhs_;
     std::vector<double> residual_, product_out_;
     SparseBlockProduct product_;
