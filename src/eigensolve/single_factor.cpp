@@ -61,8 +61,9 @@ FactorPrecision factor_precision_choice(MPI_Comm comm) {
     if (choice == "double") return {false, "double precision, as -factor_precision double asks"};
     if (choice == "auto")
         return {false,
-                "double precision: the single-precision factor measured slower on case 03 (its refinement "
-                "takes 3 corrections a pass; bench/results/log.md), -factor_precision single to use it"};
+                "double precision: the single-precision factor measured no faster on case 03 (its refined "
+                "passes and Rayleigh-Ritz cleanup read its factor 32 times against the double's 14; "
+                "bench/results/log.md), -factor_precision single to use it"};
     if (mpi_size(comm) > 1)
         return {false,
                 "double precision: the single-precision factor runs in one process only "

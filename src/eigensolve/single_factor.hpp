@@ -31,9 +31,10 @@ namespace coremodal {
 
 // Which precision factors K - sigma M on the one-factor path, and why (the
 // run says it). -factor_precision single | double | auto. auto is double
-// for now: on case 03 the single factor's refinement (3 corrections a pass)
-// cost more than its cheaper factorization saved (bench/results/log.md,
-// "Single-precision factor"). single is one process only (sequential
+// for now: on case 03 the single factor's refined passes and Rayleigh-Ritz
+// cleanup (single_refinement.hpp: 32 passes over a factor of half the
+// bytes against the double's 14) cost more than its cheaper factorization
+// saved (bench/results/log.md, "Fewer passes"). single is one process only (sequential
 // SMUMPS); in parallel the double factor stays.
 struct FactorPrecision {
     bool single = false;
