@@ -32,7 +32,7 @@ struct SolveRequest : ModeRequest {
 };
 
 // The most modes one eigenproblem is solved for ([analysis] modes has the
-// same bound, scene/case_schema.cpp). The solver computes every mode below a
+// same bound, scene/case_keys.cpp). The solver computes every mode below a
 // band's upper edge; a band above more than this many is refused at once.
 constexpr int kMaxModesPerProblem = 10000;
 

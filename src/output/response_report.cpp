@@ -83,12 +83,7 @@ Json damping_json(const ResponseResult& r) {
     Json families = Json::object();
     for (const DampingSpec::FamilyRatio& f : d.families) families[f.family] = (f.ratio);
     t["families"] = (families);
-    if (d.loss_factor > 0 || !d.part_loss_factors.empty()) {  // structural damping, only when the case names it
-        Json parts = Json::object();
-        for (const auto& [part, eta] : d.part_loss_factors) parts[part] = eta;
-        t["loss_factor"] = d.loss_factor;
-        t["loss_factors"] = parts;
-    }
+    for (const DampingValue& v : r.damping_values) t[Json::json_pointer(v.path)] = v.value;  // only when the case names them
     Json given = Json::array(), kept = Json::array();
     for (const DampingSpec::ModeRatio& m : d.modes) given.push_back(Json{{"mode", m.mode}, {"ratio", m.ratio}});
     t["modes"] = (given);
@@ -97,26 +92,41 @@ Json damping_json(const ResponseResult& r) {
         for (int k : m.rest_modes) rest.push_back(k);
         Json mode{{"modes_at_rest", rest}, {"label", label_text(m.label)}, {"frequency_hz", m.frequency_hz},
                   {"zeta", m.zeta}, {"from", m.from}};
-        if (m.loss_factor > 0) mode["loss_factor"] = m.loss_factor;  // eta_j; at resonance as zeta = eta_j / 2
+        for (const DampingValue& v : m.values) mode[Json::json_pointer(v.path)] = v.value;
         kept.push_back(mode);
     }
     t["kept_modes"] = (kept);
     return t;
 }
 
+// The columns the kept modes' own damping values make (each path once, in
+// the order first met), and one mode's cells (0 where it has none).
+std::vector<DampingValue> value_columns(const std::vector<ModeDamping>& modes) {
+    std::vector<DampingValue> out;
+    for (const ModeDamping& m : modes)
+        for (const DampingValue& v : m.values)
+            if (std::none_of(out.begin(), out.end(), [&](const DampingValue& c) { return c.path == v.path; })) out.push_back(v);
+    return out;
+}
+std::string value_cells(const ModeDamping& m, const std::vector<DampingValue>& columns) {
+    std::string out;
+    for (const DampingValue& c : columns) out += " " + significant(m.value_of(c.path), 4) + " |";
+    return out;
+}
+
 // The kept modes' damping as a table for people.
 std::string damping_table(const ResponseResult& r) {
-    const bool structural = std::any_of(r.mode_damping.begin(), r.mode_damping.end(),
-                                        [](const ModeDamping& m) { return m.loss_factor > 0; });
-    std::string out = std::string("| lateral mode | mode at rest | label | f at rest | zeta | from |") +
-                      (structural ? " loss factor eta_j |\n|---|---|---|---|---|---|---|\n" : "\n|---|---|---|---|---|---|\n");
+    const std::vector<DampingValue> columns = value_columns(r.mode_damping);
+    std::string out = "| lateral mode | mode at rest | label | f at rest | zeta | from |", rule = "\n|---|---|---|---|---|---|";
+    for (const DampingValue& c : columns) out += " " + c.heading + " |", rule += "---|";
+    out += rule + "\n";
     for (size_t j = 0; j < r.mode_damping.size(); ++j) {
         const ModeDamping& m = r.mode_damping[j];
         std::string rest;
         for (int k : m.rest_modes) rest += (rest.empty() ? "" : ", ") + std::to_string(k);
         out += "| " + std::to_string(j + 1) + " | " + (rest.empty() ? "-" : rest) + " | " + label_text(m.label) + " | " +
                significant(m.frequency_hz, 5) + " Hz | " + significant(m.zeta, 4) + " | " + m.from + " |" +
-               (structural ? " " + significant(m.loss_factor, 4) + " |" : "") + "\n";
+               value_cells(m, columns) + "\n";
     }
     return out;
 }

@@ -3,7 +3,6 @@
 #include "scene/case_json_schema.hpp"
 
 #include "common/error.hpp"
-#include "scene/case_key_docs.hpp"
 #include "scene/case_schema.hpp"
 #include "scene/materials_library.hpp"
 #include "scene/toml_text.hpp"
@@ -82,7 +81,7 @@ std::string bound_text(double value, Dimension d) {
 
 // "A length: a plain number in m, or a string with a unit (m, mm, ...).
 // Range: > 0 m, <= 5 m. Plausible: ... Default: ..."
-std::string description(const KeySpec& spec, const KeyDoc& doc) {
+std::string description(const KeySpec& spec, const KeyText& doc) {
     std::string text(doc.description);
     text += ".";
     if (spec.kind == ValueKind::quantity) {
@@ -170,7 +169,7 @@ toml::table material_schema() {
 }
 
 // The schema of one key's value, before its description and default.
-toml::table value_schema(const KeySpec& spec, const KeyDoc& doc) {
+toml::table value_schema(const KeySpec& spec, const KeyText& doc) {
     switch (spec.kind) {
         case ValueKind::quantity:
             return quantity_schema(spec);
@@ -223,14 +222,13 @@ toml::table table_schema(std::string_view table, std::string_view title) {
     toml::array required;
     for (const KeySpec& spec : case_schema()) {
         if (spec.table != table) continue;
-        const KeyDoc* doc = find_key_doc(spec.table, spec.key);
-        COREMODAL_ASSERT(doc);
-        toml::table property = value_schema(spec, *doc);
-        property.insert("description", description(spec, *doc));
-        if (std::optional<toml::table> d = default_value(doc->default_value))
+        const KeyText& doc = spec.text;
+        toml::table property = value_schema(spec, doc);
+        property.insert("description", description(spec, doc));
+        if (std::optional<toml::table> d = default_value(doc.default_value))
             d->get("value")->visit([&](const auto& value) { property.insert("default", value); });
         properties.insert(spec.key, std::move(property));
-        if (doc->default_value == kRequired) required.push_back(std::string(spec.key));
+        if (doc.default_value == kRequired) required.push_back(std::string(spec.key));
     }
     toml::table out{{"type", "object"},
                     {"description", title},
@@ -250,37 +248,6 @@ toml::table table_schema(std::string_view table, std::string_view title) {
     return out;
 }
 
-// Every schema table but the top level, with its title.
-struct TableTitle {
-    std::string_view table, title;
-};
-constexpr TableTitle kTables[] = {
-    {"core", "[core]: the paperboard core"},
-    {"rest_paper", "[rest_paper]: paper still wound on the core"},
-    {"material", "a material table ([core.material], [rest_paper.material], a chuck's material): isotropic (E, nu, "
-                 "density) or orthotropic keys, optionally on a library base"},
-    {"supports", "[supports]: how the core is held"},
-    {"clamp", "[supports.left] / [supports.right] when type = \"clamped\": a rigid clamp zone on the inner surface"},
-    {"chuck", "[supports.left] / [supports.right] when type = \"chucks\": an elastic chuck (docs/theory/chucks.md)"},
-    {"expanding", "[[supports.<end>.expanding]]: an expanding element of a chuck"},
-    {"bearing", "[supports.<end>.bearing]: the chuck's bearing"},
-    {"analysis", "[analysis]: what to compute"},
-    {"mesh", "[mesh]: mesh refinement or a mesh file"},
-    {"study", "[study]: a sweep for `coremodal study` (docs/how-to/studies.md)"},
-    {"calibration", "[calibration]: a sweep whose chuck factor is fitted, for `coremodal calibrate`"},
-    {"parameter", "an item of parameters: key, and values or from/to/steps"},
-    {"rotation", "[rotation]: the roll spins; the modes at a speed or a Campbell sweep (docs/how-to/campbell.md)"},
-    {"web", "[web]: the paper web pulls on one line of the roll's surface (docs/theory/web.md)"},
-    {"damping", "[damping]: relative damping of the modes for the forced response (docs/how-to/response.md)"},
-    {"decay", "[damping] decay: a measured free decay, zeta = ln(X0/XN) / (2 pi N) (I-1)"},
-    {"rayleigh", "[damping] rayleigh: D = alpha M + beta K, from alpha and beta or from zeta at two frequencies"},
-    {"modes", "[damping] modes: the relative damping of single modes at rest, { mode = 1, ratio = 0.02 }"},
-    {"loss_factors", "[damping.loss_factors]: the loss factor eta per part (structural damping, K_p (1 + i eta_p))"},
-    {"excitation", "[excitation]: what excites the spinning roll (docs/how-to/response.md)"},
-    {"response", "[response]: the forced response against web speed and the safe speed from the amplitude limit"},
-    {"limits", "[limits]: one verdict over the rest-roll diameters, for `coremodal limits` (docs/how-to/limits.md)"},
-    {"traction", "[traction]: web-to-roller traction on one roller, Rice & Gans (`coremodal traction`, docs/how-to/traction.md)"},
-};
 
 }  // namespace
 
@@ -291,7 +258,7 @@ std::string quantity_pattern(Dimension d, bool negative_allowed) {
 std::string case_json_schema() {
     toml::table definitions;
     std::set<std::string_view> described;
-    for (const TableTitle& t : kTables) {
+    for (const TableTitle& t : schema_tables()) {
         definitions.insert(t.table, table_schema(t.table, t.title));
         described.insert(t.table);
     }
@@ -308,7 +275,7 @@ std::string case_json_schema() {
     schema.insert_or_assign("description",
                             "A coremodal case file (docs/reference/case-files.md): the core, optional rest paper, how it is "
                             "held, what to compute and how fine to mesh. Generated by `coremodal schema` from "
-                            "src/scene/case_schema.cpp; `coremodal check` is the full check.");
+                            "src/scene/case_keys.cpp; `coremodal check` is the full check.");
     schema.insert_or_assign("definitions", std::move(definitions));
 
     std::ostringstream out;

@@ -1,6 +1,6 @@
 // The case file's keys as a JSON Schema (draft-07), generated from the key
-// table (scene/case_schema.hpp), its descriptions and defaults
-// (scene/case_key_docs.hpp) and the units (scene/units.hpp). `coremodal
+// table (scene/case_schema.hpp: each key's range, description and default,
+// each table's title) and the units (scene/units.hpp). `coremodal
 // schema` prints it; editors with TOML support (taplo, VS Code's Even Better
 // TOML) then complete keys, show each key's meaning, unit, range and default,
 // and underline unknown keys, wrong types and unknown units as you type.

@@ -9,6 +9,7 @@
 #include "scene/case_reader.hpp"
 
 #include "common/error.hpp"
+#include "common/format.hpp"
 #include "scene/damping_input.hpp"
 
 #include <algorithm>
@@ -147,3 +148,30 @@ std::vector<DampingSpec::ModeRatio> CaseReader::read_damping_modes(const Section
 }
 
 }  // namespace coremodal::case_reading
+
+namespace coremodal {
+
+std::string describe_damping(const DampingSpec& d) {
+    std::string out = "  damping of every mode not named below: " + d.source + "\n";
+    if (d.rayleigh)
+        out += "    (Rayleigh: D = alpha M + beta K; mode j: zeta_j = alpha / (2 omega_j) + beta omega_j / 2)\n";
+    for (const DampingSpec::FamilyRatio& f : d.families)
+        out += "  damping of every " + f.family + " mode: zeta = " + format_quantity(f.ratio, Dimension::dimensionless) + "\n";
+    for (const DampingSpec::ModeRatio& m : d.modes)
+        out += "  damping of mode " + std::to_string(m.mode) + " at rest (shared by a degenerate partner): zeta = " +
+               format_quantity(m.ratio, Dimension::dimensionless) + "\n";
+    if (const std::string words = loss_factor_words(d); !words.empty())
+        out += "  structural damping (stiffness K_p (1 + i eta_p)): " + words + "\n";
+    return out;
+}
+
+std::string loss_factor_words(const DampingSpec& d) {
+    const bool given = d.loss_factor > 0 || std::any_of(d.part_loss_factors.begin(), d.part_loss_factors.end(),
+                                                        [](const auto& part) { return part.second > 0; });
+    if (!given) return "";
+    std::string out = "loss factor " + significant(d.loss_factor, 4) + " (every part)";
+    for (const auto& [part, eta] : d.part_loss_factors) out += "; " + part + " " + significant(eta, 4);
+    return out;
+}
+
+}  // namespace coremodal

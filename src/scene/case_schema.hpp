@@ -39,8 +39,29 @@ struct PlausibleRange {
     bool empty() const { return !(high > low); }
 };
 
-// Schema tables. Material tables ([core.material], [rest_paper.material]) share
-// "material"; [supports.left] and [supports.right] share "clamp".
+// What a key means and what it is when the file leaves it out, for people:
+// the JSON Schema (scene/case_json_schema.hpp) shows both in editors;
+// docs/reference/case-files.md is the long form of the same text.
+struct KeyText {
+    // The default as a user would write it: a TOML value ("\"0.5 mm\"", "20",
+    // "true") when there is one, "required" when the key must be given, else
+    // words ("from the level", "none: bare core"). Those of the reader
+    // (scene/case_file.cpp, scene/case_sweep.cpp, scene/chuck_contact.hpp,
+    // scene/scene.hpp).
+    std::string_view default_value;
+    std::string_view description;  // one line
+    // The values a string key accepts, separated by spaces ("" = any); the
+    // reader's lists in scene/case_file.cpp.
+    std::string_view choices = "";
+};
+
+// The default written "required" means the key must be present.
+inline constexpr std::string_view kRequired = "required";
+
+// A case-file key, declared once: its table, kind, unit, range, plausible
+// range and words (issue 34: "case-file keys in one table"). Schema tables:
+// material tables ([core.material], [rest_paper.material]) share "material";
+// [supports.left] and [supports.right] share "clamp".
 struct KeySpec {
     std::string_view table;  // "" for the top level
     std::string_view key;
@@ -50,7 +71,15 @@ struct KeySpec {
     double max = std::numeric_limits<double>::infinity();
     bool min_exclusive = false;  // value must be > min rather than >= min
     PlausibleRange plausible{};  // quantities only; a warning outside it
+    KeyText text{};              // description and default (set by the table's row)
 };
+
+// A schema table other than the top level, with its title (the JSON
+// Schema's description of the object).
+struct TableTitle {
+    std::string_view table, title;
+};
+const std::vector<TableTitle>& schema_tables();
 
 // The library material of a part whose file gives no material (each use is
 // echoed as an assumption).

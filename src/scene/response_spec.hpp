@@ -60,6 +60,12 @@ struct DampingSpec {
 
 // The parts a loss factor can name ([damping.loss_factors]).
 inline const std::vector<std::string_view> kLossFactorParts = {"core", "rest_paper", "chucks"};
+// The loss factors in words, the one wording of `check`'s echo and the
+// response's summary, assumptions and notes: "loss factor 0.03 (every part);
+// core 0.02", or "" without (no part has eta > 0).
+std::string loss_factor_words(const DampingSpec& d);
+// [damping] as `check` echoes it, a line per base, family, mode and loss factor.
+std::string describe_damping(const DampingSpec& d);
 
 // The shape of a bow (straightness deviation) along the core, scaled to the
 // bow at mid-core: a half sine over the core length, or the roll's first

@@ -388,29 +388,8 @@ std::string describe_assumptions(const Scene& scene) {
     return out;
 }
 
-namespace {
-
-std::string damping_lines(const DampingSpec& d) {
-    std::string out = "  damping of every mode not named below: " + d.source + "\n";
-    if (d.rayleigh)
-        out += "    (Rayleigh: D = alpha M + beta K; mode j: zeta_j = alpha / (2 omega_j) + beta omega_j / 2)\n";
-    for (const DampingSpec::FamilyRatio& f : d.families)
-        out += "  damping of every " + f.family + " mode: zeta = " + format_quantity(f.ratio, Dimension::dimensionless) + "\n";
-    for (const DampingSpec::ModeRatio& m : d.modes)
-        out += "  damping of mode " + std::to_string(m.mode) + " at rest (shared by a degenerate partner): zeta = " +
-               format_quantity(m.ratio, Dimension::dimensionless) + "\n";
-    if (d.loss_factor > 0)
-        out += "  structural damping of every part: loss factor eta = " +
-               format_quantity(d.loss_factor, Dimension::dimensionless) + " (stiffness K_p (1 + i eta))\n";
-    for (const auto& [part, eta] : d.part_loss_factors)
-        out += "  structural damping of the " + part + ": loss factor eta = " + format_quantity(eta, Dimension::dimensionless) + "\n";
-    return out;
-}
-
-}  // namespace
-
 std::string describe_response(const ResponseSetup& setup) {
-    std::string out = damping_lines(setup.damping);
+    std::string out = describe_damping(setup.damping);
     const ExcitationSpec& x = setup.excitation;
     out += "  excitation: bow " + length(x.bow_m) + " (" + bow_shape_name(x.bow_shape) + "), unbalance " +
            format_quantity(x.unbalance_kg_m, Dimension::unbalance) + ", eccentricity " + length(x.eccentricity_m) +

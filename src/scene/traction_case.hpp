@@ -1,7 +1,7 @@
 // A case file's [traction] table: one roller under the web (Rice & Gans,
 // docs/how-to/traction.md), read through the case reader like every other table
 // (scene/case_reader_traction.cpp): keys, units and ranges from
-// scene/case_schema.cpp, errors "FILE:LINE:COL: [traction] wrap = -5 deg
+// scene/case_keys.cpp, errors "FILE:LINE:COL: [traction] wrap = -5 deg
 // must be positive".
 //
 // Two kinds of file hold it: a file for `coremodal traction` alone (only

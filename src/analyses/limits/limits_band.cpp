@@ -66,6 +66,10 @@ Apply apply_of(const std::string& name) {
     return {};
 }
 
+// An input that changes only the response's setup (its damping, its load),
+// not K or M: its samples share the scene's model (run_forced_responses).
+bool changes_setup_only(const std::string& name) { return name == "damping ratio" || name == "bow"; }
+
 bool spring_chucks(const Scene& s) {
     return s.supports.kind == SupportKind::chucks && s.supports.chucks.at(0).interface.kind == InterfaceKind::spring;
 }
@@ -252,6 +256,28 @@ void propagate_band(const Scene& scene, const ResponseSetup& base, const std::ve
     const int own = lowest_limiting(point.criteria);
     point.safe_low_m_s = point.safe_high_m_s = own >= 0 ? point.criteria[own].web_speed_m_s : 0;
     const double f1_estimate = point.f1_hz;
+    const auto absorb = [&](const ResponseResult& r) {
+        ++n_solves;
+        const double ratio = point.f1_hz > 0 ? r.speeds_at_rest.f1_hz / point.f1_hz : 1.0;
+        std::vector<CriterionSpeed> sample = criteria_of(r, critical, ratio);
+        // The criteria the roll's inputs do not move (traction) as they are.
+        for (size_t i = sample.size(); i < point.criteria.size(); ++i) sample.push_back(point.criteria[i]);
+        for (size_t i = 0; i < sample.size(); ++i) {
+            if (!sample[i].given) continue;
+            CriterionSpeed& c = point.criteria[i];
+            const double x = sample[i].web_speed_m_s;
+            if (!c.given && c.band_low_m_s == 0 && c.band_high_m_s == 0) c.band_low_m_s = c.band_high_m_s = x;
+            c.band_low_m_s = std::min(c.band_low_m_s, x), c.band_high_m_s = std::max(c.band_high_m_s, x);
+        }
+        const int lowest = lowest_limiting(sample);
+        if (lowest < 0) return;
+        point.safe_low_m_s = std::min(point.safe_low_m_s, sample[lowest].web_speed_m_s);
+        point.safe_high_m_s = std::max(point.safe_high_m_s, sample[lowest].web_speed_m_s);
+    };
+    // The samples that change neither K nor M (damping, bow) on one model of
+    // the scene at this diameter (run_forced_responses); the others each on
+    // their own scene. Every sample is checked once per verdict (at the point).
+    std::vector<ResponseSetup> same_scene;
     for (const UncertainInput& input : inputs) {
         if (!input.applies) continue;
         const Apply apply = apply_of(input.name);
@@ -259,25 +285,15 @@ void propagate_band(const Scene& scene, const ResponseSetup& base, const std::ve
             Scene s = at;
             ResponseSetup setup = setup_for_range(base, at, f1_estimate);
             apply(s, setup, v);
-            const ResponseResult r = run_forced_response(s, setup, {}, ResponseChecking::none);  // checked once
-            ++n_solves;
-            const double ratio = point.f1_hz > 0 ? r.speeds_at_rest.f1_hz / point.f1_hz : 1.0;
-            std::vector<CriterionSpeed> sample = criteria_of(r, critical, ratio);
-            // The criteria the roll's inputs do not move (traction) as they are.
-            for (size_t i = sample.size(); i < point.criteria.size(); ++i) sample.push_back(point.criteria[i]);
-            for (size_t i = 0; i < sample.size(); ++i) {
-                if (!sample[i].given) continue;
-                CriterionSpeed& c = point.criteria[i];
-                const double x = sample[i].web_speed_m_s;
-                if (!c.given && c.band_low_m_s == 0 && c.band_high_m_s == 0) c.band_low_m_s = c.band_high_m_s = x;
-                c.band_low_m_s = std::min(c.band_low_m_s, x), c.band_high_m_s = std::max(c.band_high_m_s, x);
-            }
-            const int lowest = lowest_limiting(sample);
-            if (lowest < 0) continue;
-            point.safe_low_m_s = std::min(point.safe_low_m_s, sample[lowest].web_speed_m_s);
-            point.safe_high_m_s = std::max(point.safe_high_m_s, sample[lowest].web_speed_m_s);
+            if (changes_setup_only(input.name))
+                same_scene.push_back(std::move(setup));
+            else
+                absorb(run_forced_response(s, setup, {}, ResponseChecking::none, RestModes::lateral));
         }
     }
+    if (!same_scene.empty())
+        for (const ResponseResult& r : run_forced_responses(at, same_scene, ResponseChecking::none, RestModes::lateral))
+            absorb(r);
 }
 
 std::vector<std::string> limits_assumptions(const Scene& scene, bool case_response, const ResponseSetup& base) {

@@ -55,4 +55,9 @@ void propagate_band(const Scene& scene, const ResponseSetup& base, const std::ve
 // What the verdict assumed beyond the file, each with its source.
 std::vector<std::string> limits_assumptions(const Scene& scene, bool case_response, const ResponseSetup& base);
 
+// Step 5 of the verdict (limits_warnings.cpp): the warnings on r, from its
+// points, and the notes of what every criterion is and what is left out.
+void warn(LimitsResult& r);
+std::vector<std::string> limits_notes(const LimitsResult& r);
+
 }  // namespace coremodal

@@ -76,6 +76,63 @@ std::vector<ResponseCrossing> crossings_of(const ModalResponse& response, const 
     return out;
 }
 
+// The lowest basis mode labelled bending, Hz (0: none): the whole run's f1
+// (its bending modes are wave number n = 1's).
+double first_bending_hz(const ModalBasis& basis, const std::vector<ModeLabel>& labels) {
+    for (size_t j = 0; j < labels.size(); ++j)
+        if (labels[j].type == "bending")
+            return std::sqrt(std::max(basis.lambda(static_cast<Eigen::Index>(j)), 0.0)) / (2 * M_PI);
+    return 0;
+}
+
+// The setups one n = 1 model serves (run_harmonic_responses): the same
+// basis (speeds, highest order) and structural damping.
+void require_one_model(const std::vector<ResponseSetup>& setups) {
+    const ResponseSetup& first = setups.front();
+    for (const ResponseSetup& s : setups)
+        COREMODAL_ASSERT(s.response.speeds_hz == first.response.speeds_hz &&
+                         highest_order(s.excitation) == highest_order(first.excitation) &&
+                         s.damping.loss_factor == first.damping.loss_factor &&
+                         s.damping.part_loss_factors == first.damping.part_loss_factors);
+}
+
+// The probes on the section: u_y = -i u_x (the sin family is -i a).
+std::vector<ProbeWeights> section_probes(const HarmonicPlane& plane, const ResponseRange& range) {
+    std::vector<ProbeWeights> out;
+    for (const ResponseRange::Probe& p : range.probes) {
+        const Eigen::VectorXcd w = section_probe(plane, p.z_m).cast<cd>();
+        out.push_back({w, cd(0, -1) * w});
+    }
+    return out;
+}
+
+// The shared n = 1 model of run_harmonic_responses.
+struct PlaneModel {
+    const HarmonicPlane& plane;
+    const ModalBasis& basis;
+    const std::vector<ModeLabel>& labels;
+    double lambda_scale;
+    ModalResponse& response;
+    const std::vector<ProbeWeights>& probes;
+};
+
+// One setup's damping and loads on the shared model; 3-5. its sweep, peaks,
+// speed at the limit and checks.
+void respond(const Scene& scene, const ResponseSetup& setup, const LevelModes& rest, const PlaneModel& m,
+             ResponseChecking checking, ResponseResult& out) {
+    // Each n = 1 mode is the pair at rest of its eigenvalue (both members numbered in modes.csv).
+    const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, m.basis, m.labels, m.lambda_scale,
+                                                          [](const ModeLabel& l) { return l.n == 1; },
+                                                          "wave number n = 1 only");
+    m.response.set_damping(damping.rayleigh, damping.zeta);
+    const Eigen::VectorXd first_mode =
+        setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(m.basis, m.labels) : Eigen::VectorXd();
+    const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, m.plane, m.response, first_mode);
+    finish_modal_response(
+        {m.response, damping, loads, m.probes, m.labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
+        setup.response, out.speeds_at_rest.f1_hz, out, checking);
+}
+
 }  // namespace
 
 const ResponseLevel kHarmonicResponse{
@@ -85,49 +142,66 @@ const ResponseLevel kHarmonicResponse{
             "bodies of revolution projected, and the static part of the modes above the cutoff; checked against "
             "the direct sparse solve of the full n = 1 problem"};
 
-ResponseResult run_harmonic_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
+ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking,
+                                     RestModes rest_modes) {
+    return run_harmonic_responses(scene, {setup}, checking, rest_modes).front();
+}
+
+std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, const std::vector<ResponseSetup>& setups,
+                                                   ResponseChecking checking, RestModes rest_modes) {
+    COREMODAL_ASSERT(!setups.empty());
+    require_one_model(setups);
     Stopwatch clock;
     Scene scene = scene_given;
     scene.model = "harmonic";  // "auto" resolved
-    // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers them).
-    LevelModes rest;
-    ResponseResult out = start_mesh_level_response(
-        scene, setup, kHarmonicResponse,
+    const ResponseSetup& first = setups.front();
+    // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers
+    // them), or only n = 1's own basis below (RestModes::lateral; mode numbers
+    // in [damping] need the whole run's numbering).
+    const bool every_wave_number =
+        rest_modes == RestModes::every_wave_number ||
+        std::any_of(setups.begin(), setups.end(), [](const ResponseSetup& s) { return !s.damping.modes.empty(); });
+    const std::string solver =
         "modal superposition in the modes at rest of wave number n = 1 (gyroscopic coupling projected) with the "
-        "static part of the others, checked by a direct sparse solve",
-        rest);
-    // 2. Wave number n = 1: its matrices, its modes up to the cutoff, their damping and the loads.
-    const ResponseRange& range = setup.response;
+        "static part of the others, checked by a direct sparse solve";
+    LevelModes rest;
+    std::vector<ResponseResult> outs;
+    for (const ResponseSetup& s : setups)
+        outs.push_back(every_wave_number && outs.empty()
+                           ? start_mesh_level_response(scene, s, kHarmonicResponse, solver, rest)
+                           : start_mesh_level_response(scene, s, kHarmonicResponse, solver));
+    // 2. Wave number n = 1: its matrices, its modes up to the cutoff and their
+    // labels, and the factor of K, once for every setup.
     const double lambda_scale = solve_request(scene).lambda_scale;
     const HarmonicPlane plane = assemble_harmonic_plane(scene);
-    out.checks.cutoff_hz = kTruncationFactor * highest_order(setup.excitation) * range.speeds_hz.back();
+    const double cutoff_hz = kTruncationFactor * highest_order(first.excitation) * first.response.speeds_hz.back();
     const ModalBasis basis =
-        modal_basis_below(scene, assemble_harmonic(scene, plane.section, plane.materials, 1).operators,
-                          out.checks.cutoff_hz, kMinModesKept, "the problem of wave number n = 1 (the forced response): ");
+        modal_basis_below(scene, assemble_harmonic(scene, plane.section, plane.materials, 1).operators, cutoff_hz,
+                          kMinModesKept, "the problem of wave number n = 1 (the forced response): ");
     const std::vector<ModeLabel> labels = basis_labels(scene, plane, basis, lambda_scale);
+    const double f1 = first_bending_hz(basis, labels);
+    const RollSpeeds at_rest = every_wave_number ? outs.front().speeds_at_rest
+                                                 : roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     ModalResponse response(plane.K, plane.M, plane.G, kOnePlane, basis, lambda_scale);
-    // Each n = 1 mode is the pair at rest of its eigenvalue (both members numbered in modes.csv).
-    const LateralDampingPlan damping = plan_basis_damping(setup.damping, rest, basis, labels, lambda_scale,
-                                                          [](const ModeLabel& l) { return l.n == 1; },
-                                                          "wave number n = 1 only");
-    response.set_damping(damping.rayleigh, damping.zeta);
+    std::vector<std::string> structural;
     add_structural_damping(
-        response, setup.damping, [&](const StructuralDamping& s) { return harmonic_hysteretic(plane, s); },
-        "each part's cells of wave number n = 1 (core, rest paper, chucks)", out.assumptions);
-    const Eigen::VectorXd first_mode =
-        setup.excitation.bow_shape == BowShape::first_mode ? first_bending_mode(basis, labels) : Eigen::VectorXd();
-    const LevelLoads loads = build_harmonic_loads(scene, setup.excitation, plane, response, first_mode);
-    std::vector<ProbeWeights> probes;
-    for (const ResponseRange::Probe& p : range.probes) {  // u_y = -i u_x: the sin family is -i a
-        const Eigen::VectorXcd w = section_probe(plane, p.z_m).cast<cd>();
-        probes.push_back({w, cd(0, -1) * w});
+        response, first.damping, [&](const StructuralDamping& s) { return harmonic_hysteretic(plane, s); },
+        "each part's cells of wave number n = 1 (core, rest paper, chucks)", structural);
+    const std::vector<ProbeWeights> probes = section_probes(plane, first.response);
+    const std::vector<ResponseCrossing> crossings =
+        crossings_of(response, labels, first.response.speeds_hz.back(), outs.front().roll_outer_diameter);
+    const PlaneModel model{plane, basis, labels, lambda_scale, response, probes};
+    for (size_t k = 0; k < setups.size(); ++k) {
+        ResponseResult& out = outs[k];
+        out.speeds_at_rest = at_rest;
+        out.checks.cutoff_hz = cutoff_hz;
+        out.assumptions.insert(out.assumptions.end(), structural.begin(), structural.end());
+        respond(scene, setups[k], rest, model, checking, out);
+        out.crossings = crossings;
     }
-    // 3-5. The sweep, the peaks, the speed at the limit, the checks.
-    finish_modal_response({response, damping, loads, probes, labels, kMinModesKept, "modes at rest of wave number n = 1 solved"},
-                          range, out.speeds_at_rest.f1_hz, out, checking);
-    out.crossings = crossings_of(response, labels, range.speeds_hz.back(), out.roll_outer_diameter);
-    out.solve_seconds = clock.lap();
-    return out;
+    const double seconds = clock.lap();
+    for (ResponseResult& out : outs) out.solve_seconds = seconds / static_cast<double>(outs.size());
+    return outs;
 }
 
 }  // namespace coremodal

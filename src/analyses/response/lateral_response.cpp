@@ -108,12 +108,14 @@ std::optional<LateralResponse> LateralResponse::truncated(const BeamNetwork& net
     return out;
 }
 
-void LateralResponse::project_gyroscopic() { Ghat_ = Phi_.transpose() * (G_ * Phi_); }
+void LateralResponse::project_gyroscopic() { Ghat_ = project_on_modes(G_, Phi_); }
 
 void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta) {
     const ModalDampingSplit split = split_modal_damping(rayleigh, zeta, lambda_, kRigidEigenvalueFraction * lambda_scale_);
     modal_damping_ = split.total;
-    if (!complete_) return;  // no direct solve: the damping matrix would need every mode
+    rayleigh_ = rayleigh;
+    own_damping_ = split.own;
+    if (!complete_) return;  // the sparse direct solve takes the low-rank part as it is (direct)
     const Eigen::MatrixXd MPhi = m_.M * Phi_;
     D_ = MPhi * split.own.asDiagonal() * MPhi.transpose();
     if (rayleigh.alpha != 0) D_ += rayleigh.alpha * Eigen::MatrixXd(m_.M);
@@ -123,11 +125,7 @@ void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::ve
 void LateralResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == m_.K.rows() && H.cols() == m_.K.cols());
     H_ = std::move(H);
-    Hhat_ = Phi_.transpose() * (H_ * Phi_);
-}
-
-double LateralResponse::modal_loss_factor(int j) const {
-    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), lambda_(j));
+    Hhat_ = project_on_modes(H_, Phi_);
 }
 
 double LateralResponse::modal_damping_ratio(int j) const {
@@ -170,7 +168,7 @@ Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, d
 }
 
 Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
-                                            bool static_correction) const {
+                                            bool static_correction, const Eigen::VectorXcd* K_inverse_f) const {
     Eigen::VectorXcd x = times(Phi_.leftCols(n), modal_coordinates(f, omega_spin, omega, n));
     if (!static_correction || (complete_ && n == n_modes())) return x;
     // The static part of the modes left out: K^-1 f less the kept modes'
@@ -178,7 +176,7 @@ Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double om
     // complete basis) their own sum.
     if (K_factor_) {
         const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
-        return x + solve_static(*K_factor_, f) -
+        return x + (K_inverse_f ? *K_inverse_f : solve_static(*K_factor_, f)) -
                times(Phi_.leftCols(n), (load.array() / lambda_.head(n).array().cast<cd>()).matrix());
     }
     COREMODAL_ASSERT(complete_);
@@ -189,12 +187,41 @@ Eigen::VectorXcd LateralResponse::superpose(const Eigen::VectorXcd& f, double om
     return x;
 }
 
+std::optional<Eigen::VectorXcd> LateralResponse::static_solve(const Eigen::VectorXcd& f) const {
+    if (!K_factor_) return std::nullopt;
+    return solve_static(*K_factor_, f);
+}
+
 Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
-    COREMODAL_ASSERT(complete_);
+    if (!complete_) return sparse_direct(f, omega_spin, omega);
     const Eigen::MatrixXd K(m_.K), M(m_.M), G(G_);
     Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
     if (H_.size() > 0) A += cd(0, 1) * Eigen::MatrixXd(H_).cast<cd>();  // structural damping
     return A.partialPivLu().solve(f);
+}
+
+// (A_s + U C U^T) x = f with A_s = K - omega^2 M + i omega (Omega G + alpha M
+// + beta K) + i H sparse (LU) and U = M Phi_n, C = i omega diag(own c_j):
+// x = y - Z (I + C U^T Z)^-1 C U^T y, y = A_s^-1 f, Z = A_s^-1 U (no C^-1:
+// a mode with no own damping has c_j = 0).
+Eigen::VectorXcd LateralResponse::sparse_direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const {
+    using SparseC = Eigen::SparseMatrix<cd>;
+    const cd i_omega(0, omega);
+    SparseC A = (m_.K - omega * omega * m_.M).cast<cd>() + i_omega * (omega_spin * G_).cast<cd>();
+    if (rayleigh_.alpha != 0) A += i_omega * (rayleigh_.alpha * m_.M).cast<cd>();
+    if (rayleigh_.beta != 0) A += i_omega * (rayleigh_.beta * m_.K).cast<cd>();
+    if (H_.size() > 0) A += cd(0, 1) * H_.cast<cd>();
+    A.makeCompressed();
+    Eigen::SparseLU<SparseC> lu(A);
+    if (lu.info() != Eigen::Success) throw SolveError("the direct solve of the lateral problem: the system is singular");
+    const Eigen::VectorXcd y = lu.solve(f);
+    const Eigen::MatrixXcd U = (m_.M * Phi_).cast<cd>();
+    const Eigen::MatrixXcd Z = lu.solve(U);
+    const Eigen::VectorXcd c = i_omega * own_damping_.cast<cd>();
+    const Eigen::Index n = Phi_.cols();
+    const Eigen::MatrixXcd small = Eigen::MatrixXcd::Identity(n, n) + c.asDiagonal() * (U.transpose() * Z);
+    const Eigen::VectorXcd w = small.partialPivLu().solve(c.asDiagonal() * (U.transpose() * y));
+    return y - Z * w;
 }
 
 Eigen::VectorXd LateralResponse::static_response(const Eigen::VectorXd& f) const {

@@ -30,9 +30,12 @@
 // count) gives the same truncated sums in milliseconds instead of a dense
 // eigensolve of every mode: the static part of the modes left out is then
 // K^-1 f - Phi_n Lambda_n^-1 Phi_n^T f, the same sum in other terms (K factored
-// once, sparse). Neither the complete sum nor the direct solve exists then:
-// a run that checks the superposition uses the complete basis (the verdict
-// of `coremodal limits` checks once per run, analyses/limits).
+// once, sparse). No complete sum exists then; the direct solve is the sparse
+// LU of K - omega^2 M + i omega Omega G (+ i H, Rayleigh's part) with the kept
+// modes' own damping M Phi_n diag(c_j - ...) Phi_n^T M by Woodbury's identity
+// (the modes left out undamped, as the truncated sum's static part): what
+// `coremodal limits`' one light check compares the truncated sum with, as
+// the harmonic level's check does (analyses/limits).
 #pragma once
 
 #include "beam/beam_network.hpp"
@@ -73,8 +76,8 @@ public:
     // part of the modes left out stays K^-1's (their loss changes it by
     // 1/(1 + i eta): in magnitude by about eta^2/2, 0.02 % at eta = 0.02).
     void set_hysteretic(Eigen::SparseMatrix<double> H);
-    // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
-    double modal_loss_factor(int j) const;
+    // Phi^T H Phi on the basis (project_on_modes; empty without H).
+    const Eigen::MatrixXd& hysteretic_on_modes() const { return Hhat_; }
 
     int n_modes() const { return static_cast<int>(lambda_.size()); }
     // How many modes lie at or below omega_cut (rad/s): the truncated basis.
@@ -95,11 +98,17 @@ public:
     // x on the rows for the load f on the rows, at spin Omega and load
     // frequency omega (rad/s), by superposition of the n lowest modes (n =
     // n_modes(): exact), with the static part of the others when asked.
+    // K_inverse_f: K^-1 f when the caller has it (a sweep's load is
+    // c + Omega^2 p: K^-1 c and K^-1 p once for every speed, static_solve).
     Eigen::VectorXcd superpose(const Eigen::VectorXcd& f, double omega_spin, double omega, int n,
-                               bool static_correction = false) const;
+                               bool static_correction = false, const Eigen::VectorXcd* K_inverse_f = nullptr) const;
+    // K^-1 f on the rows by the factor of K; none without one (the complete
+    // basis of a free rotor).
+    std::optional<Eigen::VectorXcd> static_solve(const Eigen::VectorXcd& f) const;
     // The modal coordinates eta of that sum (which mode answers).
     Eigen::VectorXcd modal_coordinates(const Eigen::VectorXcd& f, double omega_spin, double omega, int n) const;
-    // The same by the direct dense solve of the full system.
+    // The same by the direct solve of the full system: dense with the
+    // complete basis, sparse with Woodbury's identity with the truncated one.
     Eigen::VectorXcd direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const;
     // K^-1 f (a static load on the rows), from the complete basis.
     Eigen::VectorXd static_response(const Eigen::VectorXd& f) const;
@@ -107,6 +116,7 @@ public:
 private:
     LateralResponse(const BeamNetwork& network, double lambda_scale, NetworkMatrices lateral);
     void project_gyroscopic();
+    Eigen::VectorXcd sparse_direct(const Eigen::VectorXcd& f, double omega_spin, double omega) const;
 
     const BeamNetwork* network_;
     double lambda_scale_;
@@ -115,6 +125,8 @@ private:
     Eigen::MatrixXd Phi_, Ghat_;
     Eigen::VectorXd lambda_, modal_damping_;  // lambda_j; c_j = Phi_j^T D Phi_j
     Eigen::MatrixXd D_;                        // the damping matrix, for the direct solve (complete basis)
+    Eigen::VectorXd own_damping_;              // c_j less Rayleigh's part (the truncated basis' direct solve)
+    RayleighDamping rayleigh_;
     Eigen::SparseMatrix<double> H_;            // structural damping (empty: none)
     Eigen::MatrixXd Hhat_;                     // Phi^T H Phi
     bool complete_ = true;

@@ -45,6 +45,14 @@ struct ModalDampingSplit {
 ModalDampingSplit split_modal_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta,
                                       const Eigen::VectorXd& lambda, double rigid_line);
 
+// A term's operator A on the DOFs (stiffness, gyroscopic G, structural
+// damping H) projected on modes Phi (M-orthonormal columns): Phi^T A Phi,
+// dense. The one projection of a term on a modal basis, at every level.
+template <class Operator>
+Eigen::MatrixXd project_on_modes(const Operator& A, const Eigen::MatrixXd& Phi) {
+    return Phi.transpose() * (A * Phi);
+}
+
 // The modal equations' hysteretic term for structural damping (effects/damping.hpp):
 // i Phi_n^T H Phi_n, added to gyro_n (dense: a loss factor that differs per
 // part couples the modes, as G does).

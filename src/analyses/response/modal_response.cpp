@@ -37,7 +37,7 @@ ModalResponse::ModalResponse(Eigen::SparseMatrix<double> K, Eigen::SparseMatrix<
     if (factor->llt.info() != Eigen::Success)  // not positive definite
         throw SolveError("the stiffness of the roll in its stand is singular (a free body, or a free DOF without "
                          "stiffness): a spinning roll free to move has no steady forced response");
-    Ghat_ = basis_.Phi.transpose() * (G_ * basis_.Phi);
+    Ghat_ = project_on_modes(G_, basis_.Phi);
     MPhi_ = M_ * basis_.Phi;
     set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(n_modes())));
 }
@@ -52,7 +52,7 @@ void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vect
 void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == K_.rows() && H.cols() == K_.cols());
     H_ = std::move(H);
-    Hhat_ = basis_.Phi.transpose() * (H_ * basis_.Phi);
+    Hhat_ = project_on_modes(H_, basis_.Phi);
     auto factor = std::make_shared<ComplexStiffnessFactor>();
     {
         const SingleThreadBlas one_thread;
@@ -62,10 +62,6 @@ void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
     if (factor->lu.info() != Eigen::Success)  // K is positive definite and H = sum eta_p K_p >= 0: not expected
         throw SolveError("the complex stiffness K + i H of the structural damping could not be factored");
     KH_factor_ = factor;
-}
-
-double ModalResponse::modal_loss_factor(int j) const {
-    return Hhat_.size() == 0 ? 0.0 : StructuralDamping::modal_loss_factor(Hhat_(j, j), basis_.lambda(j));
 }
 
 int ModalResponse::modes_below(double omega_cut) const {

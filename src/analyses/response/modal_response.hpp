@@ -70,8 +70,8 @@ public:
     // their loss: (K + i H)^-1 p less the kept modes' (Lambda_n + i Hh_n)^-1
     // part (complex_static_response then solves with K + i H, factored once).
     void set_hysteretic(Eigen::SparseMatrix<double> H);
-    // Mode j's loss factor phi_j^T H phi_j / lambda_j (0 without structural damping).
-    double modal_loss_factor(int j) const;
+    // Phi^T H Phi on the basis (project_on_modes; empty without H).
+    const Eigen::MatrixXd& hysteretic_on_modes() const { return Hhat_; }
 
     int n_modes() const { return static_cast<int>(basis_.lambda.size()); }
     long n_dofs() const { return static_cast<long>(K_.rows()); }

@@ -105,8 +105,7 @@ void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& ra
     const int n_used =
         std::max(std::min(parts.min_kept, response.n_modes()), response.modes_below(2 * M_PI * out.checks.cutoff_hz));
     out.checks.n_modes_used = n_used;
-    out.mode_damping.assign(parts.damping.modes.begin(), parts.damping.modes.begin() + n_used);
-    for (int j = 0; j < n_used; ++j) out.mode_damping[static_cast<size_t>(j)].loss_factor = response.modal_loss_factor(j);
+    out.mode_damping = kept_mode_damping(parts.damping, response, n_used);
     const ModalResponseModel model(parts, n_used);
     sweep_response(model, range, f1_hz, out.roll_outer_diameter, out, checking);
     out.assumptions.push_back(kept_modes_assumption(out.checks, parts.modes_words) + " (K^-1 f less the kept modes' part)");
@@ -126,12 +125,18 @@ void sort_orders(LevelLoads& out) {
 }
 
 ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
-                                         const std::string& solver, LevelModes& rest) {
+                                         const std::string& solver) {
     if (mpi_size() > 1)
         throw InputError(scene.source_file + ": the forced response at the " + scene.model +
                          " level runs in one process; run it without mpirun");
     ResponseResult out = response_result_for(scene, setup, level);
     out.solver = solver;
+    return out;
+}
+
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
+                                         const std::string& solver, LevelModes& rest) {
+    ResponseResult out = start_mesh_level_response(scene, setup, level, solver);
     rest = make_model_level(scene)->solve(scene, Printer{false});
     // A response in modes that are not verified is no response: no --keep-going here.
     require_verified("the modes at rest of " + scene.name + " (" + scene.model + " level)",

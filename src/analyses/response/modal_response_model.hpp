@@ -64,6 +64,10 @@ void finish_modal_response(const ModalLevelParts& parts, const ResponseRange& ra
 // from its first bending frequency.
 ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
                                          const std::string& solver, LevelModes& rest);
+// The same without the run at rest (RestModes::lateral): the caller sets
+// speeds_at_rest from its own basis.
+ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
+                                         const std::string& solver);
 
 // The lowest modes at rest of `operators` up to cutoff_hz (at least
 // min_modes), M-orthonormal, solved as the level's run solves them (SLEPc,

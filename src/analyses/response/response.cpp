@@ -23,11 +23,7 @@ std::vector<std::string> response_notes(const ResponseSetup& setup, const Respon
     const ExcitationSpec& x = setup.excitation;
     std::vector<std::string> notes{
         level.note,
-        "damping in the stationary frame (bearings, air, web), per mode at rest (ratios, Rayleigh's alpha M + beta K); "
-        "no rotating (internal) damping, " +
-            std::string(structural_damping_of(setup.damping).given()
-                            ? "a loss factor per part (structural damping, K_p (1 + i eta_p))"
-                            : "no loss factors per part"),
+        damping_note(setup.damping),
         "amplitude: the orbit's semi-major axis of the axis' total displacement (the bow's runout included: what a laser "
         "sees, less the surface's own out-of-roundness), summed over the orders (the largest excursion when their "
         "phases align)"};
@@ -63,10 +59,7 @@ std::vector<std::string> effect_names(const Scene& scene, const ResponseSetup& s
     const ExcitationSpec& x = setup.excitation;
     std::vector<std::string> out = scene.effects();
     out.push_back(Gyroscopic::kName);
-    const DampingSpec& d = setup.damping;
-    if ((!d.rayleigh && d.ratio > 0) || !d.families.empty() || !d.modes.empty()) out.push_back(ModalDamping::kName);
-    if (d.rayleigh) out.push_back(RayleighDamping::kName);
-    if (structural_damping_of(d).given()) out.push_back(StructuralDamping::kName);
+    for (const std::string& e : damping_effect_names(setup.damping)) out.push_back(e);
     for (const std::string& e : excitation_effect_names(x)) out.push_back(e);
     return out;
 }
@@ -89,6 +82,7 @@ ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setu
     const ResponseRange& range = setup.response;
     out.probes = range.probes, out.limit_m = range.limit_m, out.from_web_speed = range.from_web_speed;
     out.damping = setup.damping, out.damping_summary = damping_summary(setup.damping);
+    out.damping_values = damping_input_values(setup.damping);
     out.roll_outer_diameter = roll_outer_diameter(scene);
     out.effects = effect_names(scene, setup);
     out.notes = response_notes(setup, level);
@@ -116,19 +110,28 @@ void require_response_level(const Scene& scene) {
 }
 
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
-                                   ResponseChecking checking) {
+                                   ResponseChecking checking, RestModes rest) {
     require_response_level(scene);
     // The per-level responses (response_levels.hpp); require_response_level
     // refused a level without one.
     switch (chosen_level(scene)) {
         case ModelChoice::beam: return run_beam_response(scene, setup, options, checking);
-        case ModelChoice::harmonic: return run_harmonic_response(scene, setup, checking);
+        case ModelChoice::harmonic: return run_harmonic_response(scene, setup, checking, rest);
         case ModelChoice::solid: return run_solid_response(scene, setup, checking);
         case ModelChoice::coupled:
         case ModelChoice::automatic: break;
     }
     COREMODAL_ASSERT(false);
     return {};
+}
+
+std::vector<ResponseResult> run_forced_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
+                                                 ResponseChecking checking, RestModes rest) {
+    require_response_level(scene);
+    if (chosen_level(scene) == ModelChoice::harmonic) return run_harmonic_responses(scene, setups, checking, rest);
+    std::vector<ResponseResult> out;
+    for (const ResponseSetup& s : setups) out.push_back(run_forced_response(scene, s, {}, checking, rest));
+    return out;
 }
 
 }  // namespace coremodal

@@ -107,6 +107,7 @@ struct ResponseResult {
     double limit_m = 0;
     DampingSpec damping;                    // as the case gave it
     std::string damping_summary;            // one line for people (response_damping.hpp)
+    std::vector<DampingValue> damping_values;  // the damping terms' inputs beyond the ratios, for the report
     std::vector<ModeDamping> mode_damping;  // the kept modes' damping, lowest first
     double sag_m = 0;  // static sag under gravity at the first probe (0 without gravity)
     double ovality_split = 0;
@@ -128,20 +129,41 @@ struct ResponseResult {
 // (lateral_response.hpp), which is the same truncated sum without a dense
 // eigensolve of every mode. ResponseChecks then holds no differences
 // (speeds_checked = 0).
-// `light` is for the same caller's one check (`coremodal limits`, whose
-// beam-level time it halves): the truncated sum against the complete basis
-// at every check speed as `full`, the complete basis against the direct
-// dense solve at one speed only (the last checked: the highest peak where
-// there is one), since that difference is round-off wherever the assembly
-// is right (tests/verification hold it at every speed). Without a complete
-// basis (harmonic, solid) it is `full`.
+// `light` is for the same caller's one check (`coremodal limits`): at the
+// beam level the modes up to the cutoff as `none` (no dense eigensolve of
+// every mode) and the truncated sum against the direct sparse solve at every
+// check speed (lateral_response.hpp: the kept modes' damping by Woodbury's
+// identity), as the harmonic and solid levels check; there, without a
+// complete basis, it is `full`.
 enum class ResponseChecking { full, light, none };
+
+// What step 1 solves at rest at the harmonic level. `every_wave_number`:
+// the level's whole run (modes.csv's numbering, which [damping] mode numbers
+// name). `lateral`: wave number n = 1 only, the response's own basis (f1 is
+// its lowest bending mode, the same operators and eigensolver, so the same
+// f1 to the solver's tolerance): for a caller that needs f1 and the
+// response only (`coremodal limits`: half of its harmonic time). A
+// [damping] naming mode numbers still gets the whole run. The beam and
+// solid levels' runs at rest are the lateral problem's already.
+enum class RestModes { every_wave_number, lateral };
 
 // At the scene's level ("auto" resolved as models/choose does): beam,
 // harmonic or solid. Throws InputError for a scene the level cannot take;
 // SolveError from the solvers.
 ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options = {},
-                                   ResponseChecking checking = ResponseChecking::full);
+                                   ResponseChecking checking = ResponseChecking::full,
+                                   RestModes rest = RestModes::every_wave_number);
+
+// The forced responses of one scene to setups that differ only in what
+// changes neither K nor M (the viscous damping, the excitation; the same
+// speeds, probes, highest order and loss factors): `coremodal limits`'
+// damping and bow samples of its band. The harmonic level assembles, solves
+// and labels its n = 1 basis, factors K and runs at rest once for all of
+// them (each is then the single run's numbers, the same arithmetic); the
+// other levels run each setup.
+std::vector<ResponseResult> run_forced_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
+                                                 ResponseChecking checking = ResponseChecking::full,
+                                                 RestModes rest = RestModes::every_wave_number);
 
 // InputError, before any work, when the scene's level cannot take it: the
 // harmonic and solid levels need a body of revolution.

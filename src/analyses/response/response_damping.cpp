@@ -144,16 +144,6 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
     return plan_modal_damping(spec, numbered, basis, "bending only");
 }
 
-namespace {
-// "loss factor 0.03 (every part); core 0.02", or "" without.
-std::string loss_factor_words(const DampingSpec& spec) {
-    if (!structural_damping_of(spec).given()) return "";
-    std::string out = "loss factor " + significant(spec.loss_factor, 4) + " (every part)";
-    for (const auto& [part, eta] : spec.part_loss_factors) out += "; " + part + " " + significant(eta, 4);
-    return out;
-}
-}  // namespace
-
 std::string damping_summary(const DampingSpec& spec) {
     // The source of a Rayleigh base names alpha and beta already.
     std::string out = spec.rayleigh ? spec.source : "zeta = " + significant(spec.ratio, 4) + " (" + spec.source + ")";
@@ -162,6 +152,28 @@ std::string damping_summary(const DampingSpec& spec) {
         out += "; mode " + std::to_string(m.mode) + " " + significant(m.ratio, 4);
     if (const std::string words = loss_factor_words(spec); !words.empty()) out += "; structural damping: " + words;
     return out;
+}
+
+std::vector<DampingValue> damping_input_values(const DampingSpec& spec) {
+    if (loss_factor_words(spec).empty()) return {};
+    std::vector<DampingValue> out{{"/loss_factor", "", spec.loss_factor}};
+    for (const auto& [part, eta] : spec.part_loss_factors) out.push_back({"/loss_factors/" + part, "", eta});
+    return out;
+}
+
+std::vector<std::string> damping_effect_names(const DampingSpec& d) {
+    std::vector<std::string> out;
+    if ((!d.rayleigh && d.ratio > 0) || !d.families.empty() || !d.modes.empty()) out.push_back(ModalDamping::kName);
+    if (d.rayleigh) out.push_back(RayleighDamping::kName);
+    if (structural_damping_of(d).given()) out.push_back(StructuralDamping::kName);
+    return out;
+}
+
+std::string damping_note(const DampingSpec& spec) {
+    return "damping in the stationary frame (bearings, air, web), per mode at rest (ratios, Rayleigh's alpha M + beta K); "
+           "no rotating (internal) damping, " +
+           std::string(loss_factor_words(spec).empty() ? "no loss factors per part"
+                                                       : "a loss factor per part (structural damping, K_p (1 + i eta_p))");
 }
 
 std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where) {

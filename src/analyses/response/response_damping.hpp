@@ -22,6 +22,15 @@
 
 namespace coremodal {
 
+// A value a damping term adds to the result beyond the ratios, which the
+// report writes as it is: its place in summary.json's damping table (a JSON
+// pointer: "/loss_factor", "/loss_factors/core"; per kept mode "/loss_factor"),
+// the heading of its column in the kept modes' table, the value.
+struct DampingValue {
+    std::string path, heading;
+    double value = 0;
+};
+
 // One lateral mode at rest and its damping.
 struct ModeDamping {
     std::vector<int> rest_modes;  // its number(s) among the scene's modes at rest (1-based; a pair: two; none above them)
@@ -29,7 +38,13 @@ struct ModeDamping {
     double frequency_hz = 0;
     double zeta = 0;
     std::string from;  // "mode 1", "bending", "ratio", "rayleigh"
-    double loss_factor = 0;  // eta_j = phi^T H phi / lambda_j of structural damping (0: none)
+    std::vector<DampingValue> values;  // the terms' own (structural damping: eta_j = phi^T H phi / lambda_j)
+    // A value by its path ("/loss_factor"), 0 when the mode has none.
+    double value_of(std::string_view path) const {
+        for (const DampingValue& v : values)
+            if (v.path == path) return v.value;
+        return 0;
+    }
 };
 
 struct LateralDampingPlan {
@@ -65,6 +80,20 @@ LateralDampingPlan plan_modal_damping(const DampingSpec& spec, const std::vector
 // The beam level's: each lateral mode matched to the scene's modes at rest.
 LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& rest, const LateralResponse& lateral);
 
+// The damping of the n lowest (kept) modes of a response (LateralResponse,
+// ModalResponse): the plan's, with each mode's loss factor
+// eta_j = phi_j^T H phi_j / lambda_j from the response's projected H.
+template <class Response>
+std::vector<ModeDamping> kept_mode_damping(const LateralDampingPlan& plan, const Response& response, int n) {
+    std::vector<ModeDamping> out(plan.modes.begin(), plan.modes.begin() + n);
+    const Eigen::MatrixXd& H_hat = response.hysteretic_on_modes();
+    if (H_hat.size() > 0)
+        for (int j = 0; j < n; ++j)
+            if (const double eta = StructuralDamping::modal_loss_factor(H_hat(j, j), response.eigenvalue(j)); eta > 0)
+                out[static_cast<size_t>(j)].values.push_back({"/loss_factor", "loss factor eta_j", eta});
+    return out;
+}
+
 // One line for people: "ratio 0.01 (...)", "Rayleigh ..."; with the families and modes given.
 std::string damping_summary(const DampingSpec& spec);
 
@@ -72,6 +101,14 @@ std::string damping_summary(const DampingSpec& spec);
 inline StructuralDamping structural_damping_of(const DampingSpec& spec) {
     return {spec.loss_factor, spec.part_loss_factors};
 }
+// The damping terms' inputs as the result carries them for the report
+// (DampingValue): structural damping's loss factors.
+std::vector<DampingValue> damping_input_values(const DampingSpec& spec);
+// The damping effects [damping] names (effects/damping.hpp's kName), for the effects list.
+std::vector<std::string> damping_effect_names(const DampingSpec& spec);
+// The response's note on its damping: where it acts, what is not modelled,
+// and whether the parts carry loss factors.
+std::string damping_note(const DampingSpec& spec);
 // What a run with structural damping assumes, echoed; `where` says what a
 // part's stiffness is at the level ("the core's and rest paper's element
 // stiffness", "each part's cells"). Empty without loss factors.

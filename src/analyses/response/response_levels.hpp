@@ -30,7 +30,10 @@ std::string kept_modes_assumption(const ResponseChecks& checks, const std::strin
 
 ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
                                  ResponseChecking checking);
-ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking);
+ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking,
+                                     RestModes rest);
+std::vector<ResponseResult> run_harmonic_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
+                                                   ResponseChecking checking, RestModes rest);
 ResponseResult run_solid_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking);
 
 }  // namespace coremodal

@@ -166,6 +166,11 @@ TEST_CASE("[damping] loss factors: for every part and per part, alone or over a 
     // Per part alone, as a table of its own.
     CHECK(damping_of("[damping.loss_factors]\nrest_paper = 0.05\n").part_loss_factors.at("rest_paper") == 0.05);
     CHECK_FALSE(damping_of("ratio = 0.01\n").loss_factor > 0);
+    // One wording for check's echo, the response's summary and its notes: every given value, in the file's units.
+    CHECK(loss_factor_words(both) == "loss factor 0.02 (every part); chucks 0; core 0.04");
+    CHECK(describe_damping(both).find("structural damping (stiffness K_p (1 + i eta_p)): loss factor 0.02 (every part); "
+                                      "chucks 0; core 0.04\n") != std::string::npos);
+    CHECK(loss_factor_words(damping_of("ratio = 0.01\n")).empty());  // none given: no words
 }
 
 TEST_CASE("[damping] loss factor mistakes are refused with the key, the place and what is expected", "[damping][scene]") {

@@ -1,4 +1,3 @@
-#include "scene/case_key_docs.hpp"
 #include "common/error.hpp"
 #include "scene/case_file.hpp"
 #include "scene/case_schema.hpp"
@@ -8,36 +7,40 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 
 using namespace coremodal;
 using coremodal::testing::error_of;
 
-TEST_CASE("Every case-file key has a description and a default, and every row a key", "[schema][case_key_docs]") {
-    SECTION("each key of the key table has one row, with text in it") {
+TEST_CASE("Every case-file key has a description and a default, and is declared once", "[schema][case_key_docs]") {
+    SECTION("each key of the key table has text in its row") {
         for (const KeySpec& spec : case_schema()) {
             INFO("[" << spec.table << "] " << spec.key);
-            const KeyDoc* doc = find_key_doc(spec.table, spec.key);
-            REQUIRE(doc);
-            CHECK_FALSE(doc->description.empty());
-            CHECK_FALSE(doc->default_value.empty());
+            CHECK_FALSE(spec.text.description.empty());
+            CHECK_FALSE(spec.text.default_value.empty());
         }
     }
-    SECTION("no row names a key the key table does not have") {
-        for (const KeyDoc& doc : case_key_docs()) {
-            INFO("[" << doc.table << "] " << doc.key);
-            CHECK(find_key(doc.table, doc.key));
+    SECTION("no key has two rows") {
+        for (const KeySpec& spec : case_schema()) {
+            INFO("[" << spec.table << "] " << spec.key);
+            CHECK(find_key(spec.table, spec.key) == &spec);
         }
     }
-    SECTION("the two tables are the same length, so no key has two rows") {
-        CHECK(case_key_docs().size() == case_schema().size());
+    SECTION("every table of a key has a title") {
+        for (const KeySpec& spec : case_schema()) {
+            if (spec.table.empty()) continue;
+            INFO("[" << spec.table << "] " << spec.key);
+            CHECK(std::any_of(schema_tables().begin(), schema_tables().end(),
+                              [&](const TableTitle& t) { return t.table == spec.table; }));
+        }
     }
     SECTION("the mesh level choices are the levels of mesh_levels.hpp") {
         std::string levels;
         for (const MeshLevel& level : kMeshLevels) levels += (levels.empty() ? "" : " ") + std::string(level.name);
         for (const char* table : {"mesh", "study", "calibration"}) {
             const std::string_view key = std::string_view(table) == "mesh" ? "level" : "mesh";
-            CHECK(find_key_doc(table, key)->choices == levels);
+            CHECK(find_key(table, key)->text.choices == levels);
         }
     }
 }
@@ -79,7 +82,7 @@ TEST_CASE("The documented choices of a string key are the reader's, in its order
         INFO("[" << p.table << "] " << p.key);
         // "solid harmonic auto beam" -> "expected one of solid, harmonic, auto, beam"
         std::string expected = "expected one of ";
-        for (const char c : find_key_doc(p.table, p.key)->choices) expected += c == ' ' ? std::string(", ") : std::string(1, c);
+        for (const char c : find_key(p.table, p.key)->text.choices) expected += c == ' ' ? std::string(", ") : std::string(1, c);
         CHECK_THAT(error_of(p.text), Catch::Contains("unknown value") && Catch::Contains(expected));
     }
     SECTION("and the probes' base texts are valid cases") {

@@ -1,4 +1,4 @@
-// Plausible ranges (scene/case_schema.cpp, PlausibleRange): a value that
+// Plausible ranges (scene/case_key_ranges.hpp, PlausibleRange): a value that
 // parses but lies far outside what any roll has is most likely a unit slip
 // (E = 6.5 is 6.5 Pa). The reader warns, naming the key and its place, and
 // suggests the unit a plain number was probably meant in; the scene is still

@@ -269,7 +269,7 @@ std::string sweep_words(const std::string& value) {
 }  // namespace
 
 TEST_CASE("A swept value out of range is refused in the case reader's words", "[scene][sweep]") {
-    // [core] length is > 0 and at most 50 m (case_schema.cpp: kMaxLength, a
+    // [core] length is > 0 and at most 50 m (case_key_ranges.hpp: kMaxLength, a
     // unit slip's bound), so -2 m, 60 m and a plain 76 (76 m, meant as mm)
     // are out of range with the messages written out here.
     const std::string negative = "= -2 m must be positive";

@@ -428,20 +428,23 @@ TEST_CASE("At the harmonic level the response's n = 1 crossings are the Campbell
     CHECK(compared == 4);
 }
 
-TEST_CASE("The verdict's light check compares the truncation at every speed and the direct solve at one",
+TEST_CASE("The verdict's light check compares the truncated sum with the sparse direct solve at every check speed",
           "[limits][speed]") {
-    // ResponseChecking::light (the verdict's one check): the same truncated
-    // sum and the same truncation check as `full`, the direct solve at one
-    // speed only, where it agrees with the complete basis to round-off.
+    // ResponseChecking::light at the beam level (the verdict's one check):
+    // the modes up to the cutoff only (no dense eigensolve of every mode) and
+    // the truncated sum against the sparse direct solve at every check speed.
+    // That difference is the full check's truncated-against-complete one but
+    // for the damping of the modes left out (undamped in the direct solve as
+    // in the sum's static part): a 1/(1 + (2 zeta w/w_j)^2) effect, 0.04 % of
+    // it here; the numbers are the full run's (the same truncated sum).
     const LimitsCase c = small_roll();
     const ResponseResult full = run_forced_response(c.scene, *c.response);
     const ResponseResult light = run_forced_response(c.scene, *c.response, {}, ResponseChecking::light);
     CHECK(light.checks.speeds_checked == full.checks.speeds_checked);
-    CHECK(full.checks.direct_speeds_checked == full.checks.speeds_checked);
-    CHECK(light.checks.direct_speeds_checked == 1);
-    CHECK(light.checks.truncation_max_relative == Approx(full.checks.truncation_max_relative).epsilon(1e-10));
-    CHECK(light.checks.direct_max_relative < 1e-8);
-    CHECK(light.checks.direct_max_relative <= full.checks.direct_max_relative * (1 + 1e-10));
+    CHECK_FALSE(light.checks.complete_basis);
+    CHECK(light.checks.direct_speeds_checked == light.checks.speeds_checked);
+    CHECK(light.checks.truncation_max_relative == Approx(full.checks.truncation_max_relative).epsilon(1e-2));
+    CHECK(light.checks.truncation_max_relative > 0);
     REQUIRE(light.safe.reached == full.safe.reached);
-    CHECK(light.safe.web_speed_m_s == full.safe.web_speed_m_s);
+    CHECK(light.safe.web_speed_m_s == Approx(full.safe.web_speed_m_s).epsilon(1e-8));
 }
