@@ -43,7 +43,9 @@ DECK = ROOT / "build" / "coremodal_calculix_deck"
 
 
 def timed(cmd, cwd, env=None):
-    """(wall seconds, peak RSS in GiB) of one child process; raises on failure."""
+    """(wall seconds, peak RSS in GiB, CPU seconds user + system) of one child process; raises on failure.
+    The CPU time is what compares on a shared machine, where the wall clock
+    depends on the others' load."""
     start = time.perf_counter()
     with open(pathlib.Path(cwd) / "log.txt", "ab") as log:
         p = subprocess.Popen(cmd, cwd=cwd, env=env, stdout=log, stderr=subprocess.STDOUT)
@@ -51,7 +53,7 @@ def timed(cmd, cwd, env=None):
     wall = time.perf_counter() - start
     if os.waitstatus_to_exitcode(status) != 0:
         sys.exit(f"{' '.join(map(str, cmd))} failed (see {cwd}/log.txt)")
-    return wall, usage.ru_maxrss / 2**20
+    return wall, usage.ru_maxrss / 2**20, usage.ru_utime + usage.ru_stime
 
 
 def case_at_mesh(case, mesh, folder):
@@ -93,27 +95,30 @@ def compare(case, args, work):
             folder = pathlib.Path(work) / f"run{r}{v}"
             options = ["-factor_precision", v] if v else []
             # --model solid: under auto a body of revolution runs at the harmonic level.
-            wall, gib = timed(launcher + [str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model",
+            wall, gib, cpu = timed(launcher + [str(CORE), "run", str(path), "-o", str(folder), "--no-plots", "--model",
                                           "solid"] + options, work, mpi_env)
             if launcher:  # mpirun's peak is one rank's: the summary sums them
                 gib = json.loads((folder / "summary.json").read_text())["peak_memory_mb"] / 1024
-            runs[v].append((wall, gib))
+            runs[v].append((wall, gib, cpu))
         runs["ccx"].append(timed(["ccx", "-i", "deck"], work, env))
     theirs = ccx_frequencies(pathlib.Path(work) / "deck.dat")
     first, summary = coremodal_frequencies(pathlib.Path(work) / f"run0{variants[0]}")
-    med = {k: (statistics.median(w for w, _ in v), max(m for _, m in v)) for k, v in runs.items()}
+    med = {k: (statistics.median(w for w, _, _ in v), max(m for _, m, _ in v), statistics.median(c for _, _, c in v))
+           for k, v in runs.items()}
     rows = []
     for v in variants:
         ours, _ = coremodal_frequencies(pathlib.Path(work) / f"run0{v}")
         n = min(len(ours), len(theirs))
         rows.append({"variant": v or "default", "modes": n, "coremodal_s": med[v][0], "coremodal_gib": med[v][1],
+                     "coremodal_cpu_s": med[v][2],
                      "max_rel_diff": max(abs(a - b) / b for a, b in zip(ours[:n], theirs[:n])),
                      # against the first variant (e.g. single against double): the precision's own effect
                      "vs_first": max(abs(a - b) / abs(b) for a, b in zip(ours, first) if b)})
     return {"case": pathlib.Path(case).stem, "mesh": args.mesh or "case's", "deck": out,
             "dofs": summary.get("model", {}).get("n_dofs") or summary.get("n_dofs"), "rows": rows,
-            "ccx_s": med["ccx"][0], "ccx_gib": med["ccx"][1],
-            "all_s": {k or "default": [round(w, 2) for w, _ in v] for k, v in runs.items()}}
+            "ccx_s": med["ccx"][0], "ccx_gib": med["ccx"][1], "ccx_cpu_s": med["ccx"][2],
+            "all_s": {k or "default": [round(w, 2) for w, _, _ in v] for k, v in runs.items()},
+            "all_cpu_s": {k or "default": [round(c, 2) for _, _, c in v] for k, v in runs.items()}}
 
 
 def main():
@@ -145,7 +150,7 @@ def main():
                   f"{row['coremodal_s']:.1f} | {row['coremodal_gib']:.2f} | {r['ccx_s']:.1f} | {r['ccx_gib']:.2f} | "
                   f"{r['ccx_s'] / row['coremodal_s']:.2f} | {row['max_rel_diff']:.1e} | {row['vs_first']:.1e} |",
                   flush=True)
-        print(f"<!-- {r['case']}: runs {r['all_s']}; deck: {r['deck']} -->", flush=True)
+        print(f"<!-- {r['case']}: wall {r['all_s']}; CPU {r['all_cpu_s']}; deck: {r['deck']} -->", flush=True)
     print(f"load after: {os.getloadavg()[0]:.2f}")
 
 

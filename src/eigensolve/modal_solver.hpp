@@ -10,7 +10,7 @@
 #include "common/petsc_handle.hpp"
 #include "eigensolve/mode_request.hpp"
 #include "eigensolve/tolerances.hpp"
-#include "modes/mode_set.hpp"
+#include "eigensolve/verification.hpp"
 
 #include <functional>
 #include <optional>

@@ -7,6 +7,7 @@
 #include "eigensolve/petsc_algebra.hpp"
 #include "eigensolve/shift_invert_steps.hpp"
 #include "eigensolve/single_factor.hpp"
+#include "eigensolve/single_refinement.hpp"
 
 #include <slepceps.h>
 
@@ -220,6 +221,35 @@ std::string scientific(double x) {
     return s.str();
 }
 
+// Block Lanczos on the single factor's solves refined to the pass error,
+// the pairs then cleaned in double (single_refinement.hpp) and the work said
+// through `progress`; none when a refinement stalled (the caller takes the
+// double factor).
+std::optional<Attempt> single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double sigma, long below,
+                                           const SolveRequest& request, const Progress& progress) {
+    Attempt a;
+    int ritz_steps = 0;
+    const double pass_error = pass_backward_error();
+    try {
+        SolveRequest loose = request;
+        loose.tolerance = std::max(request.tolerance, single_lanczos_tolerance());
+        a = block_lanczos_attempt(
+            [&](int cols, const double* in, double* out) { F.solve(cols, in, out, pass_error); }, M, sigma,
+            int(below), loose, progress);
+        ritz_steps = refine_pairs_in_double(F, K, M, a.lambdas, a.vectors);
+    } catch (const RefinementStalled& e) {
+        progress(std::string(e.what()) + ": falling back to the double-precision factor");
+        return std::nullopt;
+    }
+    progress("single-precision factor: " + std::to_string(F.solves()) + " block solves refined in double to a "
+             "backward error below " + scientific(pass_error) + " (at most " + std::to_string(F.most_steps()) +
+             " solve(s) each), " + std::to_string(ritz_steps) +
+             " Rayleigh-Ritz step(s) with the double K and M on a solve refined below " +
+             scientific(kRefinedBackwardError) + "; " + std::to_string(F.factor_passes()) +
+             " passes over the factor in all");
+    return a;
+}
+
 // The one-factor path on the single-precision LDL^T (single_factor.hpp):
 // block Lanczos on its refined solves, the count from its inertia when the
 // modes found prove it (single_count_proven), else from a double LDL^T.
@@ -242,17 +272,9 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
                  std::to_string(wanted) + " wanted; solving with a negative shift");
         return {std::nullopt, false};
     }
-    Attempt a;
-    try {
-        a = block_lanczos_attempt([&](int cols, const double* in, double* out) { F->solve(cols, in, out); }, M, sigma,
-                                  int(below), request, progress);
-    } catch (const RefinementStalled& e) {
-        progress(std::string(e.what()) + ": falling back to the double-precision factor");
-        return {};
-    }
-    progress("single-precision factor: " + std::to_string(F->solves()) + " block solves refined in double, at most " +
-             std::to_string(F->most_steps()) + " correction(s) each, to a backward error below " +
-             scientific(kRefinedBackwardError));
+    std::optional<Attempt> pairs = single_factor_pairs(*F, K, M, sigma, below, request, progress);
+    if (!pairs) return {};
+    Attempt& a = *pairs;
     const long found_below = count_below_shift(a, sigma);
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (n_report < wanted || n_report > found_below) {

@@ -31,9 +31,10 @@ namespace coremodal {
 
 // Which precision factors K - sigma M on the one-factor path, and why (the
 // run says it). -factor_precision single | double | auto. auto is double
-// for now: on case 03 the single factor's refinement (3 corrections a pass)
-// cost more than its cheaper factorization saved (bench/results/log.md,
-// "Single-precision factor"). single is one process only (sequential
+// for now: on case 03 the single factor's refined passes and Rayleigh-Ritz
+// cleanup (single_refinement.hpp: 32 passes over a factor of half the
+// bytes against the double's 14) cost more than its cheaper factorization
+// saved (bench/results/log.md, "Fewer passes"). single is one process only (sequential
 // SMUMPS); in parallel the double factor stays.
 struct FactorPrecision {
     bool single = false;
@@ -80,8 +81,9 @@ public:
     long estimate_mb() const;
 
     // out = A^-1 in for `cols` columns (column-major, leading dimension the
-    // row count), refined in double (RefinementStalled when it stalls).
-    void solve(int cols, const double* in, double* out);
+    // row count), refined in double until every column's backward error is
+    // below `target` (RefinementStalled when it stalls).
+    void solve(int cols, const double* in, double* out, double target = kRefinedBackwardError);
 
     // The largest normwise backward error of a first, unrefined solve
     // measured so far: the factor's backward error, ||E|| <= this x ||A||_1
@@ -92,6 +94,9 @@ public:
     // The most corrections one solve took, for the run's report.
     int most_steps() const { return most_steps_; }
     int solves() const { return solves_; }
+    // Every pass over the factor (a block of right-hand sides each): the
+    // cost the refinement is judged by.
+    int factor_passes() const { return factor_passes_; }
 
 private:
     struct Mumps;
@@ -100,7 +105,7 @@ private:
     PetscInt n_ = 0;
     double norm_1_ = 0;
     double first_error_ = 0;
-    int most_steps_ = 0, solves_ = 0;
+    int most_steps_ = 0, solves_ = 0, factor_passes_ = 0;
     std::vector<float> rhs_;
     std::vector<double> residual_, product_out_;
     SparseBlockProduct product_;

@@ -1,6 +1,8 @@
 // Modes after the eigen solve, verified, classified and ready to write.
 #pragma once
 
+#include "eigensolve/verification.hpp"
+
 #include <string>
 #include <vector>
 
@@ -36,21 +38,6 @@ struct Mode {
     // (modes/mac.hpp: layout and meaning); empty when the model gives none.
     // Held on rank 0 only.
     std::vector<double> signature;
-};
-
-struct Verification {
-    double max_relative_residual = 0;
-    double max_orthonormality_error = 0;  // max |X^T M X - I|
-    double check_shift = 0;               // sigma of the inertia check, rad^2/s^2
-    long negative_pivots_at_shift = 0;    // eigenvalues below check_shift by Sylvester
-    long modes_below_shift = 0;           // modes accounted for below check_shift: found, or counted below a band
-    // A band whose lower edge lies above the rigid modes: the eigenvalues below
-    // that edge that were counted by inertia and not computed (an empty band
-    // is proven by two counts, N(lower edge) = N(upper edge), without a solve).
-    long eigenvalues_below_band = 0;
-    bool complete = false;                // the two counts agree
-
-    long modes_found_below_shift() const { return modes_below_shift - eigenvalues_below_band; }
 };
 
 struct ModeSet {

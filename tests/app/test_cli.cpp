@@ -295,6 +295,32 @@ TEST_CASE("Two MPI ranks solve in blocks on MUMPS's distributed factor and give 
     CHECK(coremodal::json_number(summary, "verification.max_orthonormality_error").value_or(1) <= 1e-8);
 }
 
+// Issue 39: the single-precision factor (its passes refined to 1e-9, the
+// pairs cleaned by Rayleigh-Ritz in double) gives the double factor's
+// frequencies to 1e-9 relative (modes.csv's 10 digits resolve ~1e-10), with
+// residuals, M-orthonormality and the count as the double run's.
+TEST_CASE("Case 03's coarse solid on the single factor gives the double factor's modes to 1e-9",
+          "[app][cli][single_factor][long]") {
+    TempDir dir;
+    const Run dbl = case03_coarse_solid(dir, "double", " -factor_precision double");
+    const Run sgl = case03_coarse_solid(dir, "single", " -factor_precision single");
+    INFO(sgl.out);
+    CHECK(sgl.out.find("Rayleigh-Ritz step(s) with the double K and M") != std::string::npos);
+    CHECK(sgl.out.find("count from the single-precision factor's inertia, proven") != std::string::npos);
+    for (const Run* r : {&dbl, &sgl}) {
+        CHECK(r->out.find("13 negative pivots below") != std::string::npos);
+        CHECK(r->out.find(": complete") != std::string::npos);
+    }
+    const auto f_double = elastic_frequencies(dir.path / "double" / "modes.csv");
+    const auto f_single = elastic_frequencies(dir.path / "single" / "modes.csv");
+    REQUIRE(f_double.size() == 13u);
+    REQUIRE(f_single.size() == f_double.size());
+    for (size_t i = 0; i < f_double.size(); ++i) CHECK(f_single[i] == Approx(f_double[i]).epsilon(1e-9));
+    const std::string summary = slurp(dir.path / "single" / "summary.json");
+    CHECK(coremodal::json_number(summary, "verification.max_relative_residual").value_or(1) <= 1e-10);
+    CHECK(coremodal::json_number(summary, "verification.max_orthonormality_error").value_or(1) <= 1e-12);
+}
+
 TEST_CASE("A factor larger than the memory allowed goes to disk on its own and gives the frequencies of one in memory",
           "[app][cli]") {
     // -max_memory_mb 1 caps the memory the run may take below MUMPS's

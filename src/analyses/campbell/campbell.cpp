@@ -8,8 +8,11 @@
 #include "common/stopwatch.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
+#include "models/beam/beam_spinning_notes.hpp"
+#include "models/harmonic/harmonic_spinning_notes.hpp"
 #include "models/harmonic/rotating_harmonics.hpp"
 #include "models/solid/rotating_solid.hpp"
+#include "models/solid/solid_spinning_notes.hpp"
 #include "modes/tracking.hpp"  // assign_maximum
 
 #include <algorithm>
@@ -79,90 +82,6 @@ std::map<int, TrackInfo> track_info(const std::vector<Step>& steps) {
             if (it->second.whirl == Whirl::none) it->second.whirl = s.modes[i].whirl;
         }
     return info;
-}
-
-std::vector<std::string> beam_notes(const RotationSpec& rotation) {
-    std::vector<std::string> notes{
-        "rotation at the beam level: the gyroscopic term of every spinning beam (core with rest paper, chuck bodies "
-        "and shafts; polar inertia rho_J per length); bearings and frames do not spin"};
-    if (rotation.centrifugal_stiffening)
-        notes.push_back(
-            "[rotation] centrifugal_stiffening = true: not included at the beam level, which has no term for it (the "
-            "hoop prestress of a spinning roll stiffens its section's ovalling, not its bending; zero in beam theory)");
-    return notes;
-}
-
-// The largest hoop and radial stress of the prestress at the sweep's top speed, MPa.
-std::string prestress_size(const CentrifugalPrestress& p, const RotationSpec& rotation) {
-    double hoop = 0, radial = 0;
-    for (const SectionStress& s : p.stress) {
-        hoop = std::max(hoop, s.row(1).cwiseAbs().maxCoeff());
-        radial = std::max(radial, s.row(0).cwiseAbs().maxCoeff());
-    }
-    const double spin = 2 * M_PI * rotation.speeds_hz.back(), mpa = spin * spin / 1e6;
-    return "at " + significant(rotation.speeds_hz.back() * 60) + " rpm the largest hoop stress is " +
-           significant(hoop * mpa) + " MPa and the largest radial stress " + significant(radial * mpa) + " MPa";
-}
-
-std::vector<std::string> harmonic_notes(const RotationSpec& rotation, const RotatingHarmonics& harmonics) {
-    std::string ns;
-    for (int n : harmonics.wave_numbers()) ns += (ns.empty() ? "" : ", ") + std::to_string(n);
-    std::vector<std::string> notes{
-        "rotation at the harmonic level: the gyroscopic term of every spinning body of revolution (core, rest paper, "
-        "chuck bodies and shafts: the material carried through the stationary frame at Omega d/dtheta, which couples "
-        "the two families of each wave number n >= 1 into forward and backward travelling waves); bearings and "
-        "frames do not spin; wave numbers n = " + ns + ", chosen at rest"};
-    if (const CentrifugalPrestress* p = harmonics.prestress())
-        notes.push_back("centrifugal stiffening: the steady stress of the spinning section (an axisymmetric static "
-                        "solve under the body force rho Omega^2 r with the scene's supports; " +
-                        prestress_size(*p, rotation) +
-                        ") as geometric stiffness, with the convective softening -Omega^2 rho |du/dtheta|^2 that "
-                        "goes with it in the stationary frame (effects/rotation.hpp)");
-    else
-        notes.push_back("terms of order Omega^2 not included ([rotation] centrifugal_stiffening = false): the "
-                        "centrifugal prestress and the convective softening are left out together (they balance "
-                        "in part; a gyroscopic model to first order in Omega, as the beam level's)");
-    return notes;
-}
-
-std::vector<std::string> solid_notes(const RotationSpec& rotation, const RotatingSolid& solid) {
-    std::vector<std::string> notes;
-    if (solid.rotating_frame())
-        notes.push_back(
-            "rotation at the solid level in co-rotating coordinates (the scene is not a body of revolution; its "
-            "non-spinning parts look the same from every angle): M q'' + Omega G_c q' + (K + Omega^2 (K_sigma1 - "
-            "M_P)) q = 0, the Coriolis term G_c = 2 int rho N^T (e_z x) N dV and the spin softening M_P over every "
-            "mass; each mode's rotating-frame frequency f is brought to the stationary frame by the dominant "
-            "circumferential harmonic k of its shape on the roll's surface: f_stat = |f - k f_rot|, forward when "
-            "-k (f - k f_rot) > 0 (docs/theory/rotation-solid.md)");
-    else
-        notes.push_back(
-            "rotation at the solid level: the gyroscopic term of every spinning cell (core, rest paper, chuck bodies "
-            "and shafts: the material carried through the stationary frame at Omega d/dtheta, the harmonic level's "
-            "term on the hexahedra); spring layers, bearings and frames do not spin");
-    if (!rotation.centrifugal_stiffening && solid.rotating_frame()) {
-        notes.push_back("[rotation] centrifugal_stiffening = false: the centrifugal prestress's stiffness K_sigma1 "
-                        "is left out; the spin softening M_P stays (part of the change of coordinates)");
-        return notes;
-    }
-    if (!rotation.centrifugal_stiffening) {
-        notes.push_back("[rotation] centrifugal_stiffening = false: the terms of order Omega^2 (the centrifugal "
-                        "prestress and the convective spin softening) are left out");
-        return notes;
-    }
-    std::string pinned;
-    for (const std::string& p : solid.pinned_rigid_motions()) pinned += (pinned.empty() ? "" : ", ") + p;
-    notes.push_back(std::string("centrifugal stiffening at the solid level: Omega^2 ") +
-                    (solid.rotating_frame() ? "K_sigma1 on every spinning cell" : "K_Omega on every spinning cell, K_Omega = "
-                    "K_sigma1 - M_L (effects/rotation.hpp)") + ": the geometric stiffness of the stress of a static solve "
-                    "under the centrifugal load rho r e_r per unit Omega^2 (the scene's supports; stresses at the "
-                    "integration points, the material turned per point)" +
-                    (solid.rotating_frame() ? "" : ", less the convective spin softening") +
-                    "; linear in the prestress (sigma = Omega^2 sigma1)" +
-                    (pinned.empty() ? std::string()
-                                    : "; the static solve pinned one DOF for each rigid motion the supports leave "
-                                      "free (" + pinned + "), on which the load does no work"));
-    return notes;
 }
 
 double first_bending_hz(const std::vector<RotatingMode>& rest) {
@@ -290,7 +209,7 @@ namespace {
 
 void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
                        CampbellResult& out) {
-    out.notes = beam_notes(rotation);
+    out.notes = spinning_notes(rotation);
     out.solver = "dense: exact linearization of the quadratic problem (Hermitian, size 2n, in the modes at rest)";
     out.completeness = "every eigenvalue of the Hermitian linearization is computed (dense); at rest the modes are "
                        "those of `coremodal run` (inertia count)";
@@ -331,7 +250,7 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes,
                                 rotation.centrifugal_stiffening);
     harmonics.sweep_up_to(rotation.speeds_hz.back());
-    out.notes = harmonic_notes(rotation, harmonics);
+    out.notes = spinning_notes(rotation, harmonics);
     out.n_dofs = harmonics.n_dofs();
     sweep_from_rest(
         scene, rotation, reported, harmonics.modes_at(0.0),
@@ -358,7 +277,7 @@ void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, Campbe
     const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
     const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes,
                               {.centrifugal_stiffening = rotation.centrifugal_stiffening});
-    out.notes = solid_notes(rotation, solid);
+    out.notes = spinning_notes(rotation, solid);
     out.n_dofs = solid.n_dofs();
     // Co-rotating coordinates: the exact critical speeds of the pencil first,
     // and a sweep that ends below the lowest (zero_frequency_crossings.hpp).

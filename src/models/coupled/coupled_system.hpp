@@ -64,6 +64,14 @@ struct WebLine {
 // in block h: (u_r, u_theta, u_z) = (t_r U, t_theta V, t_z W) turned by theta.
 Eigen::Matrix3d harmonic_to_cartesian(HarmonicFamily h, double theta);
 
+// B_a^T K_line B_b: the web's line between blocks a and b, per unit length
+// and per pair of node values.
+Eigen::Matrix3d web_between(const WebLine& web, HarmonicFamily a, HarmonicFamily b);
+
+// Below this share of the line's stiffness an entry is round-off of one that
+// vanishes exactly (sin n theta at theta on a symmetry line).
+inline constexpr double kVanishingShare = 1e-12;
+
 // What couples the harmonics: the segmented elements' pads, the web's line
 // and a chuck not expanded's one-sided contact. The contact's layer depends
 // on the static state under gravity (models/coupled/contact_static), which

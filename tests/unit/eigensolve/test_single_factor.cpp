@@ -7,6 +7,7 @@
 // and through the solver a shift beside an eigenvalue must fall back to
 // the double factor with the same, verified modes.
 #include "eigensolve/single_factor.hpp"
+#include "eigensolve/single_refinement.hpp"
 
 #include "eigensolve/modal_solver.hpp"
 #include "eigensolve/petsc_algebra.hpp"
@@ -245,6 +246,9 @@ TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve
     const SolvedModes s = solve_modes(ops, request, said.printer());
     COREMODAL_PETSC(PetscOptionsClearValue(nullptr, "-factor_precision"));
     CHECK(said.any("single-precision factor: "));
+    // The passes refined to kPassBackwardError, the pairs cleaned by
+    // Rayleigh-Ritz in double (single_refinement.hpp).
+    CHECK(said.any("Rayleigh-Ritz step(s) with the double K and M"));
     CHECK(said.any("count from the single-precision factor's inertia, proven"));
     REQUIRE(int(s.eigenvalues.size()) == kModes);
     for (int j = 0; j < kModes; ++j) CHECK(s.eigenvalues[j] == Approx(exact[j]).epsilon(1e-9));
@@ -263,4 +267,8 @@ TEST_CASE("The option -factor_precision takes single, double or auto", "[eigenso
     COREMODAL_PETSC(PetscOptionsSetValue(nullptr, "-factor_precision", "single"));
     CHECK(factor_precision_choice(PETSC_COMM_SELF).single);
     COREMODAL_PETSC(PetscOptionsClearValue(nullptr, "-factor_precision"));
+    CHECK(pass_backward_error() == kPassBackwardError);
+    COREMODAL_PETSC(PetscOptionsSetValue(nullptr, "-factor_single_pass_error", "0"));
+    CHECK_THROWS_WITH(pass_backward_error(), Catch::Contains("expected a positive backward error"));
+    COREMODAL_PETSC(PetscOptionsClearValue(nullptr, "-factor_single_pass_error"));
 }
