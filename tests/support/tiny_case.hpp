@@ -57,4 +57,29 @@ length = "70 mm"
 modes = 6
 )";
 
+// A 150x13 core, 4 m, with 10 mm of rest paper, clamped over 100 mm at each
+// end, at the beam level: the forced-response tests' small rest roll.
+inline const std::string kClampedRestRoll =
+    "model = \"beam\"\n"
+    "[core]\ninner_diameter = \"150 mm\"\nouter_diameter = \"176 mm\"\nlength = \"4 m\"\n"
+    "material = { E = \"6.5 GPa\", nu = 0.3, density = \"920 kg/m^3\" }\n"
+    "[rest_paper]\nouter_diameter = \"196 mm\"\n"
+    "material = { E = \"5 GPa\", nu = 0.3, density = \"1350 kg/m^3\" }\n"
+    "[supports]\ntype = \"clamped\"\n[supports.left]\nlength = \"100 mm\"\nstart = \"0 mm\"\n"
+    "[analysis]\nmodes = 8\n";
+
+// The tester's core with 10 mm of rest paper (Dp 126 mm), a 0.5 mm bow, 1 %
+// damping and a response from 5 to 30 m/s: the limits verdict's small roll.
+inline const std::string kBowedTesterRoll = kClampedTesterCore + R"([rest_paper]
+thickness = "10 mm"
+material = "rest_paper"
+[damping]
+ratio = 0.01
+[excitation]
+bow = "0.5 mm"
+[response]
+web_speeds = ["5 m/s", "30 m/s"]
+points = 20
+)";
+
 }  // namespace coremodal::testing

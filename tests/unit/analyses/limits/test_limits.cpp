@@ -48,17 +48,7 @@ ResponseCase case13_with_paper(const std::string& thickness) {
 // Case 12's core clamped over 70 mm with 10 mm of rest paper (Dp 126 mm), a
 // 0.5 mm bow and 1 % damping, at the beam level: a few hundred unknowns.
 LimitsCase small_roll() {
-    const std::string text = testing::kClampedTesterCore + R"([rest_paper]
-thickness = "10 mm"
-material = "rest_paper"
-[damping]
-ratio = 0.01
-[excitation]
-bow = "0.5 mm"
-[response]
-web_speeds = ["5 m/s", "30 m/s"]
-points = 20
-)";
+    const std::string& text = testing::kBowedTesterRoll;
     return parse_limits_case_text(text, "small.toml");
 }
 

@@ -22,17 +22,7 @@ namespace {
 // Case 12's core clamped over 70 mm with 10 mm of rest paper, a 0.5 mm bow
 // and 1 % damping, at the harmonic level's coarse mesh.
 LimitsCase small_harmonic_roll() {
-    const std::string text = testing::kClampedTesterCore + R"([rest_paper]
-thickness = "10 mm"
-material = "rest_paper"
-[damping]
-ratio = 0.01
-[excitation]
-bow = "0.5 mm"
-[response]
-web_speeds = ["5 m/s", "30 m/s"]
-points = 20
-)";
+    const std::string& text = testing::kBowedTesterRoll;
     LimitsCase c = parse_limits_case_text(text, "small.toml");
     c.scene.model = "harmonic";
     apply_mesh_level(c.scene, "coarse");

@@ -61,7 +61,7 @@ LimitsRequest one_diameter(double d) {
 }  // namespace
 
 TEST_CASE("The coupled verdict: f1 from the coupled level, the spinning criteria from the axisymmetric equivalent",
-          "[limits][coupled]") {
+          "[limits][coupled][long]") {
     const LimitsCase c = parse_limits_case_text(news_roll(3), "news.toml");
     constexpr double kD = 0.140;  // the rest roll at 140 mm
     const LimitsResult r = verdict(c.scene, c.response, one_diameter(kD));

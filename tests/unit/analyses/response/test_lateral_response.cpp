@@ -8,6 +8,7 @@
 #include "beam/beam_model.hpp"
 #include "effects/damping.hpp"
 #include "scene/case_file.hpp"
+#include "support/tiny_case.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -21,17 +22,9 @@ using cd = std::complex<double>;
 
 namespace {
 
-// A small clamped rest roll at the beam level (test_response_damping.cpp's).
+// The forced-response tests' small clamped rest roll (support/tiny_case.hpp).
 Scene clamped_roll() {
-    return parse_case_text(
-        "model = \"beam\"\n"
-        "[core]\ninner_diameter = \"150 mm\"\nouter_diameter = \"176 mm\"\nlength = \"4 m\"\n"
-        "material = { E = \"6.5 GPa\", nu = 0.3, density = \"920 kg/m^3\" }\n"
-        "[rest_paper]\nouter_diameter = \"196 mm\"\n"
-        "material = { E = \"5 GPa\", nu = 0.3, density = \"1350 kg/m^3\" }\n"
-        "[supports]\ntype = \"clamped\"\n[supports.left]\nlength = \"100 mm\"\nstart = \"0 mm\"\n"
-        "[analysis]\nmodes = 8\n",
-        "roll.toml");
+    return parse_case_text(testing::kClampedRestRoll, "roll.toml");
 }
 
 }  // namespace

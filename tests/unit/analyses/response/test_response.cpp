@@ -13,6 +13,7 @@
 #include "scene/response_spec.hpp"
 
 #include "support/response_setup.hpp"
+#include "support/tiny_case.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -64,15 +65,7 @@ struct RigidRotor {
 // A small rest roll held in rigid clamps, at the beam level (isotropic
 // materials: the test is about the response, not paperboard).
 Scene clamped_roll() {
-    return parse_case_text(
-        "model = \"beam\"\n"
-        "[core]\ninner_diameter = \"150 mm\"\nouter_diameter = \"176 mm\"\nlength = \"4 m\"\n"
-        "material = { E = \"6.5 GPa\", nu = 0.3, density = \"920 kg/m^3\" }\n"
-        "[rest_paper]\nouter_diameter = \"196 mm\"\n"
-        "material = { E = \"5 GPa\", nu = 0.3, density = \"1350 kg/m^3\" }\n"
-        "[supports]\ntype = \"clamped\"\n[supports.left]\nlength = \"100 mm\"\nstart = \"0 mm\"\n"
-        "[analysis]\nmodes = 8\n",
-        "roll.toml");
+    return parse_case_text(testing::kClampedRestRoll, "roll.toml");
 }
 
 ResponseSetup setup_of(double zeta, ExcitationSpec x, double v0, double v1, int points) {
