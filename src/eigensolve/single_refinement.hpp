@@ -31,9 +31,10 @@ namespace coremodal {
 // unless -factor_single_pass_error says otherwise. Measured on case 03's
 // coarse solid (bench/results/log.md, "Fewer passes"): 1e-9 gives 26
 // Lanczos passes + 2 Rayleigh-Ritz steps = 32 passes over the factor
-// against 39 at 1e-13, frequencies within 2.4e-12 of the double run; 1e-8
-// and unrefined solves leave block Lanczos short of its 1e-10 (500
-// restarts).
+// against 39 at 1e-13, frequencies within 2.4e-12 of the double run;
+// unrefined solves leave block Lanczos short of its 1e-10 (500 restarts),
+// and a run at 1e-8 was still solving after 8 minutes (stopped, not
+// measured).
 inline constexpr double kPassBackwardError = 1e-9;
 
 // The Rayleigh-Ritz steps stop when every pair's relative residual
