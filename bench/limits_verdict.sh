@@ -13,7 +13,7 @@
 # chucks: f1, k, I-5, Koenig coupled; the spinning criteria from the
 # axisymmetric equivalent's harmonic level; bench/results/log.md, "fifth
 # pass"):
-#   CASES=bench/limits-news-segmented-76x15-2200.toml LEVELS=coupled bash bench/limits_verdict.sh 1
+#   CASES=cases/17-limits-news-segmented-76x15-2200.toml LEVELS=coupled bash bench/limits_verdict.sh 3
 # Targets (issue 36): beam <= 2 s, harmonic <= 30 s, coupled <= 2 min CPU.
 set -euo pipefail
 cd "$(dirname "$0")/.."

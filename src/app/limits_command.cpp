@@ -52,6 +52,7 @@ int run_limits_case(const LimitsOptions& o) {
         request.traction = traction_slip_criterion(roller->spec);
     require_limits_scene(scene, request);  // before the folder: nothing written on bad input
     const std::filesystem::path out_dir = prepare_folder_case(o.folder, scene, "-limits");
+    if (!o.folder.quiet) request.progress = [](const std::string& line) { std::cout << "  " << line << std::endl; };
     const LimitsResult result = verdict(scene, c.response, request);
     const int code =
         write_folder_case(o.folder, out_dir,

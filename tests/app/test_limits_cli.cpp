@@ -51,6 +51,9 @@ TEST_CASE(
     CHECK(summary.find("\"web_speed_m_s\": 15.0") != std::string::npos);
     CHECK(slurp(dir.path / "out" / "report.md").rfind("# How fast may small run: safe up to ", 0) == 0);
     CHECK(slurp(dir.path / "out" / "limits.csv").rfind("diameter_mm,added,f1_hz,chuck_factor,i5_0.7_m_s,", 0) == 0);
+    // Progress: one line per diameter as it is solved, before the table.
+    for (const char* k : {"(1/3): f1 ", "(2/3): f1 ", "(3/3): f1 "}) CHECK(r.out.find(k) != std::string::npos);
+    CHECK(r.out.find("(3/3): f1 ") < r.out.find("D (mm)"));
     // -q: only where the results are, and the verdict.
     const Run quiet = run_coremodal(dir, "limits roll.toml --output again -q --no-plots --speed 12");
     INFO(quiet.err);
@@ -58,6 +61,7 @@ TEST_CASE(
     CHECK(last_line(quiet.out).rfind("safe up to ", 0) == 0);
     CHECK(last_line(quiet.out).find("target 12.00 m/s") != std::string::npos);
     CHECK(quiet.out.find("rest-roll diameters") == std::string::npos);
+    CHECK(quiet.out.find("(1/3)") == std::string::npos);
 }
 
 TEST_CASE(

@@ -96,6 +96,36 @@ TEST_CASE("Coupled level converges in N from above, in shrinking steps", "[coupl
     CHECK(step[3] < step[1] / 4);  // measured: 0.0139, 0.0039, 0.0017 (eigenvalues, twice the frequency change)
 }
 
+TEST_CASE("Coupled level: a level reused on a like scene starts one step below its last N, and stops as a fresh one",
+          "[coupled][long]") {
+    const Scene first = segmented_chucks(3, 60), second = segmented_chucks(3, 60, 16, 24, 1.2);
+    const Printer quiet{false};
+    CoupledLevel reused, fresh;
+    reused.solve(first, quiet);
+    const int reach = 3;  // three pads couple n to n +- 3
+    const int last = reused.convergence().back().n_max;
+    const LevelModes again = reused.solve(second, quiet);
+    const LevelModes alone = fresh.solve(second, quiet);
+    const std::vector<CoupledStep>& steps = reused.convergence();
+    INFO("first scene stopped at N = " << last << "; the second, reused: N = " << steps.front().n_max << " ... "
+                                       << steps.back().n_max << ", fresh: N = " << fresh.convergence().back().n_max);
+    // The search starts one step below where the last one stopped, never lower than N_s + 1.
+    CHECK(steps.front().n_max == std::max(reach + 1, last - reach));
+    CHECK(steps.back().max_change <= kCoupledTolerance);
+    CHECK(again.verification.complete);
+    // The same stopping rule: each frequency within the truncation error left
+    // at a step (about 1.5 times the step, coupled_level.hpp) of the fresh
+    // search's, and from below where it ends at a larger N (nested spaces).
+    const int n_reused = steps.back().n_max, n_fresh = fresh.convergence().back().n_max;
+    REQUIRE(again.modes.size() == alone.modes.size());
+    for (size_t i = 0; i < alone.modes.size(); ++i) {
+        const double a = again.modes[i].frequency_hz, b = alone.modes[i].frequency_hz;
+        CHECK(std::abs(a - b) <= 3 * kCoupledTolerance * b);
+        if (n_reused > n_fresh) CHECK(a <= b * (1 + 1e-10));
+        if (n_reused == n_fresh) CHECK(a == Approx(b).epsilon(1e-9));
+    }
+}
+
 TEST_CASE("Coupled level: harmonics kept near the pads bound the whole ones from above, and show a reach too short",
           "[coupled]") {
     // A 2.2 m core (case 10's) on three 60 deg pads per chuck, N = 7.

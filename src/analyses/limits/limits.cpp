@@ -153,6 +153,18 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     return p;
 }
 
+std::string mm(double d_m) { return formatted("%.1f", d_m * 1e3); }
+
+// The progress line of one diameter solved (k of n; beyond n: a midpoint).
+std::string point_line(const LimitsPoint& p, size_t k, size_t n, double seconds) {
+    const std::string which = k <= n ? std::to_string(k) + "/" + std::to_string(n) : "midpoint";
+    std::string line = "  D = " + mm(p.diameter_m) + " mm (" + which + "): f1 " + significant(p.f1_hz, 5) + " Hz";
+    if (p.governing >= 0)
+        line += ", safe " + formatted("%.2f", p.safe_m_s) + " m/s (" +
+                criterion_name(p.criteria[p.governing].criterion) + ")";
+    return line + (p.band_sampled ? ", band sampled" : "") + ", " + formatted("%.1f", seconds) + " s";
+}
+
 // The traction line of a case without [traction].
 CriterionSpeed no_roller() {
     CriterionSpeed s;
@@ -389,7 +401,11 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     const double smallest = request.spec.smallest_diameter_m.value_or(scene.core.outer_diameter);
     const int n = largest > smallest ? request.spec.points : 1;
     const std::vector<double> diameters = n > 1 ? spaced(largest, smallest, n) : std::vector<double>{largest};
+    request.say("limits: " + std::to_string(n) + " rest-roll diameters from " + mm(largest) + " to " + mm(smallest) +
+                     " mm at the " + scene.model + " level" + (r.band ? ", the band at every " +
+                     std::to_string(kBandStride) + "th" : ""));
     auto solve = [&](double d, bool added, bool sample_band) {
+        Stopwatch lap;
         LimitsPoint p = solve_point(scene, base, d, r);
         p.criteria.push_back(request.traction.value_or(no_roller()));
         p.added = added;
@@ -397,6 +413,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
         if (p.band_sampled) propagate_band(scene, base, r.inputs, p, r.n_solves);
         govern(p);
         if (!p.band_sampled) p.safe_low_m_s = p.safe_high_m_s = p.safe_m_s;
+        request.say(point_line(p, r.points.size() + 1, diameters.size(), lap.seconds()));
         return p;
     };
     for (int i = 0; i < static_cast<int>(diameters.size()); ++i)

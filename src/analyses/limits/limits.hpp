@@ -31,6 +31,7 @@
 #include "scene/scene.hpp"
 #include "traction/traction_model.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -181,6 +182,11 @@ struct LimitsRequest {
     // bending planes: a web, unlike supports), sweep the Campbell diagram
     // (minutes at the beam level); `run`'s verdict line does not, and says so.
     bool campbell_sweep = true;
+    // A progress line per diameter solved (the command, unless -q).
+    std::function<void(const std::string&)> progress;
+    void say(const std::string& line) const {
+        if (progress) progress(line);
+    }
 };
 
 // `coremodal run` on a roll held in its stand ends with the verdict line too

@@ -10,7 +10,9 @@
 #include "common/format.hpp"
 #include "common/join.hpp"
 #include "common/stopwatch.hpp"
+#include "models/choose.hpp"
 #include "models/coupled/axisymmetric_equivalent.hpp"
+#include "models/model_level.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +21,15 @@ namespace coremodal {
 namespace {
 
 // The coupled level's run of the scene at one diameter: what `coremodal run
-// --model coupled` gives for it (f1, the chuck factor by the free span's run).
-RunReport coupled_run(const Scene& at) {
+// --model coupled` gives for it (f1, the chuck factor by the free span's
+// run). `level` is kept over the unwind: each diameter's search for N starts
+// one step below the last diameter's N (models/coupled/coupled_level.hpp).
+RunReport coupled_run(const Scene& at, ModelLevel& level) {
     RunOptions options;
     options.quiet = true;
     options.write_results = false;
     options.chuck_factor_by_fe = true;
-    return run_scene(at, options);
+    return run_scene(at, options, level);
 }
 
 // Criterion c from the coupled level's f1: its value v (or why none), its
@@ -50,8 +54,9 @@ void set_from_coupled(CriterionSpeed& s, const std::optional<double>& v, const s
 // safe speed's band again. The band of the safe speed is the envelope of the
 // limiting criteria's bands (the lowest of their low ends, the lowest of
 // their high ends): it contains every sample's own verdict.
-void at_coupled_level(const Scene& scene, const std::string& spinning_level, LimitsPoint& p, int& n_solves) {
-    const RunReport run = coupled_run(scene_at_diameter(scene, p.diameter_m));
+void at_coupled_level(const Scene& scene, ModelLevel& level, const std::string& spinning_level, LimitsPoint& p,
+                      int& n_solves) {
+    const RunReport run = coupled_run(scene_at_diameter(scene, p.diameter_m), level);
     ++n_solves;
     const double f1 = run.beam.fe_first_bending_hz;
     if (!(f1 > 0))
@@ -94,6 +99,14 @@ void at_coupled_level(const Scene& scene, const std::string& spinning_level, Lim
     p.safe_high_m_s = std::max(p.safe_high_m_s, p.safe_m_s);
 }
 
+// The progress line of one diameter at the coupled level (k of n).
+std::string coupled_point_line(const LimitsPoint& p, long k, size_t n, double seconds) {
+    return "  D = " + formatted("%.1f", p.diameter_m * 1e3) + " mm (" + std::to_string(k) + "/" + std::to_string(n) +
+           "): f1 " + significant(p.f1_hz, 5) + " Hz at the coupled level" +
+           (p.chuck_factor ? ", k " + formatted("%.3f", *p.chuck_factor) : "") + ", safe " +
+           formatted("%.2f", p.safe_m_s) + " m/s, " + formatted("%.1f", seconds) + " s";
+}
+
 // The coupled level's f1 against the equivalent's at every diameter, in
 // words; a warning where the difference exceeds the width of I-5's band.
 void compare_f1(LimitsResult& r) {
@@ -127,11 +140,20 @@ LimitsResult coupled_verdict(const Scene& case_scene, const std::optional<Respon
     const AxisymmetricEquivalent equivalent = axisymmetric_equivalent(scene);
     Scene harmonic = equivalent.scene;
     harmonic.model = "harmonic";
+    request.say("limits: segmented chucks: the spinning criteria and the band at the harmonic level of the "
+                "axisymmetric equivalent (the pads as full bands of their coverage)");
     LimitsResult r = verdict(harmonic, response, request);
     r.level = "coupled";
     const std::string spinning =
         "harmonic, axisymmetric equivalent (pads' coverage " + significant(100 * equivalent.coverage, 3) + " %)";
-    for (LimitsPoint& p : r.points) at_coupled_level(scene, spinning, p, r.n_solves);
+    request.say("limits: f1, k, I-5 and Koenig at the coupled level (the pads themselves) at the same " +
+                std::to_string(r.points.size()) + " diameters");
+    const std::unique_ptr<ModelLevel> level = make_model_level(scene);
+    for (LimitsPoint& p : r.points) {
+        Stopwatch lap;
+        at_coupled_level(scene, *level, spinning, p, r.n_solves);
+        request.say(coupled_point_line(p, &p - r.points.data() + 1, r.points.size(), lap.seconds()));
+    }
     conclude(r, request);
     compare_f1(r);
     r.assumptions.insert(r.assumptions.begin(),

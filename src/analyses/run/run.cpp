@@ -91,16 +91,21 @@ RunReport run_case(const RunOptions& options) {
 
 RunReport run_scene(Scene scene, const RunOptions& options) {
     scene.model = to_string(chosen_level(scene));  // "auto" resolved, for the summary and the derived scenes
+    const std::unique_ptr<ModelLevel> level = make_model_level(scene);
+    return run_scene(std::move(scene), options, *level);
+}
+
+RunReport run_scene(Scene scene, const RunOptions& options, ModelLevel& level) {
+    scene.model = to_string(chosen_level(scene));
     const Printer say{mpi_rank() == 0 && !options.quiet};
     Stopwatch total;
-    const std::unique_ptr<ModelLevel> level = make_model_level(scene);
-    RunReport report = level_report(std::move(scene), *level, say);  // 2-6
+    RunReport report = level_report(std::move(scene), level, say);  // 2-6
     require_verified_report(report, options.keep_going);
-    compare(report, *level, options, say);                             // 7
+    compare(report, level, options, say);                             // 7
     double peak = peak_memory_mb();
     MPI_Allreduce(&peak, &report.peak_memory_mb, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     report.timing_s.total = total.seconds();
-    if (options.write) options.write(report, *level, options);  // 8
+    if (options.write) options.write(report, level, options);  // 8
     return report;
 }
 

@@ -58,6 +58,10 @@ void print_scene_warnings(const Scene& scene);
 // Steps 2 onwards for a scene already in memory (options.case_file unused),
 // at the level models/choose.hpp picks (the report's scene names it).
 RunReport run_scene(Scene scene, const RunOptions& options);
+// The same with the caller's level (make_model_level of the scene), kept
+// across a sequence of like scenes so that it may reuse what it learned
+// (the coupled level its truncation N: models/coupled/coupled_level.hpp).
+RunReport run_scene(Scene scene, const RunOptions& options, ModelLevel& level);
 
 // Steps 2–7a of a scene derived from the case (the free span, the rigid
 // clamps): its modes and its beam comparison, quietly, nothing written, no

@@ -143,15 +143,25 @@ std::string step_line(const CoupledStep& step, size_t n_wanted, bool first, bool
            significant(step.seconds, 2) + " s" + (complete ? "" : " (INCOMPLETE)");
 }
 
-// 3-5. The coupled problem for N = N_s + 1, 2 N_s + 1, ...: solved, verified,
-// counted, until one more step moves no wanted frequency by kCoupledTolerance
-// and N reaches every wanted mode's dominant harmonic plus N_s. Each step is
-// recorded in `steps`; `local` grows with the wanted modes' harmonics.
-CoupledModes grow_harmonics(const CoupledProblem& p, std::optional<LocalHarmonics>& local,
+// The first N of the search: N_s + 1, or one step below where the level's
+// last search stopped (a like scene: the same coupling reach), so that the
+// first step that can stop the search is that N.
+int first_harmonic(int reach, const std::optional<int>& last) {
+    const int first = reach + 1;
+    if (!last || *last - reach < first || (*last - first) % reach != 0) return first;
+    return *last - reach;
+}
+
+// 3-5. The coupled problem for N = N_s + 1, 2 N_s + 1, ... (or from
+// first_n): solved, verified, counted, until one more step moves no wanted
+// frequency by kCoupledTolerance and N reaches every wanted mode's dominant
+// harmonic plus N_s. Each step is recorded in `steps`; `local` grows with
+// the wanted modes' harmonics.
+CoupledModes grow_harmonics(const CoupledProblem& p, int first_n, std::optional<LocalHarmonics>& local,
                             std::vector<CoupledStep>& steps, const Printer& say, Timing& timing) {
     const int reach = p.attached.step();
     std::optional<CoupledModes> previous, current;
-    for (int n_max = reach + 1;; n_max += reach) {
+    for (int n_max = first_n;; n_max += reach) {
         if (n_max > kMaxHarmonic)
             throw SolveError("the coupled harmonics have not converged to " + significant(kCoupledTolerance, 2) +
                              " by N = " + std::to_string(kMaxHarmonic) + " (" + convergence_text(steps) +
@@ -289,14 +299,17 @@ LevelModes CoupledLevel::solve(const Scene& scene, const Printer& say) {
         shift_invert_factor_package(PETSC_COMM_WORLD) + "; MUMPS LDL^T for the count)");
     const SolveRequest request = solve_request(scene);
     say(shift_scale_text(scene));
+    const std::optional<int> last_n = steps_.empty() ? std::nullopt : std::optional<int>(steps_.back().n_max);
     steps_.clear();
     // The coupled sets' factors have small fronts (the section is 2D): OpenBLAS's
     // second thread costs more than it saves (case 10, 2026-11-26, load ~1:
     // 16.8 s wall and 16.4 s CPU on one thread, 19.9 s and 32.1 s on two).
     const SingleThreadBlas one_thread;
     std::optional<LocalHarmonics> local = local_harmonics(attached, section);
-    const CoupledModes modes =
-        grow_harmonics({scene, section, materials, attached, request}, local, steps_, say, out.timing);
+    if (local && last_whole_) local->n_full = std::max(local->n_full, *last_whole_);
+    const CoupledModes modes = grow_harmonics({scene, section, materials, attached, request},
+                                              first_harmonic(attached.step(), last_n), local, steps_, say, out.timing);
+    if (local) last_whole_ = local->n_full;
     out.verification = modes.verification;
     out.info = coupled_model_info(scene, section, modes, steps_);
     out.assumptions.push_back("model level coupled: " + why);

@@ -50,6 +50,11 @@ struct CoupledStep {
     double zone_edge = 0;  // zone_edge_amplitude of the local harmonics (0 without)
 };
 
+// One CoupledLevel that solves a sequence of like scenes (the verdict's
+// rest-roll diameters: the same chucks, a different roll) starts each
+// search for N one step below where the last one stopped, with the whole
+// harmonics it had grown to: the step that may stop the search is then the
+// first one compared, and the criterion to stop is the same as from N_s + 1.
 class CoupledLevel : public ModelLevel {
 public:
     int steps() const override { return 7; }
@@ -62,6 +67,7 @@ private:
     std::optional<RevolvedMesh> revolved_;
     std::unique_ptr<ModelLevel> axisymmetric_;  // when nothing couples
     std::vector<CoupledStep> steps_;
+    std::optional<int> last_whole_;  // LocalHarmonics::n_full where the last search stopped
 };
 
 }  // namespace coremodal
