@@ -31,7 +31,8 @@ if [ ${#cases[@]} -eq 0 ]; then
     for f in cases/*.toml cases/hard/*.toml cases/validation/*.toml; do
         # A plain run of the solid level: not a study, limits, selection or traction case.
         grep -qE '^\[(study|selection|traction|winder)\]|^\[\[measurement\]\]' "$f" && continue
-        "$bin" check "$f" 2>/dev/null | grep -q "model level: solid" && cases+=("$f")
+        level=$("$bin" check "$f" 2>/dev/null || true)
+        [[ $level == *"model level: solid"* ]] && cases+=("$f")
     done
 fi
 
