@@ -250,6 +250,43 @@ Attempt single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double sigma, long belo
     return a;
 }
 
+// The single factor's modes with their count: its own inertia when the
+// verified modes prove it (single_count_proven), else a double LDL^T's of
+// A = K - sigma M; none, said through `progress`, when that disagrees.
+SinglePass counted_single_modes(const SingleLdlt& F, Mat A, Mat K, Mat M, Attempt& a, double sigma, long below,
+                                int n_report, const FactorPrecision& precision, const Progress& progress) {
+    const long found_below = count_below_shift(a, sigma);
+    const std::string margin = "no eigenvalue of K - sigma M within " + scientific(count_margin(F)) +
+                               " (10 x the factor's backward error " + scientific(F.factor_backward_error()) +
+                               " x ||K - sigma M||_1) of zero";
+    if (found_below == below && single_count_proven(F, M, sigma, a.lambdas, a.vectors)) {
+        progress("count from the single-precision factor's inertia, proven: " + margin +
+                 " (docs/theory/methods.md, \"A count from a single-precision factor\")");
+        return {with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "single",
+                               "the single-precision factor's inertia, proven: " + margin),
+                false, {}};
+    }
+    progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +
+             std::to_string(found_below) + " found) is not proven (" + margin +
+             " fails): counting with the double-precision LDL^T");
+    long double_below = 0;
+    try {
+        double_below = negative_eigenvalue_count(A, "K - sigma M at the predicted band edge");
+    } catch (const SolveError& e) {
+        progress(std::string(e.what()) + ": solving with a negative shift");
+        return {std::nullopt, false, {}};
+    }
+    if (double_below == found_below)
+        return {with_precision(verified_modes(K, M, a, n_report, sigma, double_below, found_below), precision,
+                               "single",
+                               "the double-precision factor's inertia: the single one's was not proven (" + margin +
+                                   " fails)"),
+                false, {}};
+    progress("found " + std::to_string(found_below) + " modes below sigma, where the double factor counts " +
+             std::to_string(double_below) + ": solving with a negative shift");
+    return {std::nullopt, false, {}};
+}
+
 // The one-factor path on the single-precision LDL^T (single_factor.hpp):
 // block Lanczos on its refined solves, the count from its inertia when the
 // modes found prove it (single_count_proven), else from a double LDL^T.
@@ -270,7 +307,7 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
     if (below < wanted || below > most_below_one_shift(wanted)) {
         progress("the shift missed: " + std::to_string(below) + " eigenvalues below sigma for " +
                  std::to_string(wanted) + " wanted; solving with a negative shift");
-        return {std::nullopt, false};
+        return {std::nullopt, false, {}};
     }
     Attempt a;
     try {
@@ -284,37 +321,9 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
     if (n_report < wanted || n_report > found_below) {
         progress("found " + std::to_string(found_below) + " modes below sigma for " + std::to_string(wanted) +
                  " wanted: solving with a negative shift");
-        return {std::nullopt, false};
+        return {std::nullopt, false, {}};
     }
-    const std::string margin = "no eigenvalue of K - sigma M within " + scientific(count_margin(*F)) +
-                               " (10 x the factor's backward error " + scientific(F->factor_backward_error()) +
-                               " x ||K - sigma M||_1) of zero";
-    if (found_below == below && single_count_proven(*F, M, sigma, a.lambdas, a.vectors)) {
-        progress("count from the single-precision factor's inertia, proven: " + margin +
-                 " (docs/theory/methods.md, \"A count from a single-precision factor\")");
-        return {with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "single",
-                               "the single-precision factor's inertia, proven: " + margin),
-                false};
-    }
-    progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +
-             std::to_string(found_below) + " found) is not proven (" + margin +
-             " fails): counting with the double-precision LDL^T");
-    long double_below = 0;
-    try {
-        double_below = negative_eigenvalue_count(A, "K - sigma M at the predicted band edge");
-    } catch (const SolveError& e) {
-        progress(std::string(e.what()) + ": solving with a negative shift");
-        return {std::nullopt, false};
-    }
-    if (double_below == found_below)
-        return {with_precision(verified_modes(K, M, a, n_report, sigma, double_below, found_below), precision,
-                               "single",
-                               "the double-precision factor's inertia: the single one's was not proven (" + margin +
-                                   " fails)"),
-                false};
-    progress("found " + std::to_string(found_below) + " modes below sigma, where the double factor counts " +
-             std::to_string(double_below) + ": solving with a negative shift");
-    return {std::nullopt, false};
+    return counted_single_modes(*F, A, K, M, a, sigma, below, n_report, precision, progress);
 }
 
 // The one-factor path with block Lanczos on MUMPS's multi-right-hand-side
