@@ -29,7 +29,7 @@ int run_rotating_case(const FolderCaseOptions& o) {
     // the others in co-rotating coordinates (and refuses a chuck not expanded here, before any work).
     // The coupled-harmonic level has no spinning terms: where "auto" would pick it, the solid spins.
     // Asked for by name, require_spinning_level says why not.
-    scene.model = to_string(chosen_spinning_level(scene));
+    scene.model = chosen_spinning_level(scene);
     require_spinning_level(scene);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;

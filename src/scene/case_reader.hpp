@@ -42,7 +42,6 @@ inline constexpr int kAroundMultiple = 4;
 // Long values are cut in messages: the message must point, not reproduce.
 inline constexpr std::size_t kMaxShownChars = 60;
 
-inline const std::vector<std::string_view> kModelLevels = {"solid", "harmonic", "coupled", "auto", "beam"};
 inline const std::vector<std::string_view> kSupportTypes = {"free", "clamped", "chucks"};
 inline const std::vector<std::string_view> kInterfaceKinds = {"spring", "bonded"};
 inline const std::vector<std::string_view> kContactKinds = {"uniform", "one-sided"};
