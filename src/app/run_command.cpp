@@ -82,7 +82,10 @@ Command add_run_command(CLI::App& app) {
                   "above 1e-6, an incomplete count, a mass that does not match), marked as not verified; "
                   "otherwise such a run exits non-zero and writes nothing");
     cmd->footer("PETSc/SLEPc options (e.g. -eps_view, -st_pc_factor_mat_solver_type mumps) may be added; "
-                "they override coremodal's solver defaults.");
+                "they override coremodal's solver defaults.\n"
+                "-factor_precision single|double|auto: the 3D solid's one LDL^T factor at the predicted band edge "
+                "in single precision (solves refined in double, count proven or taken in double) or double; auto "
+                "(default) is double. The run says which it used and why (docs/reference/commands.md).");
     return {cmd, [line] { return run_command(*line); }, true};
 }
 

@@ -206,13 +206,20 @@ std::optional<SolvedModes> solve_at_edge_one_vector(Mat K, Mat M, const SolveReq
 }
 
 // What the single-precision pass gave: the modes, proven complete; or
-// whether the double factor should be tried (the single one failed, its
-// refinement stalled, or its count could not be proven), said through
-// `progress`.
+// whether the double factor should be tried (the single one failed or its
+// refinement stalled: `why_not` says which), said through `progress`.
 struct SinglePass {
     std::optional<SolvedModes> modes;
     bool try_double = true;
+    std::string why_not;
 };
+
+// The modes with the precision that factored K - sigma M and where their
+// count came from, for the run's summary, console and report.
+SolvedModes with_precision(SolvedModes s, const FactorPrecision& p, const std::string& used, const std::string& count) {
+    s.verification.factor_precision = FactorPrecisionUsed{used, p.asked, p.why, count};
+    return s;
+}
 
 std::string scientific(double x) {
     std::ostringstream s;
@@ -223,24 +230,17 @@ std::string scientific(double x) {
 
 // Block Lanczos on the single factor's solves refined to the pass error,
 // the pairs then cleaned in double (single_refinement.hpp) and the work said
-// through `progress`; none when a refinement stalled (the caller takes the
-// double factor).
-std::optional<Attempt> single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double sigma, long below,
-                                           const SolveRequest& request, const Progress& progress) {
-    Attempt a;
-    int ritz_steps = 0;
+// through `progress`; RefinementStalled when a refinement stalled (the
+// caller takes the double factor).
+Attempt single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double sigma, long below, const SolveRequest& request,
+                            const Progress& progress) {
     const double pass_error = pass_backward_error();
-    try {
-        SolveRequest loose = request;
-        loose.tolerance = std::max(request.tolerance, single_lanczos_tolerance());
-        a = block_lanczos_attempt(
-            [&](int cols, const double* in, double* out) { F.solve(cols, in, out, pass_error); }, M, sigma,
-            int(below), loose, progress);
-        ritz_steps = refine_pairs_in_double(F, K, M, a.lambdas, a.vectors);
-    } catch (const RefinementStalled& e) {
-        progress(std::string(e.what()) + ": falling back to the double-precision factor");
-        return std::nullopt;
-    }
+    SolveRequest loose = request;
+    loose.tolerance = std::max(request.tolerance, single_lanczos_tolerance());
+    Attempt a = block_lanczos_attempt(
+        [&](int cols, const double* in, double* out) { F.solve(cols, in, out, pass_error); }, M, sigma, int(below),
+        loose, progress);
+    const int ritz_steps = refine_pairs_in_double(F, K, M, a.lambdas, a.vectors);
     progress("single-precision factor: " + std::to_string(F.solves()) + " block solves refined in double to a "
              "backward error below " + scientific(pass_error) + " (at most " + std::to_string(F.most_steps()) +
              " solve(s) each), " + std::to_string(ritz_steps) +
@@ -254,14 +254,14 @@ std::optional<Attempt> single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double s
 // block Lanczos on its refined solves, the count from its inertia when the
 // modes found prove it (single_count_proven), else from a double LDL^T.
 SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int wanted, double sigma,
-                                const Progress& progress) {
+                                const FactorPrecision& precision, const Progress& progress) {
     const PetscMatrix A = shifted(K, M, sigma);
     std::optional<SingleLdlt> F;
     try {
         F.emplace(A);
     } catch (const SolveError& e) {
         progress(std::string(e.what()) + ": the double-precision factor instead");
-        return {};
+        return {std::nullopt, true, e.what()};
     }
     if (F->out_of_core())
         progress("the single-precision factor is kept on disk (MUMPS out of core: its analysis estimated " +
@@ -272,9 +272,13 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
                  std::to_string(wanted) + " wanted; solving with a negative shift");
         return {std::nullopt, false};
     }
-    std::optional<Attempt> pairs = single_factor_pairs(*F, K, M, sigma, below, request, progress);
-    if (!pairs) return {};
-    Attempt& a = *pairs;
+    Attempt a;
+    try {
+        a = single_factor_pairs(*F, K, M, sigma, below, request, progress);
+    } catch (const RefinementStalled& e) {
+        progress(std::string(e.what()) + ": falling back to the double-precision factor");
+        return {std::nullopt, true, e.what()};
+    }
     const long found_below = count_below_shift(a, sigma);
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (n_report < wanted || n_report > found_below) {
@@ -288,7 +292,9 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
     if (found_below == below && single_count_proven(*F, M, sigma, a.lambdas, a.vectors)) {
         progress("count from the single-precision factor's inertia, proven: " + margin +
                  " (docs/theory/methods.md, \"A count from a single-precision factor\")");
-        return {verified_modes(K, M, a, n_report, sigma, below, found_below), false};
+        return {with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "single",
+                               "the single-precision factor's inertia, proven: " + margin),
+                false};
     }
     progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +
              std::to_string(found_below) + " found) is not proven (" + margin +
@@ -300,7 +306,12 @@ SinglePass solve_at_edge_single(Mat K, Mat M, const SolveRequest& request, int w
         progress(std::string(e.what()) + ": solving with a negative shift");
         return {std::nullopt, false};
     }
-    if (double_below == found_below) return {verified_modes(K, M, a, n_report, sigma, double_below, found_below), false};
+    if (double_below == found_below)
+        return {with_precision(verified_modes(K, M, a, n_report, sigma, double_below, found_below), precision,
+                               "single",
+                               "the double-precision factor's inertia: the single one's was not proven (" + margin +
+                                   " fails)"),
+                false};
     progress("found " + std::to_string(found_below) + " modes below sigma, where the double factor counts " +
              std::to_string(double_below) + ": solving with a negative shift");
     return {std::nullopt, false};
@@ -322,10 +333,12 @@ std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequ
     progress("factorising K - sigma M (MUMPS LDL^T, " + precision.why + ") at the predicted band edge, " +
              shift_text(sigma) + ": one factor for the solve (block Lanczos) and the count");
     const Heartbeat beat("factorising K - sigma M and solving", progress);
+    std::string fell_back;
     if (precision.single) {
-        SinglePass p = solve_at_edge_single(K, M, request, wanted, sigma, progress);
+        SinglePass p = solve_at_edge_single(K, M, request, wanted, sigma, precision, progress);
         if (p.modes || !p.try_double) return std::move(p.modes);
         progress("factorising K - sigma M in double precision (MUMPS LDL^T) at the predicted band edge");
+        fell_back = "; fell back to double: " + p.why_not;
     }
     PetscMatrix F;
     try {
@@ -346,7 +359,8 @@ std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequ
     const long found_below = count_below_shift(a, sigma);
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (found_below == below && n_report >= wanted && n_report <= below)
-        return verified_modes(K, M, a, n_report, sigma, below, found_below);
+        return with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "double",
+                              "the double-precision factor's inertia" + fell_back);
     progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
              std::to_string(below) + ": solving with a negative shift");
     return std::nullopt;

@@ -58,17 +58,17 @@ FactorPrecision factor_precision_choice(MPI_Comm comm) {
     const std::string choice = text;
     if (choice != "auto" && choice != "single" && choice != "double")
         throw InputError("-factor_precision " + choice + ": expected single, double or auto");
-    if (choice == "double") return {false, "double precision, as -factor_precision double asks"};
+    if (choice == "double") return {false, choice, "double precision, as -factor_precision double asks"};
     if (choice == "auto")
-        return {false,
+        return {false, choice,
                 "double precision: the single-precision factor measured no faster on case 03 (its refined "
                 "passes and Rayleigh-Ritz cleanup read its factor 32 times against the double's 14; "
                 "bench/results/log.md), -factor_precision single to use it"};
     if (mpi_size(comm) > 1)
-        return {false,
+        return {false, choice,
                 "double precision: the single-precision factor runs in one process only "
                 "(-factor_precision single ignored)"};
-    return {true, "single precision refined in double, as -factor_precision single asks"};
+    return {true, choice, "single precision refined in double, as -factor_precision single asks"};
 }
 
 SingleLdlt::SingleLdlt(Mat A) : mumps_(std::make_unique<Mumps>()), A_(A) {

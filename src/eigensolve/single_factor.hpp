@@ -38,6 +38,7 @@ namespace coremodal {
 // SMUMPS); in parallel the double factor stays.
 struct FactorPrecision {
     bool single = false;
+    std::string asked = "auto";  // what -factor_precision said (auto when not given)
     std::string why;
 };
 FactorPrecision factor_precision_choice(MPI_Comm comm);

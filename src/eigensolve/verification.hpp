@@ -4,7 +4,22 @@
 // modes/ModeSet and the model levels, checked by modes/verification_check.
 #pragma once
 
+#include <optional>
+#include <string>
+
 namespace coremodal {
+
+// Which precision factored K - sigma M where the solid level's one factor at
+// the predicted band edge gave the modes and their count (issue 39;
+// docs/theory/methods.md, "A count from a single-precision factor"), and
+// why: what the run's summary, console and report say. Absent on every
+// other path (no fake value).
+struct FactorPrecisionUsed {
+    std::string used;   // "single" or "double"
+    std::string asked;  // -factor_precision: "auto", "single" or "double"
+    std::string why;
+    std::string count;  // where the count came from, with the single factor's margin
+};
 
 struct Verification {
     double max_relative_residual = 0;
@@ -17,6 +32,7 @@ struct Verification {
     // is proven by two counts, N(lower edge) = N(upper edge), without a solve).
     long eigenvalues_below_band = 0;
     bool complete = false;                // the two counts agree
+    std::optional<FactorPrecisionUsed> factor_precision;
 
     long modes_found_below_shift() const { return modes_below_shift - eigenvalues_below_band; }
 };

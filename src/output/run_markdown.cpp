@@ -105,6 +105,9 @@ void model_section(std::ostream& out, const RunReport& r) {
     }
     out << "- largest relative residual " << formatted("%.1e", v.max_relative_residual) << ", largest |XᵀMX − I| "
         << formatted("%.1e", v.max_orthonormality_error) << "\n";
+    if (const auto& p = v.factor_precision)
+        out << "- factor of K − σM: **" << p->used << " precision** (`-factor_precision " << p->asked << "`: " << p->why
+            << "); count: " << p->count << "\n";
     const AnalysisSpec& a = r.scene.analysis;
     if (a.f_max_hz && r.modes.modes.empty())
         out << "- **no modes between " << significant(a.f_min_hz.value_or(0.0)) << " and " << significant(*a.f_max_hz)

@@ -140,7 +140,7 @@ Json speeds_json(const RollSpeeds& v) {
 // all it has, and says so here and in the warnings.
 Json verification_json(const RunReport& r) {
     const Verification& v = r.modes.verification;
-    return Json{{"max_relative_residual", v.max_relative_residual},
+    Json t{{"max_relative_residual", v.max_relative_residual},
                 {"max_orthonormality_error", v.max_orthonormality_error},
                 {"check_shift", v.check_shift},
                 {"negative_pivots_at_shift", v.negative_pivots_at_shift},
@@ -149,6 +149,10 @@ Json verification_json(const RunReport& r) {
                 {"complete", v.complete},
                 {"modes_requested", value_or_null(!r.scene.analysis.f_max_hz, r.scene.analysis.n_modes)},
                 {"modes_reported", static_cast<int64_t>(r.modes.modes.size())}};
+    // Only where the solid level's one factor at the predicted edge ran (issue 39).
+    if (const auto& p = v.factor_precision)
+        t["factor_precision"] = Json{{"used", p->used}, {"asked", p->asked}, {"why", p->why}, {"count", p->count}};
+    return t;
 }
 
 // The beam comparison; the FE values are null when no bending mode was found.
@@ -324,6 +328,9 @@ void print_verification(std::ostream& out, const RunReport& r) {
                       counted.c_str(), level_traits(r.model.level).count_owners,
                       v.complete ? "complete" : "INCOMPLETE");
     out << line;
+    if (const auto& p = v.factor_precision)
+        out << "factor of K - sigma M: " << p->used << " precision (-factor_precision " << p->asked << ": " << p->why
+            << "); count: " << p->count << "\n";
     if (!r.model.harmonics.empty()) out << "harmonics: " << r.model.harmonics << "\n";
 }
 

@@ -173,6 +173,10 @@ TEST_CASE("A good tiny case writes the whole results folder", "[app][cli]") {
     }
     // 12 modes: 6 rigid + 6 elastic.
     CHECK(elastic_frequencies(dir.path / "results" / "modes.csv").size() == 6);
+    // A free body of few unknowns: no one factor at a predicted edge, so no
+    // factor precision to report (absent, not a made-up value; issue 39).
+    CHECK_FALSE(coremodal::json_at(slurp(dir.path / "results" / "summary.json"), "verification.factor_precision")
+                    .has_value());
     CHECK(leftovers(dir) == std::vector<std::string>{"results"});
 }
 
@@ -319,6 +323,25 @@ TEST_CASE("Case 03's coarse solid on the single factor gives the double factor's
     const std::string summary = slurp(dir.path / "single" / "summary.json");
     CHECK(coremodal::json_number(summary, "verification.max_relative_residual").value_or(1) <= 1e-10);
     CHECK(coremodal::json_number(summary, "verification.max_orthonormality_error").value_or(1) <= 1e-12);
+    // The run says which precision it used, what was asked and where its
+    // count came from: summary.json, the console after the verification
+    // line, report.md (issue 39).
+    for (const char* precision : {"single", "double"}) {
+        INFO(precision);
+        const std::string s = slurp(dir.path / precision / "summary.json");
+        CHECK(coremodal::json_string(s, "verification.factor_precision.used") == precision);
+        CHECK(coremodal::json_string(s, "verification.factor_precision.asked") == precision);
+        CHECK(coremodal::json_string(s, "verification.factor_precision.why").value_or("").find(
+                  std::string("as -factor_precision ") + precision + " asks") != std::string::npos);
+        const std::string report = slurp(dir.path / precision / "report.md");
+        CHECK(report.find(std::string("- factor of K − σM: **") + precision + " precision**") != std::string::npos);
+    }
+    CHECK_THAT(coremodal::json_string(summary, "verification.factor_precision.count").value_or(""),
+               Catch::StartsWith("the single-precision factor's inertia, proven: no eigenvalue of K - sigma M within"));
+    CHECK(coremodal::json_string(slurp(dir.path / "double" / "summary.json"), "verification.factor_precision.count") ==
+          "the double-precision factor's inertia");
+    CHECK(sgl.out.find("factor of K - sigma M: single precision (-factor_precision single: ") != std::string::npos);
+    CHECK(dbl.out.find("factor of K - sigma M: double precision (-factor_precision double: ") != std::string::npos);
 }
 
 TEST_CASE("A factor larger than the memory allowed goes to disk on its own and gives the frequencies of one in memory",

@@ -213,11 +213,23 @@ TEST_CASE("A shift beside an eigenvalue falls back to the double factor", "[eige
             Said said;
             const SolvedModes s = solve_modes(ops, request, said.printer());
             COREMODAL_PETSC(PetscOptionsClearValue(nullptr, "-factor_precision"));
-            if (std::string(precision) == "single")
+            // The run's record (issue 39): what was asked, and that the count
+            // came from a double factor, the single one's fallback said.
+            REQUIRE(s.verification.factor_precision.has_value());
+            const FactorPrecisionUsed& used = *s.verification.factor_precision;
+            CHECK(used.asked == precision);
+            if (std::string(precision) == "single") {
                 CHECK((said.any("falling back to the double-precision factor") ||
                        said.any("counting with the double-precision LDL^T")));
-            else
+                const bool fell_back = used.used == "double";
+                CHECK((fell_back ? used.count.find("; fell back to double: ") != std::string::npos
+                                 : used.count.find("the single one's was not proven") != std::string::npos));
+                CHECK_THAT(used.count, Catch::StartsWith("the double-precision factor's inertia"));
+            } else {
                 CHECK(said.any("as -factor_precision double asks"));
+                CHECK(used.used == "double");
+                CHECK(used.count == "the double-precision factor's inertia");
+            }
             REQUIRE(int(s.eigenvalues.size()) == kModes);
             for (int j = 0; j < kModes; ++j) CHECK(s.eigenvalues[j] == Approx(exact[j]).epsilon(1e-9));
             CHECK(s.verification.complete);
@@ -250,6 +262,10 @@ TEST_CASE("The single factor solves and counts a membrane mid-gap", "[eigensolve
     // Rayleigh-Ritz in double (single_refinement.hpp).
     CHECK(said.any("Rayleigh-Ritz step(s) with the double K and M"));
     CHECK(said.any("count from the single-precision factor's inertia, proven"));
+    REQUIRE(s.verification.factor_precision.has_value());
+    CHECK(s.verification.factor_precision->used == "single");
+    CHECK_THAT(s.verification.factor_precision->count,
+               Catch::StartsWith("the single-precision factor's inertia, proven: no eigenvalue"));
     REQUIRE(int(s.eigenvalues.size()) == kModes);
     for (int j = 0; j < kModes; ++j) CHECK(s.eigenvalues[j] == Approx(exact[j]).epsilon(1e-9));
     CHECK(s.verification.complete);
