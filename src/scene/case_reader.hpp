@@ -101,6 +101,8 @@ public:
     std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
     // [damping], [excitation] and [response] of the same document (checked by read too).
     std::optional<ResponseSetup> response(const toml::table& root, const Scene& scene) const;
+    // [damping] alone (checked by read too): with [response] or [rotation] (campbell's damped modes).
+    std::optional<DampingSpec> damping(const toml::table& root) const;
     // [limits] of the same document (checked by read too; case_reader_limits.cpp).
     std::optional<LimitsSpec> limits(const toml::table& root, const Scene& scene) const;
     // [traction] of the same document (checked by read too). `assumptions`
