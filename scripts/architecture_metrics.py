@@ -1,16 +1,21 @@
 #!/usr/bin/env python3
 """Measures what docs/architecture.md claims about src/ (issue 34).
 
-    python3 scripts/architecture_metrics.py [ROOT] [--max-level-comparisons N] [--max-circles N]
-                                            [--max-long-files N] [--max-long-functions N]
+    python3 scripts/architecture_metrics.py [ROOT] [--max-level-comparisons N] [--max-level-switches N]
+                                            [--max-circles N] [--max-long-files N] [--max-long-functions N]
 
 Prints three things about ROOT/src (ROOT: the repository, default the one
 this script is in):
 
-1. Comparisons of model-level names outside the one place that chooses a
-   level (src/models/choose.cpp): a string literal "beam", "harmonic",
-   "coupled", "solid" or "solid3d" on either side of == or !=, and "solid3d"
-   anywhere; comments do not count. file:line for each.
+1. Branches on the model level outside the one place that chooses a level
+   (src/models/choose.cpp); comments do not count, file:line for each.
+   Comparisons: a string literal "beam", "harmonic", "coupled", "solid" or
+   "solid3d", or a level of the enum (ModelChoice::beam, ...; not
+   ModelChoice::automatic, which is the user's "auto", not a level), on
+   either side of == or !=, and "solid3d" anywhere. Switches: each
+   `case ModelChoice::<level>:` label, counted apart (--max-level-switches):
+   per-level code an analysis still dispatches to itself, where a level
+   object would provide it (issue 34).
 2. Include circles between src/ folders: the graph of top-level folders
    (src/<folder>/...) with an edge A -> B for every `#include "B/..."` in a
    file of A; every strongly connected component of more than one folder,
@@ -46,7 +51,10 @@ LONG_FILE = 500
 LONG_FUNCTION = 60
 
 _LEVEL = "|".join(LEVEL_NAMES)
-LEVEL_COMPARISON = re.compile(r'(?:==|!=)\s*"(?:%s)"|"(?:%s)"\s*(?:==|!=)|"solid3d"' % (_LEVEL, _LEVEL))
+_ENUM_LEVEL = r"ModelChoice::(?:beam|harmonic|coupled|solid)\b"
+LEVEL_COMPARISON = re.compile(r'(?:==|!=)\s*"(?:%s)"|"(?:%s)"\s*(?:==|!=)|"solid3d"|(?:==|!=)\s*%s|%s\s*(?:==|!=)' %
+                              (_LEVEL, _LEVEL, _ENUM_LEVEL, _ENUM_LEVEL))
+LEVEL_SWITCH = re.compile(r"\bcase\s+%s\s*:" % _ENUM_LEVEL)
 INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"/]+)/[^"]*"')
 QUALIFIERS = re.compile(
     r"\)\s*(?:(?:const|noexcept(?:\s*\([^()]*\))?|override|final|mutable|&&|&|volatile)\s*)*"
@@ -101,7 +109,7 @@ def source_files(root):
     return sorted(p for p in (root / "src").rglob("*") if p.suffix in (".cpp", ".hpp") and p.is_file())
 
 
-def level_comparisons(root, files):
+def level_comparisons(root, files, pattern=LEVEL_COMPARISON):
     found = []
     for path in files:
         rel = path.relative_to(root).as_posix()
@@ -109,7 +117,7 @@ def level_comparisons(root, files):
             continue
         code = blank(path.read_text(encoding="utf-8", errors="replace"), keep_strings=True)
         for number, line in enumerate(code.splitlines(), 1):
-            count = len(LEVEL_COMPARISON.findall(line))
+            count = len(pattern.findall(line))
             if count:
                 found.append((rel, number, count, line.strip()))
     return found
@@ -240,6 +248,8 @@ def main(argv=None):
     parser.add_argument("root", nargs="?", default=str(Path(__file__).resolve().parent.parent))
     parser.add_argument("--max-level-comparisons", type=int, default=None,
                         help="fail when there are more comparisons of level names than this")
+    parser.add_argument("--max-level-switches", type=int, default=None,
+                        help="fail when more case labels switch on the level than this")
     parser.add_argument("--max-circles", type=int, default=None,
                         help="fail when more include edges between folders lie on a circle than this")
     parser.add_argument("--max-long-files", type=int, default=None,
@@ -259,6 +269,13 @@ def main(argv=None):
           (CHOOSER, n_comparisons, len({f for f, _, _, _ in comparisons})))
     for f, line, count, text in comparisons:
         print("   %s:%d: %s%s" % (f, line, "(x%d) " % count if count > 1 else "", text[:110]))
+
+    switches = level_comparisons(root, files, LEVEL_SWITCH)
+    n_switches = sum(count for _, _, count, _ in switches)
+    print("   level switches (case labels) outside %s: %d in %d files" %
+          (CHOOSER, n_switches, len({f for f, _, _, _ in switches})))
+    for f, line, count, text in switches:
+        print("   %s:%d: %s" % (f, line, text[:110]))
 
     graph = include_graph(root, files)
     components = strongly_connected(graph)
@@ -291,6 +308,7 @@ def main(argv=None):
 
     failed = False
     for name, count, limit in (("level-name comparisons", n_comparisons, args.max_level_comparisons),
+                               ("level switch labels", n_switches, args.max_level_switches),
                                ("include edges on circles", len(circle_edges), args.max_circles),
                                ("files over %d lines" % LONG_FILE, len(long_files), args.max_long_files),
                                ("functions over %d lines" % LONG_FUNCTION, len(long_functions),

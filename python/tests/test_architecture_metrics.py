@@ -83,3 +83,27 @@ def test_the_ratchet_fails_only_above_its_maximum(tmp_path, capsys):
     assert metrics.main([str(root), "--max-level-comparisons", "3"]) == 1
     assert metrics.main([str(root), "--max-circles", "3"]) == 1
     assert "remove them rather than raise it" in capsys.readouterr().err
+
+
+def test_the_enum_levels_count_as_comparisons_and_switches(tmp_path):
+    # Comparing with an enum level is a branch on the level like comparing
+    # with its word; "automatic" is the user's "auto", not a level.
+    src = tmp_path / "src" / "analyses"
+    src.mkdir(parents=True)
+    (src / "a.cpp").write_text("bool a(ModelChoice l) { return l == ModelChoice::coupled; }\n"
+                               "bool b(ModelChoice l) { return ModelChoice::solid != l; }\n"
+                               "bool c(ModelChoice l) { return l == ModelChoice::automatic; }\n"
+                               "int d(ModelChoice l) {\n"
+                               "    switch (l) {\n"
+                               "        case ModelChoice::beam: return 1;\n"
+                               "        case ModelChoice::harmonic:\n"
+                               "        case ModelChoice::automatic: return 2;\n"
+                               "        default: return 0;\n"
+                               "    }\n"
+                               "}\n")
+    files = metrics.source_files(tmp_path)
+    assert [(line, n) for _, line, n, _ in metrics.level_comparisons(tmp_path, files)] == [(1, 1), (2, 1)]
+    switches = metrics.level_comparisons(tmp_path, files, metrics.LEVEL_SWITCH)
+    assert [(line, n) for _, line, n, _ in switches] == [(6, 1), (7, 1)]
+    assert metrics.main([str(tmp_path), "--max-level-switches", "1"]) == 1
+    assert metrics.main([str(tmp_path), "--max-level-switches", "2", "--max-level-comparisons", "2"]) == 0

@@ -19,7 +19,7 @@ namespace coremodal {
 
 int run_rotating_case(const FolderCaseOptions& o) {
     require_one_process(o, "a Campbell sweep");
-    RotatingCase rotating = parse_rotating_case(o.case_file);
+    ResponseCase rotating = parse_response_case(o.case_file);  // [damping] too (damped modes)
     Scene& scene = rotating.scene;
     apply_level_options(o, scene);
     if (!rotating.rotation)
@@ -29,17 +29,23 @@ int run_rotating_case(const FolderCaseOptions& o) {
     // the others in co-rotating coordinates (and refuses a chuck not expanded here, before any work).
     // The coupled-harmonic level has no spinning terms: where "auto" would pick it, the solid spins.
     // Asked for by name, require_spinning_level says why not.
-    scene.model = to_string(chosen_spinning_level(scene));
+    scene.model = chosen_spinning_level(scene);
     require_spinning_level(scene);
+    const DampingSpec* damping = rotating.damping ? &*rotating.damping : nullptr;
+    if (damping) require_campbell_damping(scene, *damping);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;
-    const CampbellResult result = run_campbell(scene, rotation);
+    const CampbellResult result = run_campbell(scene, rotation, {}, damping);
     // Every mode at every speed: its residual of the quadratic problem (the
     // counts are checked where each speed is solved).
     std::vector<std::string> failures;
     if (!(result.max_relative_residual <= kMaxVerifiedResidual))
         failures.push_back("the largest relative residual over the speeds is " +
                            std::to_string(result.max_relative_residual) + ", not a finite number at most " +
+                           std::to_string(kMaxVerifiedResidual));
+    if (result.damped && !(result.max_damped_residual <= kMaxVerifiedResidual))
+        failures.push_back("the largest relative residual of a damped mode on the full damped set is " +
+                           std::to_string(result.max_damped_residual) + ", not a finite number at most " +
                            std::to_string(kMaxVerifiedResidual));
     print_warnings(require_verified("the Campbell diagram of " + scene.name, failures, o.keep_going));
     return write_folder_case(

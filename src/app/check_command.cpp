@@ -32,8 +32,8 @@ struct CheckOptions {
 
 // The model level `run` would use, and why (models/choose.hpp).
 std::string model_choice(const Scene& scene, const KeySources& sources) {
-    const std::string given = sources.on_command_line.contains("model") ? "--model " + scene.model
-                              : sources.in_file_has("model")            ? "model = \"" + scene.model + "\" in the file"
+    const std::string given = sources.on_command_line.contains("model") ? "--model " + to_string(scene.model)
+                              : sources.in_file_has("model")            ? "model = \"" + to_string(scene.model) + "\" in the file"
                                                                         : "the default: the file has no model key";
     return level_choice_text(scene, given);
 }
@@ -98,7 +98,7 @@ int check_case(const CheckOptions& options) {
         sources.on_command_line.insert("mesh.level");
     }
     if (!options.model.empty()) {
-        scene.model = options.model;
+        scene.model = model_option(options.model);
         sources.on_command_line.insert("model");
     }
     if (level_traits(chosen_level(scene)).axisymmetric_only) require_axisymmetric(scene);
@@ -128,7 +128,7 @@ Command add_check_command(CLI::App& app) {
     cmd->add_option("case", options->case_file, "case file (TOML)")->required();
     cmd->add_option("-m,--mesh", options->mesh_level, "mesh level, as for run: coarse, default, fine, very_fine");
     cmd->add_option("--model", options->model, "model level, as for run: solid, harmonic, coupled, auto, beam")
-        ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
+        ->check(CLI::IsMember(model_words()));
     return {cmd, [options] { return check_case(*options); }, false};
 }
 

@@ -3,6 +3,8 @@
 // starts PETSc/SLEPc only for commands that need it.
 #pragma once
 
+#include "scene/model_choice.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace coremodal {
 
@@ -20,6 +23,11 @@ struct Command {
 };
 
 // Options several commands share, said once.
+// The words --model takes: scene/model_choice's, the case file's.
+inline std::vector<std::string> model_words() {
+    const std::vector<std::string_view>& words = model_choice_words();
+    return {words.begin(), words.end()};
+}
 // --model: the model level, overriding the case's model key (`what`: "" for
 // a run, " of every point" for a sweep).
 inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const std::string& what = "") {
@@ -28,7 +36,7 @@ inline CLI::Option* add_model_option(CLI::App* cmd, std::string& model, const st
                            "(axisymmetric scenes, one 2D problem per wave number n), coupled (harmonics coupled by "
                            "segmented chucks, a chuck not expanded or the web, one 2D-cost problem), auto (harmonic "
                            "where the scene allows it, else coupled where it allows that, else solid), beam")
-        ->check(CLI::IsMember({"solid", "harmonic", "coupled", "auto", "beam"}));
+        ->check(CLI::IsMember(model_words()));
 }
 // -m/--mesh: the mesh level of a generated mesh, overriding the case's [mesh].
 inline CLI::Option* add_mesh_option(CLI::App* cmd, std::string& mesh) {

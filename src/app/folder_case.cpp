@@ -28,7 +28,7 @@ void require_one_process(const FolderCaseOptions& o, const std::string& command)
 }
 
 void apply_level_options(const FolderCaseOptions& o, Scene& scene) {
-    if (!o.model.empty()) scene.model = o.model;
+    if (!o.model.empty()) scene.model = model_option(o.model);
     if (!o.mesh.empty()) apply_mesh_level(scene, o.mesh);
 }
 

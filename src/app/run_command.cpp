@@ -33,7 +33,7 @@ int run_command(RunLine& line) {
     RunOptions& options = line.options;
     options.plots = !line.no_plots;
     if (!line.mesh_level.empty()) options.mesh_level = line.mesh_level;
-    if (!line.model.empty()) options.model = line.model;
+    if (!line.model.empty()) options.model = model_option(line.model);
     const auto output_of = [&](const std::string& case_name) { return results_path(line.output, case_name, ""); };
     // A forced response (docs/how-to/response.md) before a spinning scene's modes
     // (docs/theory/rotation.md): [response] includes the rotation.

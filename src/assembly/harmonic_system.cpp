@@ -261,6 +261,21 @@ HarmonicSystem assemble_harmonic(const Scene& scene, const SectionMesh& mesh,
     return system;
 }
 
+PetscMatrix assemble_harmonic_weighted_stiffness(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                                 const HarmonicDofs& dofs, int n, const std::vector<double>& weight,
+                                                 MPI_Comm comm) {
+    CooEntries entries;
+    if (mpi_rank(comm) == 0)
+        for (int c = 0; c < mesh.n_cells(); ++c) {
+            const double w = weight.at(mesh.cell_part[c]);
+            if (w == 0.0) continue;
+            const PartMaterial& mat = materials.at(mesh.cell_part[c]);
+            const HarmonicMatrices e = harmonic_quad8_matrices(cell_coords(mesh, c), mat.C_cylindrical, mat.density, n);
+            entries.add(Term::stiffness, component_dofs(dofs, mesh.cells[c].data(), 8), w * e.K);
+        }
+    return coo_matrix(comm, dofs.n_dofs, entries, entries.values_of(Term::stiffness));
+}
+
 PetscMatrix assemble_harmonic_spin_coupling(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                             const HarmonicDofs& dofs, int n, MPI_Comm comm) {
     CooEntries entries;

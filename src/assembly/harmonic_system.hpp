@@ -43,6 +43,13 @@ double assemble_harmonic_cells(const SectionMesh& mesh, const std::vector<PartMa
                                const HarmonicDofs& dofs, int n, const std::function<bool(int)>& take,
                                const TermInsert& insert);
 
+// sum over the section cells of weight[part] K_cell (no supports), weight
+// indexed as mesh.part_names: structural damping's H = sum_p eta_p K_p
+// (effects/damping.hpp) at the harmonic level. Symmetric.
+PetscMatrix assemble_harmonic_weighted_stiffness(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
+                                                 const HarmonicDofs& dofs, int n, const std::vector<double>& weight,
+                                                 MPI_Comm comm = PETSC_COMM_WORLD);
+
 // Gamma_n of every section cell (assemble_harmonic_spin_coupling's terms)
 // handed to `insert` as Term::gyroscopic.
 void assemble_harmonic_spin_terms(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,

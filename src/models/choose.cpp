@@ -65,7 +65,7 @@ void require_axisymmetric(const Scene& scene) {
 }
 
 ModelChoice chosen_level(const Scene& scene) {
-    const ModelChoice asked = model_choice_named(scene.model);
+    const ModelChoice asked = scene.model;
     if (asked != ModelChoice::automatic) return asked;
     if (!why_not_axisymmetric(scene)) return ModelChoice::harmonic;
     return why_coupled(scene) ? ModelChoice::coupled : ModelChoice::solid;
@@ -73,13 +73,13 @@ ModelChoice chosen_level(const Scene& scene) {
 
 ModelChoice chosen_spinning_level(const Scene& scene) {
     const ModelChoice level = chosen_level(scene);
-    if (model_choice_named(scene.model) == ModelChoice::automatic && !level_traits(level).spins)
+    if (scene.model == ModelChoice::automatic && !level_traits(level).spins)
         return ModelChoice::solid;
     return level;
 }
 
 std::string level_choice_text(const Scene& scene, const std::string& given) {
-    const ModelChoice asked = model_choice_named(scene.model);
+    const ModelChoice asked = scene.model;
     if (asked == ModelChoice::beam) return "beam (" + given + "): a Timoshenko beam network; [mesh] is not used";
     if (asked == ModelChoice::harmonic)
         return "harmonic (" + given + "): the r-z section, one 2D eigenproblem per circumferential wave number n";

@@ -9,6 +9,8 @@
 #include "scene/level_traits.hpp"
 
 #include <algorithm>
+#include <map>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 
@@ -26,14 +28,44 @@ std::string num(double v) {
 
 std::string whirl_word(Whirl w) { return w == Whirl::none ? "" : whirl_name(w); }
 
+// A value that may be absent (a rigid mode's damping): empty then.
+std::string num_or_empty(const std::optional<double>& v) { return v ? num(*v) : ""; }
+
 std::string campbell_rows(const CampbellResult& r) {
-    std::string out = "speed_rpm,speed_hz,track,frequency_hz,whirl,label,relative_residual\n";
+    std::string out = "speed_rpm,speed_hz,track,frequency_hz,whirl,label,relative_residual";
+    out += r.damped ? ",damped_frequency_hz,damping_ratio\n" : "\n";  // only with [damping]
     for (const CampbellPoint& p : r.points)
-        for (const CampbellMode& m : p.modes)
+        for (const CampbellMode& m : p.modes) {
             out += num(p.speed_hz * kRpmPerHz) + "," + num(p.speed_hz) + "," + std::to_string(m.track) + "," +
                    num(m.frequency_hz) + "," + whirl_word(m.whirl) + "," + csv_field(label_text(m.label)) + "," +
-                   num(m.relative_residual) + "\n";
+                   num(m.relative_residual);
+            if (r.damped) out += "," + num_or_empty(m.damped_frequency_hz) + "," + num_or_empty(m.damping_ratio);
+            out += "\n";
+        }
     return out;
+}
+
+// [damping]: what entered, the lowest ratio of every track over the sweep
+// and where, and the damped modes' largest residual.
+Json damping_json(const CampbellResult& r) {
+    Json tracks = Json::array();
+    std::map<int, std::pair<const CampbellMode*, double>> lowest;  // track: mode, speed (Hz)
+    for (const CampbellPoint& p : r.points)
+        for (const CampbellMode& m : p.modes) {
+            if (!m.damping_ratio) continue;
+            auto [it, fresh] = lowest.try_emplace(m.track, &m, p.speed_hz);
+            if (!fresh && *m.damping_ratio < *it->second.first->damping_ratio) it->second = {&m, p.speed_hz};
+        }
+    for (const auto& [track, low] : lowest)
+        tracks.push_back(Json{{"track", track},
+                              {"label", label_text(low.first->label)},
+                              {"lowest_damping_ratio", *low.first->damping_ratio},
+                              {"at_speed_rpm", low.second * kRpmPerHz},
+                              {"damped_frequency_hz", *low.first->damped_frequency_hz}});
+    return Json{{"terms", string_array(r.damping)},
+                {"critical_speeds", "undamped"},
+                {"tracks", tracks},
+                {"max_relative_residual", r.max_damped_residual}};
 }
 
 std::string critical_rows(const CampbellResult& r) {
@@ -88,6 +120,7 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
     t["speeds"] = speeds_json(r);
     t["verification"] =
         Json{{"max_relative_residual", r.max_relative_residual}, {"complete", true}, {"completeness", r.completeness}};
+    if (r.damped) t["damping"] = damping_json(r);
     t["timing_s"] = Json{{"total", r.solve_seconds}};
     return json_text(t);
 }
@@ -144,14 +177,28 @@ std::string critical_table(const CampbellResult& r) {
 // The modes at the last speed: with one speed (`run`), the modes at that speed.
 std::string last_speed_table(const CampbellResult& r) {
     const CampbellPoint& p = r.points.back();
-    std::string out = "| mode | track | frequency | whirl | mode at rest | relative residual |\n|---|---|---|---|---|---|\n";
+    std::string out = "| mode | track | frequency | whirl | mode at rest | relative residual |";
+    out += r.damped ? " damped frequency | damping ratio |\n|---|---|---|---|---|---|---|---|\n" : "\n|---|---|---|---|---|---|\n";
     for (size_t i = 0; i < p.modes.size(); ++i) {
         const CampbellMode& m = p.modes[i];
         out += "| " + std::to_string(i + 1) + " | " + std::to_string(m.track) + " | " + significant(m.frequency_hz, 6) +
                " Hz | " + whirl_word(m.whirl) + " | " + label_text(m.label) + " | " + significant(m.relative_residual, 2) +
-               " |\n";
+               " |";
+        if (r.damped)
+            out += m.damping_ratio ? " " + significant(*m.damped_frequency_hz, 6) + " Hz | " + significant(*m.damping_ratio, 4) + " |"
+                                   : " | (rigid) |";
+        out += "\n";
     }
     return out;
+}
+
+// [damping]: which damping entered and how (empty without).
+std::string damping_lines(const CampbellResult& r) {
+    if (!r.damped) return "";
+    std::string out = "Damping ([damping]; campbell.csv's damping_ratio and damped_frequency_hz columns; largest "
+                      "relative residual of a damped mode " + significant(r.max_damped_residual, 2) + "):\n\n";
+    for (const std::string& line : r.damping) out += "- " + line + "\n";
+    return out + "\n";
 }
 
 std::string safe_speed_lines(const CampbellResult& r) {
@@ -187,7 +234,8 @@ std::string campbell_report_markdown(const Scene& scene, const CampbellResult& r
     for (const std::string& e : r.effects) out << " " << e;
     out << ".\n\n";
     for (const std::string& n : r.notes) out << "- " << n << "\n";
-    out << "\n## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
+    out << "\n" << damping_lines(r);
+    out << "## Critical speeds\n\nEvery crossing of an excitation line f = k f_rot with a natural frequency "
            "(between the sweep's speeds, refined by solving inside the bracket; in co-rotating coordinates also the exact "
            "speeds of zero rotating-frame frequency, \"pencil\"), as rotation speed and as web speed v = pi Dp f_rot.\n\n"
         << critical_table(r) << "\n" << operating_range_lines(r) << safe_speed_lines(r) << "\n";
@@ -214,6 +262,10 @@ std::string campbell_console_summary(const Scene& scene, const CampbellResult& r
             << significant(c.frequency_hz, 5) << " Hz " << whirl_word(c.whirl) << " " << label_text(c.label)
             << (from_sweep(c) ? "" : " (pencil, exact)") << "\n";
     if (!r.sweep_end.empty()) out << "  " << r.sweep_end << "\n";
+    if (r.damped) {
+        out << "  damped modes (campbell.csv damping_ratio; critical speeds undamped):\n";
+        for (const std::string& line : r.damping) out << "    " << line << "\n";
+    }
     out << operating_range_lines(r) << safe_speed_lines(r);
     return out.str();
 }

@@ -93,7 +93,7 @@ Json chucks_json(const std::vector<ChuckSpec>& chucks) {
 
 // The resolved scene after the case head's name, file and description.
 void add_scene(Json& t, const Scene& s) {
-    t["model"] = s.model;
+    t["model"] = to_string(s.model);
     t["core"] = Json{{"inner_diameter", s.core.inner_diameter},
                      {"outer_diameter", s.core.outer_diameter},
                      {"length", s.core.length},
@@ -213,7 +213,7 @@ void write_summary_json(const std::string& path, const RunReport& r) {
     Json summary = summary_head("run", r.scene.name, r.scene.source_file, r.scene.description);
     add_scene(summary["case"], r.scene);
     summary["effects"] = string_array(r.scene.effects());
-    summary["model"] = Json{{"level", r.model.level},
+    summary["model"] = Json{{"level", to_string(r.model.level)},
                             {"element", r.model.element},
                             {"n_dofs", r.model.n_dofs},
                             {"n_nodes", r.model.n_nodes},

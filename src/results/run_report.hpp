@@ -14,7 +14,7 @@
 namespace coremodal {
 
 struct ModelInfo {
-    std::string level = "solid";
+    ModelChoice level = ModelChoice::solid;  // the level that ran (never automatic)
     std::string element;
     long n_dofs = 0;
     long n_nodes = 0;

@@ -31,7 +31,7 @@ Scene CaseReader::read(const toml::table& root) {
                          "; give the case a name = \"...\" (" + kCaseNameExpected + ")");
     }
     scene.description = text(top, "description").value_or("");
-    scene.model = choice(top, "model", kModelLevels).value_or(scene.model);
+    if (const auto word = choice(top, "model", model_choice_words())) scene.model = *parse_model_choice(*word);
     scene.core = read_core(top, scene);
     scene.rest_paper = read_rest_paper(top, scene);
     scene.supports = read_supports(top, scene);

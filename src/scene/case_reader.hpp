@@ -42,7 +42,6 @@ inline constexpr int kAroundMultiple = 4;
 // Long values are cut in messages: the message must point, not reproduce.
 inline constexpr std::size_t kMaxShownChars = 60;
 
-inline const std::vector<std::string_view> kModelLevels = {"solid", "harmonic", "coupled", "auto", "beam"};
 inline const std::vector<std::string_view> kSupportTypes = {"free", "clamped", "chucks"};
 inline const std::vector<std::string_view> kInterfaceKinds = {"spring", "bonded"};
 inline const std::vector<std::string_view> kContactKinds = {"uniform", "one-sided"};
@@ -102,6 +101,8 @@ public:
     std::optional<RotationSpec> rotation(const toml::table& root, const Scene& scene) const;
     // [damping], [excitation] and [response] of the same document (checked by read too).
     std::optional<ResponseSetup> response(const toml::table& root, const Scene& scene) const;
+    // [damping] alone (checked by read too): with [response] or [rotation] (campbell's damped modes).
+    std::optional<DampingSpec> damping(const toml::table& root) const;
     // [limits] of the same document (checked by read too; case_reader_limits.cpp).
     std::optional<LimitsSpec> limits(const toml::table& root, const Scene& scene) const;
     // [traction] of the same document (checked by read too). `assumptions`

@@ -31,11 +31,16 @@ std::optional<ResponseSetup> CaseReader::read_response_setup(const Section& top,
     const std::optional<Section> excitation = section(top, "excitation", "excitation");
     const std::optional<Section> response = section(top, "response", "response");
     if (!response) {
-        for (const std::optional<Section>& s : {damping, excitation})
-            if (s)
-                fail(s->table->source(), s->display + " is used only by the forced response; expected a [response] table "
-                                                       "too (web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or "
-                                                       "no " + s->display + " (docs/how-to/response.md)");
+        if (excitation)
+            fail(excitation->table->source(), "[excitation] is used only by the forced response; expected a [response] "
+                                              "table too (web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or no "
+                                              "[excitation] (docs/how-to/response.md)");
+        // [damping] also damps the modes of a Campbell sweep ([rotation]; docs/how-to/campbell.md).
+        if (damping && !section(top, "rotation", "rotation"))
+            fail(damping->table->source(), "[damping] is used only by the forced response and the Campbell diagram; "
+                                           "expected a [response] table (web_speeds = [\"5 m/s\", \"20 m/s\"], points = "
+                                           "400) or a [rotation] table too, or no [damping] (docs/how-to/response.md)");
+        if (damping) read_damping(*damping);  // checked with every key
         return std::nullopt;
     }
     if (!damping)
@@ -131,6 +136,12 @@ std::optional<ResponseSetup> CaseReader::response(const toml::table& root, const
     return read_response_setup(top, scene);
 }
 
+std::optional<DampingSpec> CaseReader::damping(const toml::table& root) const {
+    const Section top{&root, "", ""};
+    const std::optional<Section> damping = section(top, "damping", "damping");
+    return damping ? std::optional<DampingSpec>(read_damping(*damping)) : std::nullopt;
+}
+
 }  // namespace coremodal::case_reading
 
 namespace coremodal {
@@ -142,6 +153,7 @@ ResponseCase parse_response_case_table(const toml::table& root, const std::strin
     const case_reading::CaseReader reader(path);
     out.rotation = reader.rotation(root, out.scene);
     out.response = reader.response(root, out.scene);
+    out.damping = reader.damping(root);
     return out;
 }
 
@@ -149,7 +161,9 @@ ResponseCase parse_response_case_text(std::string_view text, const std::string& 
     const RotatingCase rotating = parse_rotating_case_text(text, path);  // every check, the new tables included
     ResponseCase out{rotating.scene, rotating.rotation, std::nullopt};
     const toml::table root = parse_toml_input(text, path, "a valid TOML case file (docs/reference/case-files.md)");
-    out.response = case_reading::CaseReader(path).response(root, out.scene);
+    const case_reading::CaseReader reader(path);
+    out.response = reader.response(root, out.scene);
+    out.damping = reader.damping(root);
     return out;
 }
 

@@ -4,8 +4,9 @@
 // are read beside the Scene, not into it: the case reader checks them with
 // every other key (every command refuses a wrong one), and the commands
 // that simulate the response read them with parse_response_case. Only a
-// scene with [response] simulates damping and excitation; [damping] or
-// [excitation] without [response] is refused (they would simulate nothing).
+// scene with [response] simulates damping and excitation; [excitation]
+// without [response] is refused (it would simulate nothing), and so is
+// [damping] without [response] or [rotation] (a Campbell sweep damps its modes).
 #pragma once
 
 #include "scene/rotation_spec.hpp"
@@ -113,6 +114,7 @@ struct ResponseCase {
     Scene scene;
     std::optional<RotationSpec> rotation;
     std::optional<ResponseSetup> response;
+    std::optional<DampingSpec> damping;  // [damping], with [response] or alone with [rotation] (campbell)
 };
 ResponseCase parse_response_case(const std::string& path);
 ResponseCase parse_response_case_text(std::string_view text, const std::string& path);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "material/material.hpp"
+#include "scene/model_choice.hpp"
 
 #include <optional>
 #include <string>
@@ -137,10 +138,10 @@ struct Scene {
     std::string name;         // case name (file stem unless given)
     std::string source_file;  // path of the case file, as given
     std::string description;  // free text from the case file, "" when not given
-    // Model level: "solid" (3D FE), "harmonic" (axisymmetric, one 2D problem per n), "coupled"
-    // (harmonics coupled by segmented chucks, a chuck not expanded or the web), "auto" (the
-    // cheapest that fits: models/choose.cpp) or "beam" (Timoshenko network).
-    std::string model = "solid";
+    // Model level: solid (3D FE), harmonic (axisymmetric, one 2D problem per n), coupled
+    // (harmonics coupled by segmented chucks, a chuck not expanded or the web), automatic
+    // ("auto": the cheapest that fits, models/choose.cpp) or beam (Timoshenko network).
+    ModelChoice model = ModelChoice::solid;
     CoreSpec core;
     std::optional<RestPaperSpec> rest_paper;
     SupportSpec supports;

@@ -2,6 +2,7 @@
 
 #include "common/format.hpp"
 #include "scene/chuck_contact.hpp"
+#include "scene/level_traits.hpp"
 #include "scene/mesh_levels.hpp"
 #include "scene/mesh_rule.hpp"
 #include "scene/model_choice.hpp"
@@ -96,7 +97,7 @@ private:
     void top() {
         add("name", quoted(scene_.name), origin("name", "default: the file name"));
         if (!scene_.description.empty()) add("description", quoted(scene_.description), "file");
-        add("model", quoted(scene_.model), origin("model"));
+        add("model", quoted(to_string(scene_.model)), origin("model"));
     }
 
     void core() {
@@ -255,7 +256,7 @@ private:
             add("[analysis] modes", std::to_string(a.n_modes), origin("analysis.modes"));
         }
         add("[analysis] tolerance", format_quantity(a.tolerance, Dimension::dimensionless), origin("analysis.tolerance"));
-        add("[analysis] max_iterations", std::to_string(a.max_iterations) + (model_choice_named(scene_.model) == ModelChoice::beam ? " (not used by the beam level)" : ""),
+        add("[analysis] max_iterations", std::to_string(a.max_iterations) + (scene_.model != ModelChoice::automatic && !level_traits(scene_.model).meshed ? " (not used by the beam level)" : ""),
             origin("analysis.max_iterations"));
     }
 

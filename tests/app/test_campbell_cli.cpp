@@ -124,6 +124,12 @@ TEST_CASE("coremodal campbell refuses what it cannot do before any work, and wri
     const Run bad = run_coremodal(dir, "campbell bad.toml --output out");
     CHECK(bad.exit_code == 1);
     CHECK(bad.err.find("bad.toml:15:20:") != std::string::npos);
+    // [damping] at a level whose operator sets do not carry it: the level that does.
+    dir.write("damped.toml", kSmall + "[rotation]\nspeed = \"10 Hz\"\n[damping]\nloss_factor = 0.02\n");
+    const Run damped = run_coremodal(dir, "campbell damped.toml --output out");
+    CHECK(damped.exit_code == 1);
+    CHECK(damped.err.find("[damping] in a Campbell sweep at model = \"beam\"") != std::string::npos);
+    CHECK(damped.err.find("expected model = \"harmonic\"") != std::string::npos);
     CHECK(!fs::exists(dir.path / "out"));
     // An existing folder that is not a coremodal result is never touched.
     fs::create_directories(dir.path / "mine");

@@ -140,9 +140,9 @@ TEST_CASE("Every hard case at the harmonic level: verified, complete, six rigid 
                              "08-units-si.toml"}) {
         INFO(file);
         Scene scene = hard_case(file);
-        scene.model = "harmonic";
+        scene.model = ModelChoice::harmonic;
         const RunReport r = solve_quietly(scene);
-        REQUIRE(r.model.level == "harmonic");
+        REQUIRE(r.model.level == ModelChoice::harmonic);
         check_verified(r.modes.verification);
         REQUIRE(r.modes.modes.size() >= static_cast<size_t>(scene.analysis.n_modes));
         int rigid = 0;
@@ -159,7 +159,7 @@ TEST_CASE("Every hard case at the harmonic level: verified, complete, six rigid 
     }
     // Units at the harmonic level: mm/MPa strings and SI numbers, identical.
     Scene a = hard_case("08-units-mm-mpa.toml"), b = hard_case("08-units-si.toml");
-    a.model = b.model = "harmonic";
+    a.model = b.model = ModelChoice::harmonic;
     const RunReport ra = solve_quietly(a), rb = solve_quietly(b);
     REQUIRE(ra.modes.modes.size() == rb.modes.modes.size());
     for (size_t i = 0; i < ra.modes.modes.size(); ++i)

@@ -38,8 +38,8 @@ TEST_CASE("Case 05: the rest roll as a beam, written like a solid run", "[cases]
     options.write = write_run;  // what `coremodal run` writes
     const RunReport r = run_case(options);
 
-    CHECK(r.scene.model == "beam");
-    CHECK(r.model.level == "beam");
+    CHECK(r.scene.model == ModelChoice::beam);
+    CHECK(r.model.level == ModelChoice::beam);
     CHECK(r.modes.verification.complete);
     CHECK(r.modes.verification.max_relative_residual < 1e-10);
     CHECK(r.model.mass_kg == Approx(r.model.expected_mass_kg).epsilon(1e-12));
@@ -70,7 +70,7 @@ TEST_CASE("The beam level on chucks reports the chuck factor with f2 from the be
     options.quiet = true;
     options.write_results = false;
     const RunReport r = run_case(options);
-    REQUIRE(r.model.level == "beam");
+    REQUIRE(r.model.level == ModelChoice::beam);
     REQUIRE(r.chuck);
     const ChuckFactor& k = *r.chuck;
     // Li = 250 mm at both ends (the chuck mirrors): L = 4.32 - 2 x 0.25 = 3.82 m.

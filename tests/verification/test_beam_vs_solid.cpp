@@ -22,7 +22,7 @@ struct Pair {
 Pair both_models(Scene s) {
     Pair p;
     p.solid = solve_quietly(s);
-    s.model = "beam";
+    s.model = ModelChoice::beam;
     p.beam = solve_quietly(s);
     return p;
 }
@@ -38,7 +38,7 @@ TEST_CASE("Slender free-free tubes: beam and solid agree within 1 %", "[verifica
         const Pair p = both_models(steel_tube(0.100, 0.090, 1.2, 2, 16, 24, 26));
         REQUIRE(p.solid.modes.verification.complete);
         REQUIRE(p.beam.modes.verification.complete);
-        CHECK(p.beam.model.level == "beam");
+        CHECK(p.beam.model.level == ModelChoice::beam);
         CHECK(p.beam.model.mass_kg == Approx(p.beam.model.expected_mass_kg).epsilon(1e-12));
         // Measured: bending 0.9988 and 0.9963 (the beam's Cowper coefficient
         // and the wall's shell behaviour, a few tenths of a per cent), torsion

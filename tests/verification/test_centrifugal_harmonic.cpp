@@ -143,7 +143,7 @@ TEST_CASE("A thin spinning ring with centrifugal stiffening: the exact stationar
     // thickness and extensibility move the result by O((t/R)^2) ~ 1e-4, the
     // bound (measured: 5e-6 and 7e-6 at n = 2).
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
-    ring.model = "harmonic";
+    ring.model = ModelChoice::harmonic;
     const RotatingHarmonics harmonics(ring, 16, true);
     REQUIRE(harmonics.prestress());
     const std::vector<RotatingMode> rest = harmonics.modes_at(0.0);

@@ -147,7 +147,7 @@ TEST_CASE("A free thin ring spinning as fast as it vibrates: Bryan's exact form 
     // The tolerance: the ring's beta at low speed is 1.20002 (its finite
     // thickness), and the thin-ring cancellation holds to ~(t/R)^2 = 1e-4.
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 128, 2, 16);
-    ring.model = "solid";
+    ring.model = ModelChoice::solid;
     const RotatingSolid solid(ring, 16, {.centrifugal_stiffening = true});
     const double f0 = first(solid.modes_at(0.0), "ovalling", 2, Whirl::none).frequency_hz;
     const double f_rot = 0.6 * f0, beta = 1.2;

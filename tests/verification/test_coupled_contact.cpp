@@ -172,9 +172,9 @@ TEST_CASE("Coupled contact: auto runs a chuck not expanded at the coupled level 
           "[coupled][contact][long]") {
     Scene s = not_expanded(paper_core(0.6, 16, 12), 1e9);
     s.analysis.n_modes = 4;
-    CHECK(chosen_level(at_level(s, "auto")) == ModelChoice::coupled);
-    const RunReport r = solve_without_chuck_factor(at_level(s, "auto"));
-    CHECK(r.model.level == "coupled");
+    CHECK(chosen_level(at_level(s, ModelChoice::automatic)) == ModelChoice::coupled);
+    const RunReport r = solve_without_chuck_factor(at_level(s, ModelChoice::automatic));
+    CHECK(r.model.level == ModelChoice::coupled);
     REQUIRE(r.modes.verification.complete);
     CHECK(r.modes.modes.size() == 4);
     CHECK(r.model.mass_kg == Approx(r.model.expected_mass_kg).epsilon(1e-9));
@@ -182,7 +182,7 @@ TEST_CASE("Coupled contact: auto runs a chuck not expanded at the coupled level 
     CHECK(std::count(effects.begin(), effects.end(), "one_sided_contact") == 1);
     CHECK(std::count(effects.begin(), effects.end(), "gravity_preload") == 1);
     SECTION("and model = \"coupled\" no longer refuses it") {
-        check_same_eigenvalues(solve_without_chuck_factor(at_level(s, "coupled")), r, 1e-12);
+        check_same_eigenvalues(solve_without_chuck_factor(at_level(s, ModelChoice::coupled)), r, 1e-12);
     }
 }
 
@@ -192,19 +192,19 @@ TEST_CASE("Coupled contact against the 3D solid on chucks not expanded, mode by 
     // The solid at 16 and 32 around (check_within_solid_error); the contact
     // arc's edge cuts its faces, so it converges at first order at worst.
     // Measured (docs/theory/coupled.md): the gap is the contact quadrature's.
-    const auto scene_at = [](int around, const std::string& level) {
+    const auto scene_at = [](int around, ModelChoice level) {
         Scene s = not_expanded(paper_core(0.6, around, 12), 1e9);
         s.analysis.n_modes = 6;
         s.model = level;
         return s;
     };
-    const RunReport c = solve_without_chuck_factor(scene_at(16, "coupled"));
-    REQUIRE(c.model.level == "coupled");
+    const RunReport c = solve_without_chuck_factor(scene_at(16, ModelChoice::coupled));
+    REQUIRE(c.model.level == ModelChoice::coupled);
     REQUIRE(c.modes.verification.complete);
     CHECK(c.modes.verification.max_relative_residual < 1e-8);
     CHECK(c.modes.verification.max_orthonormality_error < 1e-8);
-    const RunReport coarse = solve_without_chuck_factor(scene_at(16, "solid"));
-    const RunReport fine = solve_without_chuck_factor(scene_at(32, "solid"));
+    const RunReport coarse = solve_without_chuck_factor(scene_at(16, ModelChoice::solid));
+    const RunReport fine = solve_without_chuck_factor(scene_at(32, ModelChoice::solid));
     check_within_solid_error(c, coarse, fine, false);
 }
 

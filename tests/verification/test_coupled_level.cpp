@@ -47,7 +47,7 @@ CoupledModes coupled_at(const Scene& scene, int n_max, const std::optional<Local
 
 TEST_CASE("Coupled level with full bands: block diagonal, the harmonic level's eigenvalues to 1e-8", "[coupled]") {
     const Scene scene = segmented_chucks(0, 0);
-    const RunReport h = solve_without_chuck_factor(at_level(scene, "harmonic"));
+    const RunReport h = solve_without_chuck_factor(at_level(scene, ModelChoice::harmonic));
     const CoupledModes c = coupled_at(scene, 4);
     CHECK(c.n_coupling_entries == 0);
     REQUIRE(c.verification.complete);
@@ -60,7 +60,7 @@ TEST_CASE("Coupled level with full bands: block diagonal, the harmonic level's e
     }
     CHECK(c.mass_kg == Approx(h.model.mass_kg).epsilon(1e-12));
     SECTION("and a level asked for coupled harmonics of a scene nothing couples hands it to the harmonic level") {
-        check_same_eigenvalues(solve_without_chuck_factor(at_level(scene, "coupled")), h, 1e-12);
+        check_same_eigenvalues(solve_without_chuck_factor(at_level(scene, ModelChoice::coupled)), h, 1e-12);
     }
 }
 
@@ -168,14 +168,14 @@ TEST_CASE("Coupled level: harmonics kept near the pads bound the whole ones from
 
 TEST_CASE("Coupled level against the 3D solid on segmented chucks, mode by mode", "[coupled][long]") {
     const Scene scene = segmented_chucks(3, 60);
-    const RunReport c = solve_without_chuck_factor(at_level(scene, "coupled"));
-    REQUIRE(c.model.level == "coupled");
+    const RunReport c = solve_without_chuck_factor(at_level(scene, ModelChoice::coupled));
+    REQUIRE(c.model.level == ModelChoice::coupled);
     REQUIRE(c.modes.verification.complete);
     CHECK(c.modes.verification.max_relative_residual < 1e-8);
     CHECK(c.modes.verification.max_orthonormality_error < 1e-8);
     CHECK(c.model.mass_kg == Approx(c.model.expected_mass_kg).epsilon(1e-9));
-    const RunReport coarse = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 16), "solid"));
-    const RunReport fine = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 32), "solid"));
+    const RunReport coarse = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 16), ModelChoice::solid));
+    const RunReport fine = solve_without_chuck_factor(at_level(segmented_chucks(3, 60, 32), ModelChoice::solid));
     check_within_solid_error(c, coarse, fine, true);
 }
 
@@ -245,21 +245,21 @@ TEST_CASE("Coupled level: a clamped core on a web splits its bending pair as the
     // The coupled level against the solid at 16 and 32 around, mode by mode,
     // within the solid's own change from 16 to 32 around (plus 2e-4, the
     // coupled truncation and the solid's quadratic arcs), as for the pads.
-    const auto scene_at = [](int around, const std::string& level) {
+    const auto scene_at = [](int around, ModelChoice level) {
         Scene s = clamp_both_ends(paper_core(1.0, around, 24), 0.07);
         s.web = web_along(0, 2000, 20e9);
         s.analysis.n_modes = 6;
         s.model = level;
         return s;
     };
-    const RunReport c = solve_without_chuck_factor(scene_at(16, "auto"));
-    REQUIRE(c.model.level == "coupled");
+    const RunReport c = solve_without_chuck_factor(scene_at(16, ModelChoice::automatic));
+    REQUIRE(c.model.level == ModelChoice::coupled);
     REQUIRE(c.modes.verification.complete);
     CHECK(c.modes.verification.max_relative_residual < 1e-8);
-    const RunReport coarse = solve_without_chuck_factor(scene_at(16, "solid"));
-    const RunReport fine = solve_without_chuck_factor(scene_at(32, "solid"));
+    const RunReport coarse = solve_without_chuck_factor(scene_at(16, ModelChoice::solid));
+    const RunReport fine = solve_without_chuck_factor(scene_at(32, ModelChoice::solid));
     const RunReport bare = solve_without_chuck_factor([&] {
-        Scene s = scene_at(16, "harmonic");
+        Scene s = scene_at(16, ModelChoice::harmonic);
         s.web.reset();
         return s;
     }());

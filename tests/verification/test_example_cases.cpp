@@ -116,7 +116,7 @@ TEST_CASE("Case 15: the web stiffens Ilomaki's rest roll along its own direction
     // covers the levels' different mode shapes near the chucks.
     const RunReport r = run_example("15-rest-roll-on-web-76x15-2211.toml");
     check_verified(r);
-    REQUIRE(r.model.level == "coupled");
+    REQUIRE(r.model.level == ModelChoice::coupled);
     const std::vector<std::string> effects = r.scene.effects();
     CHECK(std::find(effects.begin(), effects.end(), "web") != effects.end());
     RunOptions quiet;
@@ -125,8 +125,8 @@ TEST_CASE("Case 15: the web stiffens Ilomaki's rest roll along its own direction
     quiet.chuck_factor_by_fe = false;
     Scene cut = r.scene, beam = r.scene;
     cut.web.reset();
-    cut.model = "harmonic";
-    beam.model = "beam";
+    cut.model = ModelChoice::harmonic;
+    beam.model = ModelChoice::beam;
     const RunReport c = run_scene(cut, quiet), b = run_scene(beam, quiet);
     const double across = r.modes.modes[0].frequency_hz, along = r.modes.modes[1].frequency_hz;
     const double f_cut = c.modes.modes[0].frequency_hz;
@@ -166,7 +166,7 @@ TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of 
     ResponseCase c = parse_response_case(std::string(COREMODAL_SOURCE_DIR) +
                                          "/cases/13-rest-roll-response-150x15.8-4320.toml");
     REQUIRE(c.response);
-    c.scene.model = "harmonic";
+    c.scene.model = ModelChoice::harmonic;
     const ResponseResult r = run_forced_response(c.scene, *c.response);
     // docs/validation/response.md, "The three levels on one scene": f1
     // 25.789 Hz (beam 26.308), the peak 5.444 mm at 16.41 m/s (beam 5.155 mm

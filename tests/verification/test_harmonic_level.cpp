@@ -27,7 +27,7 @@ Scene chucks_in_elastic_stand(int around) {
 }
 
 Scene harmonic(Scene s) {
-    s.model = "harmonic";
+    s.model = ModelChoice::harmonic;
     return s;
 }
 
@@ -38,7 +38,7 @@ TEST_CASE("Harmonic level against the solid: same modes, same names, the same fr
     const Scene scene = chucks_in_elastic_stand(32);
     const RunReport solid = solve_quietly(scene);
     const RunReport h = solve_quietly(harmonic(scene));
-    REQUIRE(h.model.level == "harmonic");
+    REQUIRE(h.model.level == ModelChoice::harmonic);
     REQUIRE(h.modes.verification.complete);
     CHECK(h.modes.verification.max_relative_residual < 1e-8);
     CHECK(h.modes.verification.max_orthonormality_error < 1e-8);
@@ -143,20 +143,20 @@ TEST_CASE("Harmonic level: the n = 2 mode of a thin free-free tube is the inexte
 TEST_CASE("model = \"auto\" runs the harmonic level where the scene allows it, else the coupled level or the solid",
           "[harmonic]") {
     Scene scene = with_chucks(paper_core(0.8, 8, 8), InterfaceKind::spring);
-    scene.model = "auto";
+    scene.model = ModelChoice::automatic;
     scene.analysis.n_modes = 4;
-    CHECK(solve_quietly(scene).model.level == "harmonic");
+    CHECK(solve_quietly(scene).model.level == ModelChoice::harmonic);
     // Segmented pads on a spring layer: only the pads vary around, the coupled harmonics.
     scene.supports.chucks[0].expanding[0].segments = 3;
     scene.supports.chucks[0].expanding[0].segment_angle = 1.0;
     const RunReport coupled = solve_quietly(scene);
-    CHECK(coupled.model.level == "coupled");
-    CHECK(coupled.scene.model == "coupled");  // the summary's case says what ran
+    CHECK(coupled.model.level == ModelChoice::coupled);
+    CHECK(coupled.scene.model == ModelChoice::coupled);  // the summary's case says what ran
     // Bonded pads (ties over arcs): the solid.
     for (ChuckSpec& c : scene.supports.chucks) c.interface.kind = InterfaceKind::bonded;
     const RunReport solid = solve_quietly(scene);
-    CHECK(solid.model.level == "solid");
-    CHECK(solid.scene.model == "solid");
+    CHECK(solid.model.level == ModelChoice::solid);
+    CHECK(solid.scene.model == ModelChoice::solid);
 }
 
 TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatever the number asked",
@@ -167,7 +167,7 @@ TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatev
     // for 2 modes or 30 must give the same lowest pair (the stop rule does
     // not cut the search short), each harmonic proven complete by its count.
     Scene scene = hard_case("10-thin-shell-valley.toml");
-    REQUIRE(scene.model == "harmonic");
+    REQUIRE(scene.model == ModelChoice::harmonic);
     const RunReport two = solve_quietly(scene);
     scene.analysis.n_modes = 30;
     const RunReport thirty = solve_quietly(scene);
@@ -186,7 +186,7 @@ TEST_CASE("Harmonic level: a thin shell's lowest modes at n = 5 are found whatev
 TEST_CASE("Harmonic level: a band request returns exactly the modes of the band", "[verification][harmonic]") {
     // Case 08 (2.2 m news roll on chucks): its 12 lowest modes reach 574.5 Hz.
     Scene scene = parse_case_file(COREMODAL_SOURCE_DIR "/cases/08-news-chucks-76x15-2200.toml");
-    REQUIRE(scene.model == "harmonic");
+    REQUIRE(scene.model == ModelChoice::harmonic);
     scene.mesh.n_along = 20;  // a smaller section: the same comparison, quicker
     scene.analysis.n_modes = 16;
     const RunReport lowest = solve_quietly(scene);

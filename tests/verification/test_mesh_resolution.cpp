@@ -122,7 +122,7 @@ TEST_CASE("A solid run whose mesh does not resolve its ovalling says so, by how 
     const double mean_radius = 0.5, wall = 0.02;
     Scene ring = steel_tube(2 * mean_radius + wall, 2 * mean_radius - wall, 0.05, 2, 16, 8, 10);
     Scene harmonic = ring;
-    harmonic.model = "harmonic";
+    harmonic.model = ModelChoice::harmonic;
     const RunReport h = solve_quietly(harmonic);
     const Mode& oval = nth_of_type(h, "ovalling");
     CHECK(oval.label.n == 2);
@@ -179,7 +179,7 @@ TEST_CASE("The rule's mesh resolves the band's highest n within its target at th
         return 0.0;
     };
     Scene harmonic = ring;
-    harmonic.model = "harmonic";
+    harmonic.model = ModelChoice::harmonic;
     const double exact = ovalling_hz(solve_quietly(harmonic), 6);
     REQUIRE(exact == Approx(thin_ring_hz(6, mean_radius, wall)).epsilon(0.01));
     for (const int around : {48, 68}) {

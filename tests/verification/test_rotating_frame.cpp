@@ -26,7 +26,7 @@ TEST_CASE("A body of revolution spun in the rotating frame has the stationary fr
     // A clamped steel tube (106 x 76 mm, 0.6 m, clamped over 30 mm), 1 x 16 x 8
     // hex20, at f_rot = 0.3 f1 with the centrifugal term, in both frames.
     Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 0.6, 1, 16, 8, 10), 0.03);
-    tube.model = "solid";
+    tube.model = ModelChoice::solid;
     const RotatingSolid stationary(tube, 10, {.frame = SpinFrame::stationary, .centrifugal_stiffening = true});
     const RotatingSolid rotating(tube, 10, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
     REQUIRE(rotating.rotating_frame());
@@ -62,7 +62,7 @@ TEST_CASE("Three expanding segments per chuck spin in the rotating frame; at res
           "[rotation][solid][rotating_frame][long]") {
     Scene s = testing::with_chucks(testing::paper_core(0.8, 12, 8), InterfaceKind::spring);
     for (ChuckSpec& c : s.supports.chucks) c.expanding[0].segments = 3, c.expanding[0].segment_angle = M_PI / 3;
-    s.model = "solid";
+    s.model = ModelChoice::solid;
     s.analysis.n_modes = 8;
     const RunReport run = testing::solve_without_chuck_factor(s);
     const RotatingSolid solid(s, 8, {.centrifugal_stiffening = true});
@@ -99,7 +99,7 @@ TEST_CASE("The solid level refuses to spin a chuck not expanded, and a bearing s
           "[rotation][solid][rotating_frame]") {
     Scene s = testing::with_chucks(testing::paper_core(0.8, 12, 8), InterfaceKind::spring);
     s.supports.chucks[0].interface.contact = ContactKind::one_sided;
-    s.model = "solid";
+    s.model = ModelChoice::solid;
     CHECK_THROWS_WITH(RotatingSolid(s, 6), Catch::Contains("not expanded") && Catch::Contains("time-periodic"));
     ChuckSupports supports;
     supports.grounded = {0};
@@ -118,7 +118,7 @@ TEST_CASE("Case 10 spins at the solid level on the coarse mesh: at rest the soli
     // and the notes say how the frequencies came to the stationary frame.
     Scene scene = parse_case_file(COREMODAL_SOURCE_DIR "/cases/10-segmented-chuck-76x15-2200.toml");
     apply_mesh_level(scene, "coarse");
-    scene.model = "solid";
+    scene.model = ModelChoice::solid;
     scene.analysis.n_modes = 4;  // the bending pairs m = 0 and 1: the window is what the test pays for
     RotationSpec rotation;
     rotation.speeds_hz = {0.0, 20.0};
@@ -153,7 +153,7 @@ TEST_CASE("Above the first forward critical speed the rotating frame's stiffness
     // (gyroscopic_solver.hpp): no modes at that speed, and the message says
     // which speed and why. Below it (0.8 f1) the frame solves as before.
     Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 0.6, 1, 16, 8, 10), 0.03);
-    tube.model = "solid";
+    tube.model = ModelChoice::solid;
     const RotatingSolid rotating(tube, 6, {.frame = SpinFrame::rotating, .centrifugal_stiffening = true});
     const double f1 = rotating.modes_at(0.0).front().frequency_hz;
     CHECK_NOTHROW(rotating.modes_at(0.8 * f1));

@@ -30,7 +30,7 @@ namespace {
 // A clamped steel tube 106 x 76 mm, 0.6 m, clamped over 30 mm, solid.
 Scene clamped_tube(int around, int along) {
     Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 0.6, 1, around, along, 6), 0.03);
-    tube.model = "solid";
+    tube.model = ModelChoice::solid;
     return tube;
 }
 
@@ -215,7 +215,7 @@ TEST_CASE("The pencils r > 0: their count by the real form's inertia and their s
 
 TEST_CASE("The pencil refuses a free structure with the reason", "[rotation][solid][rotating_frame][critical]") {
     Scene tube = testing::steel_tube(0.106, 0.076, 0.6, 1, 8, 4, 6);
-    tube.model = "solid";
+    tube.model = ModelChoice::solid;
     const RotatingSolid solid(tube, 4, {.frame = SpinFrame::rotating, .centrifugal_stiffening = false});
     CHECK_THROWS_WITH(solid.zero_frequency_modes(100.0),
                       Catch::Contains("held structure") && Catch::Contains("below the rigid line"));
@@ -230,7 +230,7 @@ TEST_CASE("A Campbell sweep of segmented chucks reports the first order-1 critic
     // set from it, and the checks only need them on either side.
     Scene s = testing::with_chucks(testing::paper_core(0.8, 8, 6), InterfaceKind::spring);
     for (ChuckSpec& c : s.supports.chucks) c.expanding[0].segments = 3, c.expanding[0].segment_angle = M_PI / 3;
-    s.model = "solid";
+    s.model = ModelChoice::solid;
     s.analysis.n_modes = 2;
     constexpr double f1 = 344.2;
     RotationSpec rotation;

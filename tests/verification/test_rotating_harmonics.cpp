@@ -43,7 +43,7 @@ TEST_CASE("A thin spinning ring: travelling waves split by Bryan's factor", "[ro
     // inextensible thin ring; the shell's extensibility and thickness change
     // it by O((t/R)^2) ~ 1e-4, the mesh by less (measured: 2e-5 at n = 2 and 3).
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
-    ring.model = "harmonic";
+    ring.model = ModelChoice::harmonic;
     const RotatingHarmonics harmonics(ring, 16);
     const double f_rot = 0.1;
     const std::vector<RotatingMode> modes = harmonics.modes_at(f_rot);
@@ -65,7 +65,7 @@ TEST_CASE("A spinning clamped tube whirls at the harmonic level as at the beam l
     // spinning section (harmonic) agree to the two levels' difference in
     // the clamp's stiffness and the wall's shear (1.3 % measured).
     Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 1.2, 2, 16, 24, 8), 0.04);
-    tube.model = "harmonic";
+    tube.model = ModelChoice::harmonic;
     const RotatingHarmonics harmonics(tube, 8);
     const double f1 = first(harmonics.modes_at(0.0), "bending", 1, Whirl::none).frequency_hz;
     const std::vector<RotatingMode> spinning = harmonics.modes_at(f1);
@@ -73,7 +73,7 @@ TEST_CASE("A spinning clamped tube whirls at the harmonic level as at the beam l
     const RotatingMode& bw = first(spinning, "bending", 1, Whirl::backward);
 
     Scene beam = tube;
-    beam.model = "beam";
+    beam.model = ModelChoice::beam;
     const BeamModelResult rest = solve_beam_model(beam);
     const std::vector<RotatingMode> beam_modes = RotatingNetwork(rest.network, rest.lambda_scale).modes_at(f1, 8);
     const RotatingMode& beam_fw = first(beam_modes, "bending", 1, Whirl::forward);
@@ -94,7 +94,7 @@ TEST_CASE("At rest the spinning harmonic level gives the harmonic level's modes"
     // frames: every term of the harmonic level.
     Scene s = testing::on_elastic_bearings(
         testing::with_chucks(testing::paper_core(0.8, 16, 12), InterfaceKind::spring), 3e8, 4e6, 25.0, 6e7);
-    s.model = "harmonic";
+    s.model = ModelChoice::harmonic;
     s.analysis.n_modes = 10;
     const RunReport run = testing::solve_quietly(s);
     const RotatingHarmonics harmonics(s, 10, true);  // the centrifugal term is nothing at rest
@@ -161,12 +161,12 @@ TEST_CASE("Spinning harmonics in a projection basis: the full quadratic solver's
           "[rotation][harmonic]") {
     SECTION("A clamped steel tube from rest to its first bending frequency (415 Hz)") {
         Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 1.2, 2, 16, 24, 8), 0.04);
-        tube.model = "harmonic";
+        tube.model = ModelChoice::harmonic;
         check_same_modes(tube, 8, {0.0, 50.0, 150.0, 415.0}, 1e-8);
     }
     SECTION("The same tube with centrifugal stiffening (K_Omega projected with the rest)") {
         Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 1.2, 2, 16, 24, 8), 0.04);
-        tube.model = "harmonic";
+        tube.model = ModelChoice::harmonic;
         check_same_modes(tube, 8, {0.0, 150.0, 415.0}, 1e-8, 0, true);
     }
 }
@@ -184,7 +184,7 @@ TEST_CASE("Spinning harmonics of a free thin ring in a projection basis: its rig
         // solvers resolve them only to ~1e-7 (each splits the exact pairs
         // at rest by that much): compared to 1e-6.
         Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 64, 2, 16);
-        ring.model = "harmonic";
+        ring.model = ModelChoice::harmonic;
         // The precession's I_p / I_t of the annulus a = 0.495, b = 0.5 m, L = 0.02 m (rigid body).
         const double a2b2 = 0.495 * 0.495 + 0.5 * 0.5, ratio = (a2b2 / 2) / (a2b2 / 4 + 0.02 * 0.02 / 12);
         check_same_modes(ring, 16, {0.0, 0.1, 1.0, 5.0}, 1e-6, ratio);
@@ -207,7 +207,7 @@ struct TubeHarmonic {
 std::unique_ptr<TubeHarmonic> tube_harmonic(int n, bool centrifugal = false) {
     auto t = std::make_unique<TubeHarmonic>();
     t->scene = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 1.2, 2, 16, 24, 8), 0.04);
-    t->scene.model = "harmonic";
+    t->scene.model = ModelChoice::harmonic;
     t->mesh = make_section_mesh(make_tube_section(t->scene), t->scene.supports.clamps);
     t->materials = part_materials(t->scene, t->mesh.part_names, "test section");
     t->prestress = centrifugal_prestress(t->scene, t->mesh, t->materials);

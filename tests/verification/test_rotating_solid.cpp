@@ -39,12 +39,12 @@ TEST_CASE("A thin spinning ring at the solid level: the n = 2 waves split as Bry
     // 2 f_rot x 1.2 in the stationary frame (the harmonic level: 1.20002).
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 2, 128, 2, 16);
     const double f_rot = 0.1;
-    ring.model = "harmonic";
+    ring.model = ModelChoice::harmonic;
     const RotatingHarmonics harmonics(ring, 16);
     const std::vector<RotatingMode> h_at_rest = harmonics.modes_at(0.0);
     const RotatingMode& h_rest = first(h_at_rest, "ovalling", 2, Whirl::none);
     const std::vector<RotatingMode> h_spin = harmonics.modes_at(f_rot);
-    ring.model = "solid";
+    ring.model = ModelChoice::solid;
     const RotatingSolid solid(ring, 16);
     const std::vector<RotatingMode> s_at_rest = solid.modes_at(0.0);
     const RotatingMode& s_rest = first(s_at_rest, "ovalling", 2, Whirl::none);
@@ -81,7 +81,7 @@ TEST_CASE("A free ring whose rest solve makes LAPACK refuse TOAR's reordering is
     // at the first target (measured; eigensolve/gyroscopic_solver.cpp
     // retries at others). The modes must still come, verified and complete.
     Scene ring = testing::steel_tube(1.0, 0.99, 0.02, 1, 128, 1, 16);
-    ring.model = "solid";
+    ring.model = ModelChoice::solid;
     const RotatingSolid solid(ring, 16);
     const std::vector<RotatingMode> rest = solid.modes_at(0.0);
     CHECK(first(rest, "ovalling", 2, Whirl::none).frequency_hz == Approx(12.91).epsilon(1e-3));
@@ -106,11 +106,11 @@ TEST_CASE("A spinning clamped tube whirls at the solid level as at the harmonic 
     // forward whirl rises, backward falls, and the split matches the
     // harmonic level's on the same section.
     Scene tube = testing::clamp_both_ends(testing::steel_tube(0.106, 0.076, 1.2, 2, 16, 24, 8), 0.04);
-    tube.model = "harmonic";
+    tube.model = ModelChoice::harmonic;
     const RotatingHarmonics harmonics(tube, 8);
     const double f1 = first(harmonics.modes_at(0.0), "bending", 1, Whirl::none).frequency_hz;
     const std::vector<RotatingMode> h_spin = harmonics.modes_at(f1);
-    tube.model = "solid";
+    tube.model = ModelChoice::solid;
     const RotatingSolid solid(tube, 8);
     const std::vector<RotatingMode> at_rest = solid.modes_at(0.0);
     const RotatingMode& rest = first(at_rest, "bending", 1, Whirl::none);
@@ -135,7 +135,7 @@ TEST_CASE("At rest the spinning solid level gives the solid run's modes", "[rota
     // frames: every coupling of the solid level beside the spinning cells.
     Scene s = testing::on_elastic_bearings(
         testing::with_chucks(testing::paper_core(0.8, 12, 8), InterfaceKind::spring), 3e8, 4e6, 25.0, 6e7);
-    s.model = "solid";
+    s.model = ModelChoice::solid;
     s.analysis.n_modes = 10;
     const RunReport run = testing::solve_without_chuck_factor(s);
     // With the centrifugal term (a static solve on the bearings, nothing

@@ -82,7 +82,7 @@ double thin_ring_hz(const Scene& s, int n) {
 // The beam level: six rigid modes at zero, the rest elastic, and its first
 // bending mode the Timoshenko beam's (the beam comparison's own formula).
 void check_beam_level(const Scene& scene) {
-    const RunReport beam = solve_quietly(at_level(scene, "beam"));
+    const RunReport beam = solve_quietly(at_level(scene, ModelChoice::beam));
     REQUIRE(beam.modes.verification.complete);
     CHECK(count_rigid(beam) == 6);
     const double first_elastic = beam.modes.modes.at(6).eigenvalue;
@@ -112,8 +112,8 @@ TEST_CASE("The eigenvalue scale of a short ring is its in-plane ring mode, not E
 TEST_CASE("A thin ring of length / diameter 0.05: six rigid modes and the thin-ring frequencies at every level",
           "[verification][short]") {
     const Scene ring = thin_ring();
-    const RunReport solid = solve_quietly(at_level(ring, "solid"));
-    const RunReport harmonic = solve_quietly(at_level(ring, "harmonic"));
+    const RunReport solid = solve_quietly(at_level(ring, ModelChoice::solid));
+    const RunReport harmonic = solve_quietly(at_level(ring, ModelChoice::harmonic));
     check_six_rigid_modes(solid);
     check_six_rigid_modes(harmonic);
     check_same_modes(solid, harmonic);
@@ -137,8 +137,8 @@ TEST_CASE("An annular disc of length / diameter 0.05: six rigid modes, the solid
           "[verification][short]") {
     const Scene disc = annular_disc();
     CHECK(elastic_eigenvalue_scale(disc, ModeFamilies::beam_and_section).family == "ring out-of-plane n = 2");
-    const RunReport solid = solve_quietly(at_level(disc, "solid"));
-    const RunReport harmonic = solve_quietly(at_level(disc, "harmonic"));
+    const RunReport solid = solve_quietly(at_level(disc, ModelChoice::solid));
+    const RunReport harmonic = solve_quietly(at_level(disc, ModelChoice::harmonic));
     check_six_rigid_modes(solid);
     check_six_rigid_modes(harmonic);
     check_same_modes(solid, harmonic);
@@ -161,6 +161,6 @@ TEST_CASE("Rings from length / diameter 0.5 down to 0.05 at the harmonic level: 
         INFO("L / D = " << slenderness);
         Scene ring = thin_ring();
         ring.core.length = slenderness * ring.core.outer_diameter;
-        check_six_rigid_modes(solve_quietly(at_level(ring, "harmonic")));
+        check_six_rigid_modes(solve_quietly(at_level(ring, ModelChoice::harmonic)));
     }
 }

@@ -162,7 +162,7 @@ TEST_CASE("The winder's drum, free-free: the Timoshenko tube and the harmonic le
     const double f_beam = first_hz(beam, BodyKind::drum);
 
     const RunReport h = solve_case_text(drum_case(s) + "[analysis]\nmodes = 14\n");
-    REQUIRE(h.model.level == "harmonic");
+    REQUIRE(h.model.level == ModelChoice::harmonic);
     REQUIRE(h.modes.verification.complete);
     const BeamSection section = drum_section(s);
     CHECK(h.model.mass_kg == Approx(section.rho_A * s.drums.length).epsilon(1e-9));  // the same tube
@@ -200,7 +200,7 @@ TEST_CASE("The winder's drum on its bearings: its first two bending modes are th
     const double band_top = 1.08 * ring_ovalling_hz(s, 3);
     const RunReport h = solve_case_text(drum_on_bearings_case(s) + "[analysis]\nband = [\"0 Hz\", \"" + si(band_top) +
                                         " Hz\"]\n");
-    REQUIRE(h.model.level == "harmonic");
+    REQUIRE(h.model.level == ModelChoice::harmonic);
     REQUIRE(h.modes.verification.complete);
     // Beam and shell differ as in the free-free test: by a part of the shear
     // correction, here the simply supported tube's (2.2 % for m = 1, 8.0 % for
@@ -271,7 +271,7 @@ TEST_CASE("A winder roll at 1.2 m: the beam roll is the Timoshenko beam of its s
     const double f_soft = timoshenko_bending_hz(section(core_soft, paper_soft), r.width, BeamEnds::free_free, 1).front();
 
     const RunReport h = solve_case_text(roll_case(s, kRollDiameter) + "[analysis]\nmodes = 50\n");
-    REQUIRE(h.model.level == "harmonic");
+    REQUIRE(h.model.level == ModelChoice::harmonic);
     REQUIRE(h.modes.verification.complete);
     // The same roll: mass per width as the winder's nips and weights use it.
     CHECK(h.model.mass_kg == Approx(winder_state(s, kRollDiameter).roll_mass_per_width * r.width).epsilon(1e-9));

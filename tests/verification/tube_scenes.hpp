@@ -190,7 +190,7 @@ inline double rigid_contact_drop(double load, double c, double bore, double inse
 }
 
 // The scene at another model level.
-inline Scene at_level(Scene s, const std::string& level) {
+inline Scene at_level(Scene s, ModelChoice level) {
     s.model = level;
     return s;
 }

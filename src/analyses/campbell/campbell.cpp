@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/stopwatch.hpp"
+#include "effects/damping.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
 #include "models/beam/beam_spinning_notes.hpp"
@@ -161,11 +162,21 @@ void refine(WhirlCrossing& c, const std::vector<Step>& steps, const BlockModesAt
     c.refined = true;
 }
 
+// Each reported mode's damped partner (or none) into the point.
+void add_damping(CampbellPoint& point, const std::vector<std::optional<DampedPartner>>& partners, CampbellResult& out) {
+    for (size_t i = 0; i < point.modes.size(); ++i) {
+        if (!partners[i]) continue;
+        point.modes[i].damping_ratio = partners[i]->damping_ratio;
+        point.modes[i].damped_frequency_hz = partners[i]->damped_frequency_hz;
+        out.max_damped_residual = std::max(out.max_damped_residual, partners[i]->relative_residual);
+    }
+}
+
 }  // namespace
 
 void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
                     const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track,
-                    const BlockModesAtSpeed& block_modes_at) {
+                    const BlockModesAtSpeed& block_modes_at, const DampedPartners& damped_partners) {
     std::vector<Step> steps = internal_speeds(rotation.speeds_hz);
     int next_track = 1;
     for (size_t s = 0; s < steps.size(); ++s) {
@@ -185,13 +196,15 @@ void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, c
     for (const Step& step : steps) {
         if (!step.reported) continue;
         CampbellPoint point{step.speed_hz, {}};
-        for (size_t i = 0; i < std::min(reported, step.modes.size()); ++i) {
+        const size_t n_reported = std::min(reported, step.modes.size());
+        for (size_t i = 0; i < n_reported; ++i) {
             const RotatingMode& m = step.modes[i];
             const TrackInfo& track = info.at(step.tracks[i]);
             point.modes.push_back({step.tracks[i], m.frequency_hz, m.whirl == Whirl::none ? track.whirl : m.whirl,
                                    track.label, m.relative_residual});
             out.max_relative_residual = std::max(out.max_relative_residual, m.relative_residual);
         }
+        if (damped_partners) add_damping(point, damped_partners(step.speed_hz, {step.modes.begin(), step.modes.begin() + n_reported}), out);
         out.points.push_back(std::move(point));
     }
     out.critical = critical_speeds(out.points, out.excitation_orders, out.roll_outer_diameter);
@@ -235,13 +248,40 @@ void require_one_process(const Scene& scene, const std::string& level) {
 // speeds from its first bending mode, then the sweep.
 void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
                      const std::vector<RotatingMode>& at_rest, const ModesAtSpeed& modes_at, CampbellResult& out,
-                     const LabelMode& label_new_track = {}, const BlockModesAtSpeed& block_modes_at = {}) {
+                     const LabelMode& label_new_track = {}, const BlockModesAtSpeed& block_modes_at = {},
+                     const DampedPartners& damped_partners = {}) {
     const double f1 = first_bending_hz(at_rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track, block_modes_at);
+    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track, block_modes_at, damped_partners);
 }
 
-void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
+// Per mode of `modes`, the damped mode of its wave number that continues it:
+// the one-to-one pairing of largest MAC (modes/tracking.hpp), at least
+// kSameModeMac. A degenerate pair at rest is any mix of its two members; the
+// damped pair spans the same plane, so the pairing gives each MAC >= 1/2.
+std::vector<std::optional<DampedPartner>> damped_partners(const RotatingHarmonics& harmonics, double speed_hz,
+                                                          const std::vector<RotatingMode>& modes) {
+    std::vector<std::optional<DampedPartner>> out(modes.size());
+    std::map<int, std::vector<size_t>> by_block;
+    for (size_t i = 0; i < modes.size(); ++i) by_block[modes[i].block].push_back(i);
+    for (const auto& [n, members] : by_block) {
+        const std::vector<RotatingHarmonics::DampedShape> damped = harmonics.damped_modes_at(speed_hz, n);
+        std::vector<std::vector<double>> weight(members.size(), std::vector<double>(damped.size()));
+        for (size_t a = 0; a < members.size(); ++a)
+            for (size_t b = 0; b < damped.size(); ++b)
+                weight[a][b] = modes[members[a]].frequency_hz > 0 ? complex_mac(modes[members[a]].shape, damped[b].shape) : 0.0;
+        const std::vector<int> match = assign_maximum(weight);
+        for (size_t a = 0; a < members.size(); ++a) {
+            if (match[a] < 0 || weight[a][match[a]] < kSameModeMac) continue;
+            const DampedMode& d = damped[match[a]].mode;
+            out[members[a]] = DampedPartner{d.zeta, d.damped_frequency_hz, d.backward_error};
+        }
+    }
+    return out;
+}
+
+void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, const DampingSpec* damping,
+                           CampbellResult& out) {
     require_one_process(scene, "harmonic");
     out.completeness = "per wave number n and speed, the inertia of the full Hermitian Q(omega) = K - omega^2 M + i "
                        "omega Omega G at the band edge and at the rigid line counts the modes between them (every "
@@ -252,11 +292,20 @@ void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, Cam
     harmonics.sweep_up_to(rotation.speeds_hz.back());
     out.notes = spinning_notes(rotation, harmonics);
     out.n_dofs = harmonics.n_dofs();
+    DampedPartners partners;
+    if (damping) {
+        harmonics.include_damping(RayleighDamping{damping->rayleigh.value_or(RayleighSpec{}).alpha,
+                                                  damping->rayleigh.value_or(RayleighSpec{}).beta},
+                                  StructuralDamping{damping->loss_factor, damping->part_loss_factors});
+        partners = [&](double speed, const std::vector<RotatingMode>& modes) {
+            return damped_partners(harmonics, speed, modes);
+        };
+    }
     sweep_from_rest(
         scene, rotation, reported, harmonics.modes_at(0.0),
         [&](double speed) { return harmonics.modes_at(speed, Labels::none); }, out,
         [&](const RotatingMode& m) { return harmonics.label_of(m); },
-        [&](double speed, int n) { return harmonics.modes_at(speed, Labels::none, n); });
+        [&](double speed, int n) { return harmonics.modes_at(speed, Labels::none, n); }, partners);
     out.solver = "per wave number n, the small Hermitian problem in a basis of its modes at rest and their static "
                  "responses to the spin's forces, every mode's residual taken on the full problem; " +
                  std::to_string(harmonics.n_full_solves()) + " of " + std::to_string(harmonics.n_solves()) +
@@ -310,6 +359,41 @@ void require_spinning_level(const Scene& scene) {
     if (level.spins_in_rotating_frame) require_spinnable_by_solid(scene);
 }
 
+void require_campbell_damping(const Scene& scene, const DampingSpec& damping) {
+    const LevelTraits& level = level_traits(chosen_spinning_level(scene));
+    if (level.level != ModelChoice::harmonic)
+        throw InputError(scene.source_file + ": [damping] in a Campbell sweep at model = \"" + to_string(level.level) +
+                         "\": only the harmonic level's operator sets carry damping today; expected model = "
+                         "\"harmonic\" (or --model harmonic) for a body of revolution, or no [damping]");
+    const bool modal = damping.ratio > 0 || !damping.families.empty() || !damping.modes.empty();
+    if (modal)
+        throw InputError(scene.source_file + ": " +
+                         (damping.ratio > 0 ? damping.source : std::string("[damping] a family's or a mode's ratio")) +
+                         ": a modal ratio belongs to the modes at rest, which the spin mixes; a Campbell sweep takes "
+                         "damping as terms of the operators; expected rayleigh = { zeta = 0.01, frequencies = "
+                         "[\"20 Hz\", \"200 Hz\"] } (the same ratio at two frequencies) and/or loss_factor = 0.02 "
+                         "(docs/how-to/campbell.md)");
+}
+
+namespace {
+
+// Which damping entered the sweep, from which keys, echoed in the report.
+std::vector<std::string> damping_words(const DampingSpec& d) {
+    std::vector<std::string> out;
+    if (d.rayleigh)
+        out.push_back(d.source + ": viscous D = alpha M + beta K (Term::damping) on each wave number's set");
+    if (const std::string words = loss_factor_words(d); !words.empty())
+        out.push_back("[damping] " + words + ": structural H = sum_p eta_p K_p over the parts' section cells, the "
+                      "complex stiffness K + i H (springs carry none)");
+    out.push_back("damped modes: per wave number the projected damped problem (the basis of the modes at rest and "
+                  "their static responses to D, H and the spin's forces), each matched to the undamped mode of "
+                  "largest MAC; zeta = -Re lambda / |lambda|, damped frequency Im lambda / (2 pi); the critical "
+                  "speeds are the undamped sweep's (light damping moves a crossing by O(zeta^2))");
+    return out;
+}
+
+}  // namespace
+
 const WhirlCrossing* CampbellResult::first_order_one() const {
     for (const WhirlCrossing& c : critical)
         if (c.order == 1) return &c;
@@ -349,9 +433,11 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
     return out;
 }
 
-CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options) {
+CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
+                            const DampingSpec* damping) {
     COREMODAL_ASSERT(!rotation.speeds_hz.empty());
     require_spinning_level(scene);
+    if (damping) require_campbell_damping(scene, *damping);
     Stopwatch clock;
     CampbellResult out;
     out.excitation_orders = rotation.excitation_orders;
@@ -361,12 +447,19 @@ CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, co
     const LevelTraits& level = level_traits(chosen_spinning_level(scene));
     out.effects = rotating_effect_names(scene, rotation, level.centrifugal);
     out.level = to_string(level.level);
+    if (damping) {
+        out.damped = true;
+        out.damping = damping_words(*damping);
+        if (damping->rayleigh) out.effects.push_back(RayleighDamping::kName);
+        if (StructuralDamping{damping->loss_factor, damping->part_loss_factors}.given())
+            out.effects.push_back(StructuralDamping::kName);
+    }
     // The per-level sweeps of this file (a level's spinning terms live with it: beam/rotating_modes,
     // models/harmonic/rotating_harmonics, models/solid/rotating_solid); require_spinning_level
     // refused a level that cannot spin.
     switch (level.level) {
         case ModelChoice::beam: run_beam_campbell(scene, rotation, options, out); break;
-        case ModelChoice::harmonic: run_harmonic_campbell(scene, rotation, out); break;
+        case ModelChoice::harmonic: run_harmonic_campbell(scene, rotation, damping, out); break;
         case ModelChoice::solid: run_solid_campbell(scene, rotation, out); break;
         case ModelChoice::coupled:
         case ModelChoice::automatic: COREMODAL_ASSERT(false);

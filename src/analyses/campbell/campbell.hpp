@@ -17,6 +17,7 @@
 #include "beam/beam_model.hpp"
 #include "beam/speeds.hpp"
 #include "modes/rotating_mode.hpp"
+#include "scene/response_spec.hpp"  // DampingSpec
 #include "scene/rotation_spec.hpp"
 #include "scene/scene.hpp"
 
@@ -43,6 +44,11 @@ struct CampbellMode {
     Whirl whirl = Whirl::none;  // at rest: the whirl its track takes when spinning
     ModeLabel label;            // the track's label at rest
     double relative_residual = 0;
+    // With [damping] (CampbellResult::damped): the damped mode that continues
+    // this one (largest MAC of its wave number, at least kSameModeMac), its
+    // ratio zeta = -Re lambda / |lambda| and damped frequency Im lambda / 2 pi;
+    // none for a rigid mode (no damped partner above the rigid line).
+    std::optional<double> damping_ratio, damped_frequency_hz;
 };
 
 struct CampbellPoint {
@@ -103,6 +109,13 @@ struct CampbellResult {
     std::vector<std::string> notes;          // what is included and what is not
     std::string sweep_end;                   // where the sweep stopped short of the scene's speeds, and why; or empty
     std::optional<std::array<double, 2>> operating_hz;  // [rotation] operating_speeds, Hz; or none
+    // [damping]: the modes' damping ratios were computed (campbell.csv's
+    // damping_ratio and damped_frequency_hz columns; the critical speeds stay
+    // the undamped sweep's); which damping entered, from which keys; the
+    // largest relative residual of a damped mode on the full damped set.
+    bool damped = false;
+    std::vector<std::string> damping;
+    double max_damped_residual = 0;
     // The first order-1 crossing, if any.
     const WhirlCrossing* first_order_one() const;
     // The critical speeds inside the operating range (ends included); none without one.
@@ -114,9 +127,17 @@ struct CampbellResult {
 // of revolution (models/solid/rotating_solid.hpp). Before any work.
 void require_spinning_level(const Scene& scene);
 
-// Throws InputError as require_spinning_level (the scene's model resolved
-// already); SolveError from the solver.
-CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {});
+// Throws InputError when [damping] cannot enter the sweep: at a level whose
+// operator sets do not carry it (only the harmonic level's do), or in a form
+// that is not a term of the operators (a modal ratio: ratio, log_decrement,
+// decay, a family's or a mode's own; Rayleigh and loss factors are). Before any work.
+void require_campbell_damping(const Scene& scene, const DampingSpec& damping);
+
+// Throws InputError as require_spinning_level and require_campbell_damping
+// (the scene's model resolved already); SolveError from the solver. With
+// `damping`, every reported mode also gets its damping ratio (CampbellMode).
+CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {},
+                            const DampingSpec* damping = nullptr);
 
 // Crossings of f = order f_rot with every track of `points`, by linear
 // interpolation between two speeds (run_campbell refines them).
@@ -130,15 +151,23 @@ using LabelMode = std::function<ModeLabel(const RotatingMode&)>;
 // a level where solving one is cheaper than solving all (the harmonic level:
 // one wave number).
 using BlockModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz, int block)>;
+// The damped modes that continue `modes` (one speed's, as modes_at gives
+// them), one per mode, or none where a mode has no damped partner.
+struct DampedPartner {
+    double damping_ratio = 0, damped_frequency_hz = 0, relative_residual = 0;
+};
+using DampedPartners =
+    std::function<std::vector<std::optional<DampedPartner>>(double speed_hz, const std::vector<RotatingMode>& modes)>;
 
 // run_campbell's sweep on any level's modes (tests): from the modes at rest
 // over rotation.speeds_hz, tracked by MAC; fills out.points and
 // out.critical (refined), out.excitation_orders and out.roll_outer_diameter
 // set by the caller. With `label_new_track` the modes of modes_at need no
 // label: only a mode that starts a track is labelled. With `block_modes_at`
-// a crossing's refinement solves only its track's block.
+// a crossing's refinement solves only its track's block. With `damped_partners`
+// every reported mode gets its damping ratio (the crossings stay undamped).
 void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, const ModesAtSpeed& modes_at,
                     const RotationSpec& rotation, CampbellResult& out, const LabelMode& label_new_track = {},
-                    const BlockModesAtSpeed& block_modes_at = {});
+                    const BlockModesAtSpeed& block_modes_at = {}, const DampedPartners& damped_partners = {});
 
 }  // namespace coremodal

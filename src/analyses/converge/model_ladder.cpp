@@ -60,13 +60,13 @@ double summed_peak_memory_mb(bool reset) {
 
 // ---- running one level once ---------------------------------------------------
 
-// One run of a meshed model level ("solid" or "harmonic") on one mesh of its
+// One run of a meshed model level (solid or harmonic) on one mesh of its
 // ladder. Freed memory is handed back to the system afterwards so that a
 // level does not inherit the previous level's heap. For the harmonic level
 // (the same r-z section as the solid's level; n_around only sets the
 // revolved mesh the modes are shown and named on) n_dofs is the largest
 // one-harmonic problem's, and the timings sum over the harmonics.
-LevelRun run_meshed_once(const Scene& scene, const std::string& model, const MeshSpec& mesh, int n_modes) {
+LevelRun run_meshed_once(const Scene& scene, ModelChoice model, const MeshSpec& mesh, int n_modes) {
     Scene s = scene;
     s.model = model;  // the case may name another level for its runs; this ladder is `model`'s
     s.mesh = mesh;
@@ -184,7 +184,7 @@ std::string beam_ladder_note(const Scene& scene) {
 }  // namespace
 
 LevelRun run_solid_once(const Scene& scene, const MeshSpec& mesh, int n_modes) {
-    return run_meshed_once(scene, "solid", mesh, n_modes);
+    return run_meshed_once(scene, ModelChoice::solid, mesh, n_modes);
 }
 
 ModelLadder solid_ladder(const Scene& scene, const ConvergeOptions& o, const int& n_modes) {
@@ -228,7 +228,7 @@ std::optional<ModelLadder> harmonic_ladder(const Scene& scene, const ConvergeOpt
                   "sum over the harmonics (with their inertia counts)" +
                   (budget_note.empty() ? "." : "; the unit is the solid's: " + budget_note + ".");
     ladder.run_once = [&scene, &n_modes](const MeshStep& step) {
-        return run_meshed_once(scene, "harmonic", step.mesh, n_modes);
+        return run_meshed_once(scene, ModelChoice::harmonic, step.mesh, n_modes);
     };
     return ladder;
 }

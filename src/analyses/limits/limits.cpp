@@ -38,11 +38,18 @@ bool has_pads(const Scene& scene) {
     return false;
 }
 
+// Whether the scene's level cannot spin (the coupled harmonics: level_traits)
+// while its pads break the symmetry: the spinning criteria then come from
+// the axisymmetric equivalent, the rest at the level itself (coupled_verdict).
+bool spins_by_equivalent(const Scene& scene) {
+    return !level_traits(chosen_level(scene)).spins && has_pads(scene);
+}
+
 // The scene at the beam level (Eigen only, milliseconds): its f1 sets the
 // speed range of the level's own solves.
 BeamModelResult beam_level(const Scene& scene) {
     Scene beam = scene;
-    beam.model = "beam";
+    beam.model = ModelChoice::beam;
     return solve_beam_model(beam);
 }
 
@@ -348,9 +355,9 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
                          "its "
                          "stand: expected [supports] type = \"clamped\" or \"chucks\"");
     const ModelChoice level = chosen_level(scene);
-    if (level == ModelChoice::coupled && has_pads(scene)) {  // the spinning criteria from the axisymmetric equivalent
+    if (spins_by_equivalent(scene)) {
         Scene equivalent = axisymmetric_equivalent(scene).scene;
-        equivalent.model = "harmonic";
+        equivalent.model = ModelChoice::harmonic;
         require_limits_scene(equivalent, request);
         return;
     }
@@ -361,7 +368,7 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
                          "expected model = \"beam\" or \"harmonic\" (a body of revolution), or "
                          "\"solid\", or \"coupled\" with segmented chucks (docs/how-to/limits.md)");
     Scene resolved = scene;
-    resolved.model = to_string(level);
+    resolved.model = level;
     require_spinning_level(resolved);
     require_response_level(resolved);
     const std::optional<double> target =
@@ -373,12 +380,12 @@ void require_limits_scene(const Scene& scene, const LimitsRequest& request) {
 LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>& response,
                      const LimitsRequest& request) {
     require_limits_scene(case_scene, request);
-    if (chosen_level(case_scene) == ModelChoice::coupled && has_pads(case_scene)) return coupled_verdict(case_scene, response, request);
+    if (spins_by_equivalent(case_scene)) return coupled_verdict(case_scene, response, request);
     Stopwatch clock;
     Scene scene = case_scene;
-    scene.model = to_string(chosen_level(case_scene));
+    scene.model = chosen_level(case_scene);
     LimitsResult r;
-    r.level = scene.model;
+    r.level = to_string(scene.model);
     r.band = request.spec.band;
     r.check_response = request.check_response;
     r.campbell_sweep = request.campbell_sweep;
@@ -402,7 +409,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     const int n = largest > smallest ? request.spec.points : 1;
     const std::vector<double> diameters = n > 1 ? spaced(largest, smallest, n) : std::vector<double>{largest};
     request.say("limits: " + std::to_string(n) + " rest-roll diameters from " + mm(largest) + " to " + mm(smallest) +
-                     " mm at the " + scene.model + " level" + (r.band ? ", the band at every " +
+                     " mm at the " + to_string(scene.model) + " level" + (r.band ? ", the band at every " +
                      std::to_string(kBandStride) + "th" : ""));
     auto solve = [&](double d, bool added, bool sample_band) {
         Stopwatch lap;
@@ -459,7 +466,7 @@ std::string stand_verdict_line(const std::string& case_file) {
     const LimitsCase c = parse_limits_case(case_file);
     if (c.scene.supports.kind == SupportKind::free) return "";
     Scene scene = c.scene;
-    scene.model = "beam";
+    scene.model = ModelChoice::beam;
     LimitsRequest request;
     request.spec = c.limits.value_or(LimitsSpec{});
     const double d = roll_outer_diameter(scene);

@@ -136,10 +136,10 @@ LimitsResult coupled_verdict(const Scene& case_scene, const std::optional<Respon
                              const LimitsRequest& request) {
     Stopwatch clock;
     Scene scene = case_scene;
-    scene.model = "coupled";
+    scene.model = ModelChoice::coupled;
     const AxisymmetricEquivalent equivalent = axisymmetric_equivalent(scene);
     Scene harmonic = equivalent.scene;
-    harmonic.model = "harmonic";
+    harmonic.model = ModelChoice::harmonic;
     request.say("limits: segmented chucks: the spinning criteria and the band at the harmonic level of the "
                 "axisymmetric equivalent (the pads as full bands of their coverage)");
     LimitsResult r = verdict(harmonic, response, request);

@@ -153,7 +153,7 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
     require_one_model(setups);
     Stopwatch clock;
     Scene scene = scene_given;
-    scene.model = "harmonic";  // "auto" resolved
+    scene.model = ModelChoice::harmonic;  // "auto" resolved
     const ResponseSetup& first = setups.front();
     // 1. At rest: the harmonic level's run (f1, the modes as modes.csv numbers
     // them), or only n = 1's own basis below (RestModes::lateral; mode numbers

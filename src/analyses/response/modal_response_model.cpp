@@ -127,7 +127,7 @@ void sort_orders(LevelLoads& out) {
 ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level,
                                          const std::string& solver) {
     if (mpi_size() > 1)
-        throw InputError(scene.source_file + ": the forced response at the " + scene.model +
+        throw InputError(scene.source_file + ": the forced response at the " + to_string(scene.model) +
                          " level runs in one process; run it without mpirun");
     ResponseResult out = response_result_for(scene, setup, level);
     out.solver = solver;
@@ -139,7 +139,7 @@ ResponseResult start_mesh_level_response(const Scene& scene, const ResponseSetup
     ResponseResult out = start_mesh_level_response(scene, setup, level, solver);
     rest = make_model_level(scene)->solve(scene, Printer{false});
     // A response in modes that are not verified is no response: no --keep-going here.
-    require_verified("the modes at rest of " + scene.name + " (" + scene.model + " level)",
+    require_verified("the modes at rest of " + scene.name + " (" + to_string(scene.model) + " level)",
                      verification_failures(rest.modes, rest.verification, scene.analysis.tolerance), false);
     const double f1 = first_bending_hz(rest);
     out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");

@@ -128,10 +128,14 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
 std::vector<ResponseResult> run_forced_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
                                                  ResponseChecking checking, RestModes rest) {
     require_response_level(scene);
-    if (chosen_level(scene) == ModelChoice::harmonic) return run_harmonic_responses(scene, setups, checking, rest);
     std::vector<ResponseResult> out;
-    for (const ResponseSetup& s : setups) out.push_back(run_forced_response(scene, s, {}, checking, rest));
-    return out;
+    switch (chosen_level(scene)) {
+        // The harmonic level answers every setup from one set of modes at rest.
+        case ModelChoice::harmonic: return run_harmonic_responses(scene, setups, checking, rest);
+        default:
+            for (const ResponseSetup& s : setups) out.push_back(run_forced_response(scene, s, {}, checking, rest));
+            return out;
+    }
 }
 
 }  // namespace coremodal

@@ -68,7 +68,7 @@ const ResponseLevel kSolidResponse{
 ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
-    scene.model = "solid";
+    scene.model = ModelChoice::solid;
     require_response_level(scene);
     // 1. At rest: the solid level's run (f1, the modes as modes.csv numbers them).
     LevelModes rest;

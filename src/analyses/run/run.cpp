@@ -52,7 +52,7 @@ void require_verified_report(RunReport& report, bool keep_going) {
     if (!report.scene.mesh.file)
         if (const auto mass = mass_mismatch(report.model.mass_kg, report.model.expected_mass_kg))
             failures.push_back(*mass);
-    for (const std::string& w : require_verified("the modes of " + report.scene.name + " (" + report.scene.model +
+    for (const std::string& w : require_verified("the modes of " + report.scene.name + " (" + to_string(report.scene.model) +
                                                      " level)",
                                                  failures, keep_going))
         warn_about_model(report.scene.name, w, report.warnings);
@@ -90,13 +90,13 @@ RunReport run_case(const RunOptions& options) {
 }
 
 RunReport run_scene(Scene scene, const RunOptions& options) {
-    scene.model = to_string(chosen_level(scene));  // "auto" resolved, for the summary and the derived scenes
+    scene.model = chosen_level(scene);  // "auto" resolved, for the summary and the derived scenes
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     return run_scene(std::move(scene), options, *level);
 }
 
 RunReport run_scene(Scene scene, const RunOptions& options, ModelLevel& level) {
-    scene.model = to_string(chosen_level(scene));
+    scene.model = chosen_level(scene);
     const Printer say{mpi_rank() == 0 && !options.quiet};
     Stopwatch total;
     RunReport report = level_report(std::move(scene), level, say);  // 2-6
@@ -110,7 +110,7 @@ RunReport run_scene(Scene scene, const RunOptions& options, ModelLevel& level) {
 }
 
 RunReport analyse_derived_scene(Scene scene) {
-    scene.model = to_string(chosen_level(scene));
+    scene.model = chosen_level(scene);
     const std::unique_ptr<ModelLevel> level = make_model_level(scene);
     RunReport report = level_report(std::move(scene), *level, Printer{false});
     require_verified_report(report, false);

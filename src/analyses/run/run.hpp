@@ -30,7 +30,7 @@ struct RunOptions {
     bool quiet = false;                     // no progress lines (tests)
     bool write_results = true;
     std::optional<std::string> mesh_level;  // overrides the case's [mesh] level
-    std::optional<std::string> model;       // overrides the case's model level (solid, harmonic, beam)
+    std::optional<ModelChoice> model;       // overrides the case's model level (--model)
     // Scenes with chucks: also solve the free-free roll over the free span for
     // f2 and k (a second, smaller solve). Off where only f1 matters (sweeps of f1).
     bool chuck_factor_by_fe = true;

@@ -50,7 +50,7 @@ Scene uncalibrated(const CoreGrade& core, const Stand& stand, const SelectionSce
     Scene s;
     s.name = selection.name + ": core " + core.name + " in stand " + stand.name;
     s.source_file = selection.source;
-    s.model = "beam";
+    s.model = ModelChoice::beam;
     s.core.inner_diameter = core.inner_diameter;
     s.core.outer_diameter = core.outer_diameter;
     s.core.length = width;

@@ -94,7 +94,7 @@ void run_point(Scene scene, StudyPoint& p, const std::optional<ResponseSetup>& r
         // free-span solve would cost a third of a chuck point for nothing.
         run.chuck_factor_by_fe = false;
         const RunReport report = run_scene(std::move(scene), run);
-        p.model_level = report.model.level;
+        p.model_level = to_string(report.model.level);
         p.n_dofs = report.model.n_dofs;
         for (const Mode& m : report.modes.modes) p.modes.push_back({m.index, m.frequency_hz, m.label, m.signature});
         if (const double f1 = first_bending_hz(report); f1 > 0) p.f1_hz = f1;

@@ -9,7 +9,7 @@ namespace coremodal {
 namespace {
 
 ModelInfo model_info(const Scene& scene, const BeamModelResult& beam) {
-    return {.level = "beam",
+    return {.level = ModelChoice::beam,
             .element = "timoshenko3",
             .n_dofs = beam.n_dofs,
             .n_nodes = beam.network.n_nodes(),

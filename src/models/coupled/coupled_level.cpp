@@ -194,7 +194,7 @@ CoupledModes grow_harmonics(const CoupledProblem& p, int first_n, std::optional<
 ModelInfo coupled_model_info(const Scene& scene, const SectionMesh& section, const CoupledModes& modes,
                              const std::vector<CoupledStep>& steps) {
     ModelInfo info;
-    info.level = "coupled";
+    info.level = ModelChoice::coupled;
     info.element = "quad8";
     info.n_dofs = modes.dofs.n_dofs;
     info.n_nodes = section.n_nodes();

@@ -213,7 +213,7 @@ std::vector<HarmonicModes> solve_harmonics(const Scene& scene, const SectionMesh
 ModelInfo harmonic_model_info(const Scene& scene, const SectionMesh& section,
                               const std::vector<HarmonicModes>& harmonics, double mass_kg) {
     ModelInfo info;
-    info.level = "harmonic";
+    info.level = ModelChoice::harmonic;
     info.element = "quad8";
     for (const HarmonicModes& h : harmonics) info.n_dofs = std::max<long>(info.n_dofs, h.dofs.n_dofs);
     info.n_nodes = section.n_nodes();

@@ -91,6 +91,10 @@ struct RotatingHarmonics::Harmonic {
     // next to its modes (a ring harmonic's lie far above the scene's first).
     double lambda_scale = 1;
     std::unique_ptr<ProjectedGyroscopic> projected;  // SpinSolver::projected
+    int n_rest = 0;                                  // the modes at rest in the projection basis
+    SolveRequest request;                            // n_modes and lambda_scale as solved
+    DampedHarmonicTerms damping;                     // include_damping
+    std::unique_ptr<ProjectedDamped> damped;         // include_damping
 };
 
 RotatingHarmonics::~RotatingHarmonics() = default;
@@ -139,12 +143,13 @@ RotatingHarmonics::RotatingHarmonics(const Scene& scene, int window, bool centri
         const long in_window = std::count_if(rest[n].begin(), rest[n].end(), [&](double l) { return l <= edge * (1 + 1e-9); });
         h->n_modes = static_cast<int>(in_window) + kExtraModesPerHarmonic;
         h->lambda_scale = n <= 1 ? request.lambda_scale : rest_lowest[n];
+        h->request = request;
+        h->request.n_modes = h->n_modes;
+        h->request.lambda_scale = h->lambda_scale;
+        h->n_rest = kRestBasisFactor * h->n_modes + kExtraRestModes;
         if (solver == SpinSolver::projected) {
-            SolveRequest r = request;
-            r.n_modes = h->n_modes;
-            r.lambda_scale = h->lambda_scale;
-            h->projected = std::make_unique<ProjectedGyroscopic>(h->problem.operators, r,
-                                                                 kRestBasisFactor * h->n_modes + kExtraRestModes,
+            const SolveRequest& r = h->request;
+            h->projected = std::make_unique<ProjectedGyroscopic>(h->problem.operators, r, h->n_rest,
                                                                  n == 0 ? h->problem.meridional_rows : h->problem.cos_rows,
                                                                  n == 0 ? h->problem.tangential_rows : h->problem.sin_rows);
         }
@@ -216,6 +221,29 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels la
     std::stable_sort(out.begin(), out.end(),
                      [](const RotatingMode& a, const RotatingMode& b) { return a.frequency_hz < b.frequency_hz; });
     if (only_block < 0 && static_cast<int>(out.size()) > window_) out.resize(window_);
+    return out;
+}
+
+void RotatingHarmonics::include_damping(const RayleighDamping& rayleigh, const StructuralDamping& structural) {
+    const std::vector<PartMaterial> materials = part_materials(scene_, section_.part_names, "generated section");
+    for (auto& h : harmonics_) {
+        const LogEvent event("CmDampedBasis");
+        h->damping = damped_harmonic_terms(h->problem, section_, materials, rayleigh, structural);
+        h->damped = std::make_unique<ProjectedDamped>(h->damping.operators, h->request, h->n_rest,
+                                                      h->damping.hysteretic.get());
+    }
+}
+
+std::vector<RotatingHarmonics::DampedShape> RotatingHarmonics::damped_modes_at(double speed_hz, int n) const {
+    std::vector<DampedShape> out;
+    for (const auto& h : harmonics_) {
+        if (h->problem.n != n) continue;
+        COREMODAL_ASSERT(h->damped);
+        for (DampedMode& m : h->damped->modes_at(2 * M_PI * speed_hz).modes) {
+            Eigen::VectorXcd shape = h->damped->full_shape(m);
+            out.push_back({std::move(m), std::move(shape)});
+        }
+    }
     return out;
 }
 

@@ -22,6 +22,7 @@
 // speed is solved whole (SLEPc PEP, solve_gyroscopic), as `full` does always.
 #pragma once
 
+#include "eigensolve/projected_damped.hpp"
 #include "eigensolve/projected_gyroscopic.hpp"
 #include "geometry/section_mesh.hpp"
 #include "models/harmonic/spinning_harmonic.hpp"
@@ -63,6 +64,21 @@ public:
     void sweep_up_to(double speed_hz);
     // The label modes_at gives a mode of this level.
     ModeLabel label_of(const RotatingMode& mode) const;
+
+    // [damping] (effects on demand: only when the scene names it): per wave
+    // number the set with the damping terms (damped_harmonic_terms) and the
+    // projected solver's damped branch over it, in a basis of the same size
+    // as the undamped one's (eigensolve/projected_damped.hpp).
+    void include_damping(const RayleighDamping& rayleigh, const StructuralDamping& structural);
+    // A damped mode and its shape on its problem's DOFs, in RotatingMode::shape's order.
+    struct DampedShape {
+        DampedMode mode;
+        Eigen::VectorXcd shape;
+    };
+    // The damped modes of wave number n at speed f_rot (Hz), ascending damped
+    // frequency (include_damping first); each mode's backward_error is its
+    // relative residual on the full damped set.
+    std::vector<DampedShape> damped_modes_at(double speed_hz, int n) const;
 
     long n_dofs() const;                      // the largest problem's DOFs
     std::vector<int> wave_numbers() const;    // the n solved at every speed

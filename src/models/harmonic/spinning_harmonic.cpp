@@ -93,6 +93,38 @@ SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMes
     return out;
 }
 
+namespace {
+
+// Another owner of A (the damped set shares the undamped set's terms).
+PetscMatrix shared(Mat A) {
+    COREMODAL_PETSC(PetscObjectReference((PetscObject)A));
+    return PetscMatrix(A);
+}
+
+}  // namespace
+
+DampedHarmonicTerms damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
+                                          const std::vector<PartMaterial>& materials, const RayleighDamping& rayleigh,
+                                          const StructuralDamping& structural) {
+    DampedHarmonicTerms out;
+    out.operators.model_mass = h.operators.model_mass;
+    for (const auto& [term, A] : h.operators.matrices) out.operators.matrices[term] = shared(A);
+    if (rayleigh.alpha != 0 || rayleigh.beta != 0) {
+        PetscMatrix D;
+        COREMODAL_PETSC(MatDuplicate(h.operators.M(), MAT_COPY_VALUES, D.out()));
+        COREMODAL_PETSC(MatScale(D, rayleigh.alpha));
+        COREMODAL_PETSC(MatAXPY(D, rayleigh.beta, h.operators.K(), DIFFERENT_NONZERO_PATTERN));
+        out.operators.matrices[Term::damping] = std::move(D);
+    }
+    if (!structural.given()) return out;
+    std::vector<double> eta;  // per part of the section
+    for (const std::string& part : mesh.part_names) eta.push_back(structural.of(part));
+    const MPI_Comm comm = PetscObjectComm((PetscObject)h.operators.K());
+    PetscMatrix H = assemble_harmonic_weighted_stiffness(mesh, materials, h.dofs, h.n, eta, comm);
+    out.hysteretic = h.n == 0 ? std::move(H) : block_matrix(comm, H, nullptr, nullptr, H, true);
+    return out;
+}
+
 FamilyValues family_values(const SpinningHarmonic& h, Vec x) {
     if (h.n == 0) return {gather_to_root(x), {}};
     return {sub_values(x, h.cos_rows), sub_values(x, h.sin_rows)};

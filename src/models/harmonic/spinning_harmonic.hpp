@@ -18,6 +18,7 @@
 
 #include "assembly/harmonic_system.hpp"
 #include "assembly/operator_set.hpp"
+#include "effects/damping.hpp"
 #include "geometry/section_mesh.hpp"
 #include "material/material.hpp"
 #include "models/harmonic/centrifugal_prestress.hpp"
@@ -46,6 +47,20 @@ struct SpinningHarmonic {
 SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMesh& mesh,
                                             const std::vector<PartMaterial>& materials, int n,
                                             const CentrifugalPrestress* prestress = nullptr);
+
+// [damping] as terms of a wave number's set (effects/damping.hpp), for the
+// projected solver's damped branch (eigensolve/projected_damped.hpp):
+// `operators` shares h's terms and adds the viscous D = alpha M + beta K
+// (Term::damping; absent when alpha = beta = 0); `hysteretic` is the
+// structural H = sum_p eta_p K_p over the parts' section cells (springs
+// carry no loss factor), on each family for n >= 1; null without loss factors.
+struct DampedHarmonicTerms {
+    OperatorSet operators;
+    PetscMatrix hysteretic;
+};
+DampedHarmonicTerms damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
+                                          const std::vector<PartMaterial>& materials, const RayleighDamping& rayleigh,
+                                          const StructuralDamping& structural);
 
 // The values of a vector of the set on rank 0 (empty elsewhere), split into
 // the cos and sin families (sin empty for n = 0).

@@ -79,7 +79,7 @@ DofMap solid_dofs(const Scene& scene, const Mesh& mesh, const ChuckSupports& chu
     // order, which the measured factor times were taken on.
     DofMap dofs = make_dof_map(mesh.n_nodes(), eliminated, chucks.ties,
                                mpi_size() > 1 ? slab_node_order(mesh) : std::vector<int>{});
-    out.info = {.level = "solid",
+    out.info = {.level = ModelChoice::solid,
                 .element = cell_type_name(mesh.cell_type),
                 .n_dofs = dofs.n_dofs,
                 .n_nodes = mesh.n_nodes(),
@@ -174,7 +174,7 @@ constexpr bool kPredictBandEdge = true;
 std::vector<Mode> harmonic_counterparts(const Scene& scene, const SolveRequest& request, const Printer& say) {
     if (why_not_axisymmetric(scene)) return {};
     Scene axisymmetric = scene;
-    axisymmetric.model = "harmonic";
+    axisymmetric.model = ModelChoice::harmonic;
     if (request.lambda_max) {
         // A band: the solid's modes lie at or above their exact frequencies,
         // so the counterparts of those in the band lie in it or below it.

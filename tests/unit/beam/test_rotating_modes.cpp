@@ -159,7 +159,7 @@ TEST_CASE("At speed 0 the rotating network gives the modes at rest", "[rotation]
     // Case 08's scene at the beam level (chucks, spring layers): every
     // frequency of the solver at rest, to its own tolerance.
     Scene scene = parse_case_file(std::string(COREMODAL_SOURCE_DIR) + "/cases/08-news-chucks-76x15-2200.toml");
-    scene.model = "beam";
+    scene.model = ModelChoice::beam;
     const BeamModelResult rest = solve_beam_model(scene);
     const RotatingNetwork rotating(rest.network, rest.lambda_scale);
     const std::vector<RotatingMode> modes = rotating.modes_at(0.0, 40);

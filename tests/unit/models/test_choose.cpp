@@ -15,7 +15,7 @@ using namespace coremodal;
 
 namespace {
 
-Scene with_model(const std::string& model) {
+Scene with_model(ModelChoice model) {
     Scene s;
     s.model = model;
     return s;
@@ -24,16 +24,16 @@ Scene with_model(const std::string& model) {
 }  // namespace
 
 TEST_CASE("auto picks the harmonic level for a body of revolution, else the coupled level or the solid", "[model][choose]") {
-    Scene plain = with_model("auto");
+    Scene plain = with_model(ModelChoice::automatic);
     CHECK(chosen_level(plain) == ModelChoice::harmonic);
     CHECK(dynamic_cast<HarmonicLevel*>(make_model_level(plain).get()) != nullptr);
 
-    Scene user_mesh = with_model("auto");
+    Scene user_mesh = with_model(ModelChoice::automatic);
     user_mesh.mesh.file = "tube.msh";
     CHECK(chosen_level(user_mesh) == ModelChoice::solid);
     CHECK(dynamic_cast<SolidLevel*>(make_model_level(user_mesh).get()) != nullptr);
 
-    Scene segmented = with_model("auto");
+    Scene segmented = with_model(ModelChoice::automatic);
     ChuckSpec chuck;
     chuck.name = "left";
     ExpandingElement element;
@@ -46,7 +46,7 @@ TEST_CASE("auto picks the harmonic level for a body of revolution, else the coup
 
 TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chucks or a one-sided contact break the symmetry",
           "[model][choose][coupled]") {
-    Scene segmented = with_model("auto");
+    Scene segmented = with_model(ModelChoice::automatic);
     ChuckSpec chuck;
     chuck.name = "left";
     ExpandingElement element;
@@ -59,7 +59,7 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
     CHECK_THAT(level_choice_text(segmented, "the case file"), Catch::StartsWith("coupled (the case file; "));
 
     SECTION("and a chuck not expanded (one-sided contact), saying why") {
-        Scene one_sided = with_model("auto");
+        Scene one_sided = with_model(ModelChoice::automatic);
         ChuckSpec loose;
         loose.name = "left";
         loose.interface.contact = ContactKind::one_sided;
@@ -85,14 +85,15 @@ TEST_CASE("auto picks the coupled harmonics when only segmented spring-layer chu
         CHECK(chosen_level(user_mesh) == ModelChoice::solid);
     }
     SECTION("and a body of revolution stays at the harmonic level") {
-        CHECK(!why_coupled(with_model("auto")));
-        CHECK(chosen_level(with_model("auto")) == ModelChoice::harmonic);
+        CHECK(!why_coupled(with_model(ModelChoice::automatic)));
+        CHECK(chosen_level(with_model(ModelChoice::automatic)) == ModelChoice::harmonic);
     }
 }
 
 TEST_CASE("a named model level is kept, and each has its own step count", "[model][choose]") {
-    for (const std::string level : {"solid", "harmonic", "coupled", "beam"}) CHECK(to_string(chosen_level(with_model(level))) == level);
-    CHECK(make_model_level(with_model("beam"))->steps() == 4);
-    CHECK(make_model_level(with_model("solid"))->steps() == 7);
-    CHECK(dynamic_cast<BeamLevel*>(make_model_level(with_model("beam")).get()) != nullptr);
+    for (const ModelChoice level : {ModelChoice::solid, ModelChoice::harmonic, ModelChoice::coupled, ModelChoice::beam})
+        CHECK(chosen_level(with_model(level)) == level);
+    CHECK(make_model_level(with_model(ModelChoice::beam))->steps() == 4);
+    CHECK(make_model_level(with_model(ModelChoice::solid))->steps() == 7);
+    CHECK(dynamic_cast<BeamLevel*>(make_model_level(with_model(ModelChoice::beam)).get()) != nullptr);
 }

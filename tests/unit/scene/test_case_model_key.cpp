@@ -22,11 +22,14 @@ const std::string kCore =
 
 }  // namespace
 
-TEST_CASE("The model level is solid unless the case file says harmonic or beam", "[scene][case_file][model]") {
-    CHECK(parse_case_text(kCore, "cases/x.toml").model == "solid");
-    CHECK(parse_case_text("model = \"solid\"\n" + kCore, "cases/x.toml").model == "solid");
-    CHECK(parse_case_text("model = \"beam\"\n" + kCore, "cases/x.toml").model == "beam");
-    CHECK(parse_case_text("model = \"harmonic\"\n" + kCore, "cases/x.toml").model == "harmonic");
+TEST_CASE("The model level is solid unless the case file says another; each word reads back as itself",
+          "[scene][case_file][model]") {
+    CHECK(parse_case_text(kCore, "cases/x.toml").model == ModelChoice::solid);
+    CHECK(parse_case_text("model = \"beam\"\n" + kCore, "cases/x.toml").model == ModelChoice::beam);
+    CHECK(parse_case_text("model = \"auto\"\n" + kCore, "cases/x.toml").model == ModelChoice::automatic);
+    // The words of docs/reference/case-files.md ("model"): case file -> enum -> the word summary.json and report.md write.
+    for (const std::string word : {"solid", "harmonic", "coupled", "auto", "beam"})
+        CHECK(to_string(parse_case_text("model = \"" + word + "\"\n" + kCore, "cases/x.toml").model) == word);
 }
 
 TEST_CASE("An unknown model level names file, line, key and the levels there are", "[scene][case_file][model]") {

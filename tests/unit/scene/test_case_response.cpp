@@ -106,8 +106,9 @@ TEST_CASE("The ovality's stiffness split: thin-wall limit 3 delta / (2 R)", "[re
 TEST_CASE("[damping], [excitation], [response] mistakes are refused with the key, the place and what is expected",
           "[response][scene]") {
     CHECK(error_of(kRoll + kDamping) ==
-          "cases/x.toml:12:1: [damping] is used only by the forced response; expected a [response] table too "
-          "(web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400), or no [damping] (docs/how-to/response.md)");
+          "cases/x.toml:12:1: [damping] is used only by the forced response and the Campbell diagram; expected a "
+          "[response] table (web_speeds = [\"5 m/s\", \"20 m/s\"], points = 400) or a [rotation] table too, or no "
+          "[damping] (docs/how-to/response.md)");
     CHECK(error_of(kRoll + kExcitation + kResponse).starts_with("cases/x.toml:14:1: [response] needs [damping]; "));
     CHECK(error_of(kRoll + kDamping + kResponse).starts_with("cases/x.toml:14:1: [response] needs [excitation]; "));
     CHECK(error_of(kRoll + "[damping]\n" + kExcitation + kResponse) ==

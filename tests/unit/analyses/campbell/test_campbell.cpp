@@ -175,7 +175,7 @@ TEST_CASE("A Campbell sweep at the solid level refuses a chuck that is not expan
           "[rotation][campbell]") {
     RotatingCase c = parse_rotating_case(std::string(COREMODAL_SOURCE_DIR) +
                                          "/cases/09-news-chucks-not-expanded-76x15-2200.toml");
-    c.scene.model = "solid";
+    c.scene.model = ModelChoice::solid;
     c.scene.mesh.file = "no-such-mesh.msh";  // never read: the check comes first
     CHECK_THROWS_WITH(run_campbell(c.scene, RotationSpec{.speeds_hz = {0.0, 10.0}}),
                       Catch::Contains("[rotation] at the solid level") && Catch::Contains("not expanded") &&

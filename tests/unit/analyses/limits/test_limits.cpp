@@ -211,7 +211,7 @@ TEST_CASE(
 TEST_CASE("The verdict refuses what it cannot carry before any work, naming the key", "[limits]") {
     const LimitsCase c = parse_limits_case(kCase13);
     Scene coupled = c.scene;
-    coupled.model = "coupled";
+    coupled.model = ModelChoice::coupled;
     CHECK_THROWS_WITH(
         require_limits_scene(coupled, {}),
         Catch::Contains("model = \"coupled\"") && Catch::Contains("expected model = \"beam\" or \"harmonic\""));
@@ -387,7 +387,7 @@ TEST_CASE("At the harmonic level the response's n = 1 crossings are the Campbell
     // on case 16; a band of the verdict is several per cent wide.
     constexpr double kAgreement = 2e-3;
     LimitsCase c = small_roll();
-    c.scene.model = "harmonic";
+    c.scene.model = ModelChoice::harmonic;
     apply_mesh_level(c.scene, "coarse");
     ResponseSetup setup = *c.response;
     const double top_hz = 60;  // above f1 (~45 Hz) and the order-2 crossing of the first bending mode

@@ -24,7 +24,7 @@ namespace {
 LimitsCase small_harmonic_roll() {
     const std::string& text = testing::kBowedTesterRoll;
     LimitsCase c = parse_limits_case_text(text, "small.toml");
-    c.scene.model = "harmonic";
+    c.scene.model = ModelChoice::harmonic;
     apply_mesh_level(c.scene, "coarse");
     return c;
 }

@@ -81,7 +81,7 @@ TEST_CASE("The coupled verdict: f1 from the coupled level, the spinning criteria
     CHECK(p.at(Criterion::i5_low).level == "coupled");
     // The spinning criteria: `limits --model harmonic` on the equivalent scene.
     Scene equivalent = axisymmetric_equivalent(c.scene).scene;
-    equivalent.model = "harmonic";
+    equivalent.model = ModelChoice::harmonic;
     const LimitsResult h = verdict(equivalent, c.response, one_diameter(kD));
     REQUIRE(p.equivalent_f1_hz);
     CHECK(*p.equivalent_f1_hz == Approx(h.points.front().f1_hz).epsilon(1e-9));
