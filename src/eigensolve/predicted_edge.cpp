@@ -230,16 +230,22 @@ std::string scientific(double x) {
 
 // Block Lanczos on the single factor's solves refined to the pass error,
 // the pairs then cleaned in double (single_refinement.hpp) and the work said
-// through `progress`; RefinementStalled when a refinement stalled (the
-// caller takes the double factor).
+// through `progress`; RefinementStalled when a refinement stalled or block
+// Lanczos did not converge in kMaxSingleRestarts (the caller takes the
+// double factor).
 Attempt single_factor_pairs(SingleLdlt& F, Mat K, Mat M, double sigma, long below, const SolveRequest& request,
                             const Progress& progress) {
     const double pass_error = pass_backward_error();
     SolveRequest loose = request;
     loose.tolerance = std::max(request.tolerance, single_lanczos_tolerance());
+    loose.max_iterations = std::min(request.max_iterations, kMaxSingleRestarts);
     Attempt a = block_lanczos_attempt(
         [&](int cols, const double* in, double* out) { F.solve(cols, in, out, pass_error); }, M, sigma, int(below),
         loose, progress);
+    if (a.n_converged < below)
+        throw RefinementStalled("block Lanczos on the single factor's refined solves converged " +
+                                std::to_string(a.n_converged) + " of " + std::to_string(below) + " pairs in " +
+                                std::to_string(loose.max_iterations) + " restarts (the double factor's need 1 or 2)");
     const int ritz_steps = refine_pairs_in_double(F, K, M, a.lambdas, a.vectors);
     progress("single-precision factor: " + std::to_string(F.solves()) + " block solves refined in double to a "
              "backward error below " + scientific(pass_error) + " (at most " + std::to_string(F.most_steps()) +

@@ -55,6 +55,16 @@ double pass_backward_error();
 inline constexpr double kSingleLanczosTolerance = 1e-10;
 double single_lanczos_tolerance();
 
+// Block Lanczos on the single factor's refined solves gets this many thick
+// restarts; then the pass falls back to the double factor and says so
+// (RefinementStalled). The double factor's passes restart once or twice
+// (case 03: 14 passes of 16 vectors in a basis of 7 blocks); on case 02's
+// shipped mesh (101,760 unknowns) the single factor's did not converge in
+// 7 minutes where the double takes 16.7 s (bench/results/log.md, issue 39,
+// session 21): an operator that slow to converge is not worth its cheaper
+// factor.
+inline constexpr int kMaxSingleRestarts = 12;
+
 // Refines the pairs (lambdas ascending, vectors M-orthonormal) in place;
 // returns the Rayleigh-Ritz steps taken. The lowest lambdas.size() Ritz
 // values of the space replace them, ascending.
