@@ -45,6 +45,9 @@ struct LevelTraits {
     bool converge_reference;
     // Solved on a mesh of the case's mesh level (not the beam network).
     bool meshed;
+    // [damping] as terms of the operator sets along a Campbell sweep (the
+    // damped modes: models/harmonic/rotating_harmonics.hpp).
+    bool campbell_damping;
     // The run report's words for its DOFs and its independent problems.
     const char* dofs_counted;     // "DOFs", "DOFs per wave number n"
     const char* problems_line;    // before the per-problem list ("" for one problem)

@@ -361,7 +361,7 @@ void require_spinning_level(const Scene& scene) {
 
 void require_campbell_damping(const Scene& scene, const DampingSpec& damping) {
     const LevelTraits& level = level_traits(chosen_spinning_level(scene));
-    if (level.level != ModelChoice::harmonic)
+    if (!level.campbell_damping)
         throw InputError(scene.source_file + ": [damping] in a Campbell sweep at model = \"" + to_string(level.level) +
                          "\": only the harmonic level's operator sets carry damping today; expected model = "
                          "\"harmonic\" (or --model harmonic) for a body of revolution, or no [damping]");

@@ -14,6 +14,8 @@
 #include "common/error.hpp"
 #include "scene/response_spec.hpp"
 
+#include "support/tiny_case.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -23,30 +25,19 @@ using namespace coremodal;
 
 namespace {
 
-// The rotation tester's core (case 12) at the harmonic level on a coarse
-// section: 6 modes at rest, first bending pair ~62 Hz.
+// The rotation tester's core (case 12, tests/support/tiny_case.hpp) at the
+// harmonic level on a coarse section: 6 modes at rest, first bending pair ~62 Hz.
 std::string tester(const std::string& damping, const std::string& model = "harmonic") {
-    return "name = \"damped\"\nmodel = \"" + model + R"("
-[core]
-inner_diameter = "76 mm"
-wall = "15 mm"
-length = "2211 mm"
-material = { base = "paperboard_core", E_z = "6500 MPa" }
-[supports]
-type = "clamped"
-[supports.left]
-length = "70 mm"
-[analysis]
-modes = 6
-[mesh]
+    std::string core = testing::kClampedTesterCore;
+    core.replace(core.find("model = \"beam\""), 14, "model = \"" + model + "\"");
+    return core + R"([mesh]
 along = 24
 through_wall = 1
 [rotation]
 speeds = ["0 rpm", "2000 rpm"]
 points = 2
 [damping]
-)" + damping +
-           "\n";
+)" + damping + "\n";
 }
 
 CampbellResult campbell_of(const std::string& text, std::vector<double> speeds_hz) {
