@@ -7,6 +7,7 @@
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "common/petsc_handle.hpp"
+#include "scene/free_span.hpp"
 #include "scene/mesh_levels.hpp"
 
 #include <algorithm>
@@ -15,26 +16,21 @@
 namespace coremodal {
 namespace {
 
-// The free-free roll over the free span: the same core and rest paper, cut
-// to L, no supports. Its first bending mode is smooth (no clamp edge), so
+// The free-free roll over the free span (scene/free_span.hpp) on a coarse
+// mesh. Its first bending mode is smooth (no clamp edge), so
 // it converges at h^4: the coarse level is within 0.1 % of the converged
 // value (case 01: 133.46 against 133.36 Hz), far inside the uncertainty of
 // any k, at a fraction of the scene's cost; finer scene meshes do not
 // coarsen it further.
-Scene free_span_scene(const Scene& scene, double span) {
-    Scene free = scene;
+Scene coarse_free_span_scene(const Scene& scene) {
+    Scene free = free_span_scene(scene, 8);  // 6 rigid modes and the bending pair
     free.name = scene.name + "-free-span";
-    free.core.length = span;
-    free.supports = {};
-    free.web.reset();  // k compares the roll in its stand with the same roll free: nothing holds it
-    free.analysis = {};
-    free.analysis.n_modes = 8;  // 6 rigid modes and the bending pair
-    free.mesh.along_per_segment.clear();  // a ladder's counts are for the scene's segments, not the span's
     const MeshLevel& coarse = *find_mesh_level("coarse");
     free.mesh.n_wall = std::min(scene.mesh.n_wall, coarse.n_wall);
     free.mesh.n_rest_paper = std::min(scene.mesh.n_rest_paper, coarse.n_rest_paper);
     free.mesh.n_around = std::min(scene.mesh.n_around,
                                   elements_around(coarse, free.core.inner_diameter, free.core.outer_diameter));
+    const double span = free.core.length;
     free.mesh.n_along = std::min(
         static_cast<int>(std::lround(scene.mesh.n_along * span / scene.core.length)),
         elements_along(span, free.core.outer_diameter,
@@ -118,7 +114,7 @@ ChuckFactor chuck_factor(const Scene& scene, double f1, bool by_model) {
         // The derived scene's own beam comparison is the same Timoshenko beam
         // (the section, free-free over the free span): taken from it, not
         // solved twice.
-        const BeamComparison free = analyse_derived_scene(free_span_scene(scene, k.free_span_m)).beam;
+        const BeamComparison free = analyse_derived_scene(coarse_free_span_scene(scene)).beam;
         k.f2_fe_hz = free.fe_first_bending_hz;
         k.f2_beam_hz = free.timoshenko_hz;
     } else {

@@ -15,6 +15,7 @@
 #include "eigensolve/petsc_algebra.hpp"
 #include "geometry/section_mesh.hpp"
 #include "geometry/tube_section.hpp"
+#include "scene/free_span.hpp"
 #include "scene/materials_library.hpp"
 
 #include <algorithm>
@@ -184,23 +185,6 @@ Linearised linearised(const Scene& scene) {
     return {};
 }
 
-// The free–free roll over the free span (as `run`'s chuck factor,
-// analyses/run/beam_comparison.cpp): the same sections and materials, cut to
-// L, no supports. Unlike the run's, it keeps the scene's mesh counts: the
-// derivative differences operators on one fixed set of DOFs.
-Scene free_span_variant(const Scene& scene) {
-    double li = 0;
-    for (const ChuckSpec& c : scene.supports.chucks) li += c.li();
-    Scene free = scene;
-    free.core.length = scene.core.length - li;
-    free.supports = {};
-    free.web.reset();
-    free.analysis = {};
-    free.analysis.n_modes = kFreeSpanModes;
-    free.mesh.along_per_segment.clear();
-    return free;
-}
-
 // d ln f / d ln p of every distinct mode, for every parameter.
 struct Derivatives {
     Linearised base;
@@ -292,7 +276,11 @@ SensitivityResult eigen_sensitivities(const CaseParameters& c, const std::vector
     r.modes = mode_sensitivities(d);
     const ModeSensitivity* f1 = first_bending(r.modes);
     if (!options.chuck_factor || scene.supports.kind != SupportKind::chucks || !f1) return r;
-    const Derivatives free = derivatives(c, values, options.step, free_span_variant);
+    const Derivatives free = derivatives(c, values, options.step, [](const Scene& scene) {
+        // Unlike the run's, the free roll keeps the scene's mesh counts: the
+        // derivative differences operators on one fixed set of DOFs.
+        return free_span_scene(scene, kFreeSpanModes);
+    });
     const std::vector<ModeSensitivity> free_modes = mode_sensitivities(free);
     const ModeSensitivity* f2 = first_bending(free_modes);
     if (!f2) return r;
