@@ -118,7 +118,7 @@ std::string summary_json(const Scene& scene, const LimitsResult& r) {
                                  {"margin_at_full_roll_m_s", r.change->margin_m_s}};
     // The same head as every command's summary.json (output/summary_json.hpp).
     Json t = summary_head("limits", scene.name, scene.source_file, scene.description);
-    t["model"] = Json{{"level", r.level}, {"solves", r.n_solves}};
+    t["model"] = Json{{"level", to_string(r.level)}, {"solves", r.n_solves}};
     t["verdict"] = verdict;
     t["inputs"] = Json{{"damping", r.damping_summary},
                        {"bow_mm", r.bow_m * kMm},
@@ -175,7 +175,7 @@ std::string limits_report_markdown(const Scene& scene, const LimitsResult& r, co
            "inputs below; * a diameter added where the verdict changes fast). "
            "The safe speed is the conservative end "
            "(bold), then the point value and the band. Level: "
-        << r.level << criteria_levels(r) << ".\n\n";
+        << to_string(r.level) << criteria_levels(r) << ".\n\n";
     out << verdict_table(r) << "\n";
     for (const std::string& png : pngs) out << "![web speed against rest-roll diameter](" << png << ")\n\n";
     if (pngs.empty()) out << "(No picture: " << plot_problem << ")\n\n";
@@ -205,7 +205,7 @@ std::string limits_report_markdown(const Scene& scene, const LimitsResult& r, co
 
 std::string limits_console_summary(const Scene& scene, const LimitsResult& r) {
     std::ostringstream out;
-    out << "limits: " << scene.name << ": " << r.points.size() << " rest-roll diameters at the " << r.level
+    out << "limits: " << scene.name << ": " << r.points.size() << " rest-roll diameters at the " << to_string(r.level)
         << " level, " << r.n_solves << " solves, " << minutes_or_seconds(r.seconds) << "\n";
     out << "  D (mm)   f1 (Hz)  governing              safe (m/s)  band (m/s)\n";
     for (const LimitsPoint& p : r.points)

@@ -385,7 +385,7 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     Scene scene = case_scene;
     scene.model = chosen_level(case_scene);
     LimitsResult r;
-    r.level = to_string(scene.model);
+    r.level = scene.model;
     r.band = request.spec.band;
     r.check_response = request.check_response;
     r.campbell_sweep = request.campbell_sweep;

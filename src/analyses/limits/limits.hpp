@@ -141,7 +141,7 @@ struct LimitsChecks {
 };
 
 struct LimitsResult {
-    std::string level;                // the model level of every criterion
+    ModelChoice level = ModelChoice::beam;  // the model level of every criterion
     std::vector<LimitsPoint> points;  // largest diameter first
     std::vector<UncertainInput> inputs;
     bool band = true;

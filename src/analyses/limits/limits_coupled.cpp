@@ -143,7 +143,7 @@ LimitsResult coupled_verdict(const Scene& case_scene, const std::optional<Respon
     request.say("limits: segmented chucks: the spinning criteria and the band at the harmonic level of the "
                 "axisymmetric equivalent (the pads as full bands of their coverage)");
     LimitsResult r = verdict(harmonic, response, request);
-    r.level = "coupled";
+    r.level = ModelChoice::coupled;
     const std::string spinning =
         "harmonic, axisymmetric equivalent (pads' coverage " + significant(100 * equivalent.coverage, 3) + " %)";
     request.say("limits: f1, k, I-5 and Koenig at the coupled level (the pads themselves) at the same " +

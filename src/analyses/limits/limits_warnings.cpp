@@ -84,7 +84,7 @@ std::vector<std::string> limits_notes(const LimitsResult& r) {
                                                                          "spinning criteria and the band at the "
                                                                          "harmonic level of the axisymmetric "
                                                                          "equivalent")
-                                                             : "every criterion at the " + r.level + " level") +
+                                                             : "every criterion at the " + to_string(r.level) + " level") +
                                         "; a criterion's web speed is pi Dp f_rot at that "
                                         "rest-roll diameter",
                                     "limiting: I-5 at 0.7 (Ilomaki, without a safety cage), Koenig's "

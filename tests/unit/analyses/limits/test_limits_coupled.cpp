@@ -67,7 +67,7 @@ TEST_CASE("The coupled verdict: f1 from the coupled level, the spinning criteria
     const LimitsResult r = verdict(c.scene, c.response, one_diameter(kD));
     REQUIRE(r.points.size() == 1);
     const LimitsPoint& p = r.points.front();
-    CHECK(r.level == "coupled");
+    CHECK(r.level == ModelChoice::coupled);
     // f1 and k: what `coremodal run --model coupled` gives on the scene at that diameter.
     RunOptions options;
     options.quiet = true;
