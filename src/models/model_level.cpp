@@ -1,5 +1,6 @@
 #include "models/model_level.hpp"
 
+#include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 
 namespace coremodal {
@@ -7,6 +8,17 @@ namespace coremodal {
 void warn_about_model(const std::string& source, const std::string& warning, std::vector<std::string>& warnings) {
     if (mpi_rank() == 0) std::cerr << "coremodal: warning: " << source << ": " << warning << std::endl;
     warnings.push_back(warning);
+}
+
+Linearised ModelLevel::linearise(const Scene& scene) {
+    throw InputError(scene.source_file + ": sensitivities are computed at the beam and the harmonic level; expected "
+                     "model = \"harmonic\" (axisymmetric scenes) or \"beam\" (--model)");
+}
+
+std::vector<double> eigenvalues_of(const std::vector<DistinctMode>& modes, const std::vector<Mode>& all) {
+    std::vector<double> out;
+    for (const DistinctMode& d : modes) out.push_back(all.at(d.index - 1).eigenvalue);
+    return out;
 }
 
 }  // namespace coremodal

@@ -12,6 +12,7 @@
 // Why solve() is one call and not problems() + expand(): docs/architecture.md.
 #pragma once
 
+#include "models/linearised.hpp"
 #include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
@@ -59,6 +60,10 @@ public:
     virtual LevelShapes shapes() const = 0;
     // A line after the console tables, or "".
     virtual std::string console_note() const { return ""; }
+    // The scene's distinct modes and their eigenvalues' change with the
+    // operators (models/linearised.hpp), for `sensitivity`. Levels without
+    // it (level_traits(...).sensitivities) refuse with an InputError.
+    virtual Linearised linearise(const Scene& scene);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

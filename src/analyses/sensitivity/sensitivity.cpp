@@ -1,20 +1,9 @@
-// Eigenvalue sensitivities (sensitivity.hpp): the modes at p, then per
-// parameter the operators at p(1 ± h) on the same DOFs, at the beam or the
-// harmonic level.
+// Eigenvalue sensitivities (sensitivity.hpp): the level's modes at p, then per
+// parameter its operators at p(1 ± h) on the same DOFs (models/linearised.hpp).
 #include "analyses/sensitivity/sensitivity.hpp"
 
-#include "analyses/run/run.hpp"
 #include "models/choose.hpp"
-#include "models/part_materials.hpp"
-#include "models/solve_steps.hpp"
-#include "assembly/harmonic_system.hpp"
-#include "beam/beam_model.hpp"
 #include "common/error.hpp"
-#include "common/petsc_handle.hpp"
-#include "eigensolve/modal_solver.hpp"
-#include "eigensolve/petsc_algebra.hpp"
-#include "geometry/section_mesh.hpp"
-#include "geometry/tube_section.hpp"
 #include "scene/free_span.hpp"
 #include "scene/materials_library.hpp"
 
@@ -26,138 +15,8 @@
 namespace coremodal {
 namespace {
 
-// A distinct mode of the run and its eigenvalue partner in a level's solve
-// agree to the solver's tolerance; this is far looser and far tighter than
-// the gap between two distinct modes.
-constexpr double kSameEigenvalue = 1e-6;
 // The free–free roll over the free span: its 6 rigid modes and the first bending pair.
 constexpr int kFreeSpanModes = 8;
-
-struct Linearised {
-    std::vector<DistinctMode> modes;  // of the scene at p
-    // Per distinct mode: dλ over the operators' difference (p₊ − p₋), or none when
-    // the scenes at p(1 ± h) do not share the DOFs of the scene at p.
-    std::function<std::optional<std::vector<double>>(const Scene& plus, const Scene& minus)> delta_lambda;
-    std::vector<double> eigenvalues;  // per distinct mode
-};
-
-std::vector<double> eigenvalues_of(const std::vector<DistinctMode>& modes, const std::vector<Mode>& all) {
-    std::vector<double> out;
-    for (const DistinctMode& d : modes) out.push_back(all.at(d.index - 1).eigenvalue);
-    return out;
-}
-
-// ---- beam level ------------------------------------------------------------
-
-Linearised beam_linearised(const Scene& scene) {
-    auto result = std::make_shared<BeamModelResult>(solve_beam_model(scene));
-    auto base = std::make_shared<NetworkMatrices>(assemble_network(result->network));
-    std::vector<Mode> all;
-    for (size_t i = 0; i < result->modes.size(); ++i) {
-        const BeamMode& b = result->modes[i];
-        Mode mode;
-        mode.index = static_cast<int>(i) + 1;
-        mode.eigenvalue = b.eigenvalue;
-        mode.frequency_hz = b.frequency_hz;
-        mode.label = b.label;
-        all.push_back(std::move(mode));
-    }
-    Linearised lin;
-    lin.modes = distinct_modes(all);
-    lin.eigenvalues = eigenvalues_of(lin.modes, all);
-    const std::vector<DistinctMode> modes = lin.modes;
-    const std::vector<double> lambdas = lin.eigenvalues;
-    lin.delta_lambda = [result, base, modes, lambdas](const Scene& plus, const Scene& minus)
-        -> std::optional<std::vector<double>> {
-        const NetworkMatrices p = assemble_network(build_beam_network(plus, {}));
-        const NetworkMatrices m = assemble_network(build_beam_network(minus, {}));
-        if (p.free_dofs != base->free_dofs || m.free_dofs != base->free_dofs) return std::nullopt;
-        const Eigen::SparseMatrix<double> dK = p.K - m.K, dM = p.M - m.M;
-        std::vector<double> out;
-        for (size_t i = 0; i < modes.size(); ++i) {
-            const Eigen::VectorXd& shape = result->modes.at(modes[i].index - 1).shape;
-            Eigen::VectorXd x(base->free_dofs.size());
-            for (size_t r = 0; r < base->free_dofs.size(); ++r) x[r] = shape[base->free_dofs[r]];
-            const double xMx = x.dot(base->M * x);
-            out.push_back((x.dot(dK * x) - lambdas[i] * x.dot(dM * x)) / xMx);
-        }
-        return out;
-    };
-    return lin;
-}
-
-// ---- harmonic level ----------------------------------------------------------
-
-HarmonicSystem harmonic_system(const Scene& scene, int n) {
-    const SectionMesh section = make_section_mesh(make_tube_section(scene), scene.supports.clamps);
-    const std::vector<PartMaterial> materials = part_materials(scene, section.part_names, "generated section");
-    return assemble_harmonic(scene, section, materials, n);
-}
-
-// One wave number's solve at p and the distinct modes that belong to it.
-struct HarmonicBase {
-    int n = 0;
-    long n_dofs = 0;
-    std::shared_ptr<SolvedModes> solved;
-    std::vector<std::pair<size_t, size_t>> picks;  // (distinct mode, eigenpair of this n)
-};
-
-Linearised harmonic_linearised(const Scene& scene) {
-    require_axisymmetric(scene);
-    RunOptions quiet;
-    quiet.quiet = true;
-    quiet.write_results = false;
-    quiet.chuck_factor_by_fe = false;
-    quiet.plots = false;
-    const RunReport report = run_scene(scene, quiet);
-    Linearised lin;
-    lin.modes = distinct_modes(report.modes.modes);
-    lin.eigenvalues = eigenvalues_of(lin.modes, report.modes.modes);
-    int n_max = 1;
-    for (const DistinctMode& d : lin.modes) n_max = std::max(n_max, d.key.n);
-    SolveRequest request = solve_request(scene);
-    request.lambda_min.reset();
-    request.lambda_max.reset();
-    request.n_modes = static_cast<int>(report.modes.modes.size());
-    auto bases = std::make_shared<std::vector<HarmonicBase>>();
-    std::vector<bool> matched(lin.modes.size(), false);
-    for (int n = 0; n <= n_max + 1; ++n) {
-        HarmonicSystem system = harmonic_system(scene, n);
-        HarmonicBase h{n, system.dofs.n_dofs,
-                       std::make_shared<SolvedModes>(solve_modes(system.operators, request, [](const std::string&) {})), {}};
-        for (size_t i = 0; i < lin.modes.size(); ++i)
-            for (size_t k = 0; k < h.solved->eigenvalues.size() && !matched[i]; ++k)
-                if (std::abs(h.solved->eigenvalues[k] - lin.eigenvalues[i]) <= kSameEigenvalue * lin.eigenvalues[i]) {
-                    h.picks.emplace_back(i, k);
-                    matched[i] = true;
-                }
-        if (!h.picks.empty()) bases->push_back(std::move(h));
-    }
-    for (size_t i = 0; i < lin.modes.size(); ++i)
-        if (!matched[i])
-            throw SolveError("sensitivities: the mode " + lin.modes[i].key.text() + " of the harmonic run was not "
-                             "found again among the wave numbers 0 to " + std::to_string(n_max + 1));
-    const std::vector<double> lambdas = lin.eigenvalues;
-    const size_t n_modes = lin.modes.size();
-    lin.delta_lambda = [bases, lambdas, n_modes](const Scene& plus, const Scene& minus)
-        -> std::optional<std::vector<double>> {
-        std::vector<double> out(n_modes, 0.0);
-        for (const HarmonicBase& h : *bases) {
-            const HarmonicSystem p = harmonic_system(plus, h.n), m = harmonic_system(minus, h.n);
-            if (p.dofs.n_dofs != h.n_dofs || m.dofs.n_dofs != h.n_dofs) return std::nullopt;
-            for (const auto& [i, k] : h.picks) {
-                Vec x = h.solved->vectors[k];
-                const double dK = quadratic_form(p.operators.K(), x) - quadratic_form(m.operators.K(), x);
-                const double dM = quadratic_form(p.operators.M(), x) - quadratic_form(m.operators.M(), x);
-                // x is M-normalised; (M₊ + M₋)/2 = M + O(h²) checks it without keeping M.
-                const double xMx = 0.5 * (quadratic_form(p.operators.M(), x) + quadratic_form(m.operators.M(), x));
-                out[i] = (dK - lambdas[i] * dM) / xMx;
-            }
-        }
-        return out;
-    };
-    return lin;
-}
 
 }  // namespace
 
@@ -172,17 +31,11 @@ ModelChoice sensitivity_level(const Scene& scene) {
 
 namespace {
 
+// The scene's level linearises it (models/linearised.hpp); sensitivity_level
+// refuses a level without sensitivities first, with the case's words.
 Linearised linearised(const Scene& scene) {
-    // The levels' linearisations of this file; sensitivity_level refused the others.
-    switch (sensitivity_level(scene)) {
-        case ModelChoice::beam: return beam_linearised(scene);
-        case ModelChoice::harmonic: return harmonic_linearised(scene);
-        case ModelChoice::coupled:
-        case ModelChoice::solid:
-        case ModelChoice::automatic: break;
-    }
-    COREMODAL_ASSERT(false);
-    return {};
+    sensitivity_level(scene);
+    return make_model_level(scene)->linearise(scene);
 }
 
 // d ln f / d ln p of every distinct mode, for every parameter.

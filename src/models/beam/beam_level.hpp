@@ -20,6 +20,7 @@ public:
     int steps() const override { return 4; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

@@ -18,8 +18,10 @@ public:
     // require_axisymmetric (models/choose.hpp) first.
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
 
 private:
+    std::vector<Mode> verified_modes(const Scene& scene);
     std::optional<RevolvedMesh> revolved_;  // after solve: where the shapes live
 };
 
