@@ -71,7 +71,7 @@ std::string fit_report_markdown(const FitInput& input, const FitOutcome& out,
     s << "\n## Residuals\n\n| case | level | mode | measured | u | start | fitted | residual / u |\n"
          "|---|---|---|---|---|---|---|---|\n";
     for (const FittedMeasurement& m : out.measurements)
-        s << "| " << m.measurement.case_file << " | " << m.level << " | " << m.measurement.mode.text() << " | "
+        s << "| " << m.measurement.case_file << " | " << to_string(m.level) << " | " << m.measurement.mode.text() << " | "
           << significant(m.measurement.frequency_hz, 6) << " Hz | " << significant(m.measurement.uncertainty_hz, 3)
           << " Hz" << (m.measurement.uncertainty_assumed
                   ? " (assumed: " + significant(100 * kDefaultRelativeUncertainty, 2) + " %, none given)"

@@ -64,7 +64,7 @@ std::string sensitivity_table_markdown(const SensitivityResult& r) {
 std::string sensitivity_report_markdown(const std::string& case_name, const SensitivityResult& r) {
     std::ostringstream out;
     out << "# Sensitivities of " << case_name << "\n\n"
-        << "d ln f / d ln p of the " << r.level << " level's modes, from the eigenvalue derivative "
+        << "d ln f / d ln p of the " << to_string(r.level) << " level's modes, from the eigenvalue derivative "
         << "φᵀ(∂K/∂p − λ ∂M/∂p)φ / (2λ) with ∂K/∂p, ∂M/∂p the central difference of the assembled operators "
         << "(docs/how-to/calibration.md, \"Sensitivities\"). A value of 0.5 means f ∝ √p; 0.1: a 10 % error in p moves "
         << "f by 1 %.";

@@ -37,7 +37,7 @@ struct CaseGroup {
 struct Evaluation {
     std::vector<double> f_hz;              // per measurement
     std::vector<std::vector<double>> dlnf; // [measurement][fit parameter]
-    std::vector<std::string> level;        // per measurement
+    std::vector<ModelChoice> level;        // per measurement
 };
 
 std::string location(const FitInput& in, const toml::source_region& where) {
@@ -113,7 +113,7 @@ Evaluation evaluate(const FitInput& in, const std::vector<CaseGroup>& groups, co
     const size_t n_m = in.measurements.size(), n_p = static_cast<size_t>(x.size());
     e.f_hz.assign(n_m, 0.0);
     e.dlnf.assign(n_m, std::vector<double>(n_p, 0.0));
-    e.level.assign(n_m, "");
+    e.level.assign(n_m, ModelChoice::automatic);
     SensitivityOptions options;
     options.chuck_factor = false;
     for (const CaseGroup& g : groups) {

@@ -16,6 +16,7 @@
 
 #include "analyses/fit/measurements.hpp"
 #include "scene/case_parameters.hpp"
+#include "scene/model_choice.hpp"
 
 #include <Eigen/Dense>
 
@@ -47,7 +48,7 @@ struct FittedMeasurement {
     double model_hz = 0;             // at the fitted values
     double start_hz = 0;             // at the start values
     std::vector<double> dlnf_dlnp;   // per fit parameter (0 where it does not enter the case)
-    std::string level;               // model level the case was solved at
+    ModelChoice level = ModelChoice::beam;  // model level the case was solved at
 };
 
 struct FittedCase {

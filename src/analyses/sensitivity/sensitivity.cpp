@@ -122,7 +122,7 @@ SensitivityResult eigen_sensitivities(const CaseParameters& c, const std::vector
     r.parameters = c.parameters();
     r.values = values;
     const Scene scene = c.scene(values);
-    r.level = to_string(sensitivity_level(scene));
+    r.level = sensitivity_level(scene);
     const auto same = [](Scene s) { return s; };
     const Derivatives d = derivatives(c, values, options.step, same);
     r.methods = d.methods;

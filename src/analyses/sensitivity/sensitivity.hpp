@@ -41,7 +41,7 @@ struct ModeSensitivity {
 };
 
 struct SensitivityResult {
-    std::string level;  // "beam" or "harmonic"
+    ModelChoice level = ModelChoice::beam;  // beam or harmonic
     std::vector<CaseParameter> parameters;
     std::vector<double> values;        // the parameters' values differentiated at (SI)
     std::vector<std::string> methods;  // per parameter: "operators" or "re-solved"

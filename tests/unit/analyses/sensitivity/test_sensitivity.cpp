@@ -51,7 +51,7 @@ TEST_CASE("sensitivity: a free tube at the beam level, d ln f / d ln p in closed
         free_tube("beam"), "iso.toml", {"core.material.E_z", "core.material.G_thetaz", "core.material.density"});
     CHECK(c.values()[0] == Approx(6.5e9));  // the library's paperboard_core
     const SensitivityResult r = eigen_sensitivities(c, c.values());
-    CHECK(r.level == "beam");
+    CHECK(r.level == ModelChoice::beam);
     for (const std::string& method : r.methods) CHECK(method == "operators");
     // Free–free bending modes have m = 2, 3, 4 axial nodes.
     for (int m = 2; m <= 4; ++m) {
@@ -94,7 +94,7 @@ TEST_CASE("sensitivity: harmonic level, case 08's contact and wall shear against
     // The contact stiffness the reader derived from 6 bar (scene/chuck_contact.hpp): 50 (0.6 MPa + 20 kPa) / 1 mm.
     CHECK(c.values()[1] == Approx(50 * (0.6e6 + 20e3) / 1e-3));
     const SensitivityResult r = eigen_sensitivities(c, c.values());
-    CHECK(r.level == "harmonic");
+    CHECK(r.level == ModelChoice::harmonic);
     const ModeKey f1{"bending", 1, 0, 1};
     const ModeSensitivity& b = *r.find(f1);
     // The core's density is most but not all of the mass (steel chucks move too).
