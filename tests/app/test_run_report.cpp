@@ -73,6 +73,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 }  // namespace
 
 TEST_CASE("A run writes report.md with the numbers of summary.json and the pictures it links", "[app][cli][report]") {
+    // Blocks, not SECTIONs: Catch2 reruns a test case once per section, and
+    // the run is the cost.
     TempDir dir("report");
     dir.write("tube.toml", kClampedTube);
     const Run r = run_coremodal(dir, "run tube.toml -o out -q");
@@ -85,7 +87,8 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
     CHECK(contains(report, "# clamped-tube\n\nA short clamped steel tube"));
     CHECK(contains(report, "| supports | clamped: left z = 0…0.04 m; right z = 0.46…0.5 m |"));
 
-    SECTION("The mode table has a row per mode with the frequency of summary.json") {
+    {
+        INFO("The mode table has a row per mode with the frequency of summary.json");
         const std::vector<double> f = json_numbers(summary, "frequency_hz");
         REQUIRE(f.size() == 7);
         for (size_t i = 0; i < f.size(); ++i) {
@@ -94,7 +97,8 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
         }
         CHECK(contains(report, "**complete**"));
     }
-    SECTION("The beam comparison sets Euler-Bernoulli and Timoshenko beside the FE f1") {
+    {
+        INFO("The beam comparison sets Euler-Bernoulli and Timoshenko beside the FE f1");
         const double eb = json_numbers(summary, "euler_bernoulli_hz").at(0);
         const double timo = json_numbers(summary, "timoshenko_hz").at(0);
         const double fe = json_numbers(summary, "fe_first_bending_hz").at(0);
@@ -103,7 +107,8 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
         CHECK(contains(report, "| Timoshenko (beam FE) | " + formatted("%.4f", timo) + " | " +
                                    formatted("%.4f", fe / timo) + " |"));
     }
-    SECTION("The safe web speed is safe pi Dp f1 with Dp the core's outer diameter") {
+    {
+        INFO("The safe web speed is safe pi Dp f1 with Dp the core's outer diameter");
         const double f1 = json_numbers(summary, "fe_first_bending_hz").at(0);
         // No rest paper: Dp = 76 + 2 x 15 = 106 mm; v = 0.7 x pi x 0.106 m x f1
         // = 0.23311 m x f1 (f1 ~ 1.5 kHz for this short steel tube: ~350 m/s);
@@ -123,7 +128,8 @@ TEST_CASE("A run writes report.md with the numbers of summary.json and the pictu
         const double v_krit = json_numbers(summary, "v_krit_m_s").at(0);
         CHECK(contains(report, "v_krit = " + significant(v_krit) + " m/s"));
     }
-    SECTION("Every linked picture exists: the spectrum and one of each mode type") {
+    {
+        INFO("Every linked picture exists: the spectrum and one of each mode type");
         const auto pictures = linked_pictures(report);
         CHECK(pictures.size() >= 3);  // spectrum, bending, torsion (and more)
         CHECK(std::find(pictures.begin(), pictures.end(), "spectrum.png") != pictures.end());

@@ -42,6 +42,8 @@ double f1_of(const Scene& s) {
 
 TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body closed form",
           "[verification][chucks][contact][long]") {
+    // Blocks, not SECTIONs: Catch2 reruns a test case once per section, and
+    // the static contact is the cost (3 x 80 s).
     // Only the contact layer deforms; its arc is wide enough for 32 elements
     // around (2.8 deg between points) and its pressures of p ~ 0.2 K1.
     const Scene s = rigid_core_not_expanded(32);
@@ -55,12 +57,14 @@ TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body
     INFO("closed form: drop " << delta << " m, top interpenetration " << delta - kChuckClearance << " m, arc "
                               << 2 * half_arc_deg << " deg; FE: peak " << peak << " m, arc "
                               << run.contact.chucks[0].arc_deg << " deg");
-    SECTION("The contact carries exactly the roll's weight, half on each chuck") {
+    {
+        INFO("The contact carries exactly the roll's weight, half on each chuck");
         const double total = run.contact.chucks[0].vertical_force_n + run.contact.chucks[1].vertical_force_n;
         CHECK(total == Approx(run.roll_weight).epsilon(1e-4));
         CHECK(run.contact.chucks[0].vertical_force_n == Approx(run.contact.chucks[1].vertical_force_n).epsilon(1e-6));
     }
-    SECTION("The top's interpenetration and the closed arc follow the rigid-body closed form") {
+    {
+        INFO("The top's interpenetration and the closed arc follow the rigid-body closed form");
         // The closed edge cuts faces: the kinked pressure integrated by 4 x 4
         // Gauss points costs about 1 % in the force balance.
         CHECK(peak == Approx(delta - kChuckClearance).epsilon(0.03));
@@ -71,7 +75,8 @@ TEST_CASE("A rigid core resting on rigid chucks closes the arc of the rigid-body
         // Along the whole inserted length: the rigid core does not tilt.
         CHECK(run.contact.chucks[0].z_to_m - run.contact.chucks[0].z_from_m == Approx(kChuckInserted).epsilon(0.1));
     }
-    SECTION("The active set settles, and stays settled") {
+    {
+        INFO("The active set settles, and stays settled");
         const std::vector<int>& h = run.contact.closed_history;
         CHECK(run.contact.iterations <= 15);
         REQUIRE(h.size() >= 2);
