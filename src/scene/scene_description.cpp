@@ -34,7 +34,7 @@ void collect_paths(const toml::node& node, const std::string& path, std::set<std
 std::string length(double v) { return format_quantity(v, Dimension::length); }
 
 // A TOML string as written: "text".
-std::string quoted(std::string_view text) {
+std::string toml_quoted(std::string_view text) {
     std::string out(1, '"');
     out.append(text);
     out += '"';
@@ -95,9 +95,9 @@ private:
     }
 
     void top() {
-        add("name", quoted(scene_.name), origin("name", "default: the file name"));
-        if (!scene_.description.empty()) add("description", quoted(scene_.description), "file");
-        add("model", quoted(to_string(scene_.model)), origin("model"));
+        add("name", toml_quoted(scene_.name), origin("name", "default: the file name"));
+        if (!scene_.description.empty()) add("description", toml_quoted(scene_.description), "file");
+        add("model", toml_quoted(to_string(scene_.model)), origin("model"));
     }
 
     void core() {
@@ -126,7 +126,7 @@ private:
     // The material's name, then each of its values: from the file, or from
     // the library entry it is based on (material.source names it).
     void material(const std::string& owner, const std::string& path, const OrthotropicMaterial& m) {
-        add(owner + " material", quoted(m.name), origin(path, "default"));
+        add(owner + " material", toml_quoted(m.name), origin(path, "default"));
         const std::string library = m.source.substr(0, m.source.find(','));
         const std::string display = owner.substr(0, owner.size() - 1) + ".material] ";
         const auto value = [&](std::string_view key, double v, Dimension d) {
@@ -152,7 +152,7 @@ private:
     void supports() {
         const SupportSpec& s = scene_.supports;
         const char* type = s.kind == SupportKind::free ? "free" : s.kind == SupportKind::clamped ? "clamped" : "chucks";
-        add("[supports] type", quoted(type),
+        add("[supports] type", toml_quoted(type),
             origin("supports.type", sources_.in_file_has("supports") ? "default" : "default: no [supports], free-free"));
         for (const ClampSpec& clamp : s.clamps) this->clamp(clamp);
         for (const ChuckSpec& chuck : s.chucks) this->chuck(chuck);
@@ -263,10 +263,10 @@ private:
     void mesh() {
         const MeshSpec& m = scene_.mesh;
         if (m.file) {
-            add("[mesh] file", quoted(*m.file), origin("mesh.file"));
+            add("[mesh] file", toml_quoted(*m.file), origin("mesh.file"));
         } else {
             const std::string level = m.level == "custom" ? "from the counts given" : origin("mesh.level");
-            add("[mesh] level", quoted(m.level), level);
+            add("[mesh] level", toml_quoted(m.level), level);
             const std::string from_level = sources_.on_command_line.contains("mesh.level") ? "command line (--mesh)"
                                                                                            : "from the level";
             const auto count = [&](const char* key, int n) {
@@ -300,7 +300,7 @@ private:
                 count("along", m.n_along);
             if (const auto text = mesh_rule_text(scene_)) add("[mesh] rule", *text, "scene/mesh_rule.hpp");
         }
-        add("[mesh] element", quoted(m.element), origin("mesh.element"));
+        add("[mesh] element", toml_quoted(m.element), origin("mesh.element"));
     }
 };
 
