@@ -111,11 +111,20 @@ public:
           panel_(std::size_t(std::min<PetscInt>(n, kPanelRows)) * std::size_t(capacity + block)),
           H_(Eigen::MatrixXd::Zero(capacity + block, capacity + block)) {}
 
-    // The first block: random, fixed seed per process (runs repeat bit for bit).
-    void start() {
+    // The first block: the given vectors (as many as fit), then random
+    // columns, fixed seed per process (runs repeat bit for bit). A given
+    // vector in the span of earlier ones is replaced like a vanished one.
+    void start(const std::vector<PetscVector>* given) {
+        const int k = given ? std::min(b_, int(given->size())) : 0;
+        for (int j = 0; j < k; ++j) {
+            const PetscScalar* x;
+            COREMODAL_PETSC(VecGetArrayRead((*given)[j], &x));
+            std::memcpy(V_.col(j), x, sizeof(double) * size_t(n_));
+            COREMODAL_PETSC(VecRestoreArrayRead((*given)[j], &x));
+        }
         std::mt19937_64 random(20261126u + unsigned(mpi_rank(comm_)));
         std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-        for (int j = 0; j < b_; ++j)
+        for (int j = k; j < b_; ++j)
             for (PetscInt i = 0; i < n_; ++i) V_.col(j)[i] = uniform(random);
         normalise_new_block(0, b_, nullptr);
         m_ = b_;
@@ -382,7 +391,7 @@ BlockLanczosResult block_lanczos_lowest(const BlockSolve& solve, Mat M, double s
                          std::to_string(n) + " unknowns: expected a block of at least 1 and a basis of at least " +
                          "the pairs + 4 blocks and at most the unknowns - 1 block");
     BlockLanczos lanczos(solve, M, n_local, block, capacity);
-    lanczos.start();
+    lanczos.start(request.start);
     BlockLanczosResult out;
     out.block_size = block;
     for (;;) {
@@ -408,6 +417,7 @@ BlockLanczosResult block_lanczos_lowest(const BlockSolve& solve, Mat M, double s
     }
     out.blocks_solved = lanczos.blocks_solved();
     out.restarts = lanczos.restarts();
+    out.started_from = request.start ? std::min(block, int(request.start->size())) : 0;
     return out;
 }
 

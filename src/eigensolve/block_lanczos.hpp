@@ -48,6 +48,12 @@ struct BlockLanczosRequest {
     int wanted = 0;            // the pairs sought, in the order above
     double tolerance = 1e-10;  // on ||T x - theta x||_M / theta
     int max_restarts = 500;
+    // Optional: vectors near the wanted ones (M's layout), e.g. a coarser
+    // model's modes at this mesh's nodes. The first block takes as many as
+    // fit, random columns the rest. The start changes only how fast the
+    // space holds the wanted pairs, never what is accepted (the same
+    // residual test; the count is the factor's).
+    const std::vector<PetscVector>* start = nullptr;
 };
 
 struct BlockLanczosResult {
@@ -60,6 +66,7 @@ struct BlockLanczosResult {
     int block_size = 0;
     int blocks_solved = 0;  // passes over the factor
     int restarts = 0;
+    int started_from = 0;  // given start vectors in the first block
 };
 
 // F: a factor of K - sigma M (any package with MatMatSolve). M: the mass,

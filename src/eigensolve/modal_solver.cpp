@@ -291,10 +291,19 @@ bool block_lanczos_applies(PetscInt n_dofs, int wanted) {
     return on && !eps_type && !st_factor;
 }
 
+// The caller's wanted pairs, residual and restarts, and its predicted
+// vectors as the first block.
+static BlockLanczosRequest lanczos_request(int wanted, const SolveRequest& request) {
+    BlockLanczosRequest out{wanted, request.tolerance, request.max_iterations};
+    out.start = request.predicted_vectors.get();
+    return out;
+}
+
 // The pairs block Lanczos found, its passes said through `progress`.
 static Attempt as_attempt(BlockLanczosResult r, const Progress& progress) {
     progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
-             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)");
+             std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)" +
+             (r.started_from ? ", started from " + std::to_string(r.started_from) + " predicted mode(s)" : ""));
     Attempt a;
     a.n_converged = static_cast<int>(r.eigenvalues.size());
     a.lambdas = std::move(r.eigenvalues);
@@ -304,13 +313,12 @@ static Attempt as_attempt(BlockLanczosResult r, const Progress& progress) {
 
 Attempt block_lanczos_attempt(Mat F, Mat M, double sigma, int wanted, const SolveRequest& request,
                               const Progress& progress) {
-    return as_attempt(block_lanczos_lowest(F, M, sigma, {wanted, request.tolerance, request.max_iterations}), progress);
+    return as_attempt(block_lanczos_lowest(F, M, sigma, lanczos_request(wanted, request)), progress);
 }
 
 Attempt block_lanczos_attempt(const BlockSolve& solve, Mat M, double sigma, int wanted, const SolveRequest& request,
                               const Progress& progress) {
-    return as_attempt(block_lanczos_lowest(solve, M, sigma, {wanted, request.tolerance, request.max_iterations}),
-                      progress);
+    return as_attempt(block_lanczos_lowest(solve, M, sigma, lanczos_request(wanted, request)), progress);
 }
 
 void say_if_out_of_core(Mat F, const Progress& progress) {

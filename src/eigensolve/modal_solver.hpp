@@ -13,6 +13,7 @@
 #include "eigensolve/verification.hpp"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,11 @@ struct SolveRequest : ModeRequest {
     // factor serves both the shift-and-invert and the inertia count; a wrong
     // prediction falls back to a second count, or to the negative shift.
     std::vector<double> predicted_eigenvalues;
+    // Vectors near the lowest modes (K's layout; e.g. the harmonic level's
+    // modes at the solid mesh's nodes), or none: block Lanczos's first block
+    // (block_lanczos.hpp). They change how fast the modes converge, never
+    // which are accepted or the count. Shared: requests are copied.
+    std::shared_ptr<const std::vector<PetscVector>> predicted_vectors;
 };
 
 // The most modes one eigenproblem is solved for ([analysis] modes has the

@@ -19,6 +19,8 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
+    // After solve: the revolved section the modes' shapes live on.
+    const std::optional<RevolvedMesh>& revolved() const { return revolved_; }
 
 private:
     std::vector<Mode> verified_modes(const Scene& scene);

@@ -17,6 +17,7 @@
 #include "models/part_materials.hpp"
 #include "models/solid/gravity_contact.hpp"
 #include "models/solid/mesh_resolution.hpp"
+#include "models/solid/predicted_start.hpp"
 #include "models/solve_steps.hpp"
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
@@ -24,6 +25,7 @@
 #include "scene/mesh_rule.hpp"
 
 #include <cmath>
+#include <memory>
 #include <set>
 #include <thread>
 
@@ -171,7 +173,8 @@ constexpr bool kPredictBandEdge = true;
 // modes around (mesh_resolution.hpp). Empty for a scene the harmonic level
 // cannot take, or when it fails (the solve then uses a negative shift and a
 // second factor for the count, and the mesh goes unchecked).
-std::vector<Mode> harmonic_counterparts(const Scene& scene, const SolveRequest& request, const Printer& say) {
+std::vector<Mode> harmonic_counterparts(const Scene& scene, const SolveRequest& request, const Printer& say,
+                                        std::optional<RevolvedMesh>& revolved) {
     if (why_not_axisymmetric(scene)) return {};
     Scene axisymmetric = scene;
     axisymmetric.model = ModelChoice::harmonic;
@@ -194,6 +197,7 @@ std::vector<Mode> harmonic_counterparts(const Scene& scene, const SolveRequest& 
     try {
         HarmonicLevel level;
         modes = level.solve(axisymmetric, Printer{false}).modes;
+        revolved = level.revolved();
     } catch (const std::exception& e) {
         PetscLogStagePop();
         say(std::string("      no solve at the harmonic level (band edge, mesh check): ") + e.what());
@@ -214,6 +218,22 @@ std::vector<double> predicted_eigenvalues(const Scene& scene, const SolveRequest
     std::vector<double> lambdas;
     for (const Mode& mode : harmonic) lambdas.push_back(mode.eigenvalue);
     return lambdas;
+}
+
+// On unless -predicted_start false: block Lanczos's first block from the
+// harmonic level's modes at the solid's nodes (predicted_start.hpp; issue
+// 39, measured in bench/results/log.md session 22).
+std::shared_ptr<const std::vector<PetscVector>> predicted_start(const std::optional<RevolvedMesh>& revolved,
+                                                                const std::vector<Mode>& harmonic, const Mesh& mesh,
+                                                                const DofMap& dofs, Mat K, const Printer& say) {
+    PetscBool on = PETSC_TRUE;
+    COREMODAL_PETSC(PetscOptionsGetBool(nullptr, nullptr, "-predicted_start", &on, nullptr));
+    if (!on || !revolved) return nullptr;
+    auto vectors = std::make_shared<std::vector<PetscVector>>(harmonic_modes_on_solid(*revolved, harmonic, mesh, dofs, K));
+    if (vectors->empty()) return nullptr;
+    say("      block Lanczos starts from the harmonic level's modes at the solid's nodes (-predicted_start false: "
+        "a random start)");
+    return vectors;
 }
 
 // Rank 0's text on every rank.
@@ -307,8 +327,11 @@ LevelModes SolidLevel::solve(const Scene& scene, const Printer& say) {
     // Which factors: the solver's progress lines say (one LDL^T at a
     // predicted band edge, or a negative shift and a second factor to count).
     say("[4/7] solving the eigenproblem (shift-and-invert)");
-    const std::vector<Mode> harmonic = scene.mesh.file ? std::vector<Mode>{} : harmonic_counterparts(scene, request, say);
+    std::optional<RevolvedMesh> revolved;
+    const std::vector<Mode> harmonic =
+        scene.mesh.file ? std::vector<Mode>{} : harmonic_counterparts(scene, request, say, revolved);
     request.predicted_eigenvalues = predicted_eigenvalues(scene, request, harmonic);
+    request.predicted_vectors = predicted_start(revolved, harmonic, mesh, dofs, system.K(), say);
     say(shift_scale_text(scene));
     const SolvedModes solved = solve_for_case(scene, system, request, say, "");
     out.verification = solved.verification;
