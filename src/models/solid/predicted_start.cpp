@@ -125,14 +125,21 @@ std::vector<PetscVector> harmonic_modes_on_solid(const RevolvedMesh& revolved, c
         double theta = std::atan2(p[1], p[0]);
         if (theta < 0) theta += 2 * M_PI;
         const std::vector<int>& at = planes.at[nearest(r, p[2])];
-        const int t0 = int(theta / step) % planes.n_planes, t1 = (t0 + 1) % planes.n_planes;
-        const double w = std::clamp(theta / step - int(theta / step), 0.0, 1.0);
-        if (at[t0] < 0 || at[t1] < 0) {  // on the axis: one node, its displacement as it is
-            if (at[0] < 0) continue;
+        // The present planes on either side: a section corner node turns into
+        // every plane, a mid-side node into every other one, an axis node
+        // into one (its displacement then taken as it is).
+        const int n = planes.n_planes;
+        int t0 = int(theta / step) % n, t1 = (t0 + 1) % n, back = 0, ahead = 0;
+        while (at[t0] < 0 && back < n) t0 = (t0 + n - 1) % n, ++back;
+        while (at[t1] < 0 && ahead < n) t1 = (t1 + 1) % n, ++ahead;
+        if (at[t0] < 0) continue;
+        if (t0 == t1 || at[t1] < 0) {
             for (std::size_t k = 0; k < modes.size(); ++k)
-                for (int i = 0; i < 3; ++i) x[k][dofs.dof(node, i)] = modes[k].shape[3 * std::size_t(at[0]) + i];
+                for (int i = 0; i < 3; ++i) x[k][dofs.dof(node, i)] = modes[k].shape[3 * std::size_t(at[t0]) + i];
             continue;
         }
+        const double gap = ((t1 - t0 + n) % n) * step, past = std::fmod(theta - t0 * step + 2 * M_PI, 2 * M_PI);
+        const double w = std::clamp(past / gap, 0.0, 1.0);
         const int a = at[t0], b = at[t1];
         const double c = std::cos(theta), s = std::sin(theta);
         for (std::size_t k = 0; k < modes.size(); ++k) {

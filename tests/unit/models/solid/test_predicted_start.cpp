@@ -72,8 +72,9 @@ TEST_CASE("A harmonic mode read at a solid mesh's nodes between the revolved pla
     // Linear interpolation in theta of a component of wave number n over a
     // step h errs by at most (n h)^2 / 8 of its amplitude (the bound
     // max|f''| h^2 / 8); a Cartesian component mixes u_r and u_theta, so by
-    // at most (max U + max V) (n h)^2 / 8 = 2.6 x 0.048 here.
-    const double h = M_PI / kAround, bound = (1.8 + 0.8) * std::pow(kWave * h, 2) / 8;
+    // at most (max U + max V) (n h)^2 / 8. A mid-side node of the section
+    // turns into every other plane only: h = 2 pi / 16 for it, 0.2 here.
+    const double h = 2 * M_PI / kAround, bound = (1.8 + 0.8) * std::pow(kWave * h, 2) / 8;
     double worst = 0;
     for (int node = 1; node < solid.n_nodes(); ++node) {
         const auto& p = solid.nodes[node];
