@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
+#include "models/response/response_model.hpp"
 
 namespace coremodal {
 
@@ -13,6 +14,12 @@ void warn_about_model(const std::string& source, const std::string& warning, std
 Linearised ModelLevel::linearise(const Scene& scene) {
     throw InputError(scene.source_file + ": sensitivities are computed at the beam and the harmonic level; expected "
                      "model = \"harmonic\" (axisymmetric scenes) or \"beam\" (--model)");
+}
+
+std::unique_ptr<ResponseModel> ModelLevel::response(const Scene& scene, const BeamModelOptions&) {
+    require_response_level(scene);  // says why the scene's level has no response (scene/level_traits.hpp)
+    COREMODAL_ASSERT(false);        // a level that spins has its own
+    return nullptr;
 }
 
 std::vector<double> eigenvalues_of(const std::vector<DistinctMode>& modes, const std::vector<Mode>& all) {

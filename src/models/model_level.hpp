@@ -23,6 +23,9 @@
 
 namespace coremodal {
 
+struct BeamModelOptions;
+class ResponseModel;
+
 // Progress lines on standard output, when on.
 struct Printer {
     bool on;
@@ -64,6 +67,11 @@ public:
     // operators (models/linearised.hpp), for `sensitivity`. Levels without
     // it (level_traits(...).sensitivities) refuse with an InputError.
     virtual Linearised linearise(const Scene& scene);
+    // The scene's forced response (models/response/response_model.hpp), for
+    // `response`, `limits` and `study`; `options` of the beam network (the
+    // beam level's). Levels without one (level_traits(...).spins) refuse
+    // with an InputError. The scene outlives the model.
+    virtual std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

@@ -18,6 +18,8 @@ public:
     // require_axisymmetric (models/choose.hpp) first.
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    // models/harmonic/harmonic_response.cpp
+    std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
 
 private:

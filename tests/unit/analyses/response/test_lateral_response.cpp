@@ -3,8 +3,8 @@
 // against the complete basis' dense LU of the same system, built so that
 // both are the one linear system: the modes above the truncated basis carry
 // no own damping in either.
-#include "analyses/response/lateral_response.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "models/response/lateral_response.hpp"
+#include "models/response/response_loads.hpp"
 #include "beam/beam_model.hpp"
 #include "effects/damping.hpp"
 #include "scene/case_file.hpp"
