@@ -2,7 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 
 namespace coremodal {
 
@@ -16,7 +16,7 @@ Linearised ModelLevel::linearise(const Scene& scene) {
                      "model = \"harmonic\" (axisymmetric scenes) or \"beam\" (--model)");
 }
 
-std::unique_ptr<ResponseModel> ModelLevel::response(const Scene& scene, const BeamModelOptions&) {
+std::unique_ptr<LevelResponse> ModelLevel::response(const Scene& scene, const BeamModelOptions&) {
     require_response_level(scene);  // says why the scene's level has no response (scene/level_traits.hpp)
     COREMODAL_ASSERT(false);        // a level that spins has its own
     return nullptr;

@@ -24,7 +24,7 @@
 namespace coremodal {
 
 struct BeamModelOptions;
-class ResponseModel;
+class LevelResponse;
 
 // Progress lines on standard output, when on.
 struct Printer {
@@ -67,11 +67,11 @@ public:
     // operators (models/linearised.hpp), for `sensitivity`. Levels without
     // it (level_traits(...).sensitivities) refuse with an InputError.
     virtual Linearised linearise(const Scene& scene);
-    // The scene's forced response (models/response/response_model.hpp), for
+    // The scene's forced response (models/response/level_response.hpp), for
     // `response`, `limits` and `study`; `options` of the beam network (the
     // beam level's). Levels without one (level_traits(...).spins) refuse
     // with an InputError. The scene outlives the model.
-    virtual std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options);
+    virtual std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

@@ -1,7 +1,7 @@
 #include "analyses/response/response.hpp"
 
 #include "models/choose.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 
 namespace coremodal {
 

@@ -21,7 +21,7 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     // models/beam/beam_response.cpp
-    std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options) override;
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
     // The model's timing, in milliseconds.
     std::string console_note() const override;

@@ -5,7 +5,7 @@
 #include "models/response/lateral_response.hpp"
 #include "models/response/modal_response_model.hpp"  // highest_order
 #include "models/response/response_levels.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 #include "models/beam/beam_level.hpp"
 #include "models/response/response_loads.hpp"
 #include "models/response/response_sweep.hpp"
@@ -263,7 +263,7 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
 
 // The beam network's forced response (ModelLevel::response); the scene
 // outlives it (the driver's call).
-class BeamResponse : public ResponseModel {
+class BeamResponse : public LevelResponse {
 public:
     BeamResponse(const Scene& scene, const BeamModelOptions& options) : scene_(scene), options_(options) {}
     // The beam level's run at rest is the lateral problem's already (RestModes).
@@ -278,7 +278,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ResponseModel> BeamLevel::response(const Scene& scene, const BeamModelOptions& options) {
+std::unique_ptr<LevelResponse> BeamLevel::response(const Scene& scene, const BeamModelOptions& options) {
     return std::make_unique<BeamResponse>(scene, options);
 }
 

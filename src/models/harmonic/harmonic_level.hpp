@@ -19,7 +19,7 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     // models/harmonic/harmonic_response.cpp
-    std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options) override;
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
 
 private:

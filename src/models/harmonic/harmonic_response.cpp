@@ -7,7 +7,7 @@
 #include "models/response/harmonic_loads.hpp"
 #include "models/response/modal_response_model.hpp"
 #include "models/response/response_levels.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -206,7 +206,7 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
 // The harmonic level's forced response (ModelLevel::response): several
 // setups from one n = 1 basis, its labels and K's factor (run_harmonic_responses);
 // the scene outlives it (the driver's call).
-class HarmonicResponse : public ResponseModel {
+class HarmonicResponse : public LevelResponse {
 public:
     explicit HarmonicResponse(const Scene& scene) : scene_(scene) {}
     ResponseResult respond(const ResponseSetup& setup, ResponseChecking checking, RestModes rest) override {
@@ -223,7 +223,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ResponseModel> HarmonicLevel::response(const Scene& scene, const BeamModelOptions&) {
+std::unique_ptr<LevelResponse> HarmonicLevel::response(const Scene& scene, const BeamModelOptions&) {
     return std::make_unique<HarmonicResponse>(scene);
 }
 

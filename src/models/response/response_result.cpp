@@ -6,7 +6,7 @@
 #include "effects/excitation.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 
 #include <cmath>
 #include <complex>
@@ -107,7 +107,7 @@ void require_response_level(const Scene& scene) {
                          "(docs/theory/rotation-solid.md); expected full bands, no [mesh] file and expanded chucks");
 }
 
-std::vector<ResponseResult> ResponseModel::respond_all(const std::vector<ResponseSetup>& setups,
+std::vector<ResponseResult> LevelResponse::respond_all(const std::vector<ResponseSetup>& setups,
                                                    ResponseChecking checking, RestModes rest) {
     std::vector<ResponseResult> out;
     for (const ResponseSetup& s : setups) out.push_back(respond(s, checking, rest));

@@ -20,7 +20,7 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     // models/solid/solid_response.cpp
-    std::unique_ptr<ResponseModel> response(const Scene& scene, const BeamModelOptions& options) override;
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
 
 private:
     std::optional<Mesh> mesh_;  // after solve: where the shapes live

@@ -8,7 +8,7 @@
 // practice: a sparse LU of the 3D problem per checked speed.
 #include "models/response/modal_response_model.hpp"
 #include "models/response/response_levels.hpp"
-#include "models/response/response_model.hpp"
+#include "models/response/level_response.hpp"
 #include "models/response/solid_loads.hpp"
 #include "assembly/petsc_system.hpp"
 #include "common/error.hpp"
@@ -113,7 +113,7 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
 
 // The solid's forced response (ModelLevel::response); the scene outlives it
 // (the driver's call).
-class SolidResponse : public ResponseModel {
+class SolidResponse : public LevelResponse {
 public:
     explicit SolidResponse(const Scene& scene) : scene_(scene) {}
     // The solid level's run at rest is the lateral problem's already (RestModes).
@@ -127,7 +127,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ResponseModel> SolidLevel::response(const Scene& scene, const BeamModelOptions&) {
+std::unique_ptr<LevelResponse> SolidLevel::response(const Scene& scene, const BeamModelOptions&) {
     return std::make_unique<SolidResponse>(scene);
 }
 

@@ -12,9 +12,9 @@
 
 namespace coremodal {
 
-class ResponseModel {
+class LevelResponse {
 public:
-    virtual ~ResponseModel() = default;
+    virtual ~LevelResponse() = default;
     // The steady response to one setup (steps 1-5 of analyses/response/response.hpp).
     virtual ResponseResult respond(const ResponseSetup& setup, ResponseChecking checking, RestModes rest) = 0;
     // Setups that differ only in what changes neither K nor M: by default one
