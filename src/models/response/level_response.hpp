@@ -20,8 +20,8 @@ public:
     // Setups that differ only in what changes neither K nor M: by default one
     // after another; a level that can answers them all from one set of modes
     // at rest (the harmonic level's n = 1 basis, its labels and K's factor).
-    virtual std::vector<ResponseResult> respond_all(const std::vector<ResponseSetup>& setups,
-                                                    ResponseChecking checking, RestModes rest);
+    virtual std::vector<ResponseResult> respond_all(const std::vector<ResponseSetup>& setups, ResponseChecking checking,
+                                                    RestModes rest);
 };
 
 }  // namespace coremodal
