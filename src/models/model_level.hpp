@@ -13,6 +13,7 @@
 #pragma once
 
 #include "models/linearised.hpp"
+#include "models/spinning_model.hpp"
 #include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
@@ -64,6 +65,10 @@ public:
     // operators (models/linearised.hpp), for `sensitivity`. Levels without
     // it (level_traits(...).sensitivities) refuse with an InputError.
     virtual Linearised linearise(const Scene& scene);
+    // The level's model of the spinning scene (models/spinning_model.hpp),
+    // for `campbell`. Levels that cannot spin (level_traits(...).spins)
+    // refuse with an InputError.
+    virtual std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

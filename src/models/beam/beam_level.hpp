@@ -21,6 +21,8 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
+    // models/beam/beam_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

@@ -19,6 +19,8 @@ public:
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
+    // models/harmonic/harmonic_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
 
 private:
     std::vector<Mode> verified_modes(const Scene& scene);
