@@ -23,6 +23,8 @@ public:
     // models/beam/beam_response.cpp
     std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
+    // models/beam/beam_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

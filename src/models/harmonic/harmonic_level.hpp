@@ -21,6 +21,8 @@ public:
     // models/harmonic/harmonic_response.cpp
     std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
+    // models/harmonic/harmonic_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
 
 private:
     std::vector<Mode> verified_modes(const Scene& scene);

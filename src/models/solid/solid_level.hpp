@@ -21,6 +21,8 @@ public:
     LevelShapes shapes() const override;
     // models/solid/solid_response.cpp
     std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
+    // models/solid/solid_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
 
 private:
     std::optional<Mesh> mesh_;  // after solve: where the shapes live
