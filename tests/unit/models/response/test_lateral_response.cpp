@@ -1,4 +1,4 @@
-// The truncated basis' direct solve (analyses/response/lateral_response):
+// The truncated basis' direct solve (models/response/lateral_response):
 // the sparse LU with the kept modes' own damping by Woodbury's identity
 // against the complete basis' dense LU of the same system, built so that
 // both are the one linear system: the modes above the truncated basis carry
