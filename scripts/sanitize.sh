@@ -53,8 +53,13 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 if [ -f build-asan/CMakeCache.txt ] && ! grep -q "CMAKE_CXX_COMPILER:.*clang++" build-asan/CMakeCache.txt; then
   rm -rf build-asan
 fi
+# Precompiled headers (the standard library, Eigen, Catch2): 0.74 of the
+# compile CPU on 24 files drawn at random (144.4 s against 106.8 s, session
+# 22, CMakeLists.txt's COREMODAL_PRECOMPILED_HEADERS); ccache caches such
+# compiles only with the sloppiness below.
+export CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
-  -DCOREMODAL_SANITIZE=ON "${launcher[@]}" \
+  -DCOREMODAL_SANITIZE=ON -DCOREMODAL_PRECOMPILED_HEADERS=ON "${launcher[@]}" \
   > build-asan.log 2>&1 || { cat build-asan.log; exit 1; }
 cmake --build build-asan -j "$(nproc)" 2>&1 | tail -n 5
 

@@ -35,7 +35,7 @@ int run_rotating_case(const FolderCaseOptions& o) {
     if (damping) require_campbell_damping(scene, *damping);
     const std::filesystem::path out_dir = prepare_folder_case(o, scene, "-campbell");
     const RotationSpec& rotation = *rotating.rotation;
-    const CampbellResult result = run_campbell(scene, rotation, {}, damping);
+    const CampbellResult result = run_campbell(scene, rotation, damping);
     // Every mode at every speed: its residual of the quadratic problem (the
     // counts are checked where each speed is solved).
     std::vector<std::string> failures;

@@ -99,8 +99,10 @@ std::string level_choice_text(const Scene& scene, const std::string& given) {
                                "it on its r-z section, much faster");
 }
 
-std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) {
-    switch (chosen_level(scene)) {
+std::unique_ptr<ModelLevel> make_model_level(const Scene& scene) { return make_model_level(chosen_level(scene)); }
+
+std::unique_ptr<ModelLevel> make_model_level(ModelChoice level) {
+    switch (level) {
         case ModelChoice::beam: return std::make_unique<BeamLevel>();
         case ModelChoice::harmonic: return std::make_unique<HarmonicLevel>();
         case ModelChoice::coupled: return std::make_unique<CoupledLevel>();

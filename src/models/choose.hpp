@@ -50,5 +50,8 @@ std::string level_choice_text(const Scene& scene, const std::string& given);
 
 // The level chosen_level(scene) names (solid, harmonic, coupled or beam).
 std::unique_ptr<ModelLevel> make_model_level(const Scene& scene);
+// The level object of a resolved level (not ModelChoice::automatic), e.g.
+// chosen_spinning_level's.
+std::unique_ptr<ModelLevel> make_model_level(ModelChoice level);
 
 }  // namespace coremodal

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "models/linearised.hpp"
+#include "models/spinning_model.hpp"
 #include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
@@ -22,6 +23,9 @@
 #include <vector>
 
 namespace coremodal {
+
+struct BeamModelOptions;
+class LevelResponse;
 
 // Progress lines on standard output, when on.
 struct Printer {
@@ -64,6 +68,15 @@ public:
     // operators (models/linearised.hpp), for `sensitivity`. Levels without
     // it (level_traits(...).sensitivities) refuse with an InputError.
     virtual Linearised linearise(const Scene& scene);
+    // The scene's forced response (models/response/level_response.hpp), for
+    // `response`, `limits` and `study`; `options` of the beam network (the
+    // beam level's). Levels without one (level_traits(...).spins) refuse
+    // with an InputError. The scene outlives the model.
+    virtual std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options);
+    // The level's model of the spinning scene (models/spinning_model.hpp),
+    // for `campbell`. Levels that cannot spin (level_traits(...).spins)
+    // refuse with an InputError.
+    virtual std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

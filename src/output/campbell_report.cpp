@@ -105,7 +105,7 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
     for (const WhirlCrossing& c : r.critical) critical.push_back(critical_json(c, r));
     for (int k : r.excitation_orders) orders.push_back(k);
     Json t = summary_head("campbell", scene.name, scene.source_file, scene.description);
-    t["model"] = Json{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}};
+    t["model"] = Json{{"level", to_string(r.level)}, {"dofs", r.n_dofs}, {"solver", r.solver}};
     t["effects"] = string_array(r.effects);
     t["notes"] = string_array(r.notes);
     t["rotation"] = Json{{"speeds_rpm", speeds},

@@ -4,7 +4,7 @@
 // a loss factor for every part and per part (loss_factor, [damping.loss_factors]) (scene/response_spec.hpp,
 // docs/how-to/response.md). Every mistake stops the reader with file:line:col, the
 // key and what is expected. Mode numbers are checked against the modes at
-// rest by the run (analyses/response/response_damping.cpp), which alone knows
+// rest by the run (models/response/response_damping.cpp), which alone knows
 // them.
 #include "scene/case_reader.hpp"
 

@@ -6,8 +6,8 @@
 // amplitude is linear in the excitation and goes as 1/zeta at resonance;
 // and the beam level gives the same answer within the two levels'
 // difference in the first bending frequency.
-#include "analyses/response/harmonic_loads.hpp"
-#include "analyses/response/modal_response.hpp"
+#include "models/response/harmonic_loads.hpp"
+#include "models/response/modal_response.hpp"
 #include "analyses/response/response.hpp"
 #include "eigensolve/tolerances.hpp"
 #include "models/solve_steps.hpp"

@@ -2,24 +2,19 @@
 
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 
-#include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
-#include "common/format.hpp"
 #include "common/stopwatch.hpp"
 #include "effects/damping.hpp"
 #include "effects/rotation.hpp"
 #include "models/choose.hpp"
-#include "models/beam/beam_spinning_notes.hpp"
-#include "models/harmonic/harmonic_spinning_notes.hpp"
-#include "models/harmonic/rotating_harmonics.hpp"
-#include "models/solid/rotating_solid.hpp"
-#include "models/solid/solid_spinning_notes.hpp"
+#include "models/solid/rotating_solid.hpp"  // require_spinnable_by_solid
 #include "modes/tracking.hpp"  // assign_maximum
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 
 namespace coremodal {
@@ -32,19 +27,6 @@ struct Step {
     std::vector<int> tracks;
     bool reported = false;
 };
-
-std::vector<RotatingMode> modes_at_rest(const BeamModelResult& rest) {
-    std::vector<RotatingMode> out;
-    for (const BeamMode& m : rest.modes) {
-        RotatingMode r;
-        r.frequency_hz = m.frequency_hz;
-        r.label = m.label;
-        r.relative_residual = m.relative_residual;
-        r.shape = m.shape.cast<std::complex<double>>();
-        out.push_back(std::move(r));
-    }
-    return out;
-}
 
 // The internal sweep: rest, the continuation to the first speed, the scene's speeds.
 std::vector<Step> internal_speeds(const std::vector<double>& speeds) {
@@ -218,137 +200,6 @@ void campbell_sweep(const std::vector<RotatingMode>& at_rest, size_t reported, c
               [](const WhirlCrossing& x, const WhirlCrossing& y) { return x.speed_hz < y.speed_hz; });
 }
 
-namespace {
-
-void run_beam_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
-                       CampbellResult& out) {
-    out.notes = spinning_notes(rotation);
-    out.solver = "dense: exact linearization of the quadratic problem (Hermitian, size 2n, in the modes at rest)";
-    out.completeness = "every eigenvalue of the Hermitian linearization is computed (dense); at rest the modes are "
-                       "those of `coremodal run` (inertia count)";
-    out.rest = solve_beam_model(scene, options);
-    const RotatingNetwork network(out.rest.network, out.rest.lambda_scale);
-    out.n_dofs = network.n_free_dofs();
-    const std::vector<RotatingMode> at_rest = modes_at_rest(out.rest);
-    const double f1 = first_bending_hz(at_rest);
-    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    const size_t reported = out.rest.modes.size();
-    const int window = static_cast<int>(reported) + kExtraTrackedModes;
-    campbell_sweep(at_rest, reported, [&](double speed) { return network.modes_at(speed, window); }, rotation, out);
-}
-
-// The levels that solve with SLEPc run a sweep in one process.
-void require_one_process(const Scene& scene, const std::string& level) {
-    if (mpi_size() > 1)
-        throw InputError(scene.source_file + ": a Campbell sweep at the " + level + " level runs in one process; run it "
-                                             "without mpirun");
-}
-
-// The modes at rest from the spinning model itself (labelled), the roll's
-// speeds from its first bending mode, then the sweep.
-void sweep_from_rest(const Scene& scene, const RotationSpec& rotation, size_t reported,
-                     const std::vector<RotatingMode>& at_rest, const ModesAtSpeed& modes_at, CampbellResult& out,
-                     const LabelMode& label_new_track = {}, const BlockModesAtSpeed& block_modes_at = {},
-                     const DampedPartners& damped_partners = {}) {
-    const double f1 = first_bending_hz(at_rest);
-    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
-    campbell_sweep(at_rest, reported, modes_at, rotation, out, label_new_track, block_modes_at, damped_partners);
-}
-
-// Per mode of `modes`, the damped mode of its wave number that continues it:
-// the one-to-one pairing of largest MAC (modes/tracking.hpp), at least
-// kSameModeMac. A degenerate pair at rest is any mix of its two members; the
-// damped pair spans the same plane, so the pairing gives each MAC >= 1/2.
-std::vector<std::optional<DampedPartner>> damped_partners(const RotatingHarmonics& harmonics, double speed_hz,
-                                                          const std::vector<RotatingMode>& modes) {
-    std::vector<std::optional<DampedPartner>> out(modes.size());
-    std::map<int, std::vector<size_t>> by_block;
-    for (size_t i = 0; i < modes.size(); ++i) by_block[modes[i].block].push_back(i);
-    for (const auto& [n, members] : by_block) {
-        const std::vector<RotatingHarmonics::DampedShape> damped = harmonics.damped_modes_at(speed_hz, n);
-        std::vector<std::vector<double>> weight(members.size(), std::vector<double>(damped.size()));
-        for (size_t a = 0; a < members.size(); ++a)
-            for (size_t b = 0; b < damped.size(); ++b)
-                weight[a][b] = modes[members[a]].frequency_hz > 0 ? complex_mac(modes[members[a]].shape, damped[b].shape) : 0.0;
-        const std::vector<int> match = assign_maximum(weight);
-        for (size_t a = 0; a < members.size(); ++a) {
-            if (match[a] < 0 || weight[a][match[a]] < kSameModeMac) continue;
-            const DampedMode& d = damped[match[a]].mode;
-            out[members[a]] = DampedPartner{d.zeta, d.damped_frequency_hz, d.backward_error};
-        }
-    }
-    return out;
-}
-
-void run_harmonic_campbell(const Scene& scene, const RotationSpec& rotation, const DampingSpec* damping,
-                           CampbellResult& out) {
-    require_one_process(scene, "harmonic");
-    out.completeness = "per wave number n and speed, the inertia of the full Hermitian Q(omega) = K - omega^2 M + i "
-                       "omega Omega G at the band edge and at the rigid line counts the modes between them (every "
-                       "eigenvalue of Q crosses zero downwards)";
-    const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    RotatingHarmonics harmonics(scene, static_cast<int>(reported) + kExtraTrackedModes,
-                                rotation.centrifugal_stiffening);
-    harmonics.sweep_up_to(rotation.speeds_hz.back());
-    out.notes = spinning_notes(rotation, harmonics);
-    out.n_dofs = harmonics.n_dofs();
-    DampedPartners partners;
-    if (damping) {
-        harmonics.include_damping(RayleighDamping{damping->rayleigh.value_or(RayleighSpec{}).alpha,
-                                                  damping->rayleigh.value_or(RayleighSpec{}).beta},
-                                  StructuralDamping{damping->loss_factor, damping->part_loss_factors});
-        partners = [&](double speed, const std::vector<RotatingMode>& modes) {
-            return damped_partners(harmonics, speed, modes);
-        };
-    }
-    sweep_from_rest(
-        scene, rotation, reported, harmonics.modes_at(0.0),
-        [&](double speed) { return harmonics.modes_at(speed, Labels::none); }, out,
-        [&](const RotatingMode& m) { return harmonics.label_of(m); },
-        [&](double speed, int n) { return harmonics.modes_at(speed, Labels::none, n); }, partners);
-    out.solver = "per wave number n, the small Hermitian problem in a basis of its modes at rest and their static "
-                 "responses to the spin's forces, every mode's residual taken on the full problem; " +
-                 std::to_string(harmonics.n_full_solves()) + " of " + std::to_string(harmonics.n_solves()) +
-                 " problems (one n at one speed) solved whole with SLEPc PEP (TOAR) where the basis fell short";
-    const ProjectedGyroscopic::CountStatistics counts = harmonics.count_statistics();
-    out.completeness += "; of " + std::to_string(counts.speeds) + " counts at the band edge, " +
-                        std::to_string(counts.certified) + " came from an earlier speed's gap certificate (Weyl's "
-                        "bound on the pencil, docs/theory/rotation-harmonic.md), " + std::to_string(counts.certificates) +
-                        " made one (two counts; " + std::to_string(counts.certificate_failed) +
-                        " failed and counted again) and " + std::to_string(counts.counted) + " counted";
-}
-
-void run_solid_campbell(const Scene& scene, const RotationSpec& rotation, CampbellResult& out) {
-    require_one_process(scene, "solid");
-    out.solver = "SLEPc PEP (TOAR, shift-and-invert with an LU factor of K + tau Omega G + tau^2 M) on the whole solid";
-    out.completeness = "the inertia of the Hermitian Q(omega) = K - omega^2 M + i omega Omega G at the band edge "
-                       "counts the modes below it (every eigenvalue of Q crosses zero downwards)";
-    const size_t reported = static_cast<size_t>(scene.analysis.n_modes);
-    const RotatingSolid solid(scene, static_cast<int>(reported) + kExtraTrackedModes,
-                              {.centrifugal_stiffening = rotation.centrifugal_stiffening});
-    out.notes = spinning_notes(rotation, solid);
-    out.n_dofs = solid.n_dofs();
-    // Co-rotating coordinates: the exact critical speeds of the pencil first,
-    // and a sweep that ends below the lowest (zero_frequency_crossings.hpp).
-    ZeroFrequencyPlan plan{rotation, {}, {}, {}};
-    if (solid.rotating_frame()) plan = plan_zero_frequency_sweep(solid, rotation, out.roll_outer_diameter);
-    sweep_from_rest(scene, plan.swept, reported, solid.modes_at(0.0),
-                    [&](double speed) { return solid.modes_at(speed); }, out);
-    merge_pencil_crossings(out, plan.crossings);
-    out.notes.insert(out.notes.end(), plan.notes.begin(), plan.notes.end());
-    out.sweep_end = plan.sweep_end;
-    if (!plan.sweep_end.empty()) out.notes.push_back(plan.sweep_end);
-    if (solid.rotating_frame())
-        out.notes.push_back("the dominant harmonic's share of a mode's energy on the roll's surface, the smallest "
-                            "over every mode reported at every speed above 0: " +
-                            significant(solid.min_harmonic_share(), 3) +
-                            " (1 for a body of revolution; below 1 the segments mix harmonics k and k +- their "
-                            "number, and the stationary frequency is that of the dominant one; below 1/2 a mode has "
-                            "no one stationary frequency, but one at f - k f_rot for each harmonic k it carries)");
-}
-
-}  // namespace
-
 void require_spinning_level(const Scene& scene) {
     // A chuck not expanded (auto picks the coupled level at rest): only the
     // solid could spin the scene, and it refuses why (time-periodic).
@@ -389,6 +240,27 @@ std::vector<std::string> damping_words(const DampingSpec& d) {
                   "their static responses to D, H and the spin's forces), each matched to the undamped mode of "
                   "largest MAC; zeta = -Re lambda / |lambda|, damped frequency Im lambda / (2 pi); the critical "
                   "speeds are the undamped sweep's (light damping moves a crossing by O(zeta^2))");
+    return out;
+}
+
+// What the result says before the sweep: the scene's speeds and lines, the
+// level, the terms included.
+CampbellResult campbell_header(const Scene& scene, const RotationSpec& rotation, const DampingSpec* damping) {
+    CampbellResult out;
+    out.excitation_orders = rotation.excitation_orders;
+    out.roll_outer_diameter = roll_outer_diameter(scene);
+    out.from_web_speed = rotation.from_web_speed;
+    out.operating_hz = rotation.operating_hz;
+    const LevelTraits& level = level_traits(chosen_spinning_level(scene));
+    out.effects = rotating_effect_names(scene, rotation, level.centrifugal);
+    out.level = level.level;
+    if (damping) {
+        out.damped = true;
+        out.damping = damping_words(*damping);
+        if (damping->rayleigh) out.effects.push_back(RayleighDamping::kName);
+        if (StructuralDamping{damping->loss_factor, damping->part_loss_factors}.given())
+            out.effects.push_back(StructuralDamping::kName);
+    }
     return out;
 }
 
@@ -433,37 +305,36 @@ std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& poi
     return out;
 }
 
-CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options,
-                            const DampingSpec* damping) {
+CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const DampingSpec* damping) {
     COREMODAL_ASSERT(!rotation.speeds_hz.empty());
     require_spinning_level(scene);
     if (damping) require_campbell_damping(scene, *damping);
     Stopwatch clock;
-    CampbellResult out;
-    out.excitation_orders = rotation.excitation_orders;
-    out.roll_outer_diameter = roll_outer_diameter(scene);
-    out.from_web_speed = rotation.from_web_speed;
-    out.operating_hz = rotation.operating_hz;
-    const LevelTraits& level = level_traits(chosen_spinning_level(scene));
-    out.effects = rotating_effect_names(scene, rotation, level.centrifugal);
-    out.level = to_string(level.level);
-    if (damping) {
-        out.damped = true;
-        out.damping = damping_words(*damping);
-        if (damping->rayleigh) out.effects.push_back(RayleighDamping::kName);
-        if (StructuralDamping{damping->loss_factor, damping->part_loss_factors}.given())
-            out.effects.push_back(StructuralDamping::kName);
-    }
-    // The per-level sweeps of this file (a level's spinning terms live with it: beam/rotating_modes,
-    // models/harmonic/rotating_harmonics, models/solid/rotating_solid); require_spinning_level
-    // refused a level that cannot spin.
-    switch (level.level) {
-        case ModelChoice::beam: run_beam_campbell(scene, rotation, options, out); break;
-        case ModelChoice::harmonic: run_harmonic_campbell(scene, rotation, damping, out); break;
-        case ModelChoice::solid: run_solid_campbell(scene, rotation, out); break;
-        case ModelChoice::coupled:
-        case ModelChoice::automatic: COREMODAL_ASSERT(false);
-    }
+    CampbellResult out = campbell_header(scene, rotation, damping);
+    // The level's spinning model (its terms live with it, models/<level>/);
+    // require_spinning_level refused a level that cannot spin.
+    const std::unique_ptr<SpinningModel> model =
+        make_model_level(out.level)->spinning(scene, {rotation, kExtraTrackedModes, damping});
+    out.notes = model->notes();
+    out.n_dofs = model->n_dofs();
+    // Co-rotating coordinates: the exact critical speeds of the pencils
+    // first, and a sweep that ends below the lowest (zero_frequency_crossings.hpp).
+    ZeroFrequencyPlan plan{rotation, {}, {}, {}};
+    if (const ZeroFrequencyPencils* pencils = model->zero_frequency_pencils())
+        plan = plan_zero_frequency_sweep(*pencils, rotation, out.roll_outer_diameter);
+    const std::vector<RotatingMode> at_rest = model->modes_at_rest();
+    const double f1 = first_bending_hz(at_rest);
+    out.speeds_at_rest = roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
+    campbell_sweep(
+        at_rest, model->reported(), [&](double speed) { return model->modes_at(speed); }, plan.swept, out,
+        model->label_new_track(), model->block_modes_at(), model->damped_partners());
+    merge_pencil_crossings(out, plan.crossings);
+    out.notes.insert(out.notes.end(), plan.notes.begin(), plan.notes.end());
+    out.sweep_end = plan.sweep_end;
+    if (!plan.sweep_end.empty()) out.notes.push_back(plan.sweep_end);
+    for (std::string& note : model->notes_after_sweep()) out.notes.push_back(std::move(note));
+    out.solver = model->solver();
+    out.completeness = model->completeness();
     out.solve_seconds = clock.lap();
     return out;
 }

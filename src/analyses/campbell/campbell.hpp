@@ -1,21 +1,22 @@
-// A Campbell diagram of a spinning scene ([rotation], docs/theory/rotation.md) at
-// the beam level (beam/rotating_modes), the harmonic level
-// (models/harmonic/rotating_harmonics) or the solid level
-// (models/solid/rotating_solid): the modes at every speed of the sweep,
-// followed from speed to speed by MAC, labelled forward/backward whirl, and
-// the critical speeds where an excitation line f = k f_rot crosses a natural
-// frequency.
+// A Campbell diagram of a spinning scene ([rotation], docs/theory/rotation.md)
+// at any level that spins it: the level hands out its spinning model
+// (ModelLevel::spinning, models/spinning_model.hpp: the beam's, the
+// harmonic level's, the solid's), and the sweep here takes the modes at
+// every speed, follows them from speed to speed by MAC, labels them
+// forward/backward whirl, and finds the critical speeds where an excitation
+// line f = k f_rot crosses a natural frequency.
 //
-// The sweep starts at rest: speed 0 is today's solve (at the beam level
-// solve_beam_model, the very modes `run` reports; at the harmonic and solid
-// levels the quadratic solver at speed 0, the level's modes), and a sweep or single speed above 0 is reached
-// by continuation from it (kContinuationSteps speeds in between when the
-// scene's first speed is above 0), so that every mode keeps the label it has
-// at rest and a crossing of two curves does not swap them.
+// The sweep starts at rest: speed 0 is the level's solve at rest (at the
+// beam level the very modes `run` reports; at the harmonic and solid levels
+// the quadratic solver at speed 0, the level's modes), and a sweep or single
+// speed above 0 is reached by continuation from it (kContinuationSteps
+// speeds in between when the scene's first speed is above 0), so that every
+// mode keeps the label it has at rest and a crossing of two curves does not
+// swap them.
 #pragma once
 
-#include "beam/beam_model.hpp"
 #include "beam/speeds.hpp"
+#include "models/spinning_model.hpp"
 #include "modes/rotating_mode.hpp"
 #include "scene/response_spec.hpp"  // DampingSpec
 #include "scene/rotation_spec.hpp"
@@ -31,9 +32,6 @@ namespace coremodal {
 
 // Continuation from rest to a scene's first speed above 0.
 constexpr int kContinuationSteps = 8;
-// A planar mode at rest has MAC 1/2 with each of the circular forward and
-// backward modes it splits into; below this a match is another mode.
-constexpr double kSameModeMac = 0.3;
 // Modes followed beyond the ones reported, so that a backward whirl coming
 // down from above the window enters it on its own track.
 constexpr int kExtraTrackedModes = 8;
@@ -97,10 +95,9 @@ struct CampbellResult {
     std::vector<int> excitation_orders;
     double roll_outer_diameter = 0;          // m, Dp
     bool from_web_speed = false;
-    std::string level = "beam";              // the model level: "beam", "harmonic" or "solid"
+    ModelChoice level = ModelChoice::beam;   // the model level (the writers say its word)
     std::string solver;                      // how each speed was solved, in words
     std::string completeness;                // why no mode is missed, in words
-    BeamModelResult rest;                    // the beam level's solve at rest (today's modes)
     RollSpeeds speeds_at_rest;               // I-5 safe web speed from the first bending frequency at rest
     double max_relative_residual = 0;        // of the quadratic problem, every mode at every speed
     long n_dofs = 0;
@@ -136,28 +133,12 @@ void require_campbell_damping(const Scene& scene, const DampingSpec& damping);
 // Throws InputError as require_spinning_level and require_campbell_damping
 // (the scene's model resolved already); SolveError from the solver. With
 // `damping`, every reported mode also gets its damping ratio (CampbellMode).
-CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const BeamModelOptions& options = {},
-                            const DampingSpec* damping = nullptr);
+CampbellResult run_campbell(const Scene& scene, const RotationSpec& rotation, const DampingSpec* damping = nullptr);
 
 // Crossings of f = order f_rot with every track of `points`, by linear
 // interpolation between two speeds (run_campbell refines them).
 std::vector<WhirlCrossing> critical_speeds(const std::vector<CampbellPoint>& points, const std::vector<int>& orders,
                                            double roll_outer_diameter);
-
-// The modes of a spinning level at a speed (Hz), ascending, and a mode's label.
-using ModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz)>;
-using LabelMode = std::function<ModeLabel(const RotatingMode&)>;
-// The modes of one independent problem (RotatingMode::block) at a speed, for
-// a level where solving one is cheaper than solving all (the harmonic level:
-// one wave number).
-using BlockModesAtSpeed = std::function<std::vector<RotatingMode>(double speed_hz, int block)>;
-// The damped modes that continue `modes` (one speed's, as modes_at gives
-// them), one per mode, or none where a mode has no damped partner.
-struct DampedPartner {
-    double damping_ratio = 0, damped_frequency_hz = 0, relative_residual = 0;
-};
-using DampedPartners =
-    std::function<std::vector<std::optional<DampedPartner>>(double speed_hz, const std::vector<RotatingMode>& modes)>;
 
 // run_campbell's sweep on any level's modes (tests): from the modes at rest
 // over rotation.speeds_hz, tracked by MAC; fills out.points and

@@ -90,11 +90,12 @@ std::string ratio_note(const ZeroFrequencyModes& z, size_t n_crossings, double w
 }
 
 // Adds the crossings of the pencils r > 0 to the plan.
-void add_ratio_crossings(const RotatingSolid& solid, const RotationSpec& rotation, double dp, ZeroFrequencyPlan& plan) {
+void add_ratio_crossings(const ZeroFrequencyPencils& pencils, const RotationSpec& rotation, double dp,
+                         ZeroFrequencyPlan& plan) {
     for (int r : crossing_ratios(rotation.excitation_orders)) {
         const Stopwatch clock;
         const std::clock_t cpu = std::clock();
-        const ZeroFrequencyModes z = solid.frequency_ratio_modes(rotation.speeds_hz.back(), r);
+        const ZeroFrequencyModes z = pencils.frequency_ratio_modes(rotation.speeds_hz.back(), r);
         size_t n = 0;
         for (const ZeroFrequencyMode& m : z.modes)
             if (m.whirl != Whirl::none || m.harmonic == 0)
@@ -122,12 +123,13 @@ void end_sweep_below(const RotationSpec& rotation, const ZeroFrequencyMode& lowe
 
 const char* crossing_source_name(CrossingSource s) { return s == CrossingSource::pencil ? "pencil" : "sweep"; }
 
-ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const RotationSpec& rotation, double dp) {
+ZeroFrequencyPlan plan_zero_frequency_sweep(const ZeroFrequencyPencils& pencils, const RotationSpec& rotation,
+                                            double dp) {
     ZeroFrequencyPlan plan;
     plan.swept = rotation;
     const Stopwatch clock;
     const std::clock_t cpu = std::clock();
-    const ZeroFrequencyModes z = solid.zero_frequency_modes(rotation.speeds_hz.back());
+    const ZeroFrequencyModes z = pencils.zero_frequency_modes(rotation.speeds_hz.back());
     plan.notes.push_back(count_note(z, clock.seconds(), double(std::clock() - cpu) / CLOCKS_PER_SEC));
     for (const ZeroFrequencyMode& m : z.modes) {
         if (m.wave_number > 0 && wanted(rotation, m.wave_number))
@@ -136,7 +138,7 @@ ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const Ro
             plan.notes.push_back(other_speed_note(m));
     }
     if (!z.modes.empty()) end_sweep_below(rotation, z.modes.front(), plan);
-    add_ratio_crossings(solid, rotation, dp, plan);
+    add_ratio_crossings(pencils, rotation, dp, plan);
     return plan;
 }
 
@@ -154,6 +156,7 @@ std::vector<int> crossing_ratios(const std::vector<int>& orders) {
 }
 
 void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil) {
+    if (pencil.empty()) return;
     for (const WhirlCrossing& p : pencil)
         std::erase_if(out.critical, [&](const WhirlCrossing& c) {
             return c.source == CrossingSource::sweep && c.order == p.order && c.whirl == p.whirl &&

@@ -1,5 +1,6 @@
-// Critical speeds of a Campbell sweep in co-rotating coordinates (the solid
-// level's rotating frame, models/solid/rotating_frame.hpp; docs/theory/rotation-solid.md
+// Critical speeds of a Campbell sweep in co-rotating coordinates (a level's
+// ZeroFrequencyPencils, models/spinning_model.hpp: the solid level's rotating
+// frame, models/solid/rotating_frame.hpp; docs/theory/rotation-solid.md
 // "Critical speeds in co-rotating coordinates").
 //
 // Above the lowest speed where a mode's rotating-frame frequency is zero,
@@ -17,7 +18,7 @@
 #pragma once
 
 #include "analyses/campbell/campbell.hpp"
-#include "models/solid/rotating_solid.hpp"
+#include "models/spinning_model.hpp"
 #include "scene/rotation_spec.hpp"
 
 #include <string>
@@ -50,7 +51,7 @@ struct ZeroFrequencyPlan {
 // The pencil up to the scene's last speed and the sweep that stays below its
 // lowest speed. SolveError when no speed of the scene above 0 is left to
 // sweep (naming the critical speed).
-ZeroFrequencyPlan plan_zero_frequency_sweep(const RotatingSolid& solid, const RotationSpec& rotation,
+ZeroFrequencyPlan plan_zero_frequency_sweep(const ZeroFrequencyPencils& pencils, const RotationSpec& rotation,
                                             double roll_outer_diameter);
 
 // The ratios r > 0 at which a mode of harmonic |k| <= kMaxCrossingHarmonic
@@ -60,7 +61,7 @@ std::vector<int> crossing_ratios(const std::vector<int>& orders);
 
 // Adds the pencils' crossings to out.critical (the sweep's), dropping a
 // sweep crossing that is the same one (order and whirl, kSameCrossingSpeed),
-// ascending by speed.
+// ascending by speed (out.critical untouched when `pencil` is empty).
 void merge_pencil_crossings(CampbellResult& out, const std::vector<WhirlCrossing>& pencil);
 
 }  // namespace coremodal

@@ -20,7 +20,11 @@ public:
     int steps() const override { return 4; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    // models/beam/beam_response.cpp
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
+    // models/beam/beam_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

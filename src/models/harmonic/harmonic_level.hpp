@@ -18,7 +18,11 @@ public:
     // require_axisymmetric (models/choose.hpp) first.
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    // models/harmonic/harmonic_response.cpp
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
+    // models/harmonic/harmonic_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
     // After solve: the revolved section the modes' shapes live on.
     const std::optional<RevolvedMesh>& revolved() const { return revolved_; }
 

@@ -26,6 +26,7 @@
 #include "eigensolve/gyroscopic_solver.hpp"
 #include "eigensolve/zero_frequency_speeds.hpp"
 #include "mesh/mesh.hpp"
+#include "models/spinning_model.hpp"  // ZeroFrequencyModes
 #include "modes/classify.hpp"
 #include "modes/mac.hpp"
 #include "modes/rotating_mode.hpp"
@@ -49,34 +50,6 @@ struct SolidSpinOptions {
     // Term::centrifugal, K_Omega = K_sigma1 - M_L (effects/rotation.hpp),
     // from a static solve under the centrifugal load (models/solid/centrifugal_prestress).
     bool centrifugal_stiffening = false;
-};
-
-// A speed where a mode's rotating-frame frequency is r f_rot (rotating
-// frame only; eigensolve/zero_frequency_speeds.hpp). Seen from the
-// stationary frame the mode, of dominant signed harmonic k, has the
-// frequency |r - k| f_rot (rotating_frame.hpp): a crossing of the
-// excitation line of order |r - k|, forward when -k (r - k) > 0.
-// r = 0: the mode stands still on the spinning roll, a forward crossing of
-// order |k| (k = 0: a static divergence).
-struct ZeroFrequencyMode {
-    double speed_hz = 0;  // f_rot
-    int wave_number = 0;  // |k|
-    int harmonic = 0;     // k, signed (r = 0: |k|, the null vector being real)
-    int order = 0;        // |r - k|: f_stat / f_rot
-    Whirl whirl = Whirl::none;
-    // The dominant harmonic's energy share on the roll's surface (r = 0:
-    // of +k and -k together, which carry equal energy in a real vector).
-    double share = 1;
-    ModeLabel label;
-    int multiplicity = 1;  // equal speeds (a pair of a scene symmetric about z) counted once
-    double relative_residual = 0;
-};
-
-struct ZeroFrequencyModes {
-    std::vector<ZeroFrequencyMode> modes;  // ascending speed
-    long counted = 0;                      // by inertia, multiplicity included (complex count for r > 0)
-    double max_speed_hz = 0;
-    int ratio = 0;                         // r
 };
 
 class RotatingSolid {

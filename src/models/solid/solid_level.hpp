@@ -19,6 +19,10 @@ public:
     int steps() const override { return 7; }
     LevelModes solve(const Scene& scene, const Printer& say) override;
     LevelShapes shapes() const override;
+    // models/solid/solid_response.cpp
+    std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
+    // models/solid/solid_spinning.cpp
+    std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
 
 private:
     std::optional<Mesh> mesh_;  // after solve: where the shapes live

@@ -24,7 +24,7 @@ std::string read_all(const std::filesystem::path& p) {
 
 CampbellResult pencil_and_sweep() {
     CampbellResult r;
-    r.level = "solid";
+    r.level = ModelChoice::solid;
     r.excitation_orders = {1, 2};
     r.roll_outer_diameter = 0.106;
     r.points = {{0.0, {{1, 50.0, Whirl::none, {}, 1e-12}}}, {40.0, {{1, 50.1, Whirl::forward, {}, 1e-12}}}};

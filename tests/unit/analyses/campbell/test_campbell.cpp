@@ -4,6 +4,7 @@
 // the crossing speed.
 #include "analyses/campbell/campbell.hpp"
 
+#include "beam/beam_model.hpp"
 #include "beam/beam_network.hpp"
 #include "beam/rotating_modes.hpp"
 #include "common/error.hpp"
@@ -153,7 +154,7 @@ TEST_CASE("The rotation tester's Campbell sweep: rest exactly, whirl split, crit
     // Orders 1 and 2 cross the first bending pair; each crossing checked
     // against a solve at the crossing speed (linear interpolation between
     // 500 rpm steps of nearly flat curves).
-    const RotatingNetwork network(r.rest.network, r.rest.lambda_scale);
+    const RotatingNetwork network(rest.network, rest.lambda_scale);
     int order_one = 0, order_two = 0;
     for (const WhirlCrossing& c : r.critical) {
         if (c.label.type != "bending" || c.label.m != 0) continue;

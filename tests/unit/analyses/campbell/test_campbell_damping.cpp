@@ -45,7 +45,7 @@ CampbellResult campbell_of(const std::string& text, std::vector<double> speeds_h
     REQUIRE(c.damping);
     RotationSpec rotation = *c.rotation;
     rotation.speeds_hz = std::move(speeds_hz);
-    return run_campbell(c.scene, rotation, {}, &*c.damping);
+    return run_campbell(c.scene, rotation, &*c.damping);
 }
 
 // The eigenvalue's relative error |d lambda| / |lambda|: zeta = -Re lambda / |lambda|

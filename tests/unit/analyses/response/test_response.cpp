@@ -3,9 +3,9 @@
 // system (I-2...4 exactly); the modal superposition in the complete basis
 // is the direct solve of the full system; the amplitude is linear in the
 // excitation and goes as 1/zeta at resonance.
-#include "analyses/response/lateral_response.hpp"
+#include "models/response/lateral_response.hpp"
 #include "analyses/response/response.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "models/response/response_loads.hpp"
 #include "beam/beam_model.hpp"
 #include "beam/timoshenko_element.hpp"
 #include "effects/damping.hpp"

@@ -4,10 +4,10 @@
 // here; the superposition with Rayleigh damping against a direct solve with
 // the matrix alpha M + beta K built here; a family's or a mode's own ratio
 // moves only the peaks it damps, as 1/zeta at resonance.
-#include "analyses/response/lateral_response.hpp"
+#include "models/response/lateral_response.hpp"
 #include "analyses/response/response.hpp"
-#include "analyses/response/response_damping.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "models/response/response_damping.hpp"
+#include "models/response/response_loads.hpp"
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
 #include "effects/damping.hpp"

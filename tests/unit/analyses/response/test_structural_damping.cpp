@@ -7,11 +7,11 @@
 // closed forms say; superposition in the complete basis is the direct solve
 // with i H (beam and harmonic levels); a loss factor on every part is the
 // complex stiffness K (1 + i eta) of the whole roll (each mode's eta_j = eta).
-#include "analyses/response/harmonic_loads.hpp"
-#include "analyses/response/lateral_response.hpp"
-#include "analyses/response/modal_response.hpp"
+#include "models/response/harmonic_loads.hpp"
+#include "models/response/lateral_response.hpp"
+#include "models/response/modal_response.hpp"
 #include "analyses/response/response.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "models/response/response_loads.hpp"
 #include "beam/beam_model.hpp"
 #include "effects/damping.hpp"
 #include "models/solve_steps.hpp"

@@ -2,11 +2,13 @@
 // problem of the Timoshenko network (both bending planes) with every mode
 // at rest, so that the truncated sum is checked against the complete basis
 // and the complete basis against the direct dense solve.
-#include "analyses/response/lateral_response.hpp"
-#include "analyses/response/modal_response_model.hpp"  // highest_order
-#include "analyses/response/response_levels.hpp"
-#include "analyses/response/response_loads.hpp"
-#include "analyses/response/response_sweep.hpp"
+#include "models/response/lateral_response.hpp"
+#include "models/response/modal_response_model.hpp"  // highest_order
+#include "models/response/response_levels.hpp"
+#include "models/response/level_response.hpp"
+#include "models/beam/beam_level.hpp"
+#include "models/response/response_loads.hpp"
+#include "models/response/response_sweep.hpp"
 #include "beam/beam_theory.hpp"
 #include "beam/rotating_modes.hpp"
 #include "beam/timoshenko_element.hpp"
@@ -202,6 +204,8 @@ const ResponseLevel kBeamResponse{
     .note = "forced response at the beam level: modal superposition in the modes at rest with the gyroscopic coupling of "
             "the spinning beams projected, checked against the direct solve of the full network"};
 
+namespace {
+
 ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
                                  ResponseChecking checking) {
     Stopwatch clock;
@@ -254,6 +258,28 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     out.assumptions.push_back(kept_modes_assumption(out.checks, "lateral modes at rest"));
     out.solve_seconds = clock.lap();
     return out;
+}
+
+
+// The beam network's forced response (ModelLevel::response); the scene
+// outlives it (the driver's call).
+class BeamResponse : public LevelResponse {
+public:
+    BeamResponse(const Scene& scene, const BeamModelOptions& options) : scene_(scene), options_(options) {}
+    // The beam level's run at rest is the lateral problem's already (RestModes).
+    ResponseResult respond(const ResponseSetup& setup, ResponseChecking checking, RestModes) override {
+        return run_beam_response(scene_, setup, options_, checking);
+    }
+
+private:
+    const Scene& scene_;
+    BeamModelOptions options_;
+};
+
+}  // namespace
+
+std::unique_ptr<LevelResponse> BeamLevel::response(const Scene& scene, const BeamModelOptions& options) {
+    return std::make_unique<BeamResponse>(scene, options);
 }
 
 }  // namespace coremodal

@@ -5,7 +5,7 @@
 // and the ovality's stiffness loads do not.
 #pragma once
 
-#include "analyses/response/lateral_response.hpp"
+#include "models/response/lateral_response.hpp"
 #include "beam/beam_network.hpp"
 #include "scene/response_spec.hpp"
 #include "scene/scene.hpp"

@@ -15,8 +15,8 @@
 // the cos family's part p of one turning forward, (p, -i p).
 #pragma once
 
-#include "analyses/response/modal_response.hpp"
-#include "analyses/response/modal_response_model.hpp"
+#include "models/response/modal_response.hpp"
+#include "models/response/modal_response_model.hpp"
 #include "effects/damping.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "geometry/section_mesh.hpp"

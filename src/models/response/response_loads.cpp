@@ -1,4 +1,4 @@
-#include "analyses/response/response_loads.hpp"
+#include "models/response/response_loads.hpp"
 
 #include "beam/beam_theory.hpp"
 #include "beam/timoshenko_element.hpp"

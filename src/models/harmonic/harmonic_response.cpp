@@ -4,9 +4,10 @@
 // the modes at rest of n = 1 up to the cutoff come from SLEPc (verified,
 // complete by inertia), the static part of the others from a sparse factor
 // of K, and the check is the direct sparse solve of the whole n = 1 problem.
-#include "analyses/response/harmonic_loads.hpp"
-#include "analyses/response/modal_response_model.hpp"
-#include "analyses/response/response_levels.hpp"
+#include "models/response/harmonic_loads.hpp"
+#include "models/response/modal_response_model.hpp"
+#include "models/response/response_levels.hpp"
+#include "models/response/level_response.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -142,10 +143,7 @@ const ResponseLevel kHarmonicResponse{
             "bodies of revolution projected, and the static part of the modes above the cutoff; checked against "
             "the direct sparse solve of the full n = 1 problem"};
 
-ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking,
-                                     RestModes rest_modes) {
-    return run_harmonic_responses(scene, {setup}, checking, rest_modes).front();
-}
+namespace {
 
 std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, const std::vector<ResponseSetup>& setups,
                                                    ResponseChecking checking, RestModes rest_modes) {
@@ -202,6 +200,31 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
     const double seconds = clock.lap();
     for (ResponseResult& out : outs) out.solve_seconds = seconds / static_cast<double>(outs.size());
     return outs;
+}
+
+
+// The harmonic level's forced response (ModelLevel::response): several
+// setups from one n = 1 basis, its labels and K's factor (run_harmonic_responses);
+// the scene outlives it (the driver's call).
+class HarmonicResponse : public LevelResponse {
+public:
+    explicit HarmonicResponse(const Scene& scene) : scene_(scene) {}
+    ResponseResult respond(const ResponseSetup& setup, ResponseChecking checking, RestModes rest) override {
+        return run_harmonic_responses(scene_, {setup}, checking, rest).front();
+    }
+    std::vector<ResponseResult> respond_all(const std::vector<ResponseSetup>& setups, ResponseChecking checking,
+                                            RestModes rest) override {
+        return run_harmonic_responses(scene_, setups, checking, rest);
+    }
+
+private:
+    const Scene& scene_;
+};
+
+}  // namespace
+
+std::unique_ptr<LevelResponse> HarmonicLevel::response(const Scene& scene, const BeamModelOptions&) {
+    return std::make_unique<HarmonicResponse>(scene);
 }
 
 }  // namespace coremodal

@@ -1,4 +1,4 @@
-#include "analyses/response/response_sweep.hpp"
+#include "models/response/response_sweep.hpp"
 
 #include "effects/rotation.hpp"
 

@@ -1,6 +1,6 @@
-#include "analyses/response/lateral_response.hpp"
+#include "models/response/lateral_response.hpp"
 
-#include "analyses/response/modal_equations.hpp"
+#include "models/response/modal_equations.hpp"
 
 #include "beam/network_modes.hpp"
 #include "beam/rotating_modes.hpp"

@@ -1,6 +1,6 @@
-#include "analyses/response/modal_response.hpp"
+#include "models/response/modal_response.hpp"
 
-#include "analyses/response/modal_equations.hpp"
+#include "models/response/modal_equations.hpp"
 #include "common/blas_threads.hpp"
 #include "common/error.hpp"
 #include "eigensolve/tolerances.hpp"

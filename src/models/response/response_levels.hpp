@@ -1,9 +1,9 @@
-// The model levels' forced responses, which run_forced_response
-// (response.cpp) dispatches to, and what they share: the result's fields
-// that do not depend on the level, and the line on the modes kept.
+// What the model levels' forced responses (models/<level>/*_response.cpp)
+// share: the result's fields that do not depend on the level, and the line
+// on the modes kept.
 #pragma once
 
-#include "analyses/response/response.hpp"
+#include "models/response/response_result.hpp"
 #include "scene/model_choice.hpp"
 
 #include <string>
@@ -27,13 +27,5 @@ ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setu
 // "modes kept: 6 of 568 ... with the static part of the others" (the level's
 // words for its modes, e.g. "lateral modes at rest").
 std::string kept_modes_assumption(const ResponseChecks& checks, const std::string& modes_words);
-
-ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup, const BeamModelOptions& options,
-                                 ResponseChecking checking);
-ResponseResult run_harmonic_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking,
-                                     RestModes rest);
-std::vector<ResponseResult> run_harmonic_responses(const Scene& scene, const std::vector<ResponseSetup>& setups,
-                                                   ResponseChecking checking, RestModes rest);
-ResponseResult run_solid_response(const Scene& scene, const ResponseSetup& setup, ResponseChecking checking);
 
 }  // namespace coremodal

@@ -1,10 +1,10 @@
-// The truncated basis' direct solve (analyses/response/lateral_response):
+// The truncated basis' direct solve (models/response/lateral_response):
 // the sparse LU with the kept modes' own damping by Woodbury's identity
 // against the complete basis' dense LU of the same system, built so that
 // both are the one linear system: the modes above the truncated basis carry
 // no own damping in either.
-#include "analyses/response/lateral_response.hpp"
-#include "analyses/response/response_loads.hpp"
+#include "models/response/lateral_response.hpp"
+#include "models/response/response_loads.hpp"
 #include "beam/beam_model.hpp"
 #include "effects/damping.hpp"
 #include "scene/case_file.hpp"

@@ -7,7 +7,7 @@
 // harmonic_response.cpp).
 #pragma once
 
-#include "analyses/response/response.hpp"
+#include "models/response/response_result.hpp"
 
 #include <Eigen/Dense>
 

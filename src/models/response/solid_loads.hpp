@@ -15,8 +15,8 @@
 //   gravity          the static sag K^-1 g M r_x (reported)
 #pragma once
 
-#include "analyses/response/modal_response.hpp"
-#include "analyses/response/modal_response_model.hpp"
+#include "models/response/modal_response.hpp"
+#include "models/response/modal_response_model.hpp"
 #include "effects/damping.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/dof_map.hpp"

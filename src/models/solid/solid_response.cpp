@@ -6,9 +6,10 @@
 // whole 3D problem. For bodies of revolution only (the gyroscopic term is
 // the stationary frame's, docs/theory/rotation-solid.md), and for coarse meshes in
 // practice: a sparse LU of the 3D problem per checked speed.
-#include "analyses/response/modal_response_model.hpp"
-#include "analyses/response/response_levels.hpp"
-#include "analyses/response/solid_loads.hpp"
+#include "models/response/modal_response_model.hpp"
+#include "models/response/response_levels.hpp"
+#include "models/response/level_response.hpp"
+#include "models/response/solid_loads.hpp"
 #include "assembly/petsc_system.hpp"
 #include "common/error.hpp"
 #include "common/stopwatch.hpp"
@@ -65,6 +66,8 @@ const ResponseLevel kSolidResponse{
             "gyroscopic coupling of the spinning cells projected, and the static part of the modes above the "
             "cutoff; checked against the direct sparse solve of the whole solid"};
 
+namespace {
+
 ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup& setup, ResponseChecking checking) {
     Stopwatch clock;
     Scene scene = scene_given;
@@ -105,6 +108,27 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
                           range, out.speeds_at_rest.f1_hz, out, checking);
     out.solve_seconds = clock.lap();
     return out;
+}
+
+
+// The solid's forced response (ModelLevel::response); the scene outlives it
+// (the driver's call).
+class SolidResponse : public LevelResponse {
+public:
+    explicit SolidResponse(const Scene& scene) : scene_(scene) {}
+    // The solid level's run at rest is the lateral problem's already (RestModes).
+    ResponseResult respond(const ResponseSetup& setup, ResponseChecking checking, RestModes) override {
+        return run_solid_response(scene_, setup, checking);
+    }
+
+private:
+    const Scene& scene_;
+};
+
+}  // namespace
+
+std::unique_ptr<LevelResponse> SolidLevel::response(const Scene& scene, const BeamModelOptions&) {
+    return std::make_unique<SolidResponse>(scene);
 }
 
 }  // namespace coremodal

@@ -1,4 +1,4 @@
-#include "analyses/response/modal_equations.hpp"
+#include "models/response/modal_equations.hpp"
 
 #include "common/error.hpp"
 

@@ -1,4 +1,4 @@
-#include "analyses/response/response_damping.hpp"
+#include "models/response/response_damping.hpp"
 
 #include "beam/rotating_modes.hpp"
 #include "common/error.hpp"

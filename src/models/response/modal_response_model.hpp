@@ -4,11 +4,11 @@
 // run once the level has its basis, damping, loads and probes.
 #pragma once
 
-#include "analyses/response/modal_response.hpp"
-#include "analyses/response/response_damping.hpp"
-#include "analyses/response/response_levels.hpp"
-#include "analyses/response/response_loads.hpp"
-#include "analyses/response/response_sweep.hpp"
+#include "models/response/modal_response.hpp"
+#include "models/response/response_damping.hpp"
+#include "models/response/response_levels.hpp"
+#include "models/response/response_loads.hpp"
+#include "models/response/response_sweep.hpp"
 #include "assembly/operator_set.hpp"
 #include "models/model_level.hpp"
 

@@ -1,6 +1,6 @@
-#include "analyses/response/solid_loads.hpp"
+#include "models/response/solid_loads.hpp"
 
-#include "analyses/response/sparse_sink.hpp"
+#include "models/response/sparse_sink.hpp"
 #include "assembly/cell_loop.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"

@@ -1,6 +1,6 @@
-#include "analyses/response/modal_response_model.hpp"
+#include "models/response/modal_response_model.hpp"
 
-#include "analyses/response/response_levels.hpp"
+#include "models/response/response_levels.hpp"
 #include "common/error.hpp"
 #include "common/format.hpp"
 #include "effects/excitation.hpp"

@@ -11,7 +11,7 @@
 // either member damps both; two different ratios for one pair are refused.
 #pragma once
 
-#include "analyses/response/lateral_response.hpp"
+#include "models/response/lateral_response.hpp"
 #include "beam/beam_model.hpp"
 #include "effects/damping.hpp"
 #include "scene/response_spec.hpp"

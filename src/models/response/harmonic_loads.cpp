@@ -1,6 +1,6 @@
-#include "analyses/response/harmonic_loads.hpp"
+#include "models/response/harmonic_loads.hpp"
 
-#include "analyses/response/sparse_sink.hpp"
+#include "models/response/sparse_sink.hpp"
 
 #include "common/error.hpp"
 #include "common/format.hpp"
