@@ -24,8 +24,12 @@ std::unique_ptr<LevelResponse> ModelLevel::response(const Scene& scene, const Be
 }
 
 std::unique_ptr<SpinningModel> ModelLevel::spinning(const Scene& scene, const SpinningOptions&) {
-    throw InputError(scene.source_file + ": [rotation] at model = \"" + to_string(chosen_spinning_level(scene)) +
-                     "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");
+    throw cannot_spin(scene, chosen_spinning_level(scene));
+}
+
+InputError cannot_spin(const Scene& scene, ModelChoice level) {
+    return InputError(scene.source_file + ": [rotation] at model = \"" + to_string(level) +
+                      "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");
 }
 
 void require_one_process_sweep(const Scene& scene, ModelChoice level) {

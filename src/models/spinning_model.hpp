@@ -10,6 +10,7 @@
 // models/solid/solid_spinning.cpp.
 #pragma once
 
+#include "common/error.hpp"
 #include "modes/rotating_mode.hpp"
 #include "scene/response_spec.hpp"  // DampingSpec
 #include "scene/rotation_spec.hpp"
@@ -123,6 +124,10 @@ public:
     virtual std::string solver() const = 0;
     virtual std::string completeness() const = 0;
 };
+
+// The refusal of [rotation] at a level that cannot spin it (the coupled
+// harmonics), naming the case file and the levels that can.
+InputError cannot_spin(const Scene& scene, ModelChoice level);
 
 // InputError naming the case file: a Campbell sweep at a level that solves
 // with SLEPc runs in one process.

@@ -204,9 +204,7 @@ void require_spinning_level(const Scene& scene) {
     // A chuck not expanded (auto picks the coupled level at rest): only the
     // solid could spin the scene, and it refuses why (time-periodic).
     const LevelTraits& level = level_traits(chosen_spinning_level(scene));
-    if (!level.spins)
-        throw InputError(scene.source_file + ": [rotation] at model = \"" + to_string(level.level) +
-                         "\"; expected model = \"beam\", \"harmonic\" or \"solid\" (or --model)");
+    if (!level.spins) throw cannot_spin(scene, level.level);
     if (level.spins_in_rotating_frame) require_spinnable_by_solid(scene);
 }
 
