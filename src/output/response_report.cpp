@@ -157,7 +157,7 @@ std::string summary_json(const Scene& scene, const ResponseSetup& setup, const R
     for (const ResponsePeak& p : r.peaks) peaks.push_back(peak_json(p));
     const ResponseChecks& c = r.checks;
     Json t = summary_head("response", scene.name, scene.source_file, scene.description);
-    t["model"] = Json{{"level", r.level}, {"dofs", r.n_dofs}, {"solver", r.solver}};
+    t["model"] = Json{{"level", to_string(r.level)}, {"dofs", r.n_dofs}, {"solver", r.solver}};
     t["effects"] = string_array(r.effects);
     t["notes"] = string_array(r.notes);
     t["assumptions"] = string_array(r.assumptions);

@@ -107,6 +107,4 @@ const LevelTraits& level_traits(ModelChoice level) {
     return *found;
 }
 
-const LevelTraits& level_traits(std::string_view level) { return level_traits(model_choice_named(level)); }
-
 }  // namespace coremodal

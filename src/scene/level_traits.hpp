@@ -61,7 +61,4 @@ struct LevelTraits {
 // The traits of a resolved level (not ModelChoice::automatic: chosen_level resolves it).
 const LevelTraits& level_traits(ModelChoice level);
 
-// The traits of the level a result or resolved scene names by its word.
-const LevelTraits& level_traits(std::string_view level);
-
 }  // namespace coremodal

@@ -171,7 +171,7 @@ TEST_CASE("Case 13 at the harmonic level: the same peak at the same fraction of 
     // docs/validation/response.md, "The three levels on one scene": f1
     // 25.789 Hz (beam 26.308), the peak 5.444 mm at 16.41 m/s (beam 5.155 mm
     // at 16.74 m/s: 0.980 of the speed, as f1), the limit at 16.34 m/s.
-    REQUIRE(r.level == "harmonic");
+    REQUIRE(r.level == ModelChoice::harmonic);
     REQUIRE(r.peaks.size() == 1);
     CHECK(r.peaks[0].order == 1);
     CHECK(r.peaks[0].mode.type == "bending");

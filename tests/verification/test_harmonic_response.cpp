@@ -139,7 +139,7 @@ TEST_CASE("Harmonic level: the amplitude is linear in the excitation and goes as
     twice.bow_m = 1e-3;
     const ResponseResult a = run_forced_response(scene, setup_of(0.01, bow, 20, 120, 101));
     const ResponseResult b = run_forced_response(scene, setup_of(0.01, twice, 20, 120, 101));
-    REQUIRE(a.level == "harmonic");
+    REQUIRE(a.level == ModelChoice::harmonic);
     for (size_t i = 0; i < a.points.size(); ++i)
         CHECK(b.points[i].probes[0].total_m == Approx(2 * a.points[i].probes[0].total_m).epsilon(1e-12));
     ExcitationSpec unbalance;
@@ -172,8 +172,8 @@ TEST_CASE("Harmonic and beam levels give the same response within their differen
     const ResponseSetup setup = setup_of(0.01, bow_unbalance_ovality(), 5, 30, 251, 2.0);
     const ResponseResult beam = run_forced_response(clamped_roll("beam", "4 m"), setup);
     const ResponseResult harmonic = run_forced_response(clamped_roll("harmonic", "4 m"), setup);
-    REQUIRE(beam.level == "beam");
-    REQUIRE(harmonic.level == "harmonic");
+    REQUIRE(beam.level == ModelChoice::beam);
+    REQUIRE(harmonic.level == ModelChoice::harmonic);
     const double f1_ratio = harmonic.speeds_at_rest.f1_hz / beam.speeds_at_rest.f1_hz;
     CHECK(std::abs(f1_ratio - 1) < 0.03);
     REQUIRE(beam.peaks.size() == 2);
@@ -264,7 +264,7 @@ TEST_CASE("Solid and harmonic levels give the same response on one section", "[r
     const ResponseSetup setup = setup_of(0.01, x, 20, 120, 101);
     const ResponseResult harmonic = run_forced_response(clamped_roll("harmonic"), setup);
     const ResponseResult solid = run_forced_response(clamped_roll("solid"), setup);
-    REQUIRE(solid.level == "solid");
+    REQUIRE(solid.level == ModelChoice::solid);
     REQUIRE(harmonic.peaks.size() == 1);
     REQUIRE(solid.peaks.size() == 1);
     // The solid's 16 quadratic cells around: 1e-4 stiffer (docs/theory/harmonic.md).

@@ -76,7 +76,7 @@ double orbit_semi_major(cd ux, cd uy) {
 
 ResponseResult response_result_for(const Scene& scene, const ResponseSetup& setup, const ResponseLevel& level) {
     ResponseResult out;
-    out.level = to_string(level.level);
+    out.level = level.level;
     const ResponseRange& range = setup.response;
     out.probes = range.probes, out.limit_m = range.limit_m, out.from_web_speed = range.from_web_speed;
     out.damping = setup.damping, out.damping_summary = damping_summary(setup.damping);

@@ -77,7 +77,7 @@ struct ResponseChecks {
 };
 
 struct ResponseResult {
-    std::string level = "beam";  // the model level that computed it: "beam", "harmonic" or "solid"
+    ModelChoice level = ModelChoice::beam;  // the model level that computed it: beam, harmonic or solid
     std::string solver;          // how, in a line (summary.json's model.solver)
     std::vector<ResponsePoint> points;
     std::vector<ResponseRange::Probe> probes;

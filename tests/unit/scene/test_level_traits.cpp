@@ -45,10 +45,10 @@ TEST_CASE("The level table says what each level carries", "[scene][levels]") {
     CHECK(level_traits(ModelChoice::harmonic).centrifugal);
     CHECK(level_traits(ModelChoice::solid).centrifugal);
     // Sensitivities from the assembled operators: the beam and the harmonic level.
-    CHECK(level_traits("beam").sensitivities);
-    CHECK(level_traits("harmonic").sensitivities);
-    CHECK_FALSE(level_traits("solid").sensitivities);
-    CHECK_FALSE(level_traits("coupled").sensitivities);
+    CHECK(level_traits(ModelChoice::beam).sensitivities);
+    CHECK(level_traits(ModelChoice::harmonic).sensitivities);
+    CHECK_FALSE(level_traits(ModelChoice::solid).sensitivities);
+    CHECK_FALSE(level_traits(ModelChoice::coupled).sensitivities);
     // Exactly one converge reference, the solid, which every other ladder is measured against.
     int references = 0;
     for (ModelChoice level : {ModelChoice::beam, ModelChoice::harmonic, ModelChoice::coupled, ModelChoice::solid}) {

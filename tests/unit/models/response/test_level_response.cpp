@@ -46,7 +46,7 @@ TEST_CASE("A level's response to several setups is each setup's: linear in the u
     const std::vector<ResponseResult> both = make_model_level(scene)->response(scene, {})->respond_all(
         {unbalanced(2e-3), unbalanced(6e-3)}, ResponseChecking::none, RestModes::lateral);
     REQUIRE(both.size() == 2);
-    CHECK(both[0].level == "beam");
+    CHECK(both[0].level == ModelChoice::beam);
     REQUIRE(both[0].max_amplitude_m > 0);
     // No gravity, no bow: the orbit is linear in the unbalance (round-off only).
     CHECK(both[1].max_amplitude_m == Approx(3 * both[0].max_amplitude_m).epsilon(1e-9));
