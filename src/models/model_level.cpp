@@ -1,4 +1,6 @@
 #include "models/model_level.hpp"
+#include "models/spinning_model.hpp"
+#include "models/linearised.hpp"
 
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"

@@ -12,8 +12,6 @@
 // Why solve() is one call and not problems() + expand(): docs/architecture.md.
 #pragma once
 
-#include "models/linearised.hpp"
-#include "models/spinning_model.hpp"
 #include "results/level_shapes.hpp"
 #include "results/run_report.hpp"
 
@@ -24,8 +22,15 @@
 
 namespace coremodal {
 
+// The providers' types, declared only: each caller includes the one it
+// uses (models/linearised.hpp, models/spinning_model.hpp,
+// models/response/level_response.hpp), so that a change to one provider
+// does not recompile every file that names a level.
 struct BeamModelOptions;
+struct Linearised;
 class LevelResponse;
+class SpinningModel;
+struct SpinningOptions;
 
 // Progress lines on standard output, when on.
 struct Printer {

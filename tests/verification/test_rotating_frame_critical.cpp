@@ -9,6 +9,7 @@
 // frequency r f_rot likewise: the stationary frame's backward whirl and its
 // order-2 crossings, and a dense solve of the complex Hermitian pencil.
 #include "analyses/campbell/campbell.hpp"
+#include "models/spinning_model.hpp"
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 #include "common/error.hpp"
 #include "eigensolve/projection_basis.hpp"  // apply_columns

@@ -1,4 +1,5 @@
 #include "analyses/campbell/campbell.hpp"
+#include "models/spinning_model.hpp"
 
 #include "analyses/campbell/zero_frequency_crossings.hpp"
 

@@ -1,4 +1,5 @@
 #include "analyses/campbell/zero_frequency_crossings.hpp"
+#include "models/spinning_model.hpp"
 
 #include "common/error.hpp"
 #include "common/format.hpp"

@@ -3,6 +3,7 @@
 #include "analyses/sensitivity/sensitivity.hpp"
 
 #include "models/choose.hpp"
+#include "models/linearised.hpp"
 #include "common/error.hpp"
 #include "scene/free_span.hpp"
 #include "scene/materials_library.hpp"

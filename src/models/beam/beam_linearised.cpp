@@ -2,6 +2,7 @@
 // modes at p and, for the scenes at p(1 ± h), the difference of the assembled
 // network matrices on the free DOFs of the scene at p.
 #include "models/beam/beam_level.hpp"
+#include "models/linearised.hpp"
 
 #include <memory>
 

@@ -3,6 +3,7 @@
 // the network's dense Hermitian linearization (beam/rotating_modes.hpp),
 // each labelled. No per-block solve, no damping, no co-rotating pencils.
 #include "models/beam/beam_level.hpp"
+#include "models/spinning_model.hpp"
 
 #include "beam/rotating_modes.hpp"
 #include "models/beam/beam_spinning_notes.hpp"

@@ -3,6 +3,7 @@
 // wave number n, and for the scenes at p(1 ± h) the difference of each n's
 // assembled operators on the DOFs of the scene at p.
 #include "models/harmonic/harmonic_level.hpp"
+#include "models/linearised.hpp"
 
 #include "assembly/harmonic_system.hpp"
 #include "common/error.hpp"

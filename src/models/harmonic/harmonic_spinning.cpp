@@ -4,6 +4,7 @@
 // crossing's refinement solves one wave number, and with [damping] every
 // mode gets its damped partner from the same wave number's damped problem.
 #include "models/harmonic/harmonic_level.hpp"
+#include "models/spinning_model.hpp"
 
 #include "effects/damping.hpp"
 #include "models/harmonic/harmonic_spinning_notes.hpp"

@@ -1,4 +1,5 @@
 #include "models/solid/rotating_solid.hpp"
+#include "models/spinning_model.hpp"
 
 #include "assembly/chuck_supports.hpp"
 #include "assembly/petsc_system.hpp"

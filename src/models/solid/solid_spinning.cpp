@@ -5,6 +5,7 @@
 // says how well each mode's dominant harmonic brought it to the stationary
 // frame.
 #include "models/solid/solid_level.hpp"
+#include "models/spinning_model.hpp"
 
 #include "common/format.hpp"
 #include "models/solid/rotating_solid.hpp"

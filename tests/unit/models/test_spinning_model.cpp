@@ -4,6 +4,7 @@
 // tests/support/tiny_case.hpp), what each lacks an empty member, and a
 // level that cannot spin refusing with the reason.
 #include "models/choose.hpp"
+#include "models/spinning_model.hpp"
 
 #include "common/error.hpp"
 #include "scene/response_spec.hpp"
