@@ -5,6 +5,7 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "models/choose.hpp"
+#include "models/ladder/model_ladder.hpp"
 #include "models/response/level_response.hpp"
 
 namespace coremodal {
@@ -27,6 +28,12 @@ std::unique_ptr<LevelResponse> ModelLevel::response(const Scene& scene, const Be
 
 std::unique_ptr<SpinningModel> ModelLevel::spinning(const Scene& scene, const SpinningOptions&) {
     throw cannot_spin(scene, chosen_spinning_level(scene));
+}
+
+std::optional<ModelLadder> ModelLevel::converge_ladder(const Scene& scene, const LadderRequest&,
+                                                       std::vector<std::string>&) {
+    throw InputError(scene.source_file + ": `converge` has no refinement ladder at the " +
+                     to_string(chosen_level(scene)) + " level; expected --models solid, harmonic or beam");
 }
 
 InputError cannot_spin(const Scene& scene, ModelChoice level) {

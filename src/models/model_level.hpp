@@ -17,6 +17,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,10 @@ namespace coremodal {
 // models/response/level_response.hpp), so that a change to one provider
 // does not recompile every file that names a level.
 struct BeamModelOptions;
+struct LadderRequest;
 struct Linearised;
 class LevelResponse;
+struct ModelLadder;
 class SpinningModel;
 struct SpinningOptions;
 
@@ -82,6 +85,12 @@ public:
     // for `campbell`. Levels that cannot spin (level_traits(...).spins)
     // refuse with an InputError.
     virtual std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options);
+    // The level's refinement ladder for `converge` (models/ladder/model_ladder.hpp),
+    // or none, with the reason in `notes`, for a scene the level cannot solve.
+    // Levels without one (level_traits(...).converge_ladder) refuse with an
+    // InputError. The scene outlives the ladder.
+    virtual std::optional<ModelLadder> converge_ladder(const Scene& scene, const LadderRequest& request,
+                                                       std::vector<std::string>& notes);
 };
 
 // A warning about the model of a scene: on stderr from rank 0, named after

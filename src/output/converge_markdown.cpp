@@ -1,6 +1,6 @@
 #include "output/converge_report.hpp"
 
-#include "analyses/converge/refinement_ladder.hpp"
+#include "models/ladder/refinement_ladder.hpp"
 #include "common/format.hpp"
 
 #include <algorithm>

@@ -25,10 +25,6 @@ double load_average() {
     return getloadavg(load, 1) == 1 ? load[0] : 0.0;
 }
 
-bool wants_model(const ConvergeOptions& o, const std::string& model) {
-    return std::find(o.models.begin(), o.models.end(), model) != o.models.end();
-}
-
 void check_options(const ConvergeOptions& o) {
     if (o.repeats < 1) throw InputError("--repeats " + std::to_string(o.repeats) + ": expected at least 1");
     if (o.n_modes && *o.n_modes < 1) throw InputError("--modes " + std::to_string(*o.n_modes) + ": expected at least 1");
@@ -37,46 +33,15 @@ void check_options(const ConvergeOptions& o) {
             throw InputError("--check-levels " + name + ": unknown mesh level; expected coarse, default, fine or very_fine");
     const std::string valid = "expected solid, harmonic, beam (comma-separated, any of them)";
     if (o.models.empty()) throw InputError("--models: no model level; " + valid);
-    for (const auto& name : o.models)
-        if (const auto level = parse_model_choice(name);
-            !level || *level == ModelChoice::automatic || !level_traits(*level).converge_ladder)
+    bool reference = false;  // the solid's ladder, whose meshes the named mesh levels are
+    for (const auto& name : o.models) {
+        const auto level = parse_model_choice(name);
+        if (!level || *level == ModelChoice::automatic || !level_traits(*level).converge_ladder)
             throw InputError("--models " + name + ": unknown model level; " + valid);
-    if (!o.check_levels.empty() && !wants_model(o, "solid"))
+        reference = reference || level_traits(*level).converge_reference;
+    }
+    if (!o.check_levels.empty() && !reference)
         throw InputError("--check-levels: named mesh levels are solid meshes; add solid to --models");
-}
-
-// "converge: NAME (FILE), model levels: solid (4 levels, ...), beam (...)".
-void announce(const Scene& scene, const ConvergeOptions& o, std::ostream& progress) {
-    const bool want_solid = wants_model(o, "solid"), want_beam = wants_model(o, "beam");
-    progress << "converge: " << scene.name << " (" << o.case_file << "), model levels:";
-    if (want_solid)
-        progress << " solid (" << o.levels << " levels, " << o.repeats << (o.repeats == 1 ? " run" : " runs")
-                 << " per level, one when the first takes over " << formatted("%.0f", o.repeat_limit_s) << " s)";
-    if (want_beam)
-        progress << (want_solid ? "," : "") << " beam (" << kBeamLevels << " levels, " << kBeamRunsPerLevel
-                 << " runs per level)";
-    if (wants_model(o, "harmonic"))
-        progress << (want_solid || want_beam ? "," : "") << " harmonic (" << o.levels + kHarmonicExtraLevels
-                 << " levels, r-z section only)";
-    progress << std::endl;
-}
-
-// The ladders of the model levels asked for that can solve the scene (solid,
-// beam, harmonic in this order); the others leave a note. `n_modes` is read
-// by the solid's and the harmonic's runs when they run.
-std::vector<ModelLadder> model_ladders(const Scene& scene, const ConvergeOptions& o, const int& n_modes,
-                                       std::ostream& progress, ConvergeStudy& study) {
-    std::vector<ModelLadder> ladders;
-    if (wants_model(o, "solid")) ladders.push_back(solid_ladder(scene, o, n_modes));
-    if (mpi_rank() == 0 && !o.quiet) announce(scene, o, progress);
-    if (wants_model(o, "beam"))
-        if (auto beam = beam_ladder(scene, o, progress, study.notes)) ladders.push_back(std::move(*beam));
-    if (wants_model(o, "harmonic"))
-        if (auto harmonic = harmonic_ladder(scene, o, n_modes, progress, study.notes))
-            ladders.push_back(std::move(*harmonic));
-    if (ladders.empty())  // --models beam or harmonic, and that level cannot solve the scene
-        throw InputError(o.case_file + ": no model level to run (" + study.notes.back() + ")");
-    return ladders;
 }
 
 // Every level of every ladder, coarse to fine, then each ladder's analysis.
@@ -110,6 +75,15 @@ void run_ladders(const Scene& scene, std::vector<ModelLadder>& ladders, const Co
         model.unseen_roles = ladder.unseen_roles;
         study.models.push_back(std::move(model));
     }
+}
+
+// The converge reference's ladder (the solid's: check_options requires it
+// with --check-levels).
+const ModelLadder& reference_ladder(const std::vector<ModelLadder>& ladders) {
+    const auto it = std::find_if(ladders.begin(), ladders.end(),
+                                 [](const ModelLadder& l) { return level_traits(l.model).converge_reference; });
+    COREMODAL_ASSERT(it != ladders.end());
+    return *it;
 }
 
 // Notes on levels whose modes are not all proven present, or whose repeated
@@ -152,14 +126,15 @@ ConvergeStudy run_converge(const ConvergeOptions& o, std::ostream& progress) {
     study.repeats = o.repeats;
     study.repeat_limit_s = o.repeat_limit_s;
     int n_modes = o.n_modes.value_or(scene.analysis.n_modes);
-    std::vector<ModelLadder> ladders = model_ladders(scene, o, n_modes, progress, study);
+    std::vector<ModelLadder> ladders = model_ladders(scene, o, progress, study);
 
     // 2. The number of modes, then every level of every ladder and the analysis.
     run_ladders(scene, ladders, o, n_modes, progress, study);
     study.ladder_time_s = clock.seconds();
 
     // 3. Named mesh levels, for choosing the default.
-    for (const auto& name : o.check_levels) study.checks.push_back(run_named_level(scene, name, n_modes, o, progress));
+    for (const auto& name : o.check_levels)
+        study.checks.push_back(run_named_level(scene, name, reference_ladder(ladders), o, progress));
     add_level_notes(study);
     study.total_time_s = clock.seconds();
     study.load_end = load_average();

@@ -52,9 +52,6 @@ struct ConvergeOptions {
         write;
 };
 
-// Most modes asked per run while looking for the first ovalling mode.
-inline constexpr int kMaxModesForOvalling = 64;
-
 // Runs the study and hands it to options.write; collective. Throws
 // InputError for bad options or case files.
 ConvergeStudy run_converge(const ConvergeOptions& options, std::ostream& progress);

@@ -14,7 +14,7 @@ std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder&
     if (o.n_modes || scene.analysis.f_max_hz) return std::nullopt;
     const bool root = mpi_rank() == 0;
     for (;;) {
-        LevelRun run = ladder.run_once(ladder.steps.front());
+        LevelRun run = measured_run(ladder, ladder.steps.front(), n_modes);
         int found = root ? has_mode_type(run.modes, "ovalling") : 0;
         MPI_Bcast(&found, 1, MPI_INT, 0, PETSC_COMM_WORLD);  // labels live on rank 0
         if (found) return run;
@@ -81,7 +81,7 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     };
     const int repeats = ladder.runs_per_level > 0 ? ladder.runs_per_level : o.repeats;
     while (static_cast<int>(runs.size()) < repeats && (runs.empty() || (!slow() && !spent()))) {
-        runs.push_back(ladder.run_once(step));
+        runs.push_back(measured_run(ladder, step, ladder.n_modes));
         if (repeats <= 10 || runs.size() == 1) show();
     }
     if (repeats > 10 && say) progress << " ... " << runs.size() << " runs," << std::flush;
@@ -93,8 +93,8 @@ LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<Le
     return result;
 }
 
-NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int n_modes, const ConvergeOptions& o,
-                                std::ostream& progress) {
+NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, const ModelLadder& reference,
+                                const ConvergeOptions& o, std::ostream& progress) {
     Scene s = scene;
     s.mesh.along_per_segment.clear();
     apply_mesh_level(s, name);
@@ -107,7 +107,7 @@ NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int
     step.mesh = s.mesh;
     step.counts = check.mesh;
     step.label = name + " " + check.mesh;
-    const LevelRun run = run_solid_once(scene, s.mesh, n_modes);
+    const LevelRun run = measured_run(reference, step, reference.n_modes);
     check.result = summarize_runs(step, {run});
     if (say)
         progress << " " << run.n_dofs << " DOFs, " << formatted("%.1f", run.timing_s.total) << " s" << role_values(run)

@@ -29,9 +29,10 @@ std::optional<LevelRun> choose_mode_count(const Scene& scene, const ModelLadder&
 LevelResult run_level(const ModelLadder& ladder, std::size_t i, std::optional<LevelRun> first_run,
                       const ConvergeOptions& o, std::ostream& progress);
 
-// A named mesh level ("coarse", "default", ...) of the solid, run once.
-NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, int n_modes, const ConvergeOptions& o,
-                                std::ostream& progress);
+// A named mesh level ("coarse", "default", ...) run once by the reference
+// ladder (the solid's, whose meshes the named levels are).
+NamedLevelCheck run_named_level(const Scene& scene, const std::string& name, const ModelLadder& reference,
+                                const ConvergeOptions& o, std::ostream& progress);
 
 // Seconds in progress lines: `format` ("%.1f"), but two significant digits
 // below 0.1 s (a beam run takes ~1e-3 s).

@@ -25,6 +25,9 @@ public:
     Linearised linearise(const Scene& scene) override;  // models/beam/beam_linearised.cpp
     // models/beam/beam_spinning.cpp
     std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
+    // models/beam/beam_ladder.cpp
+    std::optional<ModelLadder> converge_ladder(const Scene& scene, const LadderRequest& request,
+                                               std::vector<std::string>& notes) override;
     // The model's timing, in milliseconds.
     std::string console_note() const override;
 

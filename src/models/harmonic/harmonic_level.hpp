@@ -23,6 +23,9 @@ public:
     Linearised linearise(const Scene& scene) override;  // models/harmonic/harmonic_linearised.cpp
     // models/harmonic/harmonic_spinning.cpp
     std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
+    // models/harmonic/harmonic_ladder.cpp
+    std::optional<ModelLadder> converge_ladder(const Scene& scene, const LadderRequest& request,
+                                               std::vector<std::string>& notes) override;
     // After solve: the revolved section the modes' shapes live on.
     const std::optional<RevolvedMesh>& revolved() const { return revolved_; }
 

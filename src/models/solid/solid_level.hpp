@@ -23,6 +23,9 @@ public:
     std::unique_ptr<LevelResponse> response(const Scene& scene, const BeamModelOptions& options) override;
     // models/solid/solid_spinning.cpp
     std::unique_ptr<SpinningModel> spinning(const Scene& scene, const SpinningOptions& options) override;
+    // models/solid/solid_ladder.cpp
+    std::optional<ModelLadder> converge_ladder(const Scene& scene, const LadderRequest& request,
+                                               std::vector<std::string>& notes) override;
 
 private:
     std::optional<Mesh> mesh_;  // after solve: where the shapes live

@@ -1,7 +1,7 @@
-// The refinement ladders of converge (analyses/converge/refinement_ladder.hpp):
+// The refinement ladders of converge (models/ladder/refinement_ladder.hpp):
 // every direction and axial segment refined by k, the unit and its bound on
 // the DOFs, and the beam ladder; bad input refused with what is expected.
-#include "analyses/converge/refinement_ladder.hpp"
+#include "models/ladder/refinement_ladder.hpp"
 
 #include "common/error.hpp"
 #include "geometry/tube_section.hpp"

@@ -1,4 +1,4 @@
-#include "analyses/converge/refinement_ladder.hpp"
+#include "models/ladder/refinement_ladder.hpp"
 
 #include "beam/beam_model.hpp"
 #include "common/error.hpp"
