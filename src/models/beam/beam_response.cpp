@@ -124,19 +124,18 @@ private:
     std::vector<int> orders_;
 };
 
-// Structural damping on the lateral rows, H = sum_p eta_p K_p
-// (effects/damping.hpp): the core's elements split into their layers (the
-// core's wall and the rest paper, beam_theory.hpp: K_e is linear in the
-// section's stiffnesses, so K_e(core) + K_e(rest paper) is the element's
-// K_e), the chucks' elements whole; springs carry none.
-Eigen::SparseMatrix<double> beam_hysteretic(const Scene& scene, const BeamNetwork& net, const LateralResponse& lateral,
-                                            const StructuralDamping& damping) {
-    const std::vector<int>& free = lateral.matrices().free_dofs;
-    std::vector<int> row_of(net.held.size(), -1);
-    for (size_t r = 0; r < free.size(); ++r) row_of[static_cast<size_t>(free[r])] = static_cast<int>(r);
-    const auto n = static_cast<Eigen::Index>(free.size());
+// Each part's stiffness on the lateral rows: the core's elements split into
+// their layers (the core's wall and the rest paper, beam_theory.hpp: K_e is
+// linear in the section's stiffnesses, so K_e(core) + K_e(rest paper) is the
+// element's K_e), the chucks' elements whole; springs are no part. The
+// scene, the network and the response outlive it.
+PartStiffness beam_part_stiffness(const Scene& scene, const BeamNetwork& net, const LateralResponse& lateral) {
     // The element stiffness of one part's section, summed on the rows over the beams that carry it.
-    const auto part_stiffness = [&](const std::string& part) {
+    const auto part_stiffness = [&scene, &net, &lateral](const std::string& part) {
+        const std::vector<int>& free = lateral.matrices().free_dofs;
+        std::vector<int> row_of(net.held.size(), -1);
+        for (size_t r = 0; r < free.size(); ++r) row_of[static_cast<size_t>(free[r])] = static_cast<int>(r);
+        const auto n = static_cast<Eigen::Index>(free.size());
         std::vector<Eigen::Triplet<double>> triplets;
         for (const BeamNetwork::Beam& beam : net.beams) {
             std::optional<BeamSection> layer;  // none: the part is not in this beam
@@ -164,8 +163,8 @@ Eigen::SparseMatrix<double> beam_hysteretic(const Scene& scene, const BeamNetwor
         K.setFromTriplets(triplets.begin(), triplets.end());
         return K;
     };
-    const std::vector<std::string> parts(kLossFactorParts.begin(), kLossFactorParts.end());
-    return hysteretic_operator(damping, parts, Eigen::SparseMatrix<double>(n, n), part_stiffness);
+    return {lateral.matrices().K.rows(), {"core", "rest_paper", "chucks"}, part_stiffness,
+            "the core's and rest paper's layers of each core element and the chucks' elements"};
 }
 
 double first_bending_hz(const BeamModelResult& rest) {
@@ -223,20 +222,13 @@ ResponseResult run_beam_response(const Scene& scene, const ResponseSetup& setup,
     LateralResponse lateral = lateral_basis(rest, setup, checking, scene.analysis.tolerance);
     const LateralDampingPlan damping = plan_damping(setup.damping, rest, lateral);
     lateral.set_damping(damping.rayleigh, damping.zeta);
-    const StructuralDamping structural = structural_damping_of(setup.damping);
-    if (structural.given()) lateral.set_hysteretic(beam_hysteretic(scene, rest.network, lateral, structural));
     out.n_dofs = lateral.matrices().K.rows();
     const Eigen::VectorXd first_shape =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_shape(rest) : Eigen::VectorXd();
     const ResponseLoads loads = build_response_loads(scene, setup.excitation, rest.network, lateral, first_shape);
     COREMODAL_ASSERT(!loads.orders.empty());  // the reader refuses an [excitation] that excites nothing
     for (const std::string& a : damping.assumptions) out.assumptions.push_back(a);
-    for (const std::string& a :
-         structural_damping_assumptions(setup.damping, "the core's and rest paper's layers of each core element and the chucks' elements"))
-        out.assumptions.push_back(a);
-    if (structural.given())
-        out.assumptions.push_back("structural damping: the static part of the modes above the cutoff is taken without "
-                                  "their loss (it changes it by 1/(1 + i eta): in magnitude by about eta^2 / 2)");
+    add_part_damping(lateral, setup.damping, beam_part_stiffness(scene, rest.network, lateral), out.assumptions);
     for (const std::string& a : loads.assumptions) out.assumptions.push_back(a);
     for (const OrderLoad& l : loads.orders) out.orders.push_back(l.order), out.order_sources.push_back(l.sources);
     std::vector<CorePoint> probes;

@@ -87,14 +87,13 @@ double first_bending_hz(const ModalBasis& basis, const std::vector<ModeLabel>& l
 }
 
 // The setups one n = 1 model serves (run_harmonic_responses): the same
-// basis (speeds, highest order) and structural damping.
+// basis (speeds, highest order) and damping of the parts.
 void require_one_model(const std::vector<ResponseSetup>& setups) {
     const ResponseSetup& first = setups.front();
     for (const ResponseSetup& s : setups)
         COREMODAL_ASSERT(s.response.speeds_hz == first.response.speeds_hz &&
                          highest_order(s.excitation) == highest_order(first.excitation) &&
-                         s.damping.loss_factor == first.damping.loss_factor &&
-                         s.damping.part_loss_factors == first.damping.part_loss_factors);
+                         same_part_damping(s.damping, first.damping));
 }
 
 // The probes on the section: u_y = -i u_x (the sin family is -i a).
@@ -181,10 +180,8 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
     const RollSpeeds at_rest = every_wave_number ? outs.front().speeds_at_rest
                                                  : roll_speeds(scene, f1, f1 > 0 ? "" : "no bending mode");
     ModalResponse response(plane.K, plane.M, plane.G, kOnePlane, basis, lambda_scale);
-    std::vector<std::string> structural;
-    add_structural_damping(
-        response, first.damping, [&](const StructuralDamping& s) { return harmonic_hysteretic(plane, s); },
-        "each part's cells of wave number n = 1 (core, rest paper, chucks)", structural);
+    std::vector<std::string> part_damping;
+    add_part_damping(response, first.damping, harmonic_part_stiffness(plane), part_damping);
     const std::vector<ProbeWeights> probes = section_probes(plane, first.response);
     const std::vector<ResponseCrossing> crossings =
         crossings_of(response, labels, first.response.speeds_hz.back(), outs.front().roll_outer_diameter);
@@ -193,7 +190,7 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
         ResponseResult& out = outs[k];
         out.speeds_at_rest = at_rest;
         out.checks.cutoff_hz = cutoff_hz;
-        out.assumptions.insert(out.assumptions.end(), structural.begin(), structural.end());
+        out.assumptions.insert(out.assumptions.end(), part_damping.begin(), part_damping.end());
         respond(scene, setups[k], rest, model, checking, out);
         out.crossings = crossings;
     }

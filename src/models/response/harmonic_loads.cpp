@@ -83,11 +83,12 @@ Eigen::VectorXd sideways_translation(const HarmonicPlane& plane) {
 
 }  // namespace
 
-Eigen::SparseMatrix<double> harmonic_hysteretic(const HarmonicPlane& plane, const StructuralDamping& damping) {
-    const auto n = static_cast<Eigen::Index>(plane.K.rows());
-    return hysteretic_operator(damping, plane.section.part_names, Eigen::SparseMatrix<double>(n, n), [&](const std::string& part) {
-        return cells_matrix(plane, [&](int c) { return in_part(plane, c, part); }, Term::stiffness);
-    });
+PartStiffness harmonic_part_stiffness(const HarmonicPlane& plane) {
+    return {plane.K.rows(), plane.section.part_names,
+            [&plane](const std::string& part) {
+                return cells_matrix(plane, [&](int c) { return in_part(plane, c, part); }, Term::stiffness);
+            },
+            "each part's cells of wave number n = 1 (core, rest paper, chucks)"};
 }
 
 HarmonicPlane assemble_harmonic_plane(const Scene& scene) {

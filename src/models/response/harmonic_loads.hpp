@@ -17,7 +17,7 @@
 
 #include "models/response/modal_response.hpp"
 #include "models/response/modal_response_model.hpp"
-#include "effects/damping.hpp"
+#include "models/response/response_damping.hpp"
 #include "assembly/harmonic_system.hpp"
 #include "geometry/section_mesh.hpp"
 #include "material/material.hpp"
@@ -54,7 +54,7 @@ Eigen::VectorXd section_probe(const HarmonicPlane& plane, double z);
 LevelLoads build_harmonic_loads(const Scene& scene, const ExcitationSpec& excitation, const HarmonicPlane& plane,
                                    const ModalResponse& response, const Eigen::VectorXd& first_mode);
 
-// Structural damping H = sum_p eta_p K_p over the parts' cells (effects/damping.hpp).
-Eigen::SparseMatrix<double> harmonic_hysteretic(const HarmonicPlane& plane, const StructuralDamping& damping);
+// Each part's stiffness: its cells' K of wave number n = 1 (the plane outlives it).
+PartStiffness harmonic_part_stiffness(const HarmonicPlane& plane);
 
 }  // namespace coremodal

@@ -52,6 +52,8 @@ namespace coremodal {
 
 class LateralResponse {
 public:
+    // The static part of the modes left out is K^-1's, without their structural loss (set_hysteretic).
+    static constexpr bool kStaticPartKeepsLoss = false;
     // lambda_scale: the first elastic eigenvalue's scale (rad^2/s^2,
     // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode
     // (set_damping replaces it). Throws SolveError when the network has no bending DOF.

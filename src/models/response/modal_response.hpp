@@ -53,6 +53,8 @@ inline const std::complex<double> kTwoPlanes{0, 1};  // skew G of both planes
 
 class ModalResponse {
 public:
+    // The static part of the modes above the basis keeps their structural loss (set_hysteretic).
+    static constexpr bool kStaticPartKeepsLoss = true;
     // K, M and G (per unit Omega, rad/s) of the model and its gyroscopic
     // unit; the basis of its lowest modes at rest; lambda_scale: the first
     // elastic eigenvalue's scale (rad^2/s^2), for the rigid line. Throws

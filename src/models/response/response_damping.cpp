@@ -176,13 +176,23 @@ std::string damping_note(const DampingSpec& spec) {
                                                        : "a loss factor per part (structural damping, K_p (1 + i eta_p))");
 }
 
-std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where) {
+bool same_part_damping(const DampingSpec& a, const DampingSpec& b) {
+    return a.loss_factor == b.loss_factor && a.part_loss_factors == b.part_loss_factors;
+}
+
+std::vector<std::string> part_damping_assumptions(const DampingSpec& spec, const std::string& where,
+                                                  bool static_part_keeps_loss) {
     if (!structural_damping_of(spec).given()) return {};
     return {"structural (hysteretic) damping, " + loss_factor_words(spec) +
                 ": the complex stiffness K_p (1 + i eta_p) of " + where +
                 ", frequency independent (H = sum eta_p K_p in the direct solve, Phi^T H Phi in the modal equations: "
                 "mode j's loss factor eta_j = phi_j^T H phi_j / lambda_j, at resonance as a viscous zeta_j = eta_j / 2); "
-                "springs (spring layers, bearings) carry no loss factor; the values are the user's (no default)"};
+                "springs (spring layers, bearings) carry no loss factor; the values are the user's (no default)",
+            static_part_keeps_loss
+                ? "structural damping: the static part of the modes above the cutoff with their loss, "
+                  "(K + i H)^-1 p less the kept modes' (Lambda + i Phi^T H Phi)^-1 part"
+                : "structural damping: the static part of the modes above the cutoff is taken without "
+                  "their loss (it changes it by 1/(1 + i eta): in magnitude by about eta^2 / 2)"};
 }
 
 }  // namespace coremodal

@@ -16,6 +16,7 @@
 #include "effects/damping.hpp"
 #include "scene/response_spec.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -109,24 +110,39 @@ std::vector<std::string> damping_effect_names(const DampingSpec& spec);
 // The response's note on its damping: where it acts, what is not modelled,
 // and whether the parts carry loss factors.
 std::string damping_note(const DampingSpec& spec);
-// What a run with structural damping assumes, echoed; `where` says what a
-// part's stiffness is at the level ("the core's and rest paper's element
-// stiffness", "each part's cells"). Empty without loss factors.
-std::vector<std::string> structural_damping_assumptions(const DampingSpec& spec, const std::string& where);
+// A level's stiffness by part, for the damping terms that act on a part's
+// material (effects/damping.hpp: a loss factor per part): K_p on the
+// response's n rows for each of the level's parts, and what a part's
+// stiffness is at the level ("each part's cells"), for the echo. The
+// level's own operators; no damping in them.
+struct PartStiffness {
+    Eigen::Index n = 0;
+    std::vector<std::string> parts;
+    std::function<Eigen::SparseMatrix<double>(const std::string& part)> of;
+    std::string where;
+};
 
-// The loss factors of [damping] on a modal response whose static part keeps
-// them (harmonic and solid levels): H from the level's parts, built only when
-// a loss factor is given, and what that assumes, echoed.
-template <class Response, class Hysteretic>
-void add_structural_damping(Response& response, const DampingSpec& spec, Hysteretic&& hysteretic,
-                            const std::string& where, std::vector<std::string>& assumptions) {
+// Whether two setups ask the same damping of the parts (one model serves both).
+bool same_part_damping(const DampingSpec& a, const DampingSpec& b);
+
+// What a run with damping per part assumes, echoed; `static_part_keeps_loss`:
+// whether the response's static part of the modes above the cutoff keeps
+// their loss (ModalResponse) or not (LateralResponse). Empty without it.
+std::vector<std::string> part_damping_assumptions(const DampingSpec& spec, const std::string& where,
+                                                  bool static_part_keeps_loss);
+
+// The damping terms of [damping] that act on the level's parts, on a modal
+// response (LateralResponse, ModalResponse): built from the parts only when
+// [damping] names one, with what that assumes, echoed.
+template <class Response>
+void add_part_damping(Response& response, const DampingSpec& spec, const PartStiffness& parts,
+                      std::vector<std::string>& assumptions) {
     const StructuralDamping structural = structural_damping_of(spec);
     if (!structural.given()) return;
-    response.set_hysteretic(hysteretic(structural));
-    for (std::string& a : structural_damping_assumptions(spec, where)) assumptions.push_back(std::move(a));
-    assumptions.push_back(
-        "structural damping: the static part of the modes above the cutoff with their loss, "
-        "(K + i H)^-1 p less the kept modes' (Lambda + i Phi^T H Phi)^-1 part");
+    response.set_hysteretic(
+        hysteretic_operator(structural, parts.parts, Eigen::SparseMatrix<double>(parts.n, parts.n), parts.of));
+    for (std::string& a : part_damping_assumptions(spec, parts.where, Response::kStaticPartKeepsLoss))
+        assumptions.push_back(std::move(a));
 }
 
 }  // namespace coremodal

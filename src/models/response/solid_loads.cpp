@@ -101,11 +101,10 @@ std::vector<int> core_nodes(const SolidResponseModel& m) {
 
 }  // namespace
 
-Eigen::SparseMatrix<double> solid_hysteretic(const SolidResponseModel& m, const StructuralDamping& damping) {
-    const auto n = static_cast<Eigen::Index>(m.K.rows());
-    return hysteretic_operator(damping, m.mesh.part_names, Eigen::SparseMatrix<double>(n, n), [&](const std::string& part) {
-        return cells_matrix(m, [&](int c) { return in_part(m, c, part); }, Term::stiffness);
-    });
+PartStiffness solid_part_stiffness(const SolidResponseModel& m) {
+    return {m.K.rows(), m.mesh.part_names,
+            [&m](const std::string& part) { return cells_matrix(m, [&](int c) { return in_part(m, c, part); }, Term::stiffness); },
+            "each part's cells (core, rest paper, chucks)"};
 }
 
 SolidResponseModel assemble_solid_response_model(const Scene& scene) {

@@ -17,7 +17,7 @@
 
 #include "models/response/modal_response.hpp"
 #include "models/response/modal_response_model.hpp"
-#include "effects/damping.hpp"
+#include "models/response/response_damping.hpp"
 #include "assembly/chuck_supports.hpp"
 #include "assembly/dof_map.hpp"
 #include "material/material.hpp"
@@ -55,7 +55,7 @@ ProbeWeights solid_section_probe(const SolidResponseModel& model, double z);
 LevelLoads build_solid_loads(const Scene& scene, const ExcitationSpec& excitation, const SolidResponseModel& model,
                              const ModalResponse& response, const Eigen::MatrixXd& first_pair);
 
-// Structural damping H = sum_p eta_p K_p over the parts' cells (effects/damping.hpp).
-Eigen::SparseMatrix<double> solid_hysteretic(const SolidResponseModel& m, const StructuralDamping& damping);
+// Each part's stiffness: its cells' K (the model outlives it).
+PartStiffness solid_part_stiffness(const SolidResponseModel& m);
 
 }  // namespace coremodal

@@ -95,9 +95,7 @@ ResponseResult run_solid_response(const Scene& scene_given, const ResponseSetup&
                                                           [](const ModeLabel&) { return true; },
                                                           "every mode of the solid below the cutoff");
     response.set_damping(damping.rayleigh, damping.zeta);
-    add_structural_damping(
-        response, setup.damping, [&](const StructuralDamping& s) { return solid_hysteretic(model, s); },
-        "each part's cells (core, rest paper, chucks)", out.assumptions);
+    add_part_damping(response, setup.damping, solid_part_stiffness(model), out.assumptions);
     const Eigen::MatrixXd first_pair =
         setup.excitation.bow_shape == BowShape::first_mode ? first_bending_pair(basis, labels) : Eigen::MatrixXd();
     const LevelLoads loads = build_solid_loads(scene, setup.excitation, model, response, first_pair);

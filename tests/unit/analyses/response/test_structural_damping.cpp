@@ -168,11 +168,15 @@ TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 with a l
     // Every part at eta: H = eta K exactly (the roll's cells are all of K here).
     StructuralDamping every;
     every.base = 0.03;
-    const Eigen::SparseMatrix<double> H_every = harmonic_hysteretic(plane, every);
+    const PartStiffness by_part = harmonic_part_stiffness(plane);
+    const auto H_of = [&](const StructuralDamping& d) {
+        return hysteretic_operator(d, by_part.parts, Eigen::SparseMatrix<double>(by_part.n, by_part.n), by_part.of);
+    };
+    const Eigen::SparseMatrix<double> H_every = H_of(every);
     CHECK((Eigen::MatrixXd(H_every) - 0.03 * K).norm() <= 1e-12 * 0.03 * K.norm());
     StructuralDamping parts;
     parts.parts = {{"core", 0.002}, {"rest_paper", 0.05}};
-    response.set_hysteretic(harmonic_hysteretic(plane, parts));
+    response.set_hysteretic(H_of(parts));
     response.set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(response.n_modes()), 0.005));
     ExcitationSpec x;
     x.bow_m = 0.5e-3;
