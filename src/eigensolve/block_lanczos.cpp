@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <memory>
 #include <random>
 
 namespace coremodal {
@@ -360,7 +362,42 @@ int capacity_for(int wanted, int block) {
     return (needed + block - 1) / block * block;
 }
 
+// No bound on the passes but the restarts (a random start).
+constexpr int kNoPassLimit = std::numeric_limits<int>::max();
+
+// Expands and restarts until `wanted` pairs have converged or the restarts
+// run out (true; the pairs converged in order, lambda = sigma + 1 / theta,
+// in `out`), or until `pass_limit` passes have gone by without that
+// (false: the caller drops the start).
+bool iterate(BlockLanczos& lanczos, double sigma, const BlockLanczosRequest& request, int pass_limit,
+             BlockLanczosResult& out) {
+    const int block = out.block_size;
+    for (;;) {
+        lanczos.expand();
+        BlockLanczos::Ritz r = lanczos.ritz();
+        order_as_wanted(r);
+        const int converged = converged_in_order(r, request.tolerance);
+        if (converged >= request.wanted || lanczos.restarts() >= request.max_restarts) {
+            for (int i = 0; i < converged; ++i) out.eigenvalues.push_back(sigma + 1.0 / r.theta(i));
+            out.vectors = lanczos.ritz_vectors(r, converged);
+            return true;
+        }
+        if (lanczos.blocks_solved() >= pass_limit) return false;
+        if (lanczos.full()) {
+            // Keep the wanted pairs and half the rest (Krylov-Schur's rule;
+            // keeping only the wanted ones and half a block took 25 blocks
+            // on case 03's coarse mesh against 14), leaving room for a block
+            // to grow.
+            const int room = lanczos.applied() - block;
+            const int keep = std::min(room, std::max(request.wanted + block / 2, (room + request.wanted) / 2));
+            lanczos.restart(r, keep);
+        }
+    }
+}
+
 }  // namespace
+
+int predicted_start_passes(int block, int capacity) { return 2 * capacity / block; }
 
 bool block_lanczos_fits(PetscInt n, int wanted) {
     const int block = block_size_for(wanted);
@@ -390,34 +427,27 @@ BlockLanczosResult block_lanczos_lowest(const BlockSolve& solve, Mat M, double s
                          std::to_string(capacity) + " for " + std::to_string(request.wanted) + " pairs of a model with " +
                          std::to_string(n) + " unknowns: expected a block of at least 1 and a basis of at least " +
                          "the pairs + 4 blocks and at most the unknowns - 1 block");
-    BlockLanczos lanczos(solve, M, n_local, block, capacity);
-    lanczos.start(request.start);
     BlockLanczosResult out;
     out.block_size = block;
-    for (;;) {
-        lanczos.expand();
-        BlockLanczos::Ritz r = lanczos.ritz();
-        order_as_wanted(r);
-        const int converged = converged_in_order(r, request.tolerance);
-        const bool done = converged >= request.wanted || lanczos.restarts() >= request.max_restarts;
-        if (done || lanczos.full()) {
-            if (done) {
-                for (int i = 0; i < converged; ++i) out.eigenvalues.push_back(sigma + 1.0 / r.theta(i));
-                out.vectors = lanczos.ritz_vectors(r, converged);
-                break;
-            }
-            // Keep the wanted pairs and half the rest (Krylov-Schur's rule;
-            // keeping only the wanted ones and half a block took 25 blocks
-            // on case 03's coarse mesh against 14), leaving room for a block
-            // to grow.
-            const int room = lanczos.applied() - block;
-            const int keep = std::min(room, std::max(request.wanted + block / 2, (room + request.wanted) / 2));
-            lanczos.restart(r, keep);
-        }
-    }
-    out.blocks_solved = lanczos.blocks_solved();
-    out.restarts = lanczos.restarts();
     out.started_from = request.start ? std::min(block, int(request.start->size())) : 0;
+    auto lanczos = std::make_unique<BlockLanczos>(solve, M, n_local, block, capacity);
+    lanczos->start(request.start);
+    const int pass_limit = out.started_from > 0 ? predicted_start_passes(block, capacity) : kNoPassLimit;
+    if (!iterate(*lanczos, sigma, request, pass_limit, out)) {
+        // The given start is no better than a random one here: start afresh
+        // (the same steps, bit for bit, as without it). Nothing is kept: the
+        // thick restart has no locked pairs to carry over, and a fresh
+        // random start reaches the tolerance the usual way.
+        out.abandoned_start_passes = lanczos->blocks_solved();
+        const int abandoned_restarts = lanczos->restarts();
+        lanczos.reset();  // its basis's memory before the new one's
+        lanczos = std::make_unique<BlockLanczos>(solve, M, n_local, block, capacity);
+        lanczos->start(nullptr);
+        iterate(*lanczos, sigma, request, kNoPassLimit, out);
+        out.restarts = abandoned_restarts;
+    }
+    out.blocks_solved = out.abandoned_start_passes + lanczos->blocks_solved();
+    out.restarts += lanczos->restarts();
     return out;
 }
 

@@ -52,7 +52,9 @@ struct BlockLanczosRequest {
     // model's modes at this mesh's nodes. The first block takes as many as
     // fit, random columns the rest. The start changes only how fast the
     // space holds the wanted pairs, never what is accepted (the same
-    // residual test; the count is the factor's).
+    // residual test; the count is the factor's). Guarded: a start that has
+    // not converged in the passes a random one takes is dropped for a
+    // random start (predicted_start_passes).
     const std::vector<PetscVector>* start = nullptr;
 };
 
@@ -67,7 +69,19 @@ struct BlockLanczosResult {
     int blocks_solved = 0;  // passes over the factor
     int restarts = 0;
     int started_from = 0;  // given start vectors in the first block
+    // Passes spent on the given start before it was dropped for a random
+    // one (0: kept, or none given); blocks_solved counts them too.
+    int abandoned_start_passes = 0;
 };
+
+// The passes a start from given vectors may take before it is dropped for
+// a random start: two fillings of the basis (2 x capacity / block; 14 at
+// the default sizes), which is what a random start takes — 13 passes on
+// case 03's coarse mesh, 14 on its shipped one, 15 on the membrane of
+// tests/unit/eigensolve/test_block_lanczos.cpp — where a good start takes
+// 6-7 (bench/results/log.md, session 22). A bad start thus costs at most
+// about twice a random one, instead of the membrane's 62 passes.
+int predicted_start_passes(int block, int capacity);
 
 // F: a factor of K - sigma M (any package with MatMatSolve). M: the mass,
 // n x n, n at least the basis (a few times `wanted`: the caller keeps small

@@ -301,10 +301,17 @@ static BlockLanczosRequest lanczos_request(int wanted, const SolveRequest& reque
 
 // The pairs block Lanczos found, its passes said through `progress`.
 static Attempt as_attempt(BlockLanczosResult r, const Progress& progress) {
+    Attempt a;
+    if (r.abandoned_start_passes)
+        a.start_dropped = "block Lanczos's start from " + std::to_string(r.started_from) +
+                          " predicted mode(s) dropped for a random one after " +
+                          std::to_string(r.abandoned_start_passes) + " passes without converging";
     progress("block Lanczos: " + std::to_string(r.blocks_solved) + " passes over the factor with " +
              std::to_string(r.block_size) + " vectors each, " + std::to_string(r.restarts) + " restart(s)" +
-             (r.started_from ? ", started from " + std::to_string(r.started_from) + " predicted mode(s)" : ""));
-    Attempt a;
+             (r.started_from ? ", started from " + std::to_string(r.started_from) + " predicted mode(s)" : "") +
+             (r.abandoned_start_passes ? " that had not converged in " + std::to_string(r.abandoned_start_passes) +
+                                             " passes (what a random start takes), then from a random start"
+                                       : ""));
     a.n_converged = static_cast<int>(r.eigenvalues.size());
     a.lambdas = std::move(r.eigenvalues);
     a.vectors = std::move(r.vectors);

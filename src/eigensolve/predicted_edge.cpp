@@ -221,6 +221,10 @@ SolvedModes with_precision(SolvedModes s, const FactorPrecision& p, const std::s
     return s;
 }
 
+// "; " and how block Lanczos's predicted start was dropped, or nothing: what
+// the summary's solver line adds after the count.
+std::string start_note(const Attempt& a) { return a.start_dropped.empty() ? "" : "; " + a.start_dropped; }
+
 std::string scientific(double x) {
     std::ostringstream s;
     s.precision(2);
@@ -269,7 +273,7 @@ SinglePass counted_single_modes(const SingleLdlt& F, Mat A, Mat K, Mat M, Attemp
         progress("count from the single-precision factor's inertia, proven: " + margin +
                  " (docs/theory/methods.md, \"A count from a single-precision factor\")");
         return {with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "single",
-                               "the single-precision factor's inertia, proven: " + margin),
+                               "the single-precision factor's inertia, proven: " + margin + start_note(a)),
                 false, {}};
     }
     progress("the single-precision factor's count (" + std::to_string(below) + " below sigma, " +
@@ -286,7 +290,7 @@ SinglePass counted_single_modes(const SingleLdlt& F, Mat A, Mat K, Mat M, Attemp
         return {with_precision(verified_modes(K, M, a, n_report, sigma, double_below, found_below), precision,
                                "single",
                                "the double-precision factor's inertia: the single one's was not proven (" + margin +
-                                   " fails)"),
+                                   " fails)" + start_note(a)),
                 false, {}};
     progress("found " + std::to_string(found_below) + " modes below sigma, where the double factor counts " +
              std::to_string(double_below) + ": solving with a negative shift");
@@ -375,7 +379,7 @@ std::optional<SolvedModes> solve_at_edge_in_blocks(Mat K, Mat M, const SolveRequ
     const int n_report = reported_count(a.lambdas, wanted, request.lambda_scale);
     if (found_below == below && n_report >= wanted && n_report <= below)
         return with_precision(verified_modes(K, M, a, n_report, sigma, below, found_below), precision, "double",
-                              "the double-precision factor's inertia" + fell_back);
+                              "the double-precision factor's inertia" + fell_back + start_note(a));
     progress("found " + std::to_string(found_below) + " modes below sigma, where the factor counts " +
              std::to_string(below) + ": solving with a negative shift");
     return std::nullopt;

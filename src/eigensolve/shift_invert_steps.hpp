@@ -29,6 +29,10 @@ struct Attempt {
     std::vector<double> lambdas;
     std::vector<PetscVector> vectors;
     int n_converged = 0;
+    // Block Lanczos's predicted start when it was dropped for a random one
+    // (block_lanczos.hpp, predicted_start_passes), for the summary's
+    // solver line; empty otherwise.
+    std::string start_dropped;
 };
 
 // Krylov-Schur on the symmetric-definite pencil (K, M), aimed at sigma.

@@ -294,11 +294,15 @@ int passes_said(const Said& said) {
 
 // A start from predicted modes changes how fast the space converges, never
 // what is accepted: the same eigenvalues (1e-9 relative: the residual test
-// 1e-10 holds both far closer) and the same proof. Not fewer passes here:
-// the modes of a membrane 2 % larger start it in 62 passes against a random
-// start's 15 (their error lies in the grid's high modes, far from the
-// wanted ones' neighbours); on case 03's solid the harmonic level's modes
-// take 6-7 passes against 13-14 (bench/results/log.md, session 22).
+// 1e-10 holds both far closer) and the same proof. The exact modes of the
+// grid (stretch 1) converge in a few passes. The modes of a membrane 2 %
+// larger took 62 passes against a random start's 15 (their error lies in
+// the grid's high modes, far from the wanted ones' neighbours) and stopped
+// at 1.2e-8 relative residual; guarded, that start is dropped after the
+// passes a random start takes (predicted_start_passes) and the random
+// start's own steps follow: its modes, to its residual. On case 03's solid
+// the harmonic level's modes take 6-7 passes against 13-14
+// (bench/results/log.md, sessions 22 and 23).
 TEST_CASE("Block Lanczos started from predicted modes finds the same modes", "[eigensolve][block_lanczos]") {
     constexpr int kModes = 12;
     const OperatorSet ops = membrane();
@@ -308,27 +312,34 @@ TEST_CASE("Block Lanczos started from predicted modes finds the same modes", "[e
     request.lambda_scale = exact[0];
     Said cold_said;
     const SolvedModes cold = solve_modes(ops, request, cold_said.printer());
-    {
-        const double stretch = 1.02;  // the modes of a membrane 2 % larger
-        auto predicted = std::make_shared<std::vector<PetscVector>>();
-        for (auto [p, q] : membrane_lowest_indices(kModes + 4)) predicted->push_back(membrane_mode(p, q, stretch));
-        SolveRequest warm_request = request;
-        warm_request.predicted_vectors = predicted;
-        Said warm_said;
-        const SolvedModes warm = solve_modes(ops, warm_request, warm_said.printer());
-        CHECK(warm_said.any("started from 16 predicted mode(s)"));
-        REQUIRE(warm.eigenvalues.size() == cold.eigenvalues.size());
-        for (std::size_t j = 0; j < cold.eigenvalues.size(); ++j)
-            CHECK(warm.eigenvalues[j] == Approx(cold.eigenvalues[j]).epsilon(1e-9));
-        // Proven complete as the cold start. The residual: the last pairs
-        // stop at Lanczos's criterion on theta (1e-10 theta), here 1.2e-8
-        // in ||K x - lambda M x|| / (||K|| ||x||) (the cold start's pairs
-        // happen to stop below 1e-8).
-        CHECK(warm.verification.complete);
-        CHECK(warm.verification.negative_pivots_at_shift == warm.verification.modes_below_shift);
-        CHECK(warm.verification.max_relative_residual < 1e-7);
-        CHECK(warm.verification.max_orthonormality_error < 1e-8);
-        INFO("stretch " << stretch << ": " << passes_said(warm_said) << " passes against " << passes_said(cold_said));
-        CHECK(passes_said(warm_said) > 0);
+    const int cold_passes = passes_said(cold_said);
+    REQUIRE(cold_passes > 0);
+    for (const double stretch : {1.0, 1.02}) {
+        SECTION("the modes of a membrane " + std::to_string(stretch) + " times as large") {
+            auto predicted = std::make_shared<std::vector<PetscVector>>();
+            for (auto [p, q] : membrane_lowest_indices(kModes + 4)) predicted->push_back(membrane_mode(p, q, stretch));
+            SolveRequest warm_request = request;
+            warm_request.predicted_vectors = predicted;
+            Said warm_said;
+            const SolvedModes warm = solve_modes(ops, warm_request, warm_said.printer());
+            CHECK(warm_said.any("started from 16 predicted mode(s)"));
+            REQUIRE(warm.eigenvalues.size() == cold.eigenvalues.size());
+            for (std::size_t j = 0; j < cold.eigenvalues.size(); ++j)
+                CHECK(warm.eigenvalues[j] == Approx(cold.eigenvalues[j]).epsilon(1e-9));
+            require_verified(warm);
+            const int warm_passes = passes_said(warm_said);
+            INFO("stretch " << stretch << ": " << warm_passes << " passes against " << cold_passes);
+            const bool dropped = warm_said.any("then from a random start");
+            if (stretch == 1.0) {
+                CHECK_FALSE(dropped);
+                CHECK(warm_passes < cold_passes / 2);
+            } else {
+                // Dropped after two fillings of the basis (16 vectors a
+                // block, 7 blocks: 14 passes), then the random start's own.
+                CHECK(dropped);
+                CHECK(warm_said.any("that had not converged in 14 passes"));
+                CHECK(warm_passes == 14 + cold_passes);
+            }
+        }
     }
 }
