@@ -3,6 +3,7 @@
 
     python3 scripts/architecture_metrics.py [ROOT] [--max-level-comparisons N] [--max-level-switches N]
                                             [--max-circles N] [--max-long-files N] [--max-long-functions N]
+                                            [--max-loss-factor-files N]
 
 Prints three things about ROOT/src (ROOT: the repository, default the one
 this script is in):
@@ -24,6 +25,11 @@ this script is in):
    circle; removing it can only shrink the circles).
 3. Sizes: lines per file (.cpp and .hpp) and per function body (median, 90th
    percentile, max; files over 500 lines, functions over 60 lines).
+4. The proof effect (issue 34: "adding an effect touches <= 8 files"): the
+   files under src/ whose text (comments too) names the structural loss
+   factor, its physics or its term, case-insensitive "loss.factor",
+   "hysteretic" or "structural.damping" (the same count as
+   `git grep -l -i -E "loss.factor|hysteretic|structural.damping" -- src`).
 
 The function parser is a brace matcher, not a C++ parser. With comments,
 string and character literals blanked out, a `{` opens a function body when
@@ -61,6 +67,7 @@ QUALIFIERS = re.compile(
     r"(?:->\s*[\w:<>,\s\*&]+)?\s*$")
 CONTROL = re.compile(r"\b(?:if|for|while|switch|catch|do|else|try)\s*(?:\(|$)")
 SCOPE = re.compile(r"(?:^|\s)(namespace|class|struct|union|enum)\b")
+LOSS_FACTOR = re.compile(r"loss.factor|hysteretic|structural.damping", re.IGNORECASE)
 
 
 def blank(text, keep_strings):
@@ -256,6 +263,8 @@ def main(argv=None):
                         help="fail when more files than this are over %d lines" % LONG_FILE)
     parser.add_argument("--max-long-functions", type=int, default=None,
                         help="fail when more function bodies than this are over %d lines" % LONG_FUNCTION)
+    parser.add_argument("--max-loss-factor-files", type=int, default=None,
+                        help="fail when more source files than this name the structural loss factor")
     args = parser.parse_args(argv)
     root = Path(args.root).resolve()
     files = source_files(root)
@@ -306,13 +315,20 @@ def main(argv=None):
     for n, f in long_functions:
         print("     %5d  %s" % (n, f))
 
+    loss_files = sorted(path.relative_to(root).as_posix() for path in files
+                        if LOSS_FACTOR.search(path.read_text(encoding="utf-8", errors="replace")))
+    print("4. files naming the structural loss factor (the proof effect): %d" % len(loss_files))
+    for f in loss_files:
+        print("     %s" % f)
+
     failed = False
     for name, count, limit in (("level-name comparisons", n_comparisons, args.max_level_comparisons),
                                ("level switch labels", n_switches, args.max_level_switches),
                                ("include edges on circles", len(circle_edges), args.max_circles),
                                ("files over %d lines" % LONG_FILE, len(long_files), args.max_long_files),
                                ("functions over %d lines" % LONG_FUNCTION, len(long_functions),
-                                args.max_long_functions)):
+                                args.max_long_functions),
+                               ("files naming the loss factor", len(loss_files), args.max_loss_factor_files)):
         if limit is not None and count > limit:
             print("architecture_metrics: %d %s, above the maximum %d: remove them rather than raise it" %
                   (count, name, limit), file=sys.stderr)

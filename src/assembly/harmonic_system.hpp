@@ -44,8 +44,8 @@ double assemble_harmonic_cells(const SectionMesh& mesh, const std::vector<PartMa
                                const TermInsert& insert);
 
 // sum over the section cells of weight[part] K_cell (no supports), weight
-// indexed as mesh.part_names: structural damping's H = sum_p eta_p K_p
-// (effects/damping.hpp) at the harmonic level. Symmetric.
+// indexed as mesh.part_names: an imaginary stiffness H = sum_p w_p K_p
+// (Term::imaginary_stiffness, effects/damping.hpp) at the harmonic level. Symmetric.
 PetscMatrix assemble_harmonic_weighted_stiffness(const SectionMesh& mesh, const std::vector<PartMaterial>& materials,
                                                  const HarmonicDofs& dofs, int n, const std::vector<double>& weight,
                                                  MPI_Comm comm = PETSC_COMM_WORLD);

@@ -33,6 +33,7 @@
 #pragma once
 
 #include "scene/damping_input.hpp"
+#include "scene/response_spec.hpp"
 
 #include <cmath>
 #include <map>
@@ -88,7 +89,10 @@ inline double amplification(double frequency_ratio, double zeta) {
 //     d_h(r) = 1 / sqrt((1 - r^2)^2 + eta^2),
 // which at resonance (r = 1) is 1/eta, the viscous 1/(2 zeta) with
 // zeta = eta / 2, and off resonance differs from the viscous d(r) as
-// eta against 2 zeta r (less damping above resonance, more below).
+// eta against 2 zeta r (less damping above resonance, more below). Its free
+// vibration, a root of lambda^2 + lambda_j (1 + i eta) = 0, has
+// lambda = i omega_j sqrt(1 + i eta): zeta = sin(atan(eta) / 2), eta / 2 to
+// first order, the eigensolvers' damped modes (eigensolve/damped_modes.hpp).
 // Springs (spring layers, bearings) are effects, not parts: they carry no
 // loss factor here (their losses are in the modal ratios).
 struct StructuralDamping {
@@ -122,6 +126,57 @@ Matrix hysteretic_operator(const StructuralDamping& d, const std::vector<std::st
     for (const std::string& part : part_names)
         if (const double eta = d.of(part); eta > 0) zero += eta * part_stiffness(part);
     return zero;
+}
+
+// The damping a spinning model's operator sets carry as terms (the Campbell
+// sweep's complex modes): the viscous D = alpha M + beta K (Term::damping)
+// and the imaginary stiffness H = sum_p w_p K_p (Term::imaginary_stiffness)
+// with w_p = eta_p, the part's loss factor. A level builds the terms from
+// these; the solvers see only the terms.
+struct OperatorDamping {
+    RayleighDamping viscous;
+    StructuralDamping structural;
+    bool has_viscous() const { return viscous.alpha != 0 || viscous.beta != 0; }
+    // w_p for each part (indexed as `parts`), empty when no part has one.
+    std::vector<double> imaginary_stiffness_weights(const std::vector<std::string>& parts) const {
+        if (!structural.given()) return {};
+        std::vector<double> w;
+        for (const std::string& part : parts) w.push_back(structural.of(part));
+        return w;
+    }
+};
+
+// [damping]'s loss factors as the effect.
+inline StructuralDamping structural_damping_of(const DampingSpec& spec) {
+    return {spec.loss_factor, spec.part_loss_factors};
+}
+
+// [damping] as terms of operator sets; a Campbell sweep takes only these
+// (a modal ratio belongs to the modes at rest, which the spin mixes).
+inline OperatorDamping operator_damping_of(const DampingSpec& spec) {
+    const RayleighSpec rayleigh = spec.rayleigh.value_or(RayleighSpec{});
+    return {{rayleigh.alpha, rayleigh.beta}, structural_damping_of(spec)};
+}
+// The keys that give them, as an error message's example.
+inline constexpr const char* kOperatorDampingKeys =
+    "rayleigh = { zeta = 0.01, frequencies = [\"20 Hz\", \"200 Hz\"] } (the same ratio at two frequencies) and/or "
+    "loss_factor = 0.02";
+// The effects they are (kName), for the effects list.
+inline std::vector<std::string> operator_damping_effects(const DampingSpec& spec) {
+    std::vector<std::string> out;
+    if (spec.rayleigh) out.push_back(RayleighDamping::kName);
+    if (structural_damping_of(spec).given()) out.push_back(StructuralDamping::kName);
+    return out;
+}
+// Which terms they are, from which keys, a line each for the run's echo.
+inline std::vector<std::string> operator_damping_words(const DampingSpec& spec) {
+    std::vector<std::string> out;
+    if (spec.rayleigh)
+        out.push_back(spec.source + ": viscous D = alpha M + beta K (Term::damping) on each wave number's set");
+    if (const std::string words = loss_factor_words(spec); !words.empty())
+        out.push_back("[damping] " + words + ": structural H = sum_p eta_p K_p over the parts' section cells, the "
+                      "complex stiffness K + i H (springs carry none)");
+    return out;
 }
 
 // The single-mode amplification with a loss factor, d_h(r) above.

@@ -5,8 +5,9 @@
 //
 // D viscous (Term::damping: Rayleigh's alpha M + beta K, modal ratios as
 // M Phi diag(2 zeta_j omega_j) Phi^T M), G gyroscopic per unit spin (skew),
-// H structural (a loss factor per part, H = sum_p eta_p K_p,
-// effects/damping.hpp). A free vibration x e^{lambda t} of a mode of
+// H the imaginary part of a complex stiffness (Term::imaginary_stiffness:
+// a loss independent of frequency; effects/damping.hpp says which damping
+// gives it). A free vibration x e^{lambda t} of a mode of
 // natural frequency omega and ratio zeta has
 //
 //     lambda = -zeta omega +- i omega sqrt(1 - zeta^2),
@@ -14,7 +15,7 @@
 // so omega = |lambda| and zeta = -Re(lambda) / |lambda| (Meirovitch,
 // Fundamentals of Vibrations, 2001, ch. 2; any vibration text).
 //
-// Structural damping is linearised as the complex stiffness K + i H itself,
+// The imaginary stiffness is linearised as the complex stiffness K + i H itself,
 // in the state space (no equivalent viscous C = H / omega iterated per mode):
 // exact at every frequency for a loss that does not depend on frequency.
 // Its eigenvalues are not in conjugate pairs: with K + i H only the roots of
@@ -22,10 +23,9 @@
 // (the complex stiffness is not causal in the time domain; Crandall, "The
 // role of damping in vibration theory", J. Sound Vib. 11(1) 3-18, 1970);
 // their partners of negative frequency are the conjugates, roots of
-// K - i H. A single mode with loss factor eta then has
-// lambda = i omega sqrt(1 + i eta): zeta = sin(atan(eta) / 2), eta / 2 to
-// first order (docs/how-to/response.md: zeta = eta / 2 at resonance), and
-// |lambda| = omega (1 + eta^2)^(1/4). So every mode is reported once, by its
+// K - i H. A single mode with h = phi^T H phi / phi^T K phi then has
+// lambda = i omega sqrt(1 + i h): zeta = sin(atan(h) / 2), h / 2 to
+// first order, and |lambda| = omega (1 + h^2)^(1/4). So every mode is reported once, by its
 // root of positive frequency; without H that is the usual half of the
 // conjugate pairs. Roots on the real axis (overdamped, or rigid) have no
 // frequency to report and are counted only.
@@ -56,7 +56,7 @@ struct ProjectedDampedModel {
     Eigen::MatrixXd K, M;
     Eigen::MatrixXd G;  // per unit spin (rad/s), skew
     Eigen::MatrixXd D;  // viscous damping
-    Eigen::MatrixXd H;  // structural damping: the stiffness' imaginary part
+    Eigen::MatrixXd H;  // the stiffness' imaginary part (Term::imaginary_stiffness)
 };
 
 // V^T A V: a term of the full model projected on a basis (A dense or sparse).

@@ -335,7 +335,7 @@ long count_gyroscopic_below(const OperatorSet& operators, double spin, double om
 
 GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, const SolveRequest& request,
                                  const Progress& progress) {
-    if (operators.has(Term::damping))
+    if (operators.has(Term::damping) || operators.has(Term::imaginary_stiffness))
         throw SolveError("the operator set has a damping term: a quadratic problem without the Hermitian structure "
                          "the gyroscopic solver's completeness count needs; not supported yet");
     if (request.lambda_max)

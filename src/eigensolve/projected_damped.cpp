@@ -33,17 +33,18 @@ Eigen::VectorXcd times(const Eigen::MatrixXd& AV, const Eigen::VectorXcd& y, Eig
 
 }  // namespace
 
-ProjectedDamped::ProjectedDamped(const OperatorSet& ops, const SolveRequest& request, int n_rest, Mat hysteretic) {
+ProjectedDamped::ProjectedDamped(const OperatorSet& ops, const SolveRequest& request, int n_rest) {
     COREMODAL_ASSERT(mpi_size(PetscObjectComm((PetscObject)ops.K())) == 1 && !request.lambda_max);
     const EffectiveStiffness at_rest(ops, 0.0);  // K + K_sigma
     const Mat K0 = at_rest.get(), M = ops.M(), G = term_or_null(ops, Term::gyroscopic),
-              D = term_or_null(ops, Term::damping), K_omega = term_or_null(ops, Term::centrifugal);
+              D = term_or_null(ops, Term::damping), K_omega = term_or_null(ops, Term::centrifugal),
+              H = term_or_null(ops, Term::imaginary_stiffness);
     rigid_omega_ = gyroscopic_rigid_omega(request);
 
     // 1. The modes at rest and their static responses to every other force.
     const SolvedModes rest = rest_modes(K0, M, ops.model_mass, request, n_rest);
     std::vector<Mat> forces;
-    for (Mat A : {G, D, hysteretic, K_omega})
+    for (Mat A : {G, D, H, K_omega})
         if (A) forces.push_back(A);
     const double tau = kTargetFraction * std::sqrt(request.lambda_scale);
     const std::vector<Eigen::VectorXd> enrichment = static_responses(K0, M, tau, forces, rest.vectors);
@@ -60,7 +61,7 @@ ProjectedDamped::ProjectedDamped(const OperatorSet& ops, const SolveRequest& req
     // 3. Every term applied to V once (the residuals) and projected.
     const SingleThreadBlas one_thread;
     applied_ = {apply_columns(K0, V_),   applied_or_empty(K_omega, V_), apply_columns(M, V_),
-                applied_or_empty(G, V_), applied_or_empty(D, V_),       applied_or_empty(hysteretic, V_)};
+                applied_or_empty(G, V_), applied_or_empty(D, V_),       applied_or_empty(H, V_)};
     const auto project = [&](const Eigen::MatrixXd& AV) {
         return AV.size() == 0 ? Eigen::MatrixXd() : Eigen::MatrixXd(V_.transpose() * AV);
     };
@@ -68,7 +69,7 @@ ProjectedDamped::ProjectedDamped(const OperatorSet& ops, const SolveRequest& req
                   project(applied_.H)};
     K_omega_ = project(applied_.K_omega);
     norm_K_ = norm_1(K0), norm_K_omega_ = norm_or_zero(K_omega), norm_M_ = norm_1(M);
-    norm_G_ = norm_or_zero(G), norm_D_ = norm_or_zero(D), norm_H_ = norm_or_zero(hysteretic);
+    norm_G_ = norm_or_zero(G), norm_D_ = norm_or_zero(D), norm_H_ = norm_or_zero(H);
 }
 
 double ProjectedDamped::full_residual(const DampedMode& mode, double spin) const {

@@ -9,8 +9,8 @@
 // at rest do not diagonalise, A = G, D, H, K_Omega, S = K + K_sigma + tau^2 M
 // (projection_basis.hpp); every term projected once, V^T A V.
 // Per speed: the small damped problem solved whole (damped_modes.hpp: the
-// viscous D = Term::damping, the gyroscopic Omega G, the structural H as the
-// complex stiffness K + i H), each mode lambda = -zeta omega + i omega
+// viscous D = Term::damping, the gyroscopic Omega G, the imaginary stiffness
+// H = Term::imaginary_stiffness of the complex stiffness K + i H), each mode lambda = -zeta omega + i omega
 // sqrt(1 - zeta^2) with its shape x = V y.
 //
 // Nothing of the small problem is trusted: each mode's relative residual is
@@ -39,11 +39,10 @@ namespace coremodal {
 class ProjectedDamped {
 public:
     // `operators`: K and M, and any of Term::geometric_stiffness,
-    // Term::centrifugal, Term::gyroscopic, Term::damping (viscous D);
-    // `hysteretic`: the structural damping H = sum_p eta_p K_p
-    // (effects/damping.hpp), or nullptr. `request`: lambda_scale (the rigid
+    // Term::centrifugal, Term::gyroscopic, Term::damping (viscous D),
+    // Term::imaginary_stiffness (H). `request`: lambda_scale (the rigid
     // line and the target tau, as the undamped branch's), tolerance.
-    ProjectedDamped(const OperatorSet& operators, const SolveRequest& request, int n_rest, Mat hysteretic = nullptr);
+    ProjectedDamped(const OperatorSet& operators, const SolveRequest& request, int n_rest);
 
     // The oscillating modes at spin `spin` (rad/s), ascending damped
     // frequency; backward_error is the full set's relative residual above.

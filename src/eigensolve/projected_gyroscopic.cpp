@@ -25,7 +25,8 @@ ProjectedGyroscopic::ProjectedGyroscopic(const OperatorSet& ops, const SolveRequ
     : basis_(std::make_unique<Basis>()) {
     const LogEvent event("CmProjBasis");
     Basis& b = *basis_;
-    COREMODAL_ASSERT(ops.has(Term::gyroscopic) && !ops.has(Term::damping) && !request.lambda_max);
+    COREMODAL_ASSERT(ops.has(Term::gyroscopic) && !ops.has(Term::damping) && !ops.has(Term::imaginary_stiffness) &&
+                     !request.lambda_max);
     COREMODAL_ASSERT(mpi_size(PetscObjectComm((PetscObject)ops.K())) == 1);
     b.request = request;
     b.rigid_omega = gyroscopic_rigid_omega(request);

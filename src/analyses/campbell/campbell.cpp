@@ -220,21 +220,15 @@ void require_campbell_damping(const Scene& scene, const DampingSpec& damping) {
         throw InputError(scene.source_file + ": " +
                          (damping.ratio > 0 ? damping.source : std::string("[damping] a family's or a mode's ratio")) +
                          ": a modal ratio belongs to the modes at rest, which the spin mixes; a Campbell sweep takes "
-                         "damping as terms of the operators; expected rayleigh = { zeta = 0.01, frequencies = "
-                         "[\"20 Hz\", \"200 Hz\"] } (the same ratio at two frequencies) and/or loss_factor = 0.02 "
-                         "(docs/how-to/campbell.md)");
+                         "damping as terms of the operators; expected " + kOperatorDampingKeys +
+                         " (docs/how-to/campbell.md)");
 }
 
 namespace {
 
 // Which damping entered the sweep, from which keys, echoed in the report.
 std::vector<std::string> damping_words(const DampingSpec& d) {
-    std::vector<std::string> out;
-    if (d.rayleigh)
-        out.push_back(d.source + ": viscous D = alpha M + beta K (Term::damping) on each wave number's set");
-    if (const std::string words = loss_factor_words(d); !words.empty())
-        out.push_back("[damping] " + words + ": structural H = sum_p eta_p K_p over the parts' section cells, the "
-                      "complex stiffness K + i H (springs carry none)");
+    std::vector<std::string> out = operator_damping_words(d);
     out.push_back("damped modes: per wave number the projected damped problem (the basis of the modes at rest and "
                   "their static responses to D, H and the spin's forces), each matched to the undamped mode of "
                   "largest MAC; zeta = -Re lambda / |lambda|, damped frequency Im lambda / (2 pi); the critical "
@@ -256,9 +250,7 @@ CampbellResult campbell_header(const Scene& scene, const RotationSpec& rotation,
     if (damping) {
         out.damped = true;
         out.damping = damping_words(*damping);
-        if (damping->rayleigh) out.effects.push_back(RayleighDamping::kName);
-        if (StructuralDamping{damping->loss_factor, damping->part_loss_factors}.given())
-            out.effects.push_back(StructuralDamping::kName);
+        for (std::string& e : operator_damping_effects(*damping)) out.effects.push_back(std::move(e));
     }
     return out;
 }

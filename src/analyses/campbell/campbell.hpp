@@ -127,7 +127,8 @@ void require_spinning_level(const Scene& scene);
 // Throws InputError when [damping] cannot enter the sweep: at a level whose
 // operator sets do not carry it (only the harmonic level's do), or in a form
 // that is not a term of the operators (a modal ratio: ratio, log_decrement,
-// decay, a family's or a mode's own; Rayleigh and loss factors are). Before any work.
+// decay, a family's or a mode's own; effects/damping.hpp's operator_damping_of
+// says which are). Before any work.
 void require_campbell_damping(const Scene& scene, const DampingSpec& damping);
 
 // Throws InputError as require_spinning_level and require_campbell_damping

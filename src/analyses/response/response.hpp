@@ -36,7 +36,7 @@ ResponseResult run_forced_response(const Scene& scene, const ResponseSetup& setu
 
 // The forced responses of one scene to setups that differ only in what
 // changes neither K nor M (the viscous damping, the excitation; the same
-// speeds, probes, highest order and loss factors): `coremodal limits`'
+// speeds, probes, highest order and the parts' damping): `coremodal limits`'
 // damping and bow samples of its band. The harmonic level assembles, solves
 // and labels its n = 1 basis, factors K and runs at rest once for all of
 // them (each is then the single run's numbers, the same arithmetic); the

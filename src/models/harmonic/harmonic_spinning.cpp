@@ -52,11 +52,7 @@ public:
           damped_(options.damping != nullptr) {
         harmonics_.sweep_up_to(options.rotation.speeds_hz.back());
         notes_ = spinning_notes(options.rotation, harmonics_);
-        if (const DampingSpec* d = options.damping) {
-            const RayleighSpec rayleigh = d->rayleigh.value_or(RayleighSpec{});
-            harmonics_.include_damping(RayleighDamping{rayleigh.alpha, rayleigh.beta},
-                                       StructuralDamping{d->loss_factor, d->part_loss_factors});
-        }
+        if (const DampingSpec* d = options.damping) harmonics_.include_damping(operator_damping_of(*d));
     }
 
     std::vector<RotatingMode> modes_at_rest() const override { return harmonics_.modes_at(0.0); }

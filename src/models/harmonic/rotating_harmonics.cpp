@@ -93,7 +93,7 @@ struct RotatingHarmonics::Harmonic {
     std::unique_ptr<ProjectedGyroscopic> projected;  // SpinSolver::projected
     int n_rest = 0;                                  // the modes at rest in the projection basis
     SolveRequest request;                            // n_modes and lambda_scale as solved
-    DampedHarmonicTerms damping;                     // include_damping
+    OperatorSet damping;                             // include_damping: the set with its damping terms
     std::unique_ptr<ProjectedDamped> damped;         // include_damping
 };
 
@@ -224,13 +224,12 @@ std::vector<RotatingMode> RotatingHarmonics::modes_at(double speed_hz, Labels la
     return out;
 }
 
-void RotatingHarmonics::include_damping(const RayleighDamping& rayleigh, const StructuralDamping& structural) {
+void RotatingHarmonics::include_damping(const OperatorDamping& damping) {
     const std::vector<PartMaterial> materials = part_materials(scene_, section_.part_names, "generated section");
     for (auto& h : harmonics_) {
         const LogEvent event("CmDampedBasis");
-        h->damping = damped_harmonic_terms(h->problem, section_, materials, rayleigh, structural);
-        h->damped = std::make_unique<ProjectedDamped>(h->damping.operators, h->request, h->n_rest,
-                                                      h->damping.hysteretic.get());
+        h->damping = damped_harmonic_terms(h->problem, section_, materials, damping);
+        h->damped = std::make_unique<ProjectedDamped>(h->damping, h->request, h->n_rest);
     }
 }
 

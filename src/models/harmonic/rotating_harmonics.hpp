@@ -69,7 +69,7 @@ public:
     // number the set with the damping terms (damped_harmonic_terms) and the
     // projected solver's damped branch over it, in a basis of the same size
     // as the undamped one's (eigensolve/projected_damped.hpp).
-    void include_damping(const RayleighDamping& rayleigh, const StructuralDamping& structural);
+    void include_damping(const OperatorDamping& damping);
     // A damped mode and its shape on its problem's DOFs, in RotatingMode::shape's order.
     struct DampedShape {
         DampedMode mode;

@@ -103,25 +103,24 @@ PetscMatrix shared(Mat A) {
 
 }  // namespace
 
-DampedHarmonicTerms damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
-                                          const std::vector<PartMaterial>& materials, const RayleighDamping& rayleigh,
-                                          const StructuralDamping& structural) {
-    DampedHarmonicTerms out;
-    out.operators.model_mass = h.operators.model_mass;
-    for (const auto& [term, A] : h.operators.matrices) out.operators.matrices[term] = shared(A);
-    if (rayleigh.alpha != 0 || rayleigh.beta != 0) {
+OperatorSet damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
+                                  const std::vector<PartMaterial>& materials, const OperatorDamping& damping) {
+    OperatorSet out;
+    out.model_mass = h.operators.model_mass;
+    for (const auto& [term, A] : h.operators.matrices) out.matrices[term] = shared(A);
+    if (damping.has_viscous()) {
         PetscMatrix D;
         COREMODAL_PETSC(MatDuplicate(h.operators.M(), MAT_COPY_VALUES, D.out()));
-        COREMODAL_PETSC(MatScale(D, rayleigh.alpha));
-        COREMODAL_PETSC(MatAXPY(D, rayleigh.beta, h.operators.K(), DIFFERENT_NONZERO_PATTERN));
-        out.operators.matrices[Term::damping] = std::move(D);
+        COREMODAL_PETSC(MatScale(D, damping.viscous.alpha));
+        COREMODAL_PETSC(MatAXPY(D, damping.viscous.beta, h.operators.K(), DIFFERENT_NONZERO_PATTERN));
+        out.matrices[Term::damping] = std::move(D);
     }
-    if (!structural.given()) return out;
-    std::vector<double> eta;  // per part of the section
-    for (const std::string& part : mesh.part_names) eta.push_back(structural.of(part));
+    const std::vector<double> weights = damping.imaginary_stiffness_weights(mesh.part_names);
+    if (weights.empty()) return out;
     const MPI_Comm comm = PetscObjectComm((PetscObject)h.operators.K());
-    PetscMatrix H = assemble_harmonic_weighted_stiffness(mesh, materials, h.dofs, h.n, eta, comm);
-    out.hysteretic = h.n == 0 ? std::move(H) : block_matrix(comm, H, nullptr, nullptr, H, true);
+    PetscMatrix H = assemble_harmonic_weighted_stiffness(mesh, materials, h.dofs, h.n, weights, comm);
+    out.matrices[Term::imaginary_stiffness] =
+        h.n == 0 ? std::move(H) : block_matrix(comm, H, nullptr, nullptr, H, true);
     return out;
 }
 

@@ -49,18 +49,13 @@ SpinningHarmonic assemble_spinning_harmonic(const Scene& scene, const SectionMes
                                             const CentrifugalPrestress* prestress = nullptr);
 
 // [damping] as terms of a wave number's set (effects/damping.hpp), for the
-// projected solver's damped branch (eigensolve/projected_damped.hpp):
-// `operators` shares h's terms and adds the viscous D = alpha M + beta K
-// (Term::damping; absent when alpha = beta = 0); `hysteretic` is the
-// structural H = sum_p eta_p K_p over the parts' section cells (springs
-// carry no loss factor), on each family for n >= 1; null without loss factors.
-struct DampedHarmonicTerms {
-    OperatorSet operators;
-    PetscMatrix hysteretic;
-};
-DampedHarmonicTerms damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
-                                          const std::vector<PartMaterial>& materials, const RayleighDamping& rayleigh,
-                                          const StructuralDamping& structural);
+// projected solver's damped branch (eigensolve/projected_damped.hpp): h's
+// terms, shared, with the viscous D = alpha M + beta K (Term::damping; absent
+// when alpha = beta = 0) and the imaginary stiffness H = sum_p w_p K_p over the
+// parts' section cells (Term::imaginary_stiffness, springs carry none; on
+// each family for n >= 1; absent when no part has a weight).
+OperatorSet damped_harmonic_terms(const SpinningHarmonic& h, const SectionMesh& mesh,
+                                  const std::vector<PartMaterial>& materials, const OperatorDamping& damping);
 
 // The values of a vector of the set on rank 0 (empty elsewhere), split into
 // the cos and sin families (sin empty for n = 0).

@@ -122,7 +122,7 @@ void LateralResponse::set_damping(const RayleighDamping& rayleigh, const std::ve
     if (rayleigh.beta != 0) D_ += rayleigh.beta * Eigen::MatrixXd(m_.K);
 }
 
-void LateralResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
+void LateralResponse::set_imaginary_stiffness(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == m_.K.rows() && H.cols() == m_.K.cols());
     H_ = std::move(H);
     Hhat_ = project_on_modes(H_, Phi_);
@@ -163,7 +163,7 @@ Eigen::VectorXcd LateralResponse::modal_coordinates(const Eigen::VectorXcd& f, d
                                                     int n) const {
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = times(Phi_.leftCols(n).transpose(), f);
-    return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>() + hysteretic_term(Hhat_, n),
+    return solve_modal_equations(cd(0, omega * omega_spin) * Ghat_.topLeftCorner(n, n).cast<cd>() + imaginary_stiffness_term(Hhat_, n),
                                  lambda_, modal_damping_, omega, load);
 }
 
@@ -196,7 +196,7 @@ Eigen::VectorXcd LateralResponse::direct(const Eigen::VectorXcd& f, double omega
     if (!complete_) return sparse_direct(f, omega_spin, omega);
     const Eigen::MatrixXd K(m_.K), M(m_.M), G(G_);
     Eigen::MatrixXcd A = (K - omega * omega * M).cast<cd>() + cd(0, omega) * (omega_spin * G + D_).cast<cd>();
-    if (H_.size() > 0) A += cd(0, 1) * Eigen::MatrixXd(H_).cast<cd>();  // structural damping
+    if (H_.size() > 0) A += cd(0, 1) * Eigen::MatrixXd(H_).cast<cd>();  // the imaginary stiffness
     return A.partialPivLu().solve(f);
 }
 

@@ -4,7 +4,8 @@
 //
 //     (K - omega^2 M + i omega (Omega G + D) + i H) x = f,   q = Re(x e^{i omega t})
 //
-// (H: structural damping, a loss factor per part, effects/damping.hpp)
+// (H: the imaginary stiffness, a loss independent of frequency; which damping
+// gives it: effects/damping.hpp)
 //
 // two ways, which check each other:
 //  - modal superposition in the modes at rest (K phi = lambda M phi,
@@ -52,7 +53,7 @@ namespace coremodal {
 
 class LateralResponse {
 public:
-    // The static part of the modes left out is K^-1's, without their structural loss (set_hysteretic).
+    // The static part of the modes left out is K^-1's, without their loss i H (set_imaginary_stiffness).
     static constexpr bool kStaticPartKeepsLoss = false;
     // lambda_scale: the first elastic eigenvalue's scale (rad^2/s^2,
     // eigenvalue_scale.hpp); zeta: the relative damping of every elastic mode
@@ -73,13 +74,14 @@ public:
     // is empty, 2 zeta[j] omega_j for the others (0 for a rigid mode, which
     // has no frequency to damp at). zeta has n_modes() entries.
     void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
-    // Structural damping H = sum_p eta_p K_p on the rows (effects/damping.hpp):
-    // i H in the direct solve, i Phi^T H Phi in the modal equations; the static
-    // part of the modes left out stays K^-1's (their loss changes it by
-    // 1/(1 + i eta): in magnitude by about eta^2/2, 0.02 % at eta = 0.02).
-    void set_hysteretic(Eigen::SparseMatrix<double> H);
+    // The imaginary stiffness H on the rows (a loss independent of
+    // frequency; effects/damping.hpp builds it): i H in the direct solve,
+    // i Phi^T H Phi in the modal equations; the static part of the modes left
+    // out stays K^-1's (a loss H = h K changes it by 1/(1 + i h): in magnitude
+    // by about h^2/2, 0.02 % at h = 0.02).
+    void set_imaginary_stiffness(Eigen::SparseMatrix<double> H);
     // Phi^T H Phi on the basis (project_on_modes; empty without H).
-    const Eigen::MatrixXd& hysteretic_on_modes() const { return Hhat_; }
+    const Eigen::MatrixXd& imaginary_stiffness_on_modes() const { return Hhat_; }
 
     int n_modes() const { return static_cast<int>(lambda_.size()); }
     // How many modes lie at or below omega_cut (rad/s): the truncated basis.
@@ -129,7 +131,7 @@ private:
     Eigen::MatrixXd D_;                        // the damping matrix, for the direct solve (complete basis)
     Eigen::VectorXd own_damping_;              // c_j less Rayleigh's part (the truncated basis' direct solve)
     RayleighDamping rayleigh_;
-    Eigen::SparseMatrix<double> H_;            // structural damping (empty: none)
+    Eigen::SparseMatrix<double> H_;            // the imaginary stiffness (empty: none)
     Eigen::MatrixXd Hhat_;                     // Phi^T H Phi
     bool complete_ = true;
     std::shared_ptr<const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> K_factor_;  // truncated basis

@@ -37,8 +37,8 @@ ModalDampingSplit split_modal_damping(const RayleighDamping& rayleigh, const std
     return out;
 }
 
-Eigen::MatrixXcd hysteretic_term(const Eigen::MatrixXd& H_hat, int n) {
-    if (H_hat.size() == 0) return Eigen::MatrixXcd::Zero(n, n);  // no structural damping
+Eigen::MatrixXcd imaginary_stiffness_term(const Eigen::MatrixXd& H_hat, int n) {
+    if (H_hat.size() == 0) return Eigen::MatrixXcd::Zero(n, n);  // no imaginary stiffness
     return cd(0, 1) * H_hat.topLeftCorner(n, n).cast<cd>();
 }
 

@@ -8,10 +8,10 @@
 // and load frequency: i omega Omega Gh_n for the beam network's two planes
 // (G skew), omega Omega Gh_n for the complex plane u = u_x + i u_y of an
 // axisymmetric model under a load turning forward (G symmetric; the
-// harmonic level's n = 1, modal_response.hpp), plus i Phi_n^T H Phi_n of a
-// structural damping H = sum_p eta_p K_p (effects/damping.hpp; its diagonal
-// eta_j lambda_j). Gh and Hh are kept dense: the whirl's coupling of the
-// modes (and a loss factor that differs per part) is not diagonalised away.
+// harmonic level's n = 1, modal_response.hpp), plus i Phi_n^T H Phi_n of an
+// imaginary stiffness H (Term::imaginary_stiffness, effects/damping.hpp).
+// Gh and Hh are kept dense: the whirl's coupling of the modes (and an H that
+// is not proportional to K) is not diagonalised away.
 #pragma once
 
 #include "effects/damping.hpp"
@@ -53,9 +53,9 @@ Eigen::MatrixXd project_on_modes(const Operator& A, const Eigen::MatrixXd& Phi) 
     return Phi.transpose() * (A * Phi);
 }
 
-// The modal equations' hysteretic term for structural damping (effects/damping.hpp):
-// i Phi_n^T H Phi_n, added to gyro_n (dense: a loss factor that differs per
-// part couples the modes, as G does).
-Eigen::MatrixXcd hysteretic_term(const Eigen::MatrixXd& H_hat, int n);
+// The modal equations' term of an imaginary stiffness H (effects/damping.hpp):
+// i Phi_n^T H Phi_n, added to gyro_n (dense: an H not proportional to K
+// couples the modes, as G does).
+Eigen::MatrixXcd imaginary_stiffness_term(const Eigen::MatrixXd& H_hat, int n);
 
 }  // namespace coremodal

@@ -49,7 +49,7 @@ void ModalResponse::set_damping(const RayleighDamping& rayleigh, const std::vect
     own_damping_ = std::move(split.own);
 }
 
-void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
+void ModalResponse::set_imaginary_stiffness(Eigen::SparseMatrix<double> H) {
     COREMODAL_ASSERT(H.rows() == K_.rows() && H.cols() == K_.cols());
     H_ = std::move(H);
     Hhat_ = project_on_modes(H_, basis_.Phi);
@@ -60,7 +60,7 @@ void ModalResponse::set_hysteretic(Eigen::SparseMatrix<double> H) {
         factor->lu.compute(factor->K_iH);
     }
     if (factor->lu.info() != Eigen::Success)  // K is positive definite and H = sum eta_p K_p >= 0: not expected
-        throw SolveError("the complex stiffness K + i H of the structural damping could not be factored");
+        throw SolveError("the complex stiffness K + i H (the damping's imaginary stiffness) could not be factored");
     KH_factor_ = factor;
 }
 
@@ -79,7 +79,7 @@ Eigen::VectorXcd ModalResponse::modal_coordinates(const Eigen::VectorXcd& p, dou
     COREMODAL_ASSERT(n >= 1 && n <= n_modes());
     const Eigen::VectorXcd load = basis_.Phi.leftCols(n).transpose().cast<cd>() * p;
     return solve_modal_equations((gyroscopic_unit_ * (omega * omega_spin)) * Ghat_.topLeftCorner(n, n).cast<cd>() +
-                                     hysteretic_term(Hhat_, n),
+                                     imaginary_stiffness_term(Hhat_, n),
                                  basis_.lambda, damping_, omega, load);
 }
 
@@ -92,7 +92,7 @@ Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omeg
 Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omega_spin, double omega, int n,
                                           const Eigen::VectorXcd& static_p) const {
     // K^-1 p less the kept modes' static part: what every other mode does far below its frequency.
-    // With structural damping both static parts carry it: static_p is (K + i H)^-1 p and the
+    // With an imaginary stiffness both static parts carry it: static_p is (K + i H)^-1 p and the
     // kept modes' is (Lambda_n + i Hh_n)^-1 Phi_n^T p (exact when H = eta K).
     const auto Phi_n = basis_.Phi.leftCols(n);
     const Eigen::VectorXcd kept = Phi_n.transpose().cast<cd>() * p;
@@ -100,7 +100,7 @@ Eigen::VectorXcd ModalResponse::superpose(const Eigen::VectorXcd& p, double omeg
     if (Hhat_.size() == 0) {
         kept_static = (kept.array() / basis_.lambda.head(n).array().cast<cd>()).matrix();
     } else {
-        Eigen::MatrixXcd A = hysteretic_term(Hhat_, n);
+        Eigen::MatrixXcd A = imaginary_stiffness_term(Hhat_, n);
         A.diagonal() += basis_.lambda.head(n).cast<cd>();
         kept_static = A.partialPivLu().solve(kept);
     }
@@ -160,7 +160,7 @@ Eigen::VectorXcd ModalResponse::direct(const Eigen::VectorXcd& p, double omega_s
     // y = A0^-1 p, Z = A0^-1 U, C = i omega diag(d) (Woodbury).
     ComplexSparse A0 = (K_ - omega * omega * M_).cast<cd>() + (gyroscopic_unit_ * (omega * omega_spin)) * G_.cast<cd>() +
                        cd(0, omega) * (rayleigh_.alpha * M_ + rayleigh_.beta * K_).cast<cd>();
-    if (H_.nonZeros() > 0) A0 += cd(0, 1) * H_.cast<cd>();  // structural damping, frequency independent
+    if (H_.nonZeros() > 0) A0 += cd(0, 1) * H_.cast<cd>();  // the imaginary stiffness, frequency independent
     Eigen::UmfPackLU<ComplexSparse> lu;
     {
         const SingleThreadBlas one_thread;

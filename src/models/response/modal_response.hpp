@@ -4,7 +4,8 @@
 //
 //     (K - omega^2 M + g omega Omega G + i omega D + i H) x = f
 //
-// (H: structural damping, a loss factor per part, effects/damping.hpp)
+// (H: the imaginary stiffness, a loss independent of frequency; which damping
+// gives it: effects/damping.hpp)
 // with g the gyroscopic unit: i for a model with both planes, where G is
 // skew (the solid, as the beam network: effects/rotation.hpp), or 1 for the
 // harmonic level's n = 1 as one complex plane. There the two families are
@@ -53,7 +54,7 @@ inline const std::complex<double> kTwoPlanes{0, 1};  // skew G of both planes
 
 class ModalResponse {
 public:
-    // The static part of the modes above the basis keeps their structural loss (set_hysteretic).
+    // The static part of the modes above the basis keeps their loss i H (set_imaginary_stiffness).
     static constexpr bool kStaticPartKeepsLoss = true;
     // K, M and G (per unit Omega, rad/s) of the model and its gyroscopic
     // unit; the basis of its lowest modes at rest; lambda_scale: the first
@@ -66,14 +67,14 @@ public:
     // empty (and every mode above the basis), 2 zeta[j] omega_j for the
     // others. zeta has n_modes() entries.
     void set_damping(const RayleighDamping& rayleigh, const std::vector<std::optional<double>>& zeta);
-    // Structural damping H = sum_p eta_p K_p (effects/damping.hpp): i H in
+    // The imaginary stiffness H (effects/damping.hpp builds it): i H in
     // the direct solve, i Phi^T H Phi in the modal equations (frequency
     // independent), and the static part of the modes above the basis with
     // their loss: (K + i H)^-1 p less the kept modes' (Lambda_n + i Hh_n)^-1
     // part (complex_static_response then solves with K + i H, factored once).
-    void set_hysteretic(Eigen::SparseMatrix<double> H);
+    void set_imaginary_stiffness(Eigen::SparseMatrix<double> H);
     // Phi^T H Phi on the basis (project_on_modes; empty without H).
-    const Eigen::MatrixXd& hysteretic_on_modes() const { return Hhat_; }
+    const Eigen::MatrixXd& imaginary_stiffness_on_modes() const { return Hhat_; }
 
     int n_modes() const { return static_cast<int>(basis_.lambda.size()); }
     long n_dofs() const { return static_cast<long>(K_.rows()); }
@@ -99,7 +100,7 @@ public:
     Eigen::VectorXcd direct(const Eigen::VectorXcd& p, double omega_spin, double omega) const;
     // K^-1 p (a static load).
     Eigen::VectorXd static_response(const Eigen::VectorXd& p) const;
-    // K^-1 p, p complex; (K + i H)^-1 p with structural damping (the static part of the superposition).
+    // K^-1 p, p complex; (K + i H)^-1 p with an imaginary stiffness (the static part of the superposition).
     Eigen::VectorXcd complex_static_response(const Eigen::VectorXcd& p) const;
 
     // The spins at which a mode of the projected model whirls at
@@ -124,13 +125,13 @@ private:
     ModalBasis basis_;
     double lambda_scale_;
     Eigen::MatrixXd Ghat_, MPhi_;  // Phi^T G Phi; M Phi
-    Eigen::SparseMatrix<double> H_;  // structural damping (empty: none)
+    Eigen::SparseMatrix<double> H_;  // the imaginary stiffness (empty: none)
     Eigen::MatrixXd Hhat_;           // Phi^T H Phi
     Eigen::VectorXd damping_, own_damping_;  // c_j; c_j less Rayleigh's part (the matrix form's low-rank term)
     RayleighDamping rayleigh_;
     struct StiffnessFactor;  // CHOLMOD's, kept out of this header (modal_response.cpp)
     std::shared_ptr<const StiffnessFactor> K_factor_;
-    struct ComplexStiffnessFactor;  // UMFPACK's LU of K + i H (structural damping only)
+    struct ComplexStiffnessFactor;  // UMFPACK's LU of K + i H (with an imaginary stiffness only)
     std::shared_ptr<const ComplexStiffnessFactor> KH_factor_;
 };
 

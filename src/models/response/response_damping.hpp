@@ -87,7 +87,7 @@ LateralDampingPlan plan_damping(const DampingSpec& spec, const BeamModelResult& 
 template <class Response>
 std::vector<ModeDamping> kept_mode_damping(const LateralDampingPlan& plan, const Response& response, int n) {
     std::vector<ModeDamping> out(plan.modes.begin(), plan.modes.begin() + n);
-    const Eigen::MatrixXd& H_hat = response.hysteretic_on_modes();
+    const Eigen::MatrixXd& H_hat = response.imaginary_stiffness_on_modes();
     if (H_hat.size() > 0)
         for (int j = 0; j < n; ++j)
             if (const double eta = StructuralDamping::modal_loss_factor(H_hat(j, j), response.eigenvalue(j)); eta > 0)
@@ -98,10 +98,6 @@ std::vector<ModeDamping> kept_mode_damping(const LateralDampingPlan& plan, const
 // One line for people: "ratio 0.01 (...)", "Rayleigh ..."; with the families and modes given.
 std::string damping_summary(const DampingSpec& spec);
 
-// The loss factors of [damping] as the effect (effects/damping.hpp).
-inline StructuralDamping structural_damping_of(const DampingSpec& spec) {
-    return {spec.loss_factor, spec.part_loss_factors};
-}
 // The damping terms' inputs as the result carries them for the report
 // (DampingValue): structural damping's loss factors.
 std::vector<DampingValue> damping_input_values(const DampingSpec& spec);
@@ -139,7 +135,7 @@ void add_part_damping(Response& response, const DampingSpec& spec, const PartSti
                       std::vector<std::string>& assumptions) {
     const StructuralDamping structural = structural_damping_of(spec);
     if (!structural.given()) return;
-    response.set_hysteretic(
+    response.set_imaginary_stiffness(
         hysteretic_operator(structural, parts.parts, Eigen::SparseMatrix<double>(parts.n, parts.n), parts.of));
     for (std::string& a : part_damping_assumptions(spec, parts.where, Response::kStaticPartKeepsLoss))
         assumptions.push_back(std::move(a));

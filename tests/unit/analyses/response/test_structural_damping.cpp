@@ -85,8 +85,8 @@ TEST_CASE("A single mode with a loss factor answers F / (k (1 - r^2 + i eta)) (i
     const SingleMode sdof;
     ModalResponse r = sdof.response();
     const double eta = 0.04, F = 100.0;
-    r.set_hysteretic(sdof.hysteretic(eta));
-    CHECK(StructuralDamping::modal_loss_factor(r.hysteretic_on_modes()(0, 0), r.eigenvalue(0)) == Approx(eta).epsilon(1e-15));
+    r.set_imaginary_stiffness(sdof.hysteretic(eta));
+    CHECK(StructuralDamping::modal_loss_factor(r.imaginary_stiffness_on_modes()(0, 0), r.eigenvalue(0)) == Approx(eta).epsilon(1e-15));
     for (const double ratio : {0.0, 0.3, 0.9, 1.0, 1.05, 2.0, 5.0}) {
         const double omega = ratio * sdof.omega_n();
         const cd exact = F / (sdof.k * (1 - ratio * ratio + cd(0, eta)));  // independent: the closed form
@@ -104,7 +104,7 @@ TEST_CASE("At resonance a loss factor eta is the viscous zeta = eta / 2; off res
     const double eta = 0.03, zeta = StructuralDamping::equivalent_zeta(eta);
     REQUIRE(zeta == 0.015);
     ModalResponse hysteretic = sdof.response(), viscous = sdof.response();
-    hysteretic.set_hysteretic(sdof.hysteretic(eta));
+    hysteretic.set_imaginary_stiffness(sdof.hysteretic(eta));
     viscous.set_damping({}, {zeta});
     const auto amplitude = [&](const ModalResponse& r, double ratio) {
         return std::abs(r.superpose(force(1.0), 0.0, ratio * sdof.omega_n(), 1)(0)) * sdof.k;
@@ -176,7 +176,7 @@ TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 with a l
     CHECK((Eigen::MatrixXd(H_every) - 0.03 * K).norm() <= 1e-12 * 0.03 * K.norm());
     StructuralDamping parts;
     parts.parts = {{"core", 0.002}, {"rest_paper", 0.05}};
-    response.set_hysteretic(H_of(parts));
+    response.set_imaginary_stiffness(H_of(parts));
     response.set_damping({}, std::vector<std::optional<double>>(static_cast<size_t>(response.n_modes()), 0.005));
     ExcitationSpec x;
     x.bow_m = 0.5e-3;
@@ -184,7 +184,7 @@ TEST_CASE("Harmonic level: superposition in the complete basis of n = 1 with a l
     x.gravity = false;
     const LevelLoads loads = build_harmonic_loads(scene, x, plane, response, {});
     const double f1 = response.mode_frequency_hz(0);
-    const double eta_1 = StructuralDamping::modal_loss_factor(response.hysteretic_on_modes()(0, 0), response.eigenvalue(0));
+    const double eta_1 = StructuralDamping::modal_loss_factor(response.imaginary_stiffness_on_modes()(0, 0), response.eigenvalue(0));
     CHECK(eta_1 > 0.002);
     CHECK(eta_1 < 0.05);
     // The static part of the modes left out carries their loss: at rest (omega = 0) six kept
