@@ -10,6 +10,7 @@
 #include "app/folder_case.hpp"
 #include "common/error.hpp"
 #include "common/free_memory.hpp"
+#include "common/huge_pages.hpp"
 #include "common/join.hpp"
 #include "common/mpi_start.hpp"
 #include "common/petsc_handle.hpp"
@@ -284,6 +285,7 @@ int run_with_petsc(const coremodal::Command& chosen, std::vector<std::string>& p
 }  // namespace
 
 int main(int argc, char** argv) {
+    coremodal::start_with_huge_pages(argv);  // first: it may start the program again
     // SIGINT and SIGTERM stop children and remove partial folders
     // (common/signals.hpp).
     coremodal::install_interrupt_handling();
