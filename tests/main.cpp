@@ -4,9 +4,12 @@
 #include <catch2/catch.hpp>
 #include <slepcsys.h>
 
+#include "common/huge_pages.hpp"
 #include "common/mpi_start.hpp"
 
 int main(int argc, char** argv) {
+    // The solver tests' heap on huge pages, as a run's (common/huge_pages.hpp): first.
+    coremodal::start_with_huge_pages(argv);
     // PETSc must not see Catch's options; give it none.
     int petsc_argc = 1;
     char** petsc_argv = argv;
