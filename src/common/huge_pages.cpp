@@ -26,6 +26,15 @@ bool address_space_limited() {
     return ::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
 }
 
+// Started by an MPI launcher (Open MPI, PMIx, MPICH's Hydra): a rank that
+// executes itself again before MPI_Init hangs the job (mpirun -n 2 of case
+// 05, scripts/failure_injection.sh).
+bool mpi_launched() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MPI_LOCALNRANKS"})
+        if (std::getenv(name)) return true;
+    return false;
+}
+
 }  // namespace
 
 std::optional<std::string> huge_page_tunables(const char* given, std::string_view policy, bool limited) {
@@ -38,6 +47,7 @@ std::optional<std::string> huge_page_tunables(const char* given, std::string_vie
 
 void start_with_huge_pages(char** argv) {
     const char* given = std::getenv("GLIBC_TUNABLES");
+    if (mpi_launched()) return;
     const std::optional<std::string> with = huge_page_tunables(given, huge_page_policy(), address_space_limited());
     if (!with) return;
     const std::string before = given ? given : "";

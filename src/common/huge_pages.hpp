@@ -12,8 +12,10 @@
 // tunable is already given (a user's glibc.malloc.hugetlb=0 keeps 4 KiB
 // pages), when the kernel gives huge pages to every mapping anyway
 // ("always") or to none ("never"), under an address-space limit (ulimit -v:
-// common/blas_threads.hpp budgets it), or when the start fails (the run goes
-// on with 4 KiB pages).
+// common/blas_threads.hpp budgets it), under an MPI launcher (a rank that
+// starts again before MPI_Init hangs mpirun: give the tunable with
+// `mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1`), or when the start
+// fails (the run goes on with 4 KiB pages).
 #pragma once
 
 #include <optional>
