@@ -3,7 +3,8 @@
 // memory (the 540 k-DOF model: a 6.8 GB factor, its fronts and the
 // assembled matrices); with 4 KiB pages the kernel takes a fault and zeroes
 // a page for every 4 KiB touched, a fifth of the numeric factorization's
-// time on a virtual machine (docs/performance.md, "Huge pages").
+// time on a virtual machine (bench/results/log.md, "Huge pages for the
+// heap, and what did not pay"; docs/performance.md).
 //
 // glibc (2.35 and later) madvises its heap for huge pages when the tunable
 // glibc.malloc.hugetlb=1 is set, and reads tunables only when a program
