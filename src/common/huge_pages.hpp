@@ -2,7 +2,7 @@
 // on request. The solid level's one factorization writes gigabytes of fresh
 // memory (the 540 k-DOF model: a 6.8 GB factor, its fronts and the
 // assembled matrices); with 4 KiB pages the kernel takes a fault and zeroes
-// a page for every 4 KiB touched, a fifth of the numeric factorization's
+// a page for every 4 KiB touched, a quarter of the numeric factorization's
 // time on a virtual machine (bench/results/log.md, "Huge pages for the
 // heap, and what did not pay"; docs/performance.md).
 //
