@@ -164,8 +164,7 @@ std::vector<DampingValue> damping_input_values(const DampingSpec& spec) {
 std::vector<std::string> damping_effect_names(const DampingSpec& d) {
     std::vector<std::string> out;
     if ((!d.rayleigh && d.ratio > 0) || !d.families.empty() || !d.modes.empty()) out.push_back(ModalDamping::kName);
-    if (d.rayleigh) out.push_back(RayleighDamping::kName);
-    if (structural_damping_of(d).given()) out.push_back(StructuralDamping::kName);
+    for (std::string& e : operator_damping_effects(d)) out.push_back(std::move(e));  // Rayleigh's, the loss factors'
     return out;
 }
 
