@@ -25,8 +25,13 @@ bool launched() {
 
 IsolatedMpiSingleton::IsolatedMpiSingleton() {
     if (launched()) return;
+    // pml ob1: a singleton has no peer, and Open MPI's default probes the
+    // cm layer's interconnect libraries (PSM, PSM2: each calibrates its clock
+    // pinned to one core for 0.1 s), which made MPI_Init 0.25 s instead of
+    // 0.05 s (a bare MPI_Init, measured 2026-11-29) in every run and test.
     for (const auto& [name, value] : {std::pair<const char*, const char*>{"OMPI_MCA_ess_singleton_isolated", "1"},
-                                      {"OMPI_MCA_orte_create_session_dirs", "0"}}) {
+                                      {"OMPI_MCA_orte_create_session_dirs", "0"},
+                                      {"OMPI_MCA_pml", "ob1"}}) {
         if (std::getenv(name)) continue;  // the user's
         setenv(name, value, 1);
         set_.push_back(name);
