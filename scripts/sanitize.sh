@@ -33,6 +33,9 @@ memory_options="abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0
 export ASAN_OPTIONS="$memory_options:detect_leaks=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# One BLAS thread per shard, as ctest's environment (tests/CMakeLists.txt):
+# the shards already fill the cores, and a second thread only spins.
+export OPENBLAS_NUM_THREADS=1
 
 # The environment above is set before building: the build runs the test
 # binary once to list its tests (catch_discover_tests).

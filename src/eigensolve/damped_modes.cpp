@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,56 @@ Dense companion(const Eigen::LLT<Eigen::MatrixXd>& M, const Dense& A0, const Den
     return C;
 }
 
+// Eigenvalues this close (relative) are one multiple eigenvalue: mirrored
+// families make every one at rest double, and the companion form's
+// eigenvalues of a double one came out 3e-8 to 1.2e-7 apart (case 12's core
+// at the harmonic level with a loss factor, 2026-11-29).
+constexpr double kSameEigenvalue = 1e-6;
+
+// The vectors of a multiple eigenvalue as an orthonormal basis of its
+// eigenspace. The Schur form's back-substitution divides by the difference
+// of equal eigenvalues, and its vectors for a double one can come out nearly
+// parallel: the damped partners of a bending pair at rest were then one
+// vector twice, and one member of the pair matched no damped mode (with one
+// BLAS thread, 2026-11-29). The right singular vectors of Q(lambda) =
+// lambda^2 M + lambda A1 + A0 for its smallest singular values span the
+// eigenspace of a semisimple eigenvalue; they are kept only where their
+// backward error is as small as the Schur vectors' (a defective eigenvalue
+// has no such basis).
+// The norms of A0, A1 and M, for the backward error at |lambda| = omega.
+struct TermNorms {
+    double a0, a1, m;
+    double at(double omega) const { return a0 + omega * a1 + omega * omega * m; }
+};
+
+void span_multiple_eigenvalues(const Eigen::MatrixXd& M, const Dense& A0, const Dense& A1, const TermNorms& norms,
+                               std::vector<DampedMode>& modes) {
+    for (size_t first = 0; first < modes.size();) {
+        size_t end = first + 1;
+        const cd lambda = modes[first].eigenvalue;
+        while (end < modes.size() && std::abs(modes[end].eigenvalue - lambda) <= kSameEigenvalue * std::abs(lambda))
+            ++end;
+        const Eigen::Index c = static_cast<Eigen::Index>(end - first);
+        if (c > 1) {
+            const Dense Q = (lambda * lambda) * M.cast<cd>() + lambda * A1 + A0;
+            const double scale = norms.at(std::abs(lambda));
+            const Eigen::BDCSVD<Dense> svd(Q, Eigen::ComputeFullV);
+            const Dense V = svd.matrixV().rightCols(c);  // singular values descend
+            double worst = 0, largest = 0;
+            for (Eigen::Index j = 0; j < c; ++j) {
+                worst = std::max(worst, (Q * V.col(j)).norm() / scale);
+                largest = std::max(largest, modes[first + size_t(j)].backward_error);
+            }
+            if (worst <= std::max(largest, 1e-12))
+                for (Eigen::Index j = 0; j < c; ++j) {
+                    modes[first + size_t(j)].shape = V.col(j);
+                    modes[first + size_t(j)].backward_error = (Q * V.col(j)).norm() / scale;
+                }
+        }
+        first = end;
+    }
+}
+
 }  // namespace
 
 DampedModes damped_modes(const ProjectedDampedModel& model, double spin, double frequency_floor) {
@@ -67,11 +118,12 @@ DampedModes damped_modes(const ProjectedDampedModel& model, double spin, double 
         mode.shape = eig.eigenvectors().col(k).head(m).normalized();
         const Eigen::VectorXcd residual =
             (lambda * lambda) * (model.M.cast<cd>() * mode.shape) + lambda * (A1 * mode.shape) + A0 * mode.shape;
-        mode.backward_error = residual.norm() / (norm0 + omega * norm1 + omega * omega * norm2);
+        mode.backward_error = residual.norm() / TermNorms{norm0, norm1, norm2}.at(omega);
         out.modes.push_back(std::move(mode));
     }
     std::sort(out.modes.begin(), out.modes.end(),
               [](const DampedMode& a, const DampedMode& b) { return a.damped_frequency_hz < b.damped_frequency_hz; });
+    span_multiple_eigenvalues(model.M, A0, A1, {norm0, norm1, norm2}, out.modes);
     return out;
 }
 

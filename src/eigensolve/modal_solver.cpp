@@ -148,11 +148,12 @@ PetscMatrix definite_factor(Mat K, Mat M, double sigma) {
 }
 
 // The lowest nev pairs at the negative shift: block Lanczos where it
-// applies, else SLEPc's Krylov-Schur.
-Attempt solve_below(Mat K, Mat M, double sigma, int nev, const SolveRequest& request, const Progress& progress) {
+// applies (`blocks`: on a small model too), else SLEPc's Krylov-Schur.
+Attempt solve_below(Mat K, Mat M, double sigma, int nev, const SolveRequest& request, const Progress& progress,
+                    bool blocks) {
     PetscInt n_dofs;
     COREMODAL_PETSC(MatGetSize(K, &n_dofs, nullptr));
-    if (!block_lanczos_applies(n_dofs, nev)) return run_eps(K, M, sigma, nev, request);
+    if (!block_lanczos_applies(n_dofs, nev, blocks)) return run_eps(K, M, sigma, nev, request);
     const PetscMatrix F = definite_factor(K, M, sigma);
     say_if_out_of_core(F, progress);
     return block_lanczos_attempt(F, M, sigma, nev, request, progress);
@@ -282,8 +283,8 @@ constexpr PetscInt kBlockLanczosMinDofs = 20000;
 // (block_lanczos_fits), unless the user turned it off (-block_lanczos false)
 // or chose SLEPc's method or its factor on the command line (-eps_type,
 // -st_pc_factor_mat_solver_type).
-bool block_lanczos_applies(PetscInt n_dofs, int wanted) {
-    if (n_dofs < kBlockLanczosMinDofs || !block_lanczos_fits(n_dofs, wanted)) return false;
+bool block_lanczos_applies(PetscInt n_dofs, int wanted, bool small_too) {
+    if ((n_dofs < kBlockLanczosMinDofs && !small_too) || !block_lanczos_fits(n_dofs, wanted)) return false;
     PetscBool on = PETSC_TRUE, eps_type = PETSC_FALSE, st_factor = PETSC_FALSE;
     COREMODAL_PETSC(PetscOptionsGetBool(nullptr, nullptr, "-block_lanczos", &on, nullptr));
     COREMODAL_PETSC(PetscOptionsHasName(nullptr, nullptr, "-eps_type", &eps_type));
@@ -443,13 +444,21 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     double sigma = -kShiftFraction * scale;
     int nev = std::min<int>(n_dofs, wanted + std::max(kMinExtraModes, wanted / 4));
     for (int attempt = 0;; ++attempt) {
+        // A retry takes blocks on any model: a one-vector Krylov method finds
+        // one vector of a double eigenvalue (mirrored families: each one
+        // twice) in exact arithmetic, and the other only where round-off
+        // brings it in. It did with two BLAS threads and not with one (the
+        // damped Campbell's basis of case 12's core at the harmonic level,
+        // 8 of 16 found three times, 2026-11-29); a block of 8 or more
+        // carries every copy of an eigenvalue up to its size.
+        const bool blocks = attempt > 0;
         progress("factorising K - sigma M (" + std::string(shift_invert_factor_package(PetscObjectComm((PetscObject)K))) +
                  " Cholesky, sigma = " + std::to_string(sigma) + ") and solving for " + std::to_string(nev) +
-                 " modes (" + (block_lanczos_applies(n_dofs, nev) ? "block Lanczos" : "SLEPc Krylov-Schur") +
+                 " modes (" + (block_lanczos_applies(n_dofs, nev, blocks) ? "block Lanczos" : "SLEPc Krylov-Schur") +
                  "); MUMPS LDL^T at the band edge for the count");
         Attempt a = [&] {
             const Heartbeat beat("factorising K - sigma M and solving", progress);
-            return solve_below(K, M, sigma, nev, request, progress);
+            return solve_below(K, M, sigma, nev, request, progress, blocks);
         }();
         const int n_report = reported_count(a.lambdas, wanted, scale);
         if (n_report < wanted) throw SolveError(unconverged_text(a.n_converged, wanted, request));

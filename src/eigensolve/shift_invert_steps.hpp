@@ -45,8 +45,9 @@ Attempt converged_pairs(EPS eps, Mat K);
 double rigid_line(const SolveRequest& r);
 
 // Whether block Lanczos (block_lanczos.hpp) solves for `wanted` pairs of
-// this model rather than SLEPc's Krylov-Schur.
-bool block_lanczos_applies(PetscInt n_dofs, int wanted);
+// this model rather than SLEPc's Krylov-Schur. `small_too`: on a model below
+// kBlockLanczosMinDofs as well (a retry that needs blocks, modal_solver.cpp).
+bool block_lanczos_applies(PetscInt n_dofs, int wanted, bool small_too = false);
 
 // Block Lanczos on the factor F of K - sigma M for `wanted` pairs (the
 // lowest; with sigma inside the spectrum, those below it), the passes said
