@@ -42,7 +42,7 @@ Dense companion(const Eigen::LLT<Eigen::MatrixXd>& M, const Dense& A0, const Den
 // Eigenvalues this close (relative) are one multiple eigenvalue: mirrored
 // families make every one at rest double, and the companion form's
 // eigenvalues of a double one came out 3e-8 to 1.2e-7 apart (case 12's core
-// at the harmonic level with a loss factor, 2026-11-29).
+// at the harmonic level, damped, 2026-11-29).
 constexpr double kSameEigenvalue = 1e-6;
 
 // The vectors of a multiple eigenvalue as an orthonormal basis of its

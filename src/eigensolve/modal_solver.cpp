@@ -444,13 +444,9 @@ SolvedModes solve_generalized(Mat K, Mat M, const SolveRequest& request, const P
     double sigma = -kShiftFraction * scale;
     int nev = std::min<int>(n_dofs, wanted + std::max(kMinExtraModes, wanted / 4));
     for (int attempt = 0;; ++attempt) {
-        // A retry takes blocks on any model: a one-vector Krylov method finds
-        // one vector of a double eigenvalue (mirrored families: each one
-        // twice) in exact arithmetic, and the other only where round-off
-        // brings it in. It did with two BLAS threads and not with one (the
-        // damped Campbell's basis of case 12's core at the harmonic level,
-        // 8 of 16 found three times, 2026-11-29); a block of 8 or more
-        // carries every copy of an eigenvalue up to its size.
+        // A retry takes blocks on any model: one-vector Krylov may miss a copy of a double eigenvalue,
+        // a block carries every copy up to its size (docs/validation/reliability.md, "A double
+        // eigenvalue found whole").
         const bool blocks = attempt > 0;
         progress("factorising K - sigma M (" + std::string(shift_invert_factor_package(PetscObjectComm((PetscObject)K))) +
                  " Cholesky, sigma = " + std::to_string(sigma) + ") and solving for " + std::to_string(nev) +
