@@ -45,6 +45,12 @@ Dense companion(const Eigen::LLT<Eigen::MatrixXd>& M, const Dense& A0, const Den
 // at the harmonic level, damped, 2026-11-29).
 constexpr double kSameEigenvalue = 1e-6;
 
+// The norms of A0, A1 and M, for the backward error at |lambda| = omega.
+struct TermNorms {
+    double a0, a1, m;
+    double at(double omega) const { return a0 + omega * a1 + omega * omega * m; }
+};
+
 // The vectors of a multiple eigenvalue as an orthonormal basis of its
 // eigenspace. The Schur form's back-substitution divides by the difference
 // of equal eigenvalues, and its vectors for a double one can come out nearly
@@ -55,12 +61,6 @@ constexpr double kSameEigenvalue = 1e-6;
 // eigenspace of a semisimple eigenvalue; they are kept only where their
 // backward error is as small as the Schur vectors' (a defective eigenvalue
 // has no such basis).
-// The norms of A0, A1 and M, for the backward error at |lambda| = omega.
-struct TermNorms {
-    double a0, a1, m;
-    double at(double omega) const { return a0 + omega * a1 + omega * omega * m; }
-};
-
 void span_multiple_eigenvalues(const Eigen::MatrixXd& M, const Dense& A0, const Dense& A1, const TermNorms& norms,
                                std::vector<DampedMode>& modes) {
     for (size_t first = 0; first < modes.size();) {
