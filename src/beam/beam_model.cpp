@@ -374,7 +374,7 @@ BeamModelResult solve_beam_model(const Scene& scene, const BeamModelOptions& opt
     for (size_t i = 0; i < solved.eigenvalues.size(); ++i) {
         BeamMode mode;
         mode.eigenvalue = solved.eigenvalues[i];
-        mode.frequency_hz = std::sqrt(std::max(mode.eigenvalue, 0.0)) / (2 * M_PI);
+        mode.frequency_hz = eigenvalue_hz(mode.eigenvalue);
         mode.relative_residual = solved.relative_residuals[i];
         mode.effective_mass = effective_mass(solved.mass_shapes[i]);
         mode.label = label_mode(out.network, solved.shapes[i], solved.mass_shapes[i], mode.eigenvalue, request.lambda_scale);

@@ -91,7 +91,7 @@ std::vector<double> timoshenko_bending_hz(const BeamSection& s, double length, B
     const int n_rigid = ends == BeamEnds::free_free ? kFreeFreeRigidModes : 0;
     std::vector<double> f;
     for (int i = n_rigid; i < solver.eigenvalues().size() && int(f.size()) < n_modes; ++i)
-        f.push_back(std::sqrt(std::max(solver.eigenvalues()(i), 0.0)) / (2 * M_PI));
+        f.push_back(eigenvalue_hz(solver.eigenvalues()(i)));
     return f;
 }
 

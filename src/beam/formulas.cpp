@@ -2,6 +2,7 @@
 
 #include "beam/beam_theory.hpp"
 #include "common/error.hpp"
+#include "common/format.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -13,34 +14,30 @@ namespace {
 constexpr double kPi = M_PI;
 constexpr double kBeta1LSquared = kBeta1L * kBeta1L;  // 22.3733, "22.373" in I-7
 
-std::string num(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
-    return b;
-}
+// A value in a message, as printf's %g writes it.
+std::string six_digits(double v) { return significant(v, 6); }
 
 // Throws "<what> = <value> <unit> must be positive" for v <= 0 or not finite.
 void require_positive(double v, const char* what, const char* unit) {
     if (!(v > 0) || !std::isfinite(v))
-        throw InputError(std::string(what) + " = " + num(v) + (*unit ? " " : "") + unit + " must be positive");
+        throw InputError(std::string(what) + " = " + six_digits(v) + (*unit ? " " : "") + unit + " must be positive");
 }
 
 void require_factor(double v, const char* what) {
-    if (!(v > 0 && v <= 1))
-        throw InputError(std::string(what) + " = " + num(v) + " must lie in (0, 1]");
+    if (!(v > 0 && v <= 1)) throw InputError(std::string(what) + " = " + six_digits(v) + " must lie in (0, 1]");
 }
 
 void check_section(const RestRollSection& s, bool with_paper) {
     require_positive(s.Di, "core inner diameter Di", "m");
     require_positive(s.Do, "core outer diameter Do", "m");
     if (s.Di >= s.Do)
-        throw InputError("core inner diameter Di = " + num(s.Di) + " m must be smaller than the outer diameter Do = " +
-                         num(s.Do) + " m");
+        throw InputError("core inner diameter Di = " + six_digits(s.Di) +
+                         " m must be smaller than the outer diameter Do = " + six_digits(s.Do) + " m");
     require_positive(s.Ec, "core modulus Ec", "Pa");
     require_positive(s.rho_c, "core density rho_c", "kg/m^3");
     if (s.Dp < s.Do)
-        throw InputError("rest roll diameter Dp = " + num(s.Dp) + " m must be at least the core outer diameter Do = " +
-                         num(s.Do) + " m");
+        throw InputError("rest roll diameter Dp = " + six_digits(s.Dp) +
+                         " m must be at least the core outer diameter Do = " + six_digits(s.Do) + " m");
     if (with_paper && s.Dp > s.Do) {
         require_positive(s.Ep, "rest paper modulus Ep", "Pa");
         require_positive(s.rho_p, "rest paper density rho_p", "kg/m^3");
@@ -52,7 +49,8 @@ void check_section(const RestRollSection& s, bool with_paper) {
 double tube_area(double d_out, double d_in) {
     require_positive(d_out, "outer diameter", "m");
     if (!(d_in >= 0 && d_in < d_out))
-        throw InputError("inner diameter = " + num(d_in) + " m must lie in [0, outer diameter = " + num(d_out) + " m)");
+        throw InputError("inner diameter = " + six_digits(d_in) +
+                         " m must lie in [0, outer diameter = " + six_digits(d_out) + " m)");
     return kPi / 4 * (d_out * d_out - d_in * d_in);
 }
 
@@ -79,10 +77,10 @@ double mass_per_length(const RestRollSection& s) {
 double free_span(double Lc, double Li) {
     require_positive(Lc, "core length Lc", "m");
     if (!(Li >= 0) || !std::isfinite(Li))
-        throw InputError("chuck distance Li = " + num(Li) + " m must not be negative");
+        throw InputError("chuck distance Li = " + six_digits(Li) + " m must not be negative");
     if (Li >= Lc / 2)
-        throw InputError("chuck distance Li = " + num(Li) + " m must be less than half the core length Lc/2 = " +
-                         num(Lc / 2) + " m, or no free span is left");
+        throw InputError("chuck distance Li = " + six_digits(Li) + " m must be less than half the core length Lc/2 = " +
+                         six_digits(Lc / 2) + " m, or no free span is left");
     return Lc - 2 * Li;
 }
 
@@ -147,15 +145,16 @@ double rest_paper_modulus(double f_free_hz, const RestRollSection& s, double L) 
     probe.Ep = 1;  // Ep is what is sought; only the section check needs it
     check_section(probe, true);
     if (!(s.Dp > s.Do))
-        throw InputError("rest roll diameter Dp = " + num(s.Dp) + " m must exceed the core outer diameter Do = " +
-                         num(s.Do) + " m to give a rest paper modulus");
+        throw InputError("rest roll diameter Dp = " + six_digits(s.Dp) +
+                         " m must exceed the core outer diameter Do = " + six_digits(s.Do) +
+                         " m to give a rest paper modulus");
     const double omega_term = 2 * kPi * f_free_hz * L * L / kBeta1LSquared;
     const double EcIc = s.Ec * tube_inertia(s.Do, s.Di);
     const double EI = omega_term * omega_term * mass_per_length(probe);
     if (EI <= EcIc)
-        throw InputError("free-free rest roll frequency f = " + num(f_free_hz) +
+        throw InputError("free-free rest roll frequency f = " + six_digits(f_free_hz) +
                          " Hz is at or below that of the core alone carrying the paper's mass, " +
-                         num(ilomaki_first_bending_hz(EcIc, mass_per_length(probe), L)) +
+                         six_digits(ilomaki_first_bending_hz(EcIc, mass_per_length(probe), L)) +
                          " Hz; the rest paper modulus Ep would not be positive");
     return (EI - EcIc) / tube_inertia(s.Dp, s.Do);
 }
@@ -196,21 +195,21 @@ double damping_ratio_from_decay(double X0, double XN, double N) {
     require_positive(XN, "amplitude X_N", "");
     require_positive(N, "number of cycles N", "");
     if (!(X0 >= XN) || !std::isfinite(X0))
-        throw InputError("amplitude X0 = " + num(X0) + " must be at least the later amplitude X_N = " + num(XN) +
-                         " for a decay");
+        throw InputError("amplitude X0 = " + six_digits(X0) +
+                         " must be at least the later amplitude X_N = " + six_digits(XN) + " for a decay");
     return std::log(X0 / XN) / (2 * kPi * N);
 }
 
 double response_amplitude_ratio(double f_hz, double fn_hz, double zeta) {
     if (!(f_hz >= 0) || !std::isfinite(f_hz))
-        throw InputError("excitation frequency f = " + num(f_hz) + " Hz must not be negative");
+        throw InputError("excitation frequency f = " + six_digits(f_hz) + " Hz must not be negative");
     require_positive(fn_hz, "natural frequency fn", "Hz");
     if (!(zeta >= 0) || !std::isfinite(zeta))
-        throw InputError("damping ratio zeta = " + num(zeta) + " must not be negative");
+        throw InputError("damping ratio zeta = " + six_digits(zeta) + " must not be negative");
     const double r = f_hz / fn_hz;
     const double denominator = std::sqrt(std::pow(1 - r * r, 2) + std::pow(2 * zeta * r, 2));
     if (denominator == 0)
-        throw InputError("damping ratio zeta = 0 at resonance f = fn = " + num(fn_hz) +
+        throw InputError("damping ratio zeta = 0 at resonance f = fn = " + six_digits(fn_hz) +
                          " Hz: the undamped response is unbounded");
     return 1 / denominator;
 }

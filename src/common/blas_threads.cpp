@@ -1,5 +1,7 @@
 #include "common/blas_threads.hpp"
 
+#include "common/free_memory.hpp"  // kBytesPerMb
+
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <sched.h>
@@ -19,8 +21,6 @@ using GetThreads = int (*)();
 
 SetThreads set_threads() { return reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")); }
 GetThreads get_threads() { return reinterpret_cast<GetThreads>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads")); }
-
-constexpr double kBytesPerMb = 1024.0 * 1024.0;
 
 // The address space one more OpenBLAS thread takes as it starts: its buffer
 // (BUFFER_SIZE, 128 MB on x86-64: the 134217728-byte mmap strace shows), the

@@ -12,8 +12,6 @@
 namespace coremodal {
 namespace {
 
-constexpr double kBytesPerMb = 1024.0 * 1024.0;
-
 std::string first_line(const std::string& path) {
     std::ifstream in(path);
     std::string line;

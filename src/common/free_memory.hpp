@@ -11,6 +11,9 @@
 
 namespace coremodal {
 
+// Bytes in the MB (MiB) every memory figure here is given in.
+inline constexpr double kBytesPerMb = 1024.0 * 1024.0;
+
 // MB the run may still take: the least of MemAvailable, the control
 // group's headroom (cgroup v2 memory.max - memory.current, or v1
 // memory.limit_in_bytes - memory.usage_in_bytes) and the address space left

@@ -12,24 +12,24 @@ namespace coremodal {
 namespace {
 
 using cd = std::complex<double>;
-using Dense = Eigen::MatrixXcd;
+using ComplexDense = Eigen::MatrixXcd;
 
 // A term, or zero when the model has none.
-Dense term_or_zero(const Eigen::MatrixXd& A, Eigen::Index m) {
-    if (A.size() == 0) return Dense::Zero(m, m);
+ComplexDense term_or_zero(const Eigen::MatrixXd& A, Eigen::Index m) {
+    if (A.size() == 0) return ComplexDense::Zero(m, m);
     COREMODAL_ASSERT(A.rows() == m && A.cols() == m);
     return A.cast<cd>();
 }
 
 // The first companion form of lambda^2 M + lambda A1 + A0 with M^-1 applied:
 // z = (x, lambda x), [[0, I], [-M^-1 A0, -M^-1 A1]] z = lambda z.
-Dense companion(const Eigen::LLT<Eigen::MatrixXd>& M, const Dense& A0, const Dense& A1) {
+ComplexDense companion(const Eigen::LLT<Eigen::MatrixXd>& M, const ComplexDense& A0, const ComplexDense& A1) {
     const Eigen::Index m = A0.rows();
-    Dense C = Dense::Zero(2 * m, 2 * m);
+    ComplexDense C = ComplexDense::Zero(2 * m, 2 * m);
     C.topRightCorner(m, m).setIdentity();
     // M^-1 of a complex matrix: the real factor on the real and imaginary parts.
-    const auto solve = [&](const Dense& A) {
-        Dense out(m, m);
+    const auto solve = [&](const ComplexDense& A) {
+        ComplexDense out(m, m);
         out.real() = M.solve(Eigen::MatrixXd(A.real()));
         out.imag() = M.solve(Eigen::MatrixXd(A.imag()));
         return out;
@@ -61,8 +61,8 @@ struct TermNorms {
 // eigenspace of a semisimple eigenvalue; they are kept only where their
 // backward error is as small as the Schur vectors' (a defective eigenvalue
 // has no such basis).
-void span_multiple_eigenvalues(const Eigen::MatrixXd& M, const Dense& A0, const Dense& A1, const TermNorms& norms,
-                               std::vector<DampedMode>& modes) {
+void span_multiple_eigenvalues(const Eigen::MatrixXd& M, const ComplexDense& A0, const ComplexDense& A1,
+                               const TermNorms& norms, std::vector<DampedMode>& modes) {
     for (size_t first = 0; first < modes.size();) {
         size_t end = first + 1;
         const cd lambda = modes[first].eigenvalue;
@@ -70,10 +70,10 @@ void span_multiple_eigenvalues(const Eigen::MatrixXd& M, const Dense& A0, const 
             ++end;
         const Eigen::Index c = static_cast<Eigen::Index>(end - first);
         if (c > 1) {
-            const Dense Q = (lambda * lambda) * M.cast<cd>() + lambda * A1 + A0;
+            const ComplexDense Q = (lambda * lambda) * M.cast<cd>() + lambda * A1 + A0;
             const double scale = norms.at(std::abs(lambda));
-            const Eigen::BDCSVD<Dense> svd(Q, Eigen::ComputeFullV);
-            const Dense V = svd.matrixV().rightCols(c);  // singular values descend
+            const Eigen::BDCSVD<ComplexDense> svd(Q, Eigen::ComputeFullV);
+            const ComplexDense V = svd.matrixV().rightCols(c);  // singular values descend
             double worst = 0, largest = 0;
             for (Eigen::Index j = 0; j < c; ++j) {
                 worst = std::max(worst, (Q * V.col(j)).norm() / scale);
@@ -96,9 +96,9 @@ DampedModes damped_modes(const ProjectedDampedModel& model, double spin, double 
     COREMODAL_ASSERT(model.K.cols() == m && model.M.rows() == m && model.M.cols() == m);
     const Eigen::LLT<Eigen::MatrixXd> M(0.5 * (model.M + model.M.transpose()));
     if (M.info() != Eigen::Success) throw SolveError("the projected mass is not positive definite: no damped modes");
-    const Dense A0 = model.K.cast<cd>() + cd(0, 1) * term_or_zero(model.H, m);
-    const Dense A1 = term_or_zero(model.D, m) + spin * term_or_zero(model.G, m);
-    const Eigen::ComplexEigenSolver<Dense> eig(companion(M, A0, A1));
+    const ComplexDense A0 = model.K.cast<cd>() + cd(0, 1) * term_or_zero(model.H, m);
+    const ComplexDense A1 = term_or_zero(model.D, m) + spin * term_or_zero(model.G, m);
+    const Eigen::ComplexEigenSolver<ComplexDense> eig(companion(M, A0, A1));
     if (eig.info() != Eigen::Success) throw SolveError("the damped projected eigenproblem did not converge");
     const double norm0 = A0.norm(), norm1 = A1.norm(), norm2 = model.M.norm();
     DampedModes out;

@@ -2,6 +2,7 @@
 
 #include "common/error.hpp"
 #include "common/log_event.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 
 #include <petscmat.h>
 
@@ -14,12 +15,6 @@ namespace {
 // Blocks of one assembled matrix that should be equal (or zero) are accepted
 // as such when they differ by this fraction of their 1-norm (header).
 constexpr double kMirrorTolerance = 1e-13;
-
-double norm_1(Mat A) {
-    PetscReal n;
-    COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
-    return n;
-}
 
 PetscMatrix sub_matrix(Mat A, IS rows, IS cols) {
     PetscMatrix out;

@@ -16,11 +16,6 @@
 namespace coremodal {
 namespace {
 
-// The target tau = this fraction of the first elastic frequency's scale
-// (sqrt(lambda_scale)): any tau > 0 finds the lowest modes first (header);
-// one of the order of the wanted frequencies keeps them well apart in the
-// transformed spectrum 1 / (lambda - tau).
-constexpr double kTargetFraction = 0.5;
 // Extra eigenvalues computed beyond the wanted ones, as in modal_solver.cpp:
 // they locate the gap for the count and catch a partner of the last mode.
 constexpr int kMinExtraModes = 4;
@@ -28,7 +23,7 @@ constexpr int kMinExtraModes = 4;
 // reorder TOAR's Schur form (run_pep): far enough from the first to change
 // the projected problem.
 constexpr double kRetryTargetFactors[] = {0.3, 2.5, 0.1};
-constexpr int kMaxRetries = 2;
+constexpr int kMaxTargetRetries = 2;
 // A reported mode whose relative residual exceeds this did not converge
 // (SLEPc's own test runs on the linearization): an error, never a number.
 constexpr double kMaxAcceptedResidual = 1e-6;
@@ -235,7 +230,6 @@ std::vector<double> squared_omegas(const std::vector<Candidate>& c) {
     return lambdas;
 }
 
-
 GyroscopicModes verified(const SpinningOperators& op, std::vector<Candidate>& c, int n_report, double rigid_omega,
                          double check, long counted) {
     GyroscopicModes out;
@@ -377,13 +371,14 @@ GyroscopicModes solve_gyroscopic(const OperatorSet& operators, double spin, cons
         const bool rigid_complete = rigid_found >= std::min<long>(below_rigid, wanted);
         if (counted == found && rigid_complete) return converged(verified(op, c, n_report, rigid_omega, check, counted));
         if (!rigid_complete) {
-            if (attempt >= kMaxRetries) throw SolveError(rigid_mismatch_text(below_rigid, rigid_found));
+            if (attempt >= kMaxTargetRetries) throw SolveError(rigid_mismatch_text(below_rigid, rigid_found));
             progress("the inertia says " + std::to_string(below_rigid) + " rigid modes, " +
                      std::to_string(rigid_found) + " found: solving again with a larger subspace");
             nev = std::min<int>(2 * n_dofs, nev + 2 * (int(below_rigid - rigid_found) + kMinExtraModes));
             continue;
         }
-        if (attempt >= kMaxRetries || counted < found) throw SolveError(count_mismatch_text(counted, found, check));
+        if (attempt >= kMaxTargetRetries || counted < found)
+            throw SolveError(count_mismatch_text(counted, found, check));
         progress("the count says " + std::to_string(counted) + " modes, " + std::to_string(found) +
                  " found: solving again with a larger subspace");
         nev = std::min<int>(2 * n_dofs, 2 * (int(counted) + n_report - int(found) + kMinExtraModes + wanted / 4));

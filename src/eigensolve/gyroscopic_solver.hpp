@@ -63,6 +63,14 @@
 
 namespace coremodal {
 
+// The target tau = this fraction of the first elastic frequency's scale
+// (sqrt(lambda_scale)): any tau > 0 finds the lowest modes first (above);
+// one of the order of the wanted frequencies keeps them well apart in the
+// transformed spectrum 1 / (lambda - tau). The projected solvers shift their
+// static responses by the same tau: S = K (+ K_sigma) + tau^2 M is positive
+// definite with rigid modes or not.
+inline constexpr double kTargetFraction = 0.5;
+
 struct GyroscopicMode {
     double omega = 0;          // rad/s, >= 0
     PetscVector real, imag;    // x = real + i imag, x^H M x = 1

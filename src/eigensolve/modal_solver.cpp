@@ -21,7 +21,6 @@ namespace coremodal {
 using namespace shift_invert;
 namespace {
 
-
 PetscHandle<EPS, EPSDestroy> configure(Mat K, Mat M, double sigma, int nev, const SolveRequest& request) {
     PetscHandle<EPS, EPSDestroy> eps = krylov_schur_at(K, M, sigma);
     COREMODAL_PETSC(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
@@ -172,17 +171,16 @@ double better_shift(const std::vector<double>& lambdas, double scale, double old
 
 std::string format_count_mismatch(long pivots, long found, double sigma) {
     std::ostringstream s;
-    s << "the shifted factor K - sigma M at sigma = " << sigma << " rad^2/s^2 ("
-      << std::sqrt(std::max(sigma, 0.0)) / (2 * M_PI) << " Hz) has " << pivots
-      << " negative pivots, but " << found << " modes were found below it: " << pivots - found
+    s << "the shifted factor K - sigma M at sigma = " << sigma << " rad^2/s^2 (" << eigenvalue_hz(sigma) << " Hz) has "
+      << pivots << " negative pivots, but " << found << " modes were found below it: " << pivots - found
       << " mode(s) were missed; raise [analysis] max_iterations or the number of modes";
     return s.str();
 }
 
 std::string band_text(const SolveRequest& r) {
-    const auto hz = [](double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); };
     std::ostringstream s;
-    s << "[analysis] band = [" << hz(r.lambda_min.value_or(0.0)) << " Hz, " << hz(*r.lambda_max) << " Hz]";
+    s << "[analysis] band = [" << eigenvalue_hz(r.lambda_min.value_or(0.0)) << " Hz, " << eigenvalue_hz(*r.lambda_max)
+      << " Hz]";
     return s.str();
 }
 

@@ -19,6 +19,12 @@ double vector_norm(Vec x) {
     return n;
 }
 
+double norm_1(Mat A) {
+    PetscReal n;
+    COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
+    return n;
+}
+
 double bilinear_form(Mat A, Vec y, Vec x) {
     PetscVector Ax;
     COREMODAL_PETSC(VecDuplicate(x, Ax.out()));

@@ -10,6 +10,8 @@
 namespace coremodal {
 
 double vector_norm(Vec x);
+// ||A||_1.
+double norm_1(Mat A);
 
 // y^T A x (real; PETSc is built with real scalars here).
 double bilinear_form(Mat A, Vec y, Vec x);

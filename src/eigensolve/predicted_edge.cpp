@@ -23,9 +23,6 @@ namespace {
 // edge (a second factorization): each mode below sigma costs solves.
 int most_below_one_shift(int wanted) { return wanted + std::max(kMinExtraModes, wanted / 2); }
 
-
-double hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
-
 // SLEPc's order of eigenvalues: a before b (res < 0) when lower.
 PetscErrorCode lowest_first(PetscScalar ar, PetscScalar, PetscScalar br, PetscScalar, PetscInt* res, void*) {
     const double a = PetscRealPart(ar), b = PetscRealPart(br);
@@ -99,7 +96,7 @@ std::optional<long> factor_and_count(EPS eps, const Progress& progress) {
 
 std::string shift_text(double sigma) {
     std::ostringstream s;
-    s << "sigma = " << sigma << " rad^2/s^2, " << hz(sigma) << " Hz";
+    s << "sigma = " << sigma << " rad^2/s^2, " << eigenvalue_hz(sigma) << " Hz";
     return s.str();
 }
 

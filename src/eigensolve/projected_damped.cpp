@@ -4,6 +4,7 @@
 #include "common/error.hpp"
 #include "common/petsc_handle.hpp"
 #include "eigensolve/gyroscopic_solver.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 #include "eigensolve/projection_basis.hpp"
 
 #include <cmath>
@@ -14,10 +15,6 @@ namespace coremodal {
 namespace {
 
 using cd = std::complex<double>;
-
-// The static responses' shift tau = kTargetFraction sqrt(lambda_scale), as the
-// undamped branch's (projected_gyroscopic.cpp): S = K + tau^2 M positive definite.
-constexpr double kTargetFraction = 0.5;
 
 // A V, or empty for an absent term.
 Eigen::MatrixXd applied_or_empty(Mat A, const Eigen::MatrixXd& V) {
@@ -46,6 +43,7 @@ ProjectedDamped::ProjectedDamped(const OperatorSet& ops, const SolveRequest& req
     std::vector<Mat> forces;
     for (Mat A : {G, D, H, K_omega})
         if (A) forces.push_back(A);
+    // The static responses' shift, as the undamped branch's: S = K + tau^2 M positive definite.
     const double tau = kTargetFraction * std::sqrt(request.lambda_scale);
     const std::vector<Eigen::VectorXd> enrichment = static_responses(K0, M, tau, forces, rest.vectors);
 

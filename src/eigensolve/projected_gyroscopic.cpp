@@ -88,11 +88,12 @@ std::optional<GyroscopicModes> ProjectedGyroscopic::modes_at(double spin) const 
     // Small fronts and small dense problems: OpenBLAS's second thread only
     // waits (sched_yield in the profile of a sweep), common/blas_threads.hpp.
     const SingleThreadBlas one_thread;
-    std::vector<Candidate> c = [&] {
+    std::vector<ProjectedCandidate> c = [&] {
         const LogEvent event("CmProjSmall");
         return b.candidates(spin);
     }();
-    std::stable_sort(c.begin(), c.end(), [](const Candidate& x, const Candidate& y) { return x.omega < y.omega; });
+    std::stable_sort(c.begin(), c.end(),
+                     [](const ProjectedCandidate& x, const ProjectedCandidate& y) { return x.omega < y.omega; });
     const std::vector<double> lambdas = squared_omegas(c);
     const int n_report = reported_count(lambdas, b.request.n_modes, scale);
     if (n_report < b.request.n_modes) return std::nullopt;

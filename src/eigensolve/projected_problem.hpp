@@ -13,6 +13,7 @@
 #include "common/error.hpp"
 #include "common/log_event.hpp"
 #include "eigensolve/gyroscopic_inertia.hpp"
+#include "eigensolve/petsc_algebra.hpp"
 #include "eigensolve/projection_basis.hpp"
 #include "eigensolve/tolerances.hpp"
 
@@ -25,9 +26,6 @@
 namespace coremodal {
 namespace {
 
-// S = K + K_sigma + tau^2 M with tau = this fraction of sqrt(lambda_scale):
-// solve_gyroscopic's target (positive definite with rigid modes or not).
-constexpr double kTargetFraction = 0.5;
 // Counting at fewer speeds (header, docs/theory/rotation-harmonic.md). The bound gamma is
 // guessed from the projected term (its largest |eigenvalue| in the basis, a
 // lower bound of the full term's), times kBoundMargin, and doubled up to
@@ -46,7 +44,7 @@ constexpr double kMinCertifiedSteps = 3;
 using Dense = Eigen::MatrixXd;
 using Complex = std::complex<double>;
 
-struct Candidate {
+struct ProjectedCandidate {
     double omega = 0;
     Eigen::VectorXcd y;  // in the basis, |y| = 1: x = V y, x^H M x = 1
     // One family's basis (mirrored families): +1 a forward mode x = (f, -i f) / sqrt 2,
@@ -56,12 +54,11 @@ struct Candidate {
 
 // The eigenvalues omega^2 of the candidates, ascending as they are: what
 // eigensolve/band_edge.hpp's report and count rule reads.
-std::vector<double> squared_omegas(const std::vector<Candidate>& c) {
+std::vector<double> squared_omegas(const std::vector<ProjectedCandidate>& c) {
     std::vector<double> lambdas;
-    for (const Candidate& x : c) lambdas.push_back(x.omega * x.omega);
+    for (const ProjectedCandidate& x : c) lambdas.push_back(x.omega * x.omega);
     return lambdas;
 }
-
 
 // K(Omega) + omega_0^2 M, the count's premise (gyroscopic_solver.hpp).
 GyroscopicInertia::Combination stiffness_at(double spin, double rigid_omega) {
@@ -154,7 +151,7 @@ struct ProjectedGyroscopic::Basis {
     // and ||x|| = ||f|| (U of gyroscopic_inertia.hpp is unitary), and the
     // 1-norms of K, M and G are those of S, M_S and Gab (block diagonal; G's
     // columns each hold one block of Gab).
-    double relative_residual(double spin, double omega, const Candidate& x, double norm_K_at_spin) const {
+    double relative_residual(double spin, double omega, const ProjectedCandidate& x, double norm_K_at_spin) const {
         const Eigen::VectorXcd& y = x.y;
         const Eigen::Index n = m(), blocks = R.cols() / n;
         Eigen::VectorXcd c = Eigen::VectorXcd::Zero(R.cols()), cx = Eigen::VectorXcd::Zero(R.cols());
@@ -181,7 +178,9 @@ struct ProjectedGyroscopic::Basis {
     // of the quadratic problem, as the full solver reports it, and a rigid
     // direction of K(Omega) is exactly one (Q(0) x = K(Omega) x = 0), so the
     // first ones stand for them.
-    std::vector<Candidate> candidates(double spin) const { return family ? family_candidates(spin) : set_candidates(spin); }
+    std::vector<ProjectedCandidate> candidates(double spin) const {
+        return family ? family_candidates(spin) : set_candidates(spin);
+    }
 
     // K(Omega) in the basis, symmetrised, and its eigen-decomposition: the
     // linearizations below are written in its eigenvectors.
@@ -190,7 +189,7 @@ struct ProjectedGyroscopic::Basis {
         return Eigen::SelfAdjointEigenSolver<Dense>(0.5 * (K + K.transpose()));
     }
 
-    std::vector<Candidate> set_candidates(double spin) const {
+    std::vector<ProjectedCandidate> set_candidates(double spin) const {
         const Eigen::SelfAdjointEigenSolver<Dense> ks = stiffness_eigen(spin);
         const Dense& U = ks.eigenvectors();
         const Eigen::VectorXd& lambda = ks.eigenvalues();
@@ -202,7 +201,7 @@ struct ProjectedGyroscopic::Basis {
         const Eigen::VectorXd& omegas = hs.eigenvalues();
         const long below_line = (omegas.array().abs() < rigid_omega).count();
         const long rigid_directions = (lambda.array() < rigid_omega * rigid_omega).count();
-        std::vector<Candidate> out;
+        std::vector<ProjectedCandidate> out;
         for (Eigen::Index k = 0; k < std::min((below_line + 1) / 2, rigid_directions); ++k)
             out.push_back({0.0, U.col(k).cast<Complex>()});
         for (Eigen::Index j = 0; j < 2 * n; ++j) {
@@ -229,7 +228,7 @@ struct ProjectedGyroscopic::Basis {
     // it twice, +-omega). Below the rigid line: a rigid direction f of
     // K(Omega)^ stands for two rigid modes of the set, (f, -+i f) / sqrt 2,
     // as many as H has eigenvalues there, at most.
-    std::vector<Candidate> family_candidates(double spin) const {
+    std::vector<ProjectedCandidate> family_candidates(double spin) const {
         const Eigen::SelfAdjointEigenSolver<Dense> ks = stiffness_eigen(spin);
         const Dense& U = ks.eigenvectors();
         const Eigen::VectorXd& lambda = ks.eigenvalues();
@@ -241,7 +240,7 @@ struct ProjectedGyroscopic::Basis {
         const Eigen::VectorXd& omegas = hs.eigenvalues();
         const long below_line = (omegas.array().abs() < rigid_omega).count();
         const long rigid_directions = (lambda.array() < rigid_omega * rigid_omega).count();
-        std::vector<Candidate> out;
+        std::vector<ProjectedCandidate> out;
         for (Eigen::Index k = 0; k < std::min(below_line, 2 * rigid_directions); ++k)
             out.push_back({0.0, U.col(k / 2).cast<Complex>(), k % 2 == 0 ? +1 : -1});
         for (Eigen::Index j = 0; j < 2 * n; ++j) {
@@ -256,7 +255,7 @@ struct ProjectedGyroscopic::Basis {
     // modes of distinct frequency (gyroscopic_solver.hpp), in the basis. In
     // one family's basis, for two modes of one sign s, it is
     // (omega_i + omega_j) f_j^H f_i - s Omega f_j^H Gab f_i; of opposite signs zero.
-    double orthogonality_error(double spin, const std::vector<Candidate>& c, int n_report) const {
+    double orthogonality_error(double spin, const std::vector<ProjectedCandidate>& c, int n_report) const {
         const Eigen::MatrixXcd iG = Complex(0, spin) * G.cast<Complex>();
         const Eigen::MatrixXcd sG = spin * G.cast<Complex>();
         const auto product = [&](int j, int i) {
@@ -284,10 +283,11 @@ struct ProjectedGyroscopic::Basis {
         double point;
         long negative, found;
     };
-    Count count_modes(double spin, const std::vector<Candidate>& c, int n_report, double check, double norm_K_at_spin) const {
+    Count count_modes(double spin, const std::vector<ProjectedCandidate>& c, int n_report, double check,
+                      double norm_K_at_spin) const {
         ++stats.speeds;
-        const long found_reported =
-            std::count_if(c.begin(), c.begin() + n_report, [&](const Candidate& x) { return x.omega >= rigid_omega; });
+        const long found_reported = std::count_if(c.begin(), c.begin() + n_report,
+                                                  [&](const ProjectedCandidate& x) { return x.omega >= rigid_omega; });
         const bool certifiable = gamma >= 0 && spin <= rigid_line_clear_up_to;
         const double step = last_spin >= 0 ? std::abs(spin - last_spin) : 0;
         last_spin = spin;
@@ -363,7 +363,7 @@ struct ProjectedGyroscopic::Basis {
         stats.gamma = g;
     }
 
-    GyroscopicMode full_mode(const Candidate& c, double relative_residual) const {
+    GyroscopicMode full_mode(const ProjectedCandidate& c, double relative_residual) const {
         GyroscopicMode mode;
         mode.omega = c.omega;
         mode.relative_residual = relative_residual;

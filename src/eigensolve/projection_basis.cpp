@@ -25,12 +25,6 @@ PetscMatrix referenced(Mat A) {
 
 }  // namespace
 
-double norm_1(Mat A) {
-    PetscReal n;
-    COREMODAL_PETSC(MatNorm(A, NORM_1, &n));
-    return n;
-}
-
 // A V, column by column (one process: the sweep refuses mpirun).
 Dense apply_columns(Mat A, const Dense& V) {
     Dense out(V.rows(), V.cols());

@@ -14,9 +14,6 @@
 
 namespace coremodal {
 
-// ||A||_1.
-double norm_1(Mat A);
-
 // A V, column by column.
 Eigen::MatrixXd apply_columns(Mat A, const Eigen::MatrixXd& V);
 

@@ -17,7 +17,7 @@ using Dense = Eigen::MatrixXd;
 
 // Directions whose Gram eigenvalue falls below this share of the largest are
 // dependent (X and A^-1 M X nearly share a converged mode's direction).
-constexpr double kDependentDirection = 1e-20;
+constexpr double kDependentGramShare = 1e-20;
 
 // A B for a one-process AIJ A (SparseBlockProduct) or any other matrix
 // (one MatMult a column).
@@ -51,7 +51,7 @@ Dense m_orthonormal(Mat M, const Dense& B, SparseBlockProduct& product) {
         const double largest = es.eigenvalues().maxCoeff();
         Eigen::Index kept = 0;
         const Eigen::Index size = es.eigenvalues().size();
-        while (kept < size && es.eigenvalues()[size - 1 - kept] > kDependentDirection * largest) ++kept;
+        while (kept < size && es.eigenvalues()[size - 1 - kept] > kDependentGramShare * largest) ++kept;
         V = V * es.eigenvectors().rightCols(kept) * es.eigenvalues().tail(kept).cwiseSqrt().cwiseInverse().asDiagonal();
     }
     return V;

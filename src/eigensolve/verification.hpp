@@ -4,10 +4,16 @@
 // modes/ModeSet and the model levels, checked by modes/verification_check.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
 namespace coremodal {
+
+// The frequency in Hz of an eigenvalue lambda = omega^2 (rad^2/s^2): a mode's
+// or a check shift's; a rigid mode's round-off negative one gives 0.
+inline double eigenvalue_hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
 
 // Which precision factored K - sigma M where the solid level's one factor at
 // the predicted band edge gave the modes and their count (issue 39;

@@ -4,7 +4,6 @@
 #include "common/format.hpp"
 #include "eigensolve/modal_solver.hpp"
 #include "eigensolve/petsc_algebra.hpp"
-#include "eigensolve/projection_basis.hpp"  // norm_1
 
 #include <slepceps.h>
 

@@ -9,20 +9,18 @@
 namespace coremodal {
 namespace {
 
-std::string mm(double metres) { return significant(metres * 1e3, 5) + " mm"; }
-
-std::string speed(double v) { return significant(v) + " m/s (" + significant(v * 60) + " m/min)"; }
-
 void print_section(const BeamFormulas& r, std::ostream& out) {
     const Scene& s = r.scene;
     const RestRollSection& sec = r.section;
     out << "\n\nSection\n";
-    out << "  core        Di " << mm(sec.Di) << ", Do " << mm(sec.Do) << ", Lc " << significant(r.Lc) << " m, Ec "
-        << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c " << significant(sec.rho_c) << " kg/m^3\n";
+    out << "  core        Di " << millimetres(sec.Di, 5) << ", Do " << millimetres(sec.Do, 5) << ", Lc "
+        << significant(r.Lc) << " m, Ec " << format_quantity(sec.Ec, Dimension::pressure) << ", rho_c "
+        << significant(sec.rho_c) << " kg/m^3\n";
     out << "              Ic " << significant(r.Ic) << " m^4, Ac " << significant(r.Ac) << " m^2\n";
     if (s.rest_paper) {
-        out << "  rest paper  Dp " << mm(sec.Dp) << " (" << mm(r.paper_thickness) << " thick), Ep "
-            << format_quantity(sec.Ep, Dimension::pressure) << ", rho_p " << significant(sec.rho_p) << " kg/m^3\n";
+        out << "  rest paper  Dp " << millimetres(sec.Dp, 5) << " (" << millimetres(r.paper_thickness, 5)
+            << " thick), Ep " << format_quantity(sec.Ep, Dimension::pressure) << ", rho_p " << significant(sec.rho_p)
+            << " kg/m^3\n";
         out << "              Ip " << significant(r.Ip) << " m^4, Ap " << significant(r.Ap) << " m^2\n";
     } else {
         out << "  rest paper  none (bare core, Dp = Do)\n";
@@ -30,7 +28,8 @@ void print_section(const BeamFormulas& r, std::ostream& out) {
     out << "  EcIc + EpIp = " << significant(r.beam.EI) << " N m^2, rho_c Ac + rho_p Ap = " << significant(r.beam.rho_A)
         << " kg/m, kappa G A = " << significant(r.beam.kappa_GA) << " N (Cowper; for Timoshenko)\n";
     out << "\nSpan\n";
-    out << "  Li = " << mm(r.Li) << " (" << r.li_source << "), free span L = Lc - 2 Li = " << significant(r.L) << " m\n";
+    out << "  Li = " << millimetres(r.Li, 5) << " (" << r.li_source
+        << "), free span L = Lc - 2 Li = " << significant(r.L) << " m\n";
 }
 
 void print_frequencies(const BeamFormulas& r, std::ostream& out) {
@@ -51,14 +50,17 @@ void print_frequencies(const BeamFormulas& r, std::ostream& out) {
 
 void print_speeds(const BeamFormulas& r, std::ostream& out) {
     out << "\nSpeeds\n";
-    out << "  König " << r.koenig_formula << " (rest paper " << mm(r.paper_thickness)
-        << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor " << significant(r.koenig_factor)
-        << ", l = " << significant(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
-    out << "      f_krit = " << significant(r.koenig.f_krit_hz) << " Hz, v_krit = " << speed(r.koenig.v_krit_m_s) << "\n";
-    out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << significant(r.safe) << ": " << speed(r.v_safe) << "\n";
+    out << "  König " << r.koenig_formula << " (rest paper " << millimetres(r.paper_thickness, 5)
+        << (r.koenig_formula == "K-1" ? " <= 10 mm" : " > 10 mm") << "), experience factor "
+        << significant(r.koenig_factor) << ", l = " << significant(r.koenig_l) << " m (" << r.koenig_l_source << "):\n";
+    out << "      f_krit = " << significant(r.koenig.f_krit_hz) << " Hz, v_krit = " << web_speed(r.koenig.v_krit_m_s)
+        << "\n";
+    out << "  I-5  safe web speed v_safe = safe pi Dp f1, safe = " << significant(r.safe) << ": " << web_speed(r.v_safe)
+        << "\n";
     if (const auto& a = r.amplification)
-        out << "  I-2..4 at " << speed(a->web_speed_m_s) << ": f_rot = " << significant(a->f_rot_hz) << " Hz, r = f_rot/f1 = "
-            << significant(a->ratio) << ", zeta = " << significant(a->zeta) << (a->zeta_assumed ? " (assumed)" : "")
+        out << "  I-2..4 at " << web_speed(a->web_speed_m_s) << ": f_rot = " << significant(a->f_rot_hz)
+            << " Hz, r = f_rot/f1 = " << significant(a->ratio) << ", zeta = " << significant(a->zeta)
+            << (a->zeta_assumed ? " (assumed)" : "")
             << ": d = 1/sqrt((1 - r^2)^2 + (2 zeta r)^2) = " << significant(a->d) << "\n";
 }
 

@@ -10,8 +10,6 @@
 namespace coremodal {
 namespace {
 
-std::string percent(double share) { return significant(100 * share, 3) + " %"; }
-
 }  // namespace
 
 std::string calibration_csv(const CaseSweep& sweep, const CalibrationOutcome& outcome) {

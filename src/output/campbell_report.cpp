@@ -17,28 +17,19 @@
 namespace coremodal {
 namespace {
 
-constexpr double kRpmPerHz = 60.0;
-
-// Ten significant digits: a reader gets back what was computed.
-std::string num(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-}
-
 std::string whirl_word(Whirl w) { return w == Whirl::none ? "" : whirl_name(w); }
 
 // A value that may be absent (a rigid mode's damping): empty then.
-std::string num_or_empty(const std::optional<double>& v) { return v ? num(*v) : ""; }
+std::string num_or_empty(const std::optional<double>& v) { return v ? ten_digits(*v) : ""; }
 
 std::string campbell_rows(const CampbellResult& r) {
     std::string out = "speed_rpm,speed_hz,track,frequency_hz,whirl,label,relative_residual";
     out += r.damped ? ",damped_frequency_hz,damping_ratio\n" : "\n";  // only with [damping]
     for (const CampbellPoint& p : r.points)
         for (const CampbellMode& m : p.modes) {
-            out += num(p.speed_hz * kRpmPerHz) + "," + num(p.speed_hz) + "," + std::to_string(m.track) + "," +
-                   num(m.frequency_hz) + "," + whirl_word(m.whirl) + "," + csv_field(label_text(m.label)) + "," +
-                   num(m.relative_residual);
+            out += ten_digits(p.speed_hz * kRpmPerHz) + "," + ten_digits(p.speed_hz) + "," + std::to_string(m.track) +
+                   "," + ten_digits(m.frequency_hz) + "," + whirl_word(m.whirl) + "," + csv_field(label_text(m.label)) +
+                   "," + ten_digits(m.relative_residual);
             if (r.damped) out += "," + num_or_empty(m.damped_frequency_hz) + "," + num_or_empty(m.damping_ratio);
             out += "\n";
         }
@@ -72,10 +63,10 @@ std::string critical_rows(const CampbellResult& r) {
     std::string out = "order,speed_rpm,speed_hz,frequency_hz,web_speed_m_s,track,whirl,label,refined,"
                       "interpolated_speed_rpm,source\n";
     for (const WhirlCrossing& c : r.critical)
-        out += std::to_string(c.order) + "," + num(c.speed_hz * kRpmPerHz) + "," + num(c.speed_hz) + "," +
-               num(c.frequency_hz) + "," + num(c.web_speed_m_s) + "," + std::to_string(c.track) + "," +
-               whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "," + (c.refined ? "true" : "false") +
-               "," + num(c.interpolated_speed_hz * kRpmPerHz) + "," + crossing_source_name(c.source) + "\n";
+        out += std::to_string(c.order) + "," + ten_digits(c.speed_hz * kRpmPerHz) + "," + ten_digits(c.speed_hz) + "," +
+               ten_digits(c.frequency_hz) + "," + ten_digits(c.web_speed_m_s) + "," + std::to_string(c.track) + "," +
+               whirl_word(c.whirl) + "," + csv_field(label_text(c.label)) + "," + (c.refined ? "true" : "false") + "," +
+               ten_digits(c.interpolated_speed_hz * kRpmPerHz) + "," + crossing_source_name(c.source) + "\n";
     return out;
 }
 
@@ -124,8 +115,6 @@ std::string summary_json(const Scene& scene, const RotationSpec& rotation, const
     t["timing_s"] = Json{{"total", r.solve_seconds}};
     return json_text(t);
 }
-
-std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
 
 // "critical speed X rpm inside the operating range" for each one there, or
 // that none is; nothing without an operating range.

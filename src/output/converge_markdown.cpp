@@ -10,9 +10,7 @@
 namespace coremodal {
 namespace {
 
-std::string opt(const std::optional<double>& v, const char* format) { return v ? formatted(format, *v) : ""; }
-
-std::string percent(double fraction) {
+std::string error_percent(double fraction) {
     if (fraction >= 0.1) return formatted("%.0f %%", fraction * 100);
     if (fraction >= 0.01) return formatted("%.1f %%", fraction * 100);
     if (fraction >= 1e-3) return formatted("%.2f %%", fraction * 100);
@@ -60,8 +58,8 @@ void markdown_levels(std::ostringstream& s, const ModelStudy& m) {
           << seconds(l.median_cpu_s) << " | " << formatted("%.0f", l.peak_memory_mb) << " |";
         for (const TrackedMode* t : {f1, oval}) {
             if (!t) continue;
-            s << ' ' << opt(t->frequency_hz[i], "%.4f") << " | "
-              << (t->relative_error[i] ? percent(*t->relative_error[i]) : std::string("–")) << " |";
+            s << ' ' << optional_number(t->frequency_hz[i], "%.4f") << " | "
+              << (t->relative_error[i] ? error_percent(*t->relative_error[i]) : std::string("–")) << " |";
         }
         s << "\n";
         if (!l.complete) s << "\n(k = " << l.step.k << ": the inertia count found missing modes)\n";
@@ -72,15 +70,15 @@ void markdown_extrapolation(std::ostringstream& s, const ModelStudy& m) {
     s << "\n| mode | role | finest [Hz] | extrapolated f0 [Hz] | error estimate | f0 known to | order p | "
          "asymptotic | note |\n|---|---|---:|---:|---:|---:|---:|---|---|\n";
     for (const auto& t : m.modes) {
-        s << "| " << t.key.text() << " | " << role_title(t.role) << " | " << opt(t.frequency_hz.back(), "%.4f")
-          << " | ";
+        s << "| " << t.key.text() << " | " << role_title(t.role) << " | "
+          << optional_number(t.frequency_hz.back(), "%.4f") << " | ";
         if (!t.richardson) {
             s << "– | – | – | – | – | missing at some level (labels differ) |\n";
             continue;
         }
         const Richardson& r = *t.richardson;
-        s << formatted("%.4f", r.f0) << " | " << percent(r.error_estimate / std::abs(r.f0)) << " | "
-          << (r.f0_uncertainty ? percent(*r.f0_uncertainty / std::abs(r.f0)) : std::string("–")) << " | "
+        s << formatted("%.4f", r.f0) << " | " << error_percent(r.error_estimate / std::abs(r.f0)) << " | "
+          << (r.f0_uncertainty ? error_percent(*r.f0_uncertainty / std::abs(r.f0)) : std::string("–")) << " | "
           << (r.extrapolated ? formatted("%.2f", r.order) : std::string("–")) << " | " << (r.asymptotic ? "yes" : "no")
           << " | " << r.note << " |\n";
     }
@@ -95,7 +93,7 @@ void markdown_targets(std::ostringstream& s, const ModelStudy& m) {
         const TrackedMode* t = find_role(m, role);
         if (!t) continue;
         for (double target : kAccuracyTargets) {
-            s << "| " << role_title(role) << " | " << percent(target) << " | ";
+            s << "| " << role_title(role) << " | " << error_percent(target) << " | ";
             const auto i = first_level_within(*t, target);
             if (i) {
                 const LevelResult& l = m.levels[*i];
@@ -119,11 +117,12 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
     const double total = t.total > 0 ? t.total : 1;
     if (!m.traits.meshed) {
         s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
-          << l.runs << " runs): building the beam network " << seconds(t.mesh) << " s (" << percent(t.mesh / total)
-          << "), assembly, eigensolve and inertia count " << seconds(t.factor_and_solve) << " s ("
-          << percent(t.factor_and_solve / total) << "), labels and effective masses " << seconds(t.classify) << " s ("
-          << percent(t.classify / total) << "); total " << seconds(t.total) << " s. Peak memory "
-          << formatted("%.0f", l.peak_memory_mb) << " MiB is the whole process's resident set (PETSc, the "
+          << l.runs << " runs): building the beam network " << seconds(t.mesh) << " s ("
+          << error_percent(t.mesh / total) << "), assembly, eigensolve and inertia count "
+          << seconds(t.factor_and_solve) << " s (" << error_percent(t.factor_and_solve / total)
+          << "), labels and effective masses " << seconds(t.classify) << " s (" << error_percent(t.classify / total)
+          << "); total " << seconds(t.total) << " s. Peak memory " << formatted("%.0f", l.peak_memory_mb)
+          << " MiB is the whole process's resident set (PETSc, the "
           << "solid ladder's freed heap): the beam itself needs well under a MiB.\n";
         if (m.time_exponent) s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^"
                                << formatted("%.2f", *m.time_exponent) << ".\n";
@@ -132,18 +131,20 @@ void markdown_cost(std::ostringstream& s, const ModelStudy& m) {
     s << m.traits.cost_note;
     s << "\nWhere the time goes at the finest level (" << l.step.label << ", " << l.n_dofs << " DOFs, median of "
       << l.runs << (l.runs == 1 ? " run" : " runs") << "): mesh " << seconds(t.mesh) << " s ("
-      << percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s (" << percent(t.assemble / total)
-      << "), factorization and solve " << seconds(t.factor_and_solve) << " s (" << percent(t.factor_and_solve / total)
-      << "), classification " << seconds(t.classify) << " s (" << percent(t.classify / total) << "); total "
-      << seconds(t.total) << " s, peak memory " << formatted("%.0f", l.peak_memory_mb) << " MiB.\n";
+      << error_percent(t.mesh / total) << "), assembly " << seconds(t.assemble) << " s ("
+      << error_percent(t.assemble / total) << "), factorization and solve " << seconds(t.factor_and_solve) << " s ("
+      << error_percent(t.factor_and_solve / total) << "), classification " << seconds(t.classify) << " s ("
+      << error_percent(t.classify / total) << "); total " << seconds(t.total) << " s, peak memory "
+      << formatted("%.0f", l.peak_memory_mb) << " MiB.\n";
     const SolverBreakdown& b = l.median_solver_s;
     if (b.factor_s + b.solve_s + b.orthogonalize_s > 0) {
         const double rest = std::max(0.0, t.factor_and_solve - b.factor_s - b.solve_s - b.orthogonalize_s);
         s << "\nInside factorization and solve (PETSc event log): factorizations " << seconds(b.factor_s) << " s ("
-          << percent(b.factor_s / total) << " of the total), triangular solves " << seconds(b.solve_s) << " s ("
-          << percent(b.solve_s / total) << "), orthogonalization of the Krylov basis " << seconds(b.orthogonalize_s)
-          << " s (" << percent(b.orthogonalize_s / total) << "), the rest of the eigensolver (M products, projected "
-          << "problem, residual checks) " << seconds(rest) << " s (" << percent(rest / total) << ").\n";
+          << error_percent(b.factor_s / total) << " of the total), triangular solves " << seconds(b.solve_s) << " s ("
+          << error_percent(b.solve_s / total) << "), orthogonalization of the Krylov basis "
+          << seconds(b.orthogonalize_s) << " s (" << error_percent(b.orthogonalize_s / total)
+          << "), the rest of the eigensolver (M products, projected "
+          << "problem, residual checks) " << seconds(rest) << " s (" << error_percent(rest / total) << ").\n";
     }
     if (m.time_exponent && m.memory_exponent)
         s << "\nObserved scaling over the levels after the coarsest: time ~ DOFs^" << formatted("%.2f", *m.time_exponent)
@@ -209,8 +210,8 @@ void markdown_model_errors(std::ostringstream& s, const ConvergeStudy& study) {
             if (e != errors.end()) {
                 s << m.model << " level converges to " << formatted("%.4f", e->f0_hz) << " Hz (" << e->id
                   << "), the solid to " << formatted("%.4f", e->solid_f0_hz) << " Hz (" << e->solid_id
-                  << "): " << error_words << formatted("%+.3g", 100 * e->relative) << " % (both extrapolations known to "
-                  << percent(e->known_to) << ")\n";
+                  << "): " << error_words << formatted("%+.3g", 100 * e->relative)
+                  << " % (both extrapolations known to " << error_percent(e->known_to) << ")\n";
                 continue;
             }
             const auto unseen = std::find_if(m.unseen_roles.begin(), m.unseen_roles.end(),
@@ -272,7 +273,7 @@ void markdown_checks(std::ostringstream& s, const ConvergeStudy& study) {
                 continue;
             }
             s << ' ' << formatted("%.4f", d->frequency_hz) << " | "
-              << percent(std::abs(d->frequency_hz - t->richardson->f0) / t->richardson->f0) << " |";
+              << error_percent(std::abs(d->frequency_hz - t->richardson->f0) / t->richardson->f0) << " |";
         }
         s << "\n";
     }

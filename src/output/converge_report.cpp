@@ -7,7 +7,6 @@
 #include "output/summary_json.hpp"
 #include "output/text_file.hpp"
 
-
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -15,8 +14,6 @@
 
 namespace coremodal {
 namespace {
-
-std::string opt(const std::optional<double>& v, const char* format = "%.10g") { return v ? formatted(format, *v) : ""; }
 
 // Timing columns of the CSV: six significant digits (beam levels take ~1e-3 s).
 std::string csv_seconds(double s) { return formatted("%.6g", s); }
@@ -38,7 +35,7 @@ std::string csv_level_cells(const std::string& model, const LevelResult& l) {
 std::string csv_mode_cells(const TrackedMode& mode, std::size_t i, const std::vector<std::optional<double>>& vs_solid) {
     std::ostringstream s;
     s << csv_field(mode.key.text()) << ',' << mode.role << ',' << mode.key.type << ',' << mode.key.n << ','
-      << mode.key.m << ',' << mode.key.occurrence << ',' << opt(mode.frequency_hz[i]) << ',';
+      << mode.key.m << ',' << mode.key.occurrence << ',' << optional_number(mode.frequency_hz[i]) << ',';
     if (mode.richardson) {
         const Richardson& r = *mode.richardson;
         s << formatted("%.10g", r.f0) << ',' << formatted("%.4g", r.error_estimate) << ','
@@ -46,7 +43,8 @@ std::string csv_mode_cells(const TrackedMode& mode, std::size_t i, const std::ve
     } else {
         s << ",,,";
     }
-    s << ',' << opt(mode.relative_error[i], "%.4g") << ',' << (vs_solid.empty() ? std::string() : opt(vs_solid[i], "%.4g"));
+    s << ',' << optional_number(mode.relative_error[i], "%.4g") << ','
+      << (vs_solid.empty() ? std::string() : optional_number(vs_solid[i], "%.4g"));
     return s.str();
 }
 

@@ -11,11 +11,7 @@
 namespace coremodal {
 namespace {
 
-constexpr double kMm = 1e3;
-
-// Ten significant digits: a reader gets back what was computed.
-std::string num(double v) { return significant(v, 10); }
-std::string speed(double v) { return formatted("%.2f", v); }
+std::string speed_2f(double v) { return formatted("%.2f", v); }
 
 Criterion criterion(size_t i) { return static_cast<Criterion>(i); }
 
@@ -27,15 +23,15 @@ std::string limits_rows(const LimitsResult& r) {
     }
     out += ",governing,safe_m_s,safe_low_m_s,safe_high_m_s\n";
     for (const LimitsPoint& p : r.points) {
-        out += num(p.diameter_m * kMm) + "," + (p.added ? "1" : "0") + "," + num(p.f1_hz) + "," +
-               (p.chuck_factor ? num(*p.chuck_factor) : "");
+        out += ten_digits(p.diameter_m * kMmPerM) + "," + (p.added ? "1" : "0") + "," + ten_digits(p.f1_hz) + "," +
+               (p.chuck_factor ? ten_digits(*p.chuck_factor) : "");
         for (const CriterionSpeed& c : p.criteria) {
             const bool band = c.given || c.band_low_m_s > 0;
-            out += "," + (c.given ? num(c.web_speed_m_s) : "") + "," + (band ? num(c.band_low_m_s) : "") + "," +
-                   (band ? num(c.band_high_m_s) : "");
+            out += "," + (c.given ? ten_digits(c.web_speed_m_s) : "") + "," + (band ? ten_digits(c.band_low_m_s) : "") +
+                   "," + (band ? ten_digits(c.band_high_m_s) : "");
         }
-        out += "," + csv_field(criterion_id(criterion(p.governing))) + "," + num(p.safe_m_s) + "," +
-               num(p.safe_low_m_s) + "," + num(p.safe_high_m_s) + "\n";
+        out += "," + csv_field(criterion_id(criterion(p.governing))) + "," + ten_digits(p.safe_m_s) + "," +
+               ten_digits(p.safe_low_m_s) + "," + ten_digits(p.safe_high_m_s) + "\n";
     }
     return out;
 }
@@ -44,7 +40,7 @@ std::string amplitude_rows(const LimitsResult& r) {
     std::string out = "diameter_mm,web_speed_m_s,amplitude_mm\n";
     for (const LimitsPoint& p : r.points)
         for (const auto& [v, a] : p.amplitude)
-            out += num(p.diameter_m * kMm) + "," + num(v) + "," + num(a * kMm) + "\n";
+            out += ten_digits(p.diameter_m * kMmPerM) + "," + ten_digits(v) + "," + ten_digits(a * kMmPerM) + "\n";
     return out;
 }
 
@@ -76,9 +72,9 @@ Json point_json(const LimitsPoint& p) {
     for (const ResponsePeak& k : p.peaks)
         peaks.push_back(Json{{"order", k.order},
                              {"web_speed_m_s", k.web_speed_m_s},
-                             {"amplitude_mm", k.amplitude_m * kMm},
+                             {"amplitude_mm", k.amplitude_m * kMmPerM},
                              {"mode_frequency_hz", k.mode_frequency_hz}});
-    Json t{{"diameter_mm", p.diameter_m * kMm},
+    Json t{{"diameter_mm", p.diameter_m * kMmPerM},
            {"added_where_fast", p.added},
            {"band_sampled", p.band_sampled},
            {"f1_hz", p.f1_hz},
@@ -106,23 +102,23 @@ std::string summary_json(const Scene& scene, const LimitsResult& r) {
     const Verdict& v = r.verdict;
     Json verdict{{"line", verdict_line(r)},
                  {"safe_web_speed_m_s", v.speed_m_s},
-                 {"roll_change_diameter_mm", v.diameter_m * kMm},
+                 {"roll_change_diameter_mm", v.diameter_m * kMmPerM},
                  {"governed_by", v.governed_by},
-                 {"at_diameter_mm", v.at_diameter_m * kMm},
+                 {"at_diameter_mm", v.at_diameter_m * kMmPerM},
                  {"band_m_s", Json::array({v.band_low_m_s, v.band_high_m_s})}};
     if (r.change)
         verdict["target"] = Json{{"web_speed_m_s", r.change->target_m_s},
                                  {"never_safe", r.change->never_safe},
                                  {"change_needed", r.change->needed},
-                                 {"change_diameter_mm", r.change->diameter_m * kMm},
+                                 {"change_diameter_mm", r.change->diameter_m * kMmPerM},
                                  {"margin_at_full_roll_m_s", r.change->margin_m_s}};
     // The same head as every command's summary.json (output/summary_json.hpp).
     Json t = summary_head("limits", scene.name, scene.source_file, scene.description);
     t["model"] = Json{{"level", to_string(r.level)}, {"solves", r.n_solves}};
     t["verdict"] = verdict;
     t["inputs"] = Json{{"damping", r.damping_summary},
-                       {"bow_mm", r.bow_m * kMm},
-                       {"limit_mm", r.limit_m * kMm},
+                       {"bow_mm", r.bow_m * kMmPerM},
+                       {"limit_mm", r.limit_m * kMmPerM},
                        {"band", r.band},
                        {"uncertain", inputs}};
     t["points"] = points;
@@ -135,8 +131,8 @@ std::string summary_json(const Scene& scene, const LimitsResult& r) {
 
 std::string cell(const CriterionSpeed& c, bool band) {
     if (!c.given) return "—";
-    std::string s = speed(c.web_speed_m_s);
-    if (band) s += " (" + speed(c.band_low_m_s) + "–" + speed(c.band_high_m_s) + ")";
+    std::string s = speed_2f(c.web_speed_m_s);
+    if (band) s += " (" + speed_2f(c.band_low_m_s) + "–" + speed_2f(c.band_high_m_s) + ")";
     return s;
 }
 
@@ -148,12 +144,13 @@ std::string verdict_table(const LimitsResult& r) {
     for (int i = 0; i < kCriteria; ++i) out << "---:|";
     out << "---|---:|\n";
     for (const LimitsPoint& p : r.points) {
-        out << "| " << formatted("%.1f", p.diameter_m * kMm) << (p.added ? "*" : "") << " | "
+        out << "| " << formatted("%.1f", p.diameter_m * kMmPerM) << (p.added ? "*" : "") << " | "
             << formatted("%.2f", p.f1_hz) << " | " << (p.chuck_factor ? formatted("%.3f", *p.chuck_factor) : "—")
             << " |";
         for (const CriterionSpeed& c : p.criteria) out << " " << cell(c, r.band) << " |";
-        out << " " << criterion_name(criterion(p.governing)) << " | **" << speed(p.safe_low_m_s) << "** ("
-            << speed(p.safe_m_s) << ", " << speed(p.safe_low_m_s) << "–" << speed(p.safe_high_m_s) << ") |\n";
+        out << " " << criterion_name(criterion(p.governing)) << " | **" << speed_2f(p.safe_low_m_s) << "** ("
+            << speed_2f(p.safe_m_s) << ", " << speed_2f(p.safe_low_m_s) << "–" << speed_2f(p.safe_high_m_s)
+            << ") |\n";
     }
     return out.str();
 }
@@ -209,12 +206,13 @@ std::string limits_console_summary(const Scene& scene, const LimitsResult& r) {
         << " level, " << r.n_solves << " solves, " << minutes_or_seconds(r.seconds) << "\n";
     out << "  D (mm)   f1 (Hz)  governing              safe (m/s)  band (m/s)\n";
     for (const LimitsPoint& p : r.points)
-        out << "  " << formatted("%6.1f", p.diameter_m * kMm) << "  " << formatted("%8.3f", p.f1_hz) << "  "
+        out << "  " << formatted("%6.1f", p.diameter_m * kMmPerM) << "  " << formatted("%8.3f", p.f1_hz) << "  "
             << criterion_name(criterion(p.governing))
             << std::string(23 - std::string(criterion_name(criterion(p.governing))).size(), ' ')
-            << formatted("%10.2f", p.safe_m_s) << "  " << speed(p.safe_low_m_s) << "-" << speed(p.safe_high_m_s)
-            << (p.equivalent_f1_hz ? "  (f1 of the axisymmetric equivalent " + formatted("%.3f", *p.equivalent_f1_hz) + " Hz)"
-                                   : std::string())
+            << formatted("%10.2f", p.safe_m_s) << "  " << speed_2f(p.safe_low_m_s) << "-" << speed_2f(p.safe_high_m_s)
+            << (p.equivalent_f1_hz
+                    ? "  (f1 of the axisymmetric equivalent " + formatted("%.3f", *p.equivalent_f1_hz) + " Hz)"
+                    : std::string())
             << "\n";
     if (!criteria_levels(r).empty()) out << "  levels" << criteria_levels(r) << "\n";
     for (const std::string& a : r.assumptions)

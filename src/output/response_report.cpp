@@ -14,14 +14,6 @@
 namespace coremodal {
 namespace {
 
-constexpr double kRpmPerHz = 60.0;
-constexpr double kMm = 1e3;
-
-// Ten significant digits: a reader gets back what was computed.
-std::string num(double v) { return significant(v, 10); }
-
-std::string rpm(double speed_hz) { return significant(speed_hz * kRpmPerHz, 5) + " rpm"; }
-std::string mm(double m) { return significant(m * kMm, 4) + " mm"; }
 std::string m_s(double v) { return significant(v, 4) + " m/s"; }
 
 std::string response_rows(const ResponseResult& r) {
@@ -30,9 +22,10 @@ std::string response_rows(const ResponseResult& r) {
     out += "\n";
     for (const ResponsePoint& p : r.points)
         for (size_t i = 0; i < r.probes.size(); ++i) {
-            out += num(p.web_speed_m_s) + "," + num(p.speed_hz * kRpmPerHz) + "," + num(p.speed_hz) + "," +
-                   csv_field(r.probes[i].name) + "," + num(r.probes[i].z_m) + "," + num(p.probes[i].total_m * kMm);
-            for (double a : p.probes[i].per_order_m) out += "," + num(a * kMm);
+            out += ten_digits(p.web_speed_m_s) + "," + ten_digits(p.speed_hz * kRpmPerHz) + "," +
+                   ten_digits(p.speed_hz) + "," + csv_field(r.probes[i].name) + "," + ten_digits(r.probes[i].z_m) +
+                   "," + ten_digits(p.probes[i].total_m * kMmPerM);
+            for (double a : p.probes[i].per_order_m) out += "," + ten_digits(a * kMmPerM);
             out += "\n";
         }
     return out;
@@ -41,27 +34,28 @@ std::string response_rows(const ResponseResult& r) {
 std::string peak_rows(const ResponseResult& r) {
     std::string out = "order,web_speed_m_s,speed_rpm,speed_hz,excitation_hz,amplitude_mm,mode,mode_frequency_hz\n";
     for (const ResponsePeak& p : r.peaks)
-        out += std::to_string(p.order) + "," + num(p.web_speed_m_s) + "," + num(p.speed_hz * kRpmPerHz) + "," +
-               num(p.speed_hz) + "," + num(p.excitation_hz) + "," + num(p.amplitude_m * kMm) + "," +
-               csv_field(label_text(p.mode)) + "," + num(p.mode_frequency_hz) + "\n";
+        out += std::to_string(p.order) + "," + ten_digits(p.web_speed_m_s) + "," + ten_digits(p.speed_hz * kRpmPerHz) +
+               "," + ten_digits(p.speed_hz) + "," + ten_digits(p.excitation_hz) + "," +
+               ten_digits(p.amplitude_m * kMmPerM) + "," + csv_field(label_text(p.mode)) + "," +
+               ten_digits(p.mode_frequency_hz) + "\n";
     return out;
 }
 
 Json peak_json(const ResponsePeak& p) {
     return Json{{"order", p.order},
-                       {"web_speed_m_s", p.web_speed_m_s},
-                       {"speed_rpm", p.speed_hz * kRpmPerHz},
-                       {"excitation_hz", p.excitation_hz},
-                       {"amplitude_mm", p.amplitude_m * kMm},
-                       {"mode", label_text(p.mode)},
-                       {"mode_frequency_hz", p.mode_frequency_hz}};
+                {"web_speed_m_s", p.web_speed_m_s},
+                {"speed_rpm", p.speed_hz * kRpmPerHz},
+                {"excitation_hz", p.excitation_hz},
+                {"amplitude_mm", p.amplitude_m * kMmPerM},
+                {"mode", label_text(p.mode)},
+                {"mode_frequency_hz", p.mode_frequency_hz}};
 }
 
 // I-5 at rest in the shape every summary uses, and the speed at which the
 // amplitude reaches the limit.
 Json speeds_json(const ResponseResult& r) {
     Json t = safe_web_speed_json(r.speeds_at_rest);
-    t["limit_mm"] = (r.limit_m * kMm);
+    t["limit_mm"] = (r.limit_m * kMmPerM);
     t["probe"] = (r.probes.front().name);
     Json amplitude{{"reached", r.safe.reached}};
     if (r.safe.reached) {
@@ -140,16 +134,19 @@ Json inputs_json(const ResponseSetup& setup, const ResponseResult& r) {
         for (const std::string& s : r.order_sources[k]) sources.push_back(s);
         orders.push_back(Json{{"order", r.orders[k]}, {"sources", sources}});
     }
-    return Json{
-        {"damping", damping_json(r)},
-        {"excitation", Json{{"bow_mm", x.bow_m * kMm}, {"bow_shape", bow_shape_name(x.bow_shape)},
-                                   {"unbalance_kg_m", x.unbalance_kg_m}, {"eccentricity_mm", x.eccentricity_m * kMm},
-                                   {"ovality_mm", x.ovality_m * kMm}, {"gravity", x.gravity},
-                                   {"ovality_stiffness_split", r.ovality_split}, {"static_sag_mm", r.sag_m * kMm}}},
-        {"orders", orders},
-        {"probes", probes},
-        {"roll_outer_diameter_m", r.roll_outer_diameter},
-        {"from_web_speed", r.from_web_speed}};
+    return Json{{"damping", damping_json(r)},
+                {"excitation", Json{{"bow_mm", x.bow_m * kMmPerM},
+                                    {"bow_shape", bow_shape_name(x.bow_shape)},
+                                    {"unbalance_kg_m", x.unbalance_kg_m},
+                                    {"eccentricity_mm", x.eccentricity_m * kMmPerM},
+                                    {"ovality_mm", x.ovality_m * kMmPerM},
+                                    {"gravity", x.gravity},
+                                    {"ovality_stiffness_split", r.ovality_split},
+                                    {"static_sag_mm", r.sag_m * kMmPerM}}},
+                {"orders", orders},
+                {"probes", probes},
+                {"roll_outer_diameter_m", r.roll_outer_diameter},
+                {"from_web_speed", r.from_web_speed}};
 }
 
 std::string summary_json(const Scene& scene, const ResponseSetup& setup, const ResponseResult& r) {
@@ -162,7 +159,7 @@ std::string summary_json(const Scene& scene, const ResponseSetup& setup, const R
     t["notes"] = string_array(r.notes);
     t["assumptions"] = string_array(r.assumptions);
     t["inputs"] = inputs_json(setup, r);
-    t["max_amplitude_mm"] = r.max_amplitude_m * kMm;
+    t["max_amplitude_mm"] = r.max_amplitude_m * kMmPerM;
     t["max_amplitude_web_speed_m_s"] = r.max_amplitude_web_speed_m_s;
     t["peaks"] = peaks;
     t["speeds"] = speeds_json(r);
@@ -182,18 +179,18 @@ std::string peak_table(const ResponseResult& r) {
     std::string out = "| order | web speed | rotation | excitation | amplitude | mode (at rest) |\n|---|---|---|---|---|---|\n";
     for (const ResponsePeak& p : r.peaks)
         out += "| " + std::to_string(p.order) + " | " + m_s(p.web_speed_m_s) + " | " + rpm(p.speed_hz) + " | " +
-               significant(p.excitation_hz, 5) + " Hz | " + mm(p.amplitude_m) + " | " + label_text(p.mode) + ", " +
-               significant(p.mode_frequency_hz, 5) + " Hz |\n";
+               significant(p.excitation_hz, 5) + " Hz | " + millimetres(p.amplitude_m) + " | " + label_text(p.mode) +
+               ", " + significant(p.mode_frequency_hz, 5) + " Hz |\n";
     return out;
 }
 
 std::string safe_speed_lines(const ResponseResult& r) {
     std::string out;
     const AmplitudeSafeSpeed& s = r.safe;
-    const std::string limit = "+-" + mm(r.limit_m) + " at " + r.probes.front().name;
+    const std::string limit = "+-" + millimetres(r.limit_m) + " at " + r.probes.front().name;
     if (!s.reached)
         out += "- amplitude limit " + limit + ": not reached up to " + m_s(r.points.back().web_speed_m_s) +
-               " (largest " + mm(r.max_amplitude_m) + " at " + m_s(r.max_amplitude_web_speed_m_s) + ")\n";
+               " (largest " + millimetres(r.max_amplitude_m) + " at " + m_s(r.max_amplitude_web_speed_m_s) + ")\n";
     else if (s.below_range)
         out += "- amplitude limit " + limit + ": already exceeded at the first speed, " + m_s(s.web_speed_m_s) + "\n";
     else
@@ -211,13 +208,16 @@ std::string inputs_lines(const ResponseSetup& setup, const ResponseResult& r) {
         out << "\n";
     }
     const ExcitationSpec& x = setup.excitation;
-    if (x.bow_m > 0) out << "- bow " << mm(x.bow_m) << " at mid-core, shape " << bow_shape_name(x.bow_shape) << "\n";
-    if (x.unbalance_kg_m > 0) out << "- unbalance " << significant(x.unbalance_kg_m * kMm, 4) << " kg*mm at mid-core\n";
-    if (x.eccentricity_m > 0) out << "- rest roll eccentricity " << mm(x.eccentricity_m) << "\n";
+    if (x.bow_m > 0)
+        out << "- bow " << millimetres(x.bow_m) << " at mid-core, shape " << bow_shape_name(x.bow_shape) << "\n";
+    if (x.unbalance_kg_m > 0)
+        out << "- unbalance " << significant(x.unbalance_kg_m * kMmPerM, 4) << " kg*mm at mid-core\n";
+    if (x.eccentricity_m > 0) out << "- rest roll eccentricity " << millimetres(x.eccentricity_m) << "\n";
     if (x.ovality_m > 0)
-        out << "- ovality " << mm(x.ovality_m) << " (D_max - D_min): stiffness split eps = "
-            << significant(r.ovality_split, 3) << "\n";
-    if (x.gravity) out << "- static sag under gravity at " << r.probes.front().name << ": " << mm(r.sag_m) << "\n";
+        out << "- ovality " << millimetres(x.ovality_m)
+            << " (D_max - D_min): stiffness split eps = " << significant(r.ovality_split, 3) << "\n";
+    if (x.gravity)
+        out << "- static sag under gravity at " << r.probes.front().name << ": " << millimetres(r.sag_m) << "\n";
     return out.str();
 }
 
@@ -235,18 +235,17 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
     std::ostringstream out;
     out << "# Forced response: " << scene.name << "\n\n";
     if (!scene.description.empty()) out << scene.description << "\n\n";
-    out << level_traits(r.level).response_heading
-        << r.n_dofs
-        << " lateral DOFs; " << r.points.size() << " speeds from "
+    out << level_traits(r.level).response_heading << r.n_dofs << " lateral DOFs; " << r.points.size() << " speeds from "
         << m_s(r.points.front().web_speed_m_s) << " to " << m_s(r.points.back().web_speed_m_s) << " web speed ("
-        << rpm(r.points.front().speed_hz) << " to " << rpm(r.points.back().speed_hz) << ", Dp = "
-        << significant(r.roll_outer_diameter * kMm, 4) << " mm). Effects:";
+        << rpm(r.points.front().speed_hz) << " to " << rpm(r.points.back().speed_hz)
+        << ", Dp = " << significant(r.roll_outer_diameter * kMmPerM, 4) << " mm). Effects:";
     for (const std::string& e : r.effects) out << " " << e;
     out << ".\n\n" << inputs_lines(setup, r) << "\n";
     for (const std::string& n : r.notes) out << "- " << n << "\n";
     out << "\n## Safe web speed\n\n" << safe_speed_lines(r) << "\n";
-    out << "## Resonance peaks\n\nLargest amplitude at " << r.probes.front().name << ": " << mm(r.max_amplitude_m)
-        << " at " << m_s(r.max_amplitude_web_speed_m_s) << ". Peaks (refined between the sweep's speeds):\n\n"
+    out << "## Resonance peaks\n\nLargest amplitude at " << r.probes.front().name << ": "
+        << millimetres(r.max_amplitude_m) << " at " << m_s(r.max_amplitude_web_speed_m_s)
+        << ". Peaks (refined between the sweep's speeds):\n\n"
         << peak_table(r) << "\n";
     out << "## Amplitude against web speed\n\n";
     for (const std::string& png : pngs) out << "![" << png << "](" << png << ")\n\n";
@@ -271,11 +270,12 @@ std::string response_report_markdown(const Scene& scene, const ResponseSetup& se
 
 std::string response_console_summary(const Scene& scene, const ResponseResult& r) {
     std::ostringstream out;
-    out << "response: " << scene.name << ": " << r.points.size() << " speeds, " << r.peaks.size()
-        << " peaks, largest " << mm(r.max_amplitude_m) << " at " << m_s(r.max_amplitude_web_speed_m_s) << "\n";
+    out << "response: " << scene.name << ": " << r.points.size() << " speeds, " << r.peaks.size() << " peaks, largest "
+        << millimetres(r.max_amplitude_m) << " at " << m_s(r.max_amplitude_web_speed_m_s) << "\n";
     for (const ResponsePeak& p : r.peaks)
         out << "  peak order " << p.order << ": " << m_s(p.web_speed_m_s) << " (" << rpm(p.speed_hz) << ")  "
-            << mm(p.amplitude_m) << "  " << label_text(p.mode) << " " << significant(p.mode_frequency_hz, 5) << " Hz\n";
+            << millimetres(p.amplitude_m) << "  " << label_text(p.mode) << " " << significant(p.mode_frequency_hz, 5)
+            << " Hz\n";
     out << safe_speed_lines(r);
     out << "  checks: truncation " << significant(r.checks.truncation_max_relative, 2) << ", direct "
         << significant(r.checks.direct_max_relative, 2) << "\n";

@@ -12,9 +12,7 @@
 namespace coremodal {
 namespace {
 
-std::string mm(double metres) { return significant(metres * 1e3, 4) + " mm"; }
 std::string hz(double f) { return formatted("%.4f", f); }
-std::string speed(double v) { return significant(v) + " m/s (" + significant(v * 60) + " m/min)"; }
 
 // Effective masses below this share of the model mass are round-off of an
 // exact zero (symmetry) and print as 0, as in the console table.
@@ -30,7 +28,7 @@ std::string bearing_text(const BearingSpec& b) {
 }
 
 std::string chuck_text(const ChuckSpec& c) {
-    std::string s = c.name + ": inserted " + mm(c.inserted_length) + ", Li " + mm(c.li()) + ", " +
+    std::string s = c.name + ": inserted " + millimetres(c.inserted_length) + ", Li " + millimetres(c.li()) + ", " +
                     std::to_string(c.expanding.size()) + " expanding element(s), ";
     if (c.interface.kind == InterfaceKind::bonded)
         s += "bonded";
@@ -65,15 +63,15 @@ std::string supports_text(const Scene& s) {
 
 void scene_section(std::ostream& out, const Scene& s) {
     out << "## Scene\n\n| part | dimensions | material |\n|---|---|---|\n";
-    out << "| core | ID " << mm(s.core.inner_diameter) << " × wall "
-        << mm(0.5 * (s.core.outer_diameter - s.core.inner_diameter)) << " × length " << significant(s.core.length)
-        << " m (OD " << mm(s.core.outer_diameter) << ") | " << s.core.material.name << ", E_z "
-        << significant(s.core.material.E_z / 1e9) << " GPa, " << significant(s.core.material.density)
-        << " kg/m³ |\n";
+    out << "| core | ID " << millimetres(s.core.inner_diameter) << " × wall "
+        << millimetres(0.5 * (s.core.outer_diameter - s.core.inner_diameter)) << " × length "
+        << significant(s.core.length) << " m (OD " << millimetres(s.core.outer_diameter) << ") | "
+        << s.core.material.name << ", E_z " << significant(s.core.material.E_z / 1e9) << " GPa, "
+        << significant(s.core.material.density) << " kg/m³ |\n";
     out << "| rest paper | ";
     if (s.rest_paper)
-        out << "OD " << mm(s.rest_paper->outer_diameter) << " ("
-            << mm(0.5 * (s.rest_paper->outer_diameter - s.core.outer_diameter)) << " thick) | "
+        out << "OD " << millimetres(s.rest_paper->outer_diameter) << " ("
+            << millimetres(0.5 * (s.rest_paper->outer_diameter - s.core.outer_diameter)) << " thick) | "
             << s.rest_paper->material.name << ", E_z " << significant(s.rest_paper->material.E_z / 1e9) << " GPa, "
             << significant(s.rest_paper->material.density) << " kg/m³ |\n";
     else
@@ -121,8 +119,8 @@ void model_section(std::ostream& out, const RunReport& r) {
                                     : std::string();
     if (m.harmonics.empty())
         out << "- inertia count: " << v.negative_pivots_at_shift << " eigenvalues below "
-            << significant(std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)) << " Hz, " << found
-            << " modes found there" << counted << ": **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
+            << significant(eigenvalue_hz(v.check_shift)) << " Hz, " << found << " modes found there" << counted
+            << ": **" << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
     else
         out << "- " << level.inertia_counts << ": " << v.negative_pivots_at_shift << " eigenvalues, " << found << " modes found" << counted << ": **"
             << (v.complete ? "complete" : "INCOMPLETE") << "**\n\n";
@@ -175,7 +173,7 @@ void chuck_section(std::ostream& out, const ChuckFactor& k) {
     out << "## Chuck factor\n\nk = f1/f2 (I-6): f1 of this scene, f2 the free–free first bending frequency of the "
            "same roll cut to the free span L = Lc − Li,left − Li,right.\n\n";
     out << "| quantity | value |\n|---|---:|\n";
-    out << "| Li left / right | " << mm(k.li_left_m) << " / " << mm(k.li_right_m) << " |\n";
+    out << "| Li left / right | " << millimetres(k.li_left_m) << " / " << millimetres(k.li_right_m) << " |\n";
     out << "| free span L | " << significant(k.free_span_m) << " m |\n";
     out << "| f1 (FE, this scene) | " << (k.f1_hz > 0 ? hz(k.f1_hz) + " Hz" : std::string("none")) << " |\n";
     out << "| f2 (FE, free–free over L) | " << (k.f2_fe_hz > 0 ? hz(k.f2_fe_hz) + " Hz" : std::string("not computed"))
@@ -216,8 +214,10 @@ void summary_section(std::ostream& out, const RunReport& r) {
         out << "| chuck factor k = f1/f2 (FE) | " << formatted("%.4f", r.chuck->chuck_factor) << " |\n";
     if (speeds.given()) {
         for (const SafeSpeed& v : speeds.safe)
-            out << "| safe web speed, I-5 with safe = " << significant(v.safe) << " | " << speed(v.v_safe_m_s) << " |\n";
-        if (speeds.koenig) out << "| König's critical speed v_krit | " << speed(speeds.koenig->speed.v_krit_m_s) << " |\n";
+            out << "| safe web speed, I-5 with safe = " << significant(v.safe) << " | " << web_speed(v.v_safe_m_s)
+                << " |\n";
+        if (speeds.koenig)
+            out << "| König's critical speed v_krit | " << web_speed(speeds.koenig->speed.v_krit_m_s) << " |\n";
     } else {
         out << "| safe web speed | not given: " << speeds.not_given << " |\n";
     }
@@ -234,23 +234,24 @@ void speed_section(std::ostream& out, const RunReport& r) {
         out << "Not given: " << speeds.not_given << ".\n\n";
         return;
     }
-    out << "Safe web speed (I-5) v_safe = safe · π · Dp · f1, with f1 = " << hz(speeds.f1_hz) << " Hz (FE) and Dp = "
-        << mm(speeds.dp_m) << " ("
+    out << "Safe web speed (I-5) v_safe = safe · π · Dp · f1, with f1 = " << hz(speeds.f1_hz)
+        << " Hz (FE) and Dp = " << millimetres(speeds.dp_m) << " ("
         << (s.rest_paper ? "the rest paper's outer diameter" : "the core's outer diameter; no rest paper") << "):\n\n";
     out << "| safe | v_safe |\n|---:|---:|\n";
-    for (const SafeSpeed& v : speeds.safe) out << "| " << significant(v.safe) << " | " << speed(v.v_safe_m_s) << " |\n";
+    for (const SafeSpeed& v : speeds.safe)
+        out << "| " << significant(v.safe) << " | " << web_speed(v.v_safe_m_s) << " |\n";
     out << "\nIlomäki: safe 0.8 at most, 0.7 without a safety cage; it keeps the mid-span vibration within "
            "about ±5 mm.\n\n";
     if (!speeds.koenig) return;
     const KoenigSpeeds& k = *speeds.koenig;
-    out << "König's critical speed (" << (k.formula == "K-1" ? "K-1, rest paper up to 10 mm" : "K-2, rest paper over 10 mm")
-        << "; experience factor " << significant(k.experience) << ", l = " << significant(k.span.length_m) << " m "
-        << k.span.source << "): f_krit = " << significant(k.speed.f_krit_hz)
-        << " Hz, v_krit = " << speed(k.speed.v_krit_m_s) << ".";
+    out << "König's critical speed ("
+        << (k.formula == "K-1" ? "K-1, rest paper up to 10 mm" : "K-2, rest paper over 10 mm") << "; experience factor "
+        << significant(k.experience) << ", l = " << significant(k.span.length_m) << " m " << k.span.source
+        << "): f_krit = " << significant(k.speed.f_krit_hz) << " Hz, v_krit = " << web_speed(k.speed.v_krit_m_s) << ".";
     if (k.v_krit_large_core_m_s)
         out << " König recommends " << significant(kKoenigExperienceLargeCore)
             << " for the 150/176 core (0.66 was fitted to 76 mm cores): v_krit × 0.55/0.66 = "
-            << speed(*k.v_krit_large_core_m_s) << ".";
+            << web_speed(*k.v_krit_large_core_m_s) << ".";
     out << "\n\n";
 }
 

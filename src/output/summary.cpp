@@ -6,7 +6,6 @@
 
 #include "beam/iso_test.hpp"
 
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -318,8 +317,7 @@ void print_verification(std::ostream& out, const RunReport& r) {
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots below %.4g Hz "
                       "for %ld modes found%s: %s\n",
                       v.max_relative_residual, v.max_orthonormality_error, v.negative_pivots_at_shift,
-                      std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI), found, counted.c_str(),
-                      v.complete ? "complete" : "INCOMPLETE");
+                      eigenvalue_hz(v.check_shift), found, counted.c_str(), v.complete ? "complete" : "INCOMPLETE");
     else  // one count per harmonic, each at its own shift: summed (pairs twice)
         std::snprintf(line, sizeof line,
                       "\nverification: max residual %.1e, max |X'MX - I| %.1e, %ld negative pivots for %ld modes "

@@ -15,16 +15,8 @@
 namespace coremodal {
 namespace {
 
-// Ten significant digits: a reader gets back what was computed.
-std::string num(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-}
-std::string num(const std::optional<double>& v) { return v ? num(*v) : ""; }
-
 std::string um(double m) { return significant(m * 1e6, 4) + " µm"; }
-std::string speed(double v) { return std::isfinite(v) ? significant(v, 3) + " m/s" : "none (a massless web)"; }
+std::string speed_or_none(double v) { return std::isfinite(v) ? significant(v, 3) + " m/s" : "none (a massless web)"; }
 std::string deg(double rad) { return significant(rad * 180.0 / std::numbers::pi, 4) + "°"; }
 bool grooved(const TractionSpec& s) { return s.grooves.shape != GrooveShape::none; }
 
@@ -55,13 +47,23 @@ std::string csv_rows(const TractionSweep& s) {
     std::string out = row(header);
     for (size_t i = 0; i < s.points.size(); ++i) {
         const TractionPoint& p = s.points[i];
-        std::vector<std::string> fields = {num(p.web_speed),        num(p.tension),         num(p.air_pressure),
-                                           num(p.wrap_pressure),    num(p.contact_pressure), num(p.air_share),
-                                           num(p.p_star),           num(p.h_star),          num(p.traction),
-                                           num(p.capstan_traction), num(p.effective_friction), num(p.theta_star),
-                                           num(p.b_star),           p.contact ? "true" : "false",
+        std::vector<std::string> fields = {ten_digits(p.web_speed),
+                                           ten_digits(p.tension),
+                                           ten_digits(p.air_pressure),
+                                           ten_digits(p.wrap_pressure),
+                                           ten_digits(p.contact_pressure),
+                                           ten_digits(p.air_share),
+                                           ten_digits(p.p_star),
+                                           ten_digits(p.h_star),
+                                           ten_digits(p.traction),
+                                           ten_digits(p.capstan_traction),
+                                           ten_digits(p.effective_friction),
+                                           optional_number(p.theta_star),
+                                           optional_number(p.b_star),
+                                           p.contact ? "true" : "false",
                                            p.valid ? "true" : "false"};
-        if (s.plain) fields.insert(fields.end(), {num(s.plain->traction[i]), num(s.plain->effective_friction[i])});
+        if (s.plain)
+            fields.insert(fields.end(), {ten_digits(s.plain->traction[i]), ten_digits(s.plain->effective_friction[i])});
         fields.push_back(csv_field(join_lines(p.violations)));
         out += row(fields);
     }
@@ -201,21 +203,23 @@ void clearance_section(std::ostringstream& md, const TractionSpec& spec, const T
 
 void speeds_section(std::ostringstream& md, const TractionSpec& spec, const TractionSweep& s) {
     md << "## Speeds\n\n";
-    md << "- **zero-traction speed " << speed(s.zero_traction_speed)
+    md << "- **zero-traction speed " << speed_or_none(s.zero_traction_speed)
        << "**: the air carries the whole wrap pressure T/R (P* = 1, h* = 1); faster, the web floats on the roller "
           "and slips under any tension difference\n";
     if (s.slip_speed)
-        md << "- **slip speed " << speed(*s.slip_speed) << "** for a tension difference of "
+        md << "- **slip speed " << speed_or_none(*s.slip_speed) << "** for a tension difference of "
            << significant(*spec.tension_difference, 4) << " N/m"
-           << (*s.slip_speed > 0 ? "" : " (the roller cannot carry it even at rest: T_0 (1 - e^(-f θ)) = " +
-                                           significant(spec.tension * (1 - std::exp(-spec.friction * spec.wrap)), 4) +
-                                           " N/m)")
+           << (*s.slip_speed > 0
+                   ? ""
+                   : " (the roller cannot carry it even at rest: T_0 (1 - e^(-f θ)) = " +
+                         significant(spec.tension * (1 - std::exp(-spec.friction * spec.wrap)), 4) + " N/m)")
            << "\n";
-    md << "- centripetal limit " << speed(s.centripetal_limit_speed) << " (T_0 = c ρ V², the web no longer wraps)\n";
+    md << "- centripetal limit " << speed_or_none(s.centripetal_limit_speed)
+       << " (T_0 = c ρ V², the web no longer wraps)\n";
     if (s.plain) {
         md << "- the same roller without grooves (h_eff = α = " << um(s.plain->clearance) << "): ";
         if (const std::optional<double> gain = groove_speed_gain(s))
-            md << "zero traction at " << speed(s.plain->zero_traction_speed) << "; **the grooves raise it "
+            md << "zero traction at " << speed_or_none(s.plain->zero_traction_speed) << "; **the grooves raise it "
                << significant(*gain, 3) << "×**\n";
         else
             md << "no clearance for the air at all: no traction at any speed above 0; the grooves give all of it\n";
@@ -336,10 +340,11 @@ std::string traction_check_text(const TractionCase& tc) {
     toml_lines(out, roller_json(spec), "");
     const EffectiveClearance h = effective_clearance(spec);
     out << "effective clearance h_eff " << um(h.clearance) << " (asperities " << um(h.asperity_height) << ")"
-        << "; zero-traction speed " << speed(zero_traction_speed(spec));
-    if (spec.tension_difference) out << "; slip speed " << speed(slip_speed(spec, *spec.tension_difference));
-    out << "\n" << spec.web_speeds.size() << " web speeds from " << speed(spec.web_speeds.front()) << " to "
-        << speed(spec.web_speeds.back()) << "\ndefaults used (not in the file):\n";
+        << "; zero-traction speed " << speed_or_none(zero_traction_speed(spec));
+    if (spec.tension_difference) out << "; slip speed " << speed_or_none(slip_speed(spec, *spec.tension_difference));
+    out << "\n"
+        << spec.web_speeds.size() << " web speeds from " << speed_or_none(spec.web_speeds.front()) << " to "
+        << speed_or_none(spec.web_speeds.back()) << "\ndefaults used (not in the file):\n";
     for (const std::string& a : tc.assumptions) out << "  " << a << "\n";
     if (tc.assumptions.empty()) out << "  none\n";
     return out.str();
@@ -352,18 +357,19 @@ std::string traction_console_summary(const TractionCase& tc, const TractionSweep
         << " roller R " << significant(spec.roller_radius * 1e3, 4)
         << " mm, wrap " << deg(spec.wrap) << ", T_0 " << significant(spec.tension, 4) << " N/m, f "
         << significant(spec.friction, 3) << "; h_eff " << um(s.clearance.clearance) << "\n";
-    out << "  zero-traction speed " << speed(s.zero_traction_speed);
+    out << "  zero-traction speed " << speed_or_none(s.zero_traction_speed);
     if (s.slip_speed)
-        out << "; slips under " << significant(*spec.tension_difference, 4) << " N/m at " << speed(*s.slip_speed);
+        out << "; slips under " << significant(*spec.tension_difference, 4) << " N/m at "
+            << speed_or_none(*s.slip_speed);
     if (const std::optional<double> gain = groove_speed_gain(s))
         out << "; the grooves raise it " << significant(*gain, 3) << "x over the plain roller ("
-            << speed(s.plain->zero_traction_speed) << ")";
+            << speed_or_none(s.plain->zero_traction_speed) << ")";
     out << "\n";
     const TractionPoint& first = s.points.front();
     const TractionPoint& last = s.points.back();
-    out << "  f_e " << significant(first.effective_friction, 3) << " at " << speed(first.web_speed) << " to "
-        << significant(last.effective_friction, 3) << " at " << speed(last.web_speed) << "; " << s.n_invalid << " of "
-        << s.points.size() << " points outside the paper's validity limits\n";
+    out << "  f_e " << significant(first.effective_friction, 3) << " at " << speed_or_none(first.web_speed) << " to "
+        << significant(last.effective_friction, 3) << " at " << speed_or_none(last.web_speed) << "; " << s.n_invalid
+        << " of " << s.points.size() << " points outside the paper's validity limits\n";
     return out.str();
 }
 

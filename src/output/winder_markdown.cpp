@@ -14,7 +14,6 @@ namespace {
 // the last and evenly spread ones between (the CSV and JSON hold them all).
 constexpr int kTableRows = 7;
 
-std::string mm(double m) { return significant(m * 1e3, 4) + " mm"; }
 std::string hz(double f) { return formatted("%.3f", f); }
 
 std::vector<size_t> table_rows(size_t n) {
@@ -31,16 +30,19 @@ void scene_section(std::ostringstream& md, const WinderScene& s, const WinderSwe
     const WinderDrums& d = s.drums;
     const WinderRolls& rl = s.rolls;
     md << "## The scene\n\n| part | values |\n|---|---|\n";
-    md << "| drums (front, rear) | " << mm(d.outer_diameter) << " x " << mm(d.wall) << " wall, " << significant(d.length)
-       << " m bearing to bearing, " << d.material << ", bearings " << format_quantity(d.bearing_stiffness_vertical, Dimension::stiffness)
-       << " vertical / " << format_quantity(d.bearing_stiffness_horizontal, Dimension::stiffness) << " horizontal, gap "
-       << mm(d.gap) << " |\n";
+    md << "| drums (front, rear) | " << millimetres(d.outer_diameter) << " x " << millimetres(d.wall) << " wall, "
+       << significant(d.length) << " m bearing to bearing, " << d.material << ", bearings "
+       << format_quantity(d.bearing_stiffness_vertical, Dimension::stiffness) << " vertical / "
+       << format_quantity(d.bearing_stiffness_horizontal, Dimension::stiffness) << " horizontal, gap "
+       << millimetres(d.gap) << " |\n";
     md << "| rolls | " << rl.count << " x " << significant(rl.width) << " m (" << roll_model_name(rl.model)
-       << "), core " << mm(rl.core_inner_diameter) << " / " << mm(rl.core_outer_diameter) << ", paper "
-       << significant(rl.paper_density) << " kg/m^3, radial modulus " << format_quantity(rl.radial_modulus, Dimension::pressure)
-       << ", nu " << significant(rl.poisson) << ", d from " << mm(rl.diameter_start) << " to " << mm(rl.diameter_end) << " |\n";
-    md << "| rider | " << mm(s.rider.outer_diameter) << " x " << mm(s.rider.wall) << ", " << significant(s.rider.length)
-       << " m, supports " << format_quantity(s.rider.support_stiffness, Dimension::stiffness) << ", line load "
+       << "), core " << millimetres(rl.core_inner_diameter) << " / " << millimetres(rl.core_outer_diameter)
+       << ", paper " << significant(rl.paper_density) << " kg/m^3, radial modulus "
+       << format_quantity(rl.radial_modulus, Dimension::pressure) << ", nu " << significant(rl.poisson) << ", d from "
+       << millimetres(rl.diameter_start) << " to " << millimetres(rl.diameter_end) << " |\n";
+    md << "| rider | " << millimetres(s.rider.outer_diameter) << " x " << millimetres(s.rider.wall) << ", "
+       << significant(s.rider.length) << " m, supports "
+       << format_quantity(s.rider.support_stiffness, Dimension::stiffness) << ", line load "
        << significant(s.rider.line_load) << " N/m |\n";
     md << "| web speed | " << significant(s.web_speed, 5) << " m/s (" << significant(s.web_speed * 60, 5) << " m/min) |\n";
     md << "| damping ratios | drums " << s.damping.drums << ", nips " << s.damping.nips << ", rider " << s.damping.rider
@@ -63,9 +65,9 @@ void nip_section(std::ostringstream& md, const WinderSweepResult& r) {
     for (size_t i : table_rows(r.points.size())) {
         const SweepPoint& p = r.points[i];
         const WinderState& st = p.state;
-        md << "| " << mm(p.roll_diameter) << " | " << formatted("%.1f", st.geometry.nip_angle * 180 / M_PI) << " deg | "
-           << significant(st.roll_mass_per_width) << " kg/m | " << significant(st.drum_line_load) << " N/m | "
-           << mm(st.drum_nip.half_width) << " | " << mm(st.drum_nip.deflection) << " | "
+        md << "| " << millimetres(p.roll_diameter) << " | " << formatted("%.1f", st.geometry.nip_angle * 180 / M_PI)
+           << " deg | " << significant(st.roll_mass_per_width) << " kg/m | " << significant(st.drum_line_load)
+           << " N/m | " << millimetres(st.drum_nip.half_width) << " | " << millimetres(st.drum_nip.deflection) << " | "
            << significant(st.drum_nip.stiffness_per_length / 1e6) << " MN/m^2 | " << significant(st.rider_line_load)
            << " N/m | " << significant(st.rider_nip.stiffness_per_length / 1e6) << " MN/m^2 |\n";
     }
@@ -85,7 +87,7 @@ void estimate_section(std::ostringstream& md, const WinderSweepResult& r) {
     for (size_t i : table_rows(r.points.size())) {
         const DrumFrequencyEstimate& e = r.points[i].estimate;
         isotropic = isotropic && e.isotropic;
-        md << "| " << mm(r.points[i].roll_diameter) << " | " << hz(e.drum_alone_hz);
+        md << "| " << millimetres(r.points[i].roll_diameter) << " | " << hz(e.drum_alone_hz);
         for (const auto& f : e.family) md << " | " << hz(f.drum_hz) << " | " << hz(f.model_hz);
         md << " | " << hz(e.family[0].heavy_roll_hz) << " |\n";
     }
@@ -101,14 +103,14 @@ void crossing_section(std::ostringstream& md, const WinderScene& s, const Winder
        << " drum's centre, " << direction_name(s.sweep.response_direction)
        << ", at the mode's frequency at the crossing diameter (modal superposition, modal damping).\n\n";
     if (r.crossings.empty()) {
-        md << "No harmonic crosses a drum-dominated mode between " << mm(s.rolls.diameter_start) << " and "
-           << mm(s.rolls.diameter_end) << " (below " << significant(s.sweep.max_frequency) << " Hz).\n\n";
+        md << "No harmonic crosses a drum-dominated mode between " << millimetres(s.rolls.diameter_start) << " and "
+           << millimetres(s.rolls.diameter_end) << " (below " << significant(s.sweep.max_frequency) << " Hz).\n\n";
         return;
     }
     md << "| d | harmonic | f | track | mode f at d | type | zeta | X/F |\n|---|---|---|---|---|---|---|---|\n";
     for (const Crossing& c : r.crossings)
-        md << "| " << mm(c.roll_diameter) << " | " << c.harmonic << " | " << hz(c.frequency_hz) << " Hz | " << c.track
-           << " | " << hz(c.mode_frequency_hz) << " Hz | " << body_kind_name(c.type) << " | "
+        md << "| " << millimetres(c.roll_diameter) << " | " << c.harmonic << " | " << hz(c.frequency_hz) << " Hz | "
+           << c.track << " | " << hz(c.mode_frequency_hz) << " Hz | " << body_kind_name(c.type) << " | "
            << formatted("%.4f", c.damping_ratio) << " | " << significant(c.resonance_response, 3) << " m/N |\n";
     md << "\n";
 }
@@ -152,14 +154,15 @@ std::string winder_report_markdown(const WinderScene& s, const WinderSweepResult
 
 std::string winder_console_summary(const WinderScene& s, const WinderSweepResult& r) {
     std::ostringstream out;
-    out << "winder: " << r.points.size() << " roll diameters from " << mm(s.rolls.diameter_start) << " to "
-        << mm(s.rolls.diameter_end) << ", " << r.n_dofs << " DOFs, " << significant(r.time_s, 3) << " s\n";
+    out << "winder: " << r.points.size() << " roll diameters from " << millimetres(s.rolls.diameter_start) << " to "
+        << millimetres(s.rolls.diameter_end) << ", " << r.n_dofs << " DOFs, " << significant(r.time_s, 3) << " s\n";
     const DrumFrequencyEstimate& first = r.points.front().estimate;
     out << "  drum alone: " << hz(first.drum_alone_hz) << " Hz\n";
     for (const Crossing& c : r.crossings)
-        out << "  harmonic " << c.harmonic << " crosses a " << body_kind_name(c.type) << " mode at d = "
-            << mm(c.roll_diameter) << ", " << hz(c.mode_frequency_hz) << " Hz: X/F = "
-            << significant(c.resonance_response, 3) << " m/N (zeta " << formatted("%.4f", c.damping_ratio) << ")\n";
+        out << "  harmonic " << c.harmonic << " crosses a " << body_kind_name(c.type)
+            << " mode at d = " << millimetres(c.roll_diameter) << ", " << hz(c.mode_frequency_hz)
+            << " Hz: X/F = " << significant(c.resonance_response, 3) << " m/N (zeta "
+            << formatted("%.4f", c.damping_ratio) << ")\n";
     if (r.crossings.empty()) out << "  no harmonic crosses a drum-dominated mode\n";
     return out.str();
 }

@@ -1,5 +1,7 @@
 // winder.csv, crossings.csv, response.csv and summary.json of `coremodal winder`.
 #include "output/summary_json.hpp"
+
+#include "common/format.hpp"
 #include "output/text_file.hpp"
 #include "output/winder_report.hpp"
 
@@ -12,13 +14,6 @@
 
 namespace coremodal {
 namespace {
-
-// Ten significant digits: a reader gets back what was computed.
-std::string num(double v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-}
 
 // One CSV line (the fields are numbers and fixed words: nothing to quote).
 std::string row(std::initializer_list<std::string> fields) {
@@ -40,9 +35,10 @@ std::string mode_rows(const WinderSweepResult& r) {
     for (const SweepPoint& p : r.points)
         for (const SweepMode& m : p.modes) {
             const auto& share = m.kinetic_share;
-            out += row({num(p.roll_diameter), std::to_string(m.index), num(m.frequency_hz), body_kind_name(m.type),
-                        std::to_string(m.track), num(share[0]), num(share[1]), num(share[2]), num(m.damping_ratio),
-                        m.mac_previous ? num(*m.mac_previous) : "", m.ambiguous ? "true" : "false"});
+            out += row({ten_digits(p.roll_diameter), std::to_string(m.index), ten_digits(m.frequency_hz),
+                        body_kind_name(m.type), std::to_string(m.track), ten_digits(share[0]), ten_digits(share[1]),
+                        ten_digits(share[2]), ten_digits(m.damping_ratio),
+                        m.mac_previous ? ten_digits(*m.mac_previous) : "", m.ambiguous ? "true" : "false"});
         }
     return out;
 }
@@ -51,8 +47,9 @@ std::string crossing_rows(const WinderSweepResult& r) {
     std::string out =
         "roll_diameter_m,harmonic,harmonic_frequency_hz,track,mode_frequency_hz,type,damping_ratio,x_over_f_m_per_n\n";
     for (const Crossing& c : r.crossings)
-        out += row({num(c.roll_diameter), std::to_string(c.harmonic), num(c.frequency_hz), std::to_string(c.track),
-                    num(c.mode_frequency_hz), body_kind_name(c.type), num(c.damping_ratio), num(c.resonance_response)});
+        out += row({ten_digits(c.roll_diameter), std::to_string(c.harmonic), ten_digits(c.frequency_hz),
+                    std::to_string(c.track), ten_digits(c.mode_frequency_hz), body_kind_name(c.type),
+                    ten_digits(c.damping_ratio), ten_digits(c.resonance_response)});
     return out;
 }
 
@@ -61,8 +58,9 @@ std::string response_rows(const WinderScene& s, const WinderSweepResult& r) {
     for (const SweepPoint& p : r.points)
         for (size_t k = 0; k < p.harmonic_response.size(); ++k) {
             const int h = static_cast<int>(k) + 1;
-            out += row({num(p.roll_diameter), std::to_string(h), num(roll_harmonic_hz(h, s.web_speed, p.roll_diameter)),
-                        num(p.harmonic_response[k])});
+            out += row({ten_digits(p.roll_diameter), std::to_string(h),
+                        ten_digits(roll_harmonic_hz(h, s.web_speed, p.roll_diameter)),
+                        ten_digits(p.harmonic_response[k])});
         }
     return out;
 }
@@ -114,17 +112,17 @@ Json point_json(const SweepPoint& p) {
     }
     const Verification& v = p.verification;
     return Json{{"roll_diameter_m", p.roll_diameter},
-                       {"nip_angle_deg", p.state.geometry.nip_angle * 180 / M_PI},
-                       {"roll_mass_per_width_kg_m", p.state.roll_mass_per_width},
-                       {"drum_nip", nip_json(p.state.drum_nip, p.state.drum_line_load)},
-                       {"rider_nip", nip_json(p.state.rider_nip, p.state.rider_line_load)},
-                       {"modes", static_cast<int64_t>(p.modes.size())},
-                       {"estimate", estimate},
-                       {"verification", Json{{"max_relative_residual", v.max_relative_residual},
-                                                    {"max_orthonormality_error", v.max_orthonormality_error},
-                                                    {"check_shift_hz", std::sqrt(std::max(v.check_shift, 0.0)) / (2 * M_PI)},
-                                                    {"negative_pivots", v.negative_pivots_at_shift},
-                                                    {"complete", v.complete}}}};
+                {"nip_angle_deg", p.state.geometry.nip_angle * 180 / M_PI},
+                {"roll_mass_per_width_kg_m", p.state.roll_mass_per_width},
+                {"drum_nip", nip_json(p.state.drum_nip, p.state.drum_line_load)},
+                {"rider_nip", nip_json(p.state.rider_nip, p.state.rider_line_load)},
+                {"modes", static_cast<int64_t>(p.modes.size())},
+                {"estimate", estimate},
+                {"verification", Json{{"max_relative_residual", v.max_relative_residual},
+                                      {"max_orthonormality_error", v.max_orthonormality_error},
+                                      {"check_shift_hz", eigenvalue_hz(v.check_shift)},
+                                      {"negative_pivots", v.negative_pivots_at_shift},
+                                      {"complete", v.complete}}}};
 }
 
 // The resolved scene (a TOML table: winder_scene_description prints it as

@@ -14,7 +14,6 @@ namespace coremodal::case_reading {
 namespace {
 
 // Rest-roll diameters in the unit people give them in.
-std::string mm(double m) { return significant(m * 1e3, 5) + " mm"; }
 
 }  // namespace
 
@@ -47,12 +46,12 @@ void CaseReader::read_limits_diameters(const Section& limits, const Scene& scene
     // The diameters are compared at the precision they are printed with.
     constexpr double kSlack = 1e-9;
     if (largest > roll + kSlack)
-        fail(*array.get(0), what + ": " + mm(largest) + " is beyond the case's roll; " +
-                                "expected at most the rest paper's outer diameter " + mm(roll) +
+        fail(*array.get(0), what + ": " + millimetres(largest, 5) + " is beyond the case's roll; " +
+                                "expected at most the rest paper's outer diameter " + millimetres(roll, 5) +
                                 " (raise [rest_paper] thickness instead)");
     if (smallest < core - kSlack)
-        fail(*array.get(1), what + ": " + mm(smallest) + " is below the core; " +
-                                "expected at least the core's outer diameter " + mm(core));
+        fail(*array.get(1), what + ": " + millimetres(smallest, 5) + " is below the core; " +
+                                "expected at least the core's outer diameter " + millimetres(core, 5));
     if (!(largest > smallest))
         fail(node, what +
                        ": expected [largest, smallest] with the largest first "

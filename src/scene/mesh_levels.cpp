@@ -23,7 +23,7 @@ int elements_around(const MeshLevel& level, double inner_diameter, double outer_
     const double wanted = level.around_per_slenderness * 2 * std::numbers::pi * std::sqrt(mean_radius / wall);
     // Written so that NaN (a wall the case reader refuses) keeps the level's count.
     if (!(wall > 0) || !(wanted > level.n_around)) return level.n_around;
-    return 4 * static_cast<int>(std::ceil(std::min<double>(wanted, kMaxElementsAround) / 4));
+    return 4 * static_cast<int>(std::ceil(std::min<double>(wanted, kMaxLevelElementsAround) / 4));
 }
 
 std::optional<int> elements_along(double length, double outer_diameter, int n_around,

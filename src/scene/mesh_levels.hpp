@@ -54,7 +54,7 @@ inline constexpr int kMinElementsAlong = 8;
 // 0.1 mm on a 152 mm bore asks for 260 at `default`); beyond, the run's
 // mesh check says how far its modes are off (models/solid/mesh_resolution.hpp).
 // The mode classifier resolves angles down to 2 pi / 1024 (modes/classify.cpp).
-inline constexpr int kMaxElementsAround = 512;
+inline constexpr int kMaxLevelElementsAround = 512;
 // More elements along than this is a mistake in the input (a core length in mm
 // given as metres), not a mesh anyone wants to solve.
 inline constexpr int kMaxElementsAlong = 100000;

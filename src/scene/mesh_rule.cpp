@@ -120,8 +120,6 @@ double slenderest(const Scene& s) {
     return out;
 }
 
-std::string percent(double e) { return significant(100 * e, 2) + " %"; }
-
 }  // namespace
 
 double level_target_error(const MeshLevel& level) {
@@ -143,7 +141,7 @@ BandWaves band_waves(const Scene& scene) {
     const double top = out.top_hz * (1 + 1e-9);
     // Frequencies that are not finite (a wall the reader refuses) end the walks at once.
     // Not monotonic in n with held ends: every n a mesh can carry is tried.
-    for (int n = 2; n <= kMaxElementsAround / 2; ++n)
+    for (int n = 2; n <= kMaxLevelElementsAround / 2; ++n)
         if (const double f = ring_hz(scene, n); f <= top) {
             out.n_max = n;
             out.n_max_hz = f;
@@ -173,7 +171,7 @@ MeshRule mesh_rule(const Scene& scene, double target) {
                          std::pow(rule.band.n_max, kAroundWavePower) / target,
                      1 / kAroundOrder);
         // Written so that NaN keeps the smallest count.
-        rule.around = needed > 4 ? multiple_of_4(std::min<double>(needed, kMaxElementsAround)) : 4;
+        rule.around = needed > 4 ? multiple_of_4(std::min<double>(needed, kMaxLevelElementsAround)) : 4;
     }
     const double along = std::ceil(rule.band.half_waves * std::pow(kAlongFit / target, 1 / kAlongOrder));
     rule.along =
@@ -196,7 +194,7 @@ std::optional<std::string> mesh_rule_text(const Scene& scene) {
     text += b.n_max >= 2
                 ? "highest n = " + std::to_string(b.n_max) + " (thin ring/shell " + significant(b.n_max_hz, 4) + " Hz)"
                 : std::string("no ring mode (n >= 2)");
-    text += ", " + significant(b.half_waves, 2) + " axial half-waves; for " + percent(target) + " (" +
+    text += ", " + significant(b.half_waves, 2) + " axial half-waves; for " + percent(target, 2) + " (" +
             (level ? "level " + scene.mesh.level : std::string("the default level's target")) + ") it asks for ";
     if (rule.around > 0)
         text += std::to_string(rule.around) + " around (R/t " + significant(rule.slenderness, 3) + "), ";
@@ -204,9 +202,9 @@ std::optional<std::string> mesh_rule_text(const Scene& scene) {
             std::to_string(scene.mesh.n_wall) + "/" + std::to_string(scene.mesh.n_around) + "/" +
             std::to_string(scene.mesh.n_along) + " through/around/along) expects ";
     if (b.n_max >= 2)
-        text += percent(expected_around_error(rule.slenderness, b.n_max, scene.mesh.n_around)) +
+        text += percent(expected_around_error(rule.slenderness, b.n_max, scene.mesh.n_around), 2) +
                 " around (the solid level; the harmonic level is exact around) and ";
-    text += percent(expected_along_error(b.half_waves, scene.mesh.n_along)) + " along";
+    text += percent(expected_along_error(b.half_waves, scene.mesh.n_along), 2) + " along";
     return text;
 }
 
@@ -218,13 +216,13 @@ std::optional<std::string> explicit_mesh_warning(const Scene& scene, bool around
     if (around_matters && b.n_max >= 2) {
         const double e = expected_around_error(rule.slenderness, b.n_max, scene.mesh.n_around);
         if (e > kExplicitMeshWarnError)
-            coarse.push_back("around = " + std::to_string(scene.mesh.n_around) + " expects " + percent(e) +
+            coarse.push_back("around = " + std::to_string(scene.mesh.n_around) + " expects " + percent(e, 2) +
                              " on the band's n = " + std::to_string(b.n_max) + " modes (" +
                              std::to_string(rule.around) + " for 1 %)");
     }
     const double e = expected_along_error(b.half_waves, scene.mesh.n_along);
     if (e > kExplicitMeshWarnError)
-        coarse.push_back("along = " + std::to_string(scene.mesh.n_along) + " expects " + percent(e) + " on its " +
+        coarse.push_back("along = " + std::to_string(scene.mesh.n_along) + " expects " + percent(e, 2) + " on its " +
                          significant(b.half_waves, 2) + " axial half-waves (" + std::to_string(rule.along) +
                          " for 1 %)");
     if (coarse.empty()) return std::nullopt;

@@ -59,7 +59,7 @@ struct MeshRule {
     double target = 0;
     BandWaves band;
     double slenderness = 0;  // R / t of the slenderest layer (core or rest paper)
-    int around = 0;          // elements around (a multiple of 4, at most kMaxElementsAround; 0: no ring mode)
+    int around = 0;          // elements around (a multiple of 4, at most kMaxLevelElementsAround; 0: no ring mode)
     int along = 0;           // elements along the core (at least kMinElementsAlong)
 };
 MeshRule mesh_rule(const Scene& scene, double target);

@@ -316,12 +316,12 @@ double parse_quantity(std::string_view text, Dimension expected) {
     return value * u->to_si / u->divide_by;
 }
 
-std::string format_quantity(double si_value, Dimension d) {
+std::string format_quantity(double value, Dimension d) {
     struct Prefix {
         double factor;
         const char* unit;
     };
-    double shown = si_value;
+    double shown = value;
     std::string unit = si_unit(d);
     if (d == Dimension::pressure || d == Dimension::stiffness_per_area) {
         const bool pressure = d == Dimension::pressure;
@@ -329,8 +329,8 @@ std::string format_quantity(double si_value, Dimension d) {
                                                 Prefix{1e6, pressure ? "MPa" : "MN/m^3"},
                                                 Prefix{1e3, pressure ? "kPa" : "kN/m^3"}};
         for (const Prefix& p : prefixes) {
-            if (std::abs(si_value) >= p.factor) {
-                shown = si_value / p.factor;
+            if (std::abs(value) >= p.factor) {
+                shown = value / p.factor;
                 unit = p.unit;
                 break;
             }

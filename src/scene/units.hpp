@@ -27,7 +27,7 @@ double parse_quantity(std::string_view text, Dimension expected);
 // Formats an SI value for messages and summaries: pressures and stiffnesses
 // with a readable prefix ("6.5 GPa", "130 MPa"), everything else in its SI
 // unit ("0.106 m", "920 kg/m^3"); dimensionless values as plain numbers.
-std::string format_quantity(double si_value, Dimension d);
+std::string format_quantity(double value, Dimension d);
 
 // The units parse_quantity accepts for `d`, e.g. "m, mm, cm, in" (the common ones).
 std::string accepted_units(Dimension d);

@@ -4,6 +4,8 @@
 #include "common/format.hpp"
 #include "common/join.hpp"
 #include "scene/case_json_schema.hpp"
+#include "scene/case_key_ranges.hpp"
+#include "scene/case_reader.hpp"  // case_reading::show
 #include "scene/case_schema.hpp"  // did_you_mean_or_choices
 #include "scene/toml_text.hpp"
 #include "scene/units.hpp"
@@ -22,9 +24,7 @@ namespace coremodal {
 namespace {
 
 // Hard limits that catch unit slips (a plain 76 is 76 m, not 76 mm), not physics.
-constexpr double kMaxDiameter = 5.0;  // m
 constexpr double kMaxWidth = 20.0;    // m
-constexpr double kMaxSpeed = 100.0;   // m/s
 constexpr double kMaxChuck = 2.0;     // m: a chuck's supporting length (rotogravure's longest: 340 mm)
 
 const std::vector<std::string_view> kTopKeys = {"name", "description", "selection"};
@@ -41,14 +41,6 @@ const std::vector<std::string_view> kStandKeys = {"name",         "chuck_length"
                                                   "rest_roll_diameter", "roll_diameter", "cores",
                                                   "amplitude_limit"};
 const std::vector<std::string_view> kReelKeys = {"stand", "width", "diameter", "web_speed"};
-
-std::string shown(const toml::node& n) {
-    std::ostringstream out;
-    if (n.is_string()) out << '"' << *n.value<std::string_view>() << '"';
-    else if (n.is_table()) out << "{...}";
-    else n.visit([&](const auto& v) { out << v; });
-    return out.str();
-}
 
 class SelectionReader {
 public:
@@ -133,7 +125,7 @@ private:
         const toml::node* n = t.get(key);
         if (!n) return std::nullopt;
         if (!n->is_string())
-            fail(n->source(), label(table, key) + " = " + shown(*n) + ": expected a string in quotes");
+            fail(n->source(), label(table, key) + " = " + case_reading::show(*n) + ": expected a string in quotes");
         return std::string(*n->value<std::string_view>());
     }
 
@@ -146,7 +138,7 @@ private:
                                    double min, double max) const {
         const toml::node* n = t.get(key);
         if (!n) return std::nullopt;
-        const std::string what = label(table, key) + " = " + shown(*n) + ": ";
+        const std::string what = label(table, key) + " = " + case_reading::show(*n) + ": ";
         double v = 0;
         if (n->is_number()) {
             v = *n->value<double>();
@@ -189,8 +181,8 @@ private:
         g.name = text(c, t, "name").value_or("");
         if (g.name.empty()) fail(c.source(), "[[selection.core]] has no name; expected name = \"A\"");
         const std::string at = "selection.core " + g.name;
-        g.inner_diameter = required(c, at, "inner_diameter", Dimension::length, 0, kMaxDiameter);
-        g.outer_diameter = required(c, at, "outer_diameter", Dimension::length, 0, kMaxDiameter);
+        g.inner_diameter = required(c, at, "inner_diameter", Dimension::length, 0, key_ranges::kMaxDiameter);
+        g.outer_diameter = required(c, at, "outer_diameter", Dimension::length, 0, key_ranges::kMaxDiameter);
         if (g.outer_diameter <= g.inner_diameter)
             fail(c.get("outer_diameter")->source(), "[" + at + "] outer_diameter = " + mm(g.outer_diameter) +
                                                         " must be larger than inner_diameter = " + mm(g.inner_diameter));
@@ -231,7 +223,7 @@ private:
     }
 
     double weight(const toml::node& n, const std::string& at) const {
-        const std::string what = "[" + at + "] b0 = " + shown(n) + ": ";
+        const std::string what = "[" + at + "] b0 = " + case_reading::show(n) + ": ";
         if (!n.is_string()) fail(n.source(), what + "expected a weight with its unit, e.g. \"28 kN\" (N, kN, kg, t)");
         const std::string s(*n.value<std::string_view>());
         const auto space = s.find(' ');
@@ -259,7 +251,7 @@ private:
         if (const auto li = quantity(st, at, "li", Dimension::length, 0, kMaxChuck)) s.li = *li;
         else defaults_.push_back("[" + at + "] li = " + mm(s.li) + " (assumed: the middle of the chuck)");
         s.chuck_factor = required(st, at, "chuck_factor", Dimension::dimensionless, 0, 1);
-        take(st, at, "web_speed", Dimension::speed, 0, kMaxSpeed, s.web_speed, "Figs. 18-19: 15 m/s");
+        take(st, at, "web_speed", Dimension::speed, 0, key_ranges::kMaxWebSpeed, s.web_speed, "Figs. 18-19: 15 m/s");
         take(st, at, "safe_factor", Dimension::dimensionless, 0, 1, s.safe_factor,
              "I-5: 0.7 without a safety cage, keeps about +-5 mm");
         take(st, at, "amplitude_limit", Dimension::length, 0, 0.1, s.amplitude_limit,
@@ -276,12 +268,12 @@ private:
                  "a centre winder: maximum roll weight decreased 20 %");
         take(st, at, "chuck_length_exponent", Dimension::dimensionless, -1e-12, 2, s.chuck_length_exponent,
              "doubling the supporting length can double the roll mass");
-        s.rest_roll_diameter = required(st, at, "rest_roll_diameter", Dimension::length, 0, kMaxDiameter);
-        s.roll_diameter = required(st, at, "roll_diameter", Dimension::length, 0, kMaxDiameter);
+        s.rest_roll_diameter = required(st, at, "rest_roll_diameter", Dimension::length, 0, key_ranges::kMaxDiameter);
+        s.roll_diameter = required(st, at, "roll_diameter", Dimension::length, 0, key_ranges::kMaxDiameter);
         if (const toml::node* n = st.get("cores")) {
             const toml::array* a = n->as_array();
             if (!a || a->empty() || !a->is_homogeneous(toml::node_type::string))
-                fail(n->source(), "[" + at + "] cores = " + shown(*n) +
+                fail(n->source(), "[" + at + "] cores = " + case_reading::show(*n) +
                                       ": expected the names of the grades its chucks take, e.g. [\"A\", \"B\"]");
             for (const toml::node& e : *a) s.cores.emplace_back(*e.value<std::string_view>());
         }
@@ -299,8 +291,8 @@ private:
                  "[[selection.reel]] stand = \"" + reel.stand + "\": expected the name of a [[selection.stand]]: " +
                      join(names));
         reel.width = required(r, "selection.reel", "width", Dimension::length, 0, kMaxWidth);
-        reel.diameter = required(r, "selection.reel", "diameter", Dimension::length, 0, kMaxDiameter);
-        reel.web_speed = quantity(r, "selection.reel", "web_speed", Dimension::speed, 0, kMaxSpeed);
+        reel.diameter = required(r, "selection.reel", "diameter", Dimension::length, 0, key_ranges::kMaxDiameter);
+        reel.web_speed = quantity(r, "selection.reel", "web_speed", Dimension::speed, 0, key_ranges::kMaxWebSpeed);
         const Stand& st = *std::find_if(s.stands.begin(), s.stands.end(),
                                         [&](const Stand& x) { return x.name == reel.stand; });
         for (const CoreGrade& c : s.cores)
@@ -332,10 +324,10 @@ std::map<std::string_view, SchemaJson> selection_key_types() {
         return out;
     };
     const Json text{{"type", "string"}};
-    const Json length = quantity(Dimension::length, 0, kMaxDiameter);
+    const Json length = quantity(Dimension::length, 0, key_ranges::kMaxDiameter);
     const Json modulus = quantity(Dimension::pressure, 0, 1e11);
     const Json density = quantity(Dimension::density, 0, 3000);
-    const Json speed = quantity(Dimension::speed, 0, kMaxSpeed);
+    const Json speed = quantity(Dimension::speed, 0, key_ranges::kMaxWebSpeed);
     const Json share = quantity(Dimension::dimensionless, 0, 1);
     const Json weight{{"type", "string"},
                       {"pattern", R"(^[+]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)? (N|kN|kg|t)$)"},

@@ -9,8 +9,6 @@
 namespace coremodal {
 namespace {
 
-double to_hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
-
 // The reduced DOFs of one body on one network DOF kind (beam_dof::...).
 std::vector<int> body_dofs(const WinderModel& m, int body, int kind) {
     std::vector<int> out;
@@ -93,7 +91,7 @@ TwoModeRoots two_mode_roots(double lambda_d, double K_n, double roll) {
 DrumFrequencyEstimate estimate_drum_frequency(const WinderModel& m, const WinderModes& modes) {
     DrumFrequencyEstimate e;
     const DrumMode drum = front_drum_mode(m);
-    e.drum_alone_hz = to_hz(drum.lambda);
+    e.drum_alone_hz = eigenvalue_hz(drum.lambda);
     const auto bearings = m.network.springs.front().stiffness;
     e.isotropic = bearings(beam_dof::ux, beam_dof::ux) == bearings(beam_dof::uy, beam_dof::uy);
     const auto front = nip_direction(m.state.geometry, DrumSide::front);
@@ -108,8 +106,9 @@ DrumFrequencyEstimate estimate_drum_frequency(const WinderModel& m, const Winder
         const double roll = 2 * k * p * p / m.state.roll_mass_per_width;
         const TwoModeRoots roots = two_mode_roots(drum.lambda, e.nip_modal_stiffness, roll);
         DrumFrequencyEstimate::Family& out = e.family[f];
-        out.roll_bounce_hz = to_hz(roll), out.drum_hz = to_hz(roots.drum), out.roll_hz = to_hz(roots.roll);
-        out.heavy_roll_hz = to_hz(drum.lambda + e.nip_modal_stiffness);
+        out.roll_bounce_hz = eigenvalue_hz(roll), out.drum_hz = eigenvalue_hz(roots.drum),
+        out.roll_hz = eigenvalue_hz(roots.roll);
+        out.heavy_roll_hz = eigenvalue_hz(drum.lambda + e.nip_modal_stiffness);
         Eigen::VectorXd v = v_front;
         place(m, drum, 1, symmetric ? rear : std::array<double, 2>{-rear[0], -rear[1]}, v);
         std::tie(out.model_hz, out.model_participation) = best_mode(m, modes, v);

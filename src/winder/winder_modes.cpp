@@ -22,8 +22,6 @@ constexpr double kShiftHz = 1.0;
 // identical modes).
 constexpr double kClusterShare = 1e-8;
 
-double to_hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
-
 // Every mode, by the inverted pencil M x = mu (K - sigma M) x, mu = 1/(lambda -
 // sigma), equilibrated to a unit diagonal: steel drums and soft paper nips
 // spread K over many decades, and inverted, the lowest modes are the largest
@@ -106,7 +104,8 @@ WinderModes solve_winder_modes(const WinderModel& m, const WinderDamping& dampin
     dense_modes(m, sigma, lambda, out.shapes);
     const int total = static_cast<int>(lambda.size());
     out.modes.resize(total);
-    for (int i = 0; i < total; ++i) out.modes[i].eigenvalue = lambda[i], out.modes[i].frequency_hz = to_hz(lambda[i]);
+    for (int i = 0; i < total; ++i)
+        out.modes[i].eigenvalue = lambda[i], out.modes[i].frequency_hz = eigenvalue_hz(lambda[i]);
     // Report up to max_frequency, never cutting a cluster of (near) equal eigenvalues.
     const double lambda_max = std::pow(2 * M_PI * max_frequency_hz, 2);
     int n = 0;
@@ -118,9 +117,10 @@ WinderModes solve_winder_modes(const WinderModel& m, const WinderDamping& dampin
     name_and_damp(m, damping, K_bodies, out);
     out.verification = verify(m, out, sigma);
     if (!out.verification.complete)
-        throw SolveError("winder model: " + std::to_string(n) + " modes found below " +
-                         std::to_string(to_hz(out.verification.check_shift)) + " Hz but the inertia of K - sigma M counts " +
-                         std::to_string(out.verification.negative_pivots_at_shift) + "; this is a bug, please report it");
+        throw SolveError(
+            "winder model: " + std::to_string(n) + " modes found below " +
+            std::to_string(eigenvalue_hz(out.verification.check_shift)) + " Hz but the inertia of K - sigma M counts " +
+            std::to_string(out.verification.negative_pivots_at_shift) + "; this is a bug, please report it");
     // Residuals: the winder file's stiffnesses are bounded at input
     // (winder_scene.cpp), so a residual that fails is a solve that failed.
     if (!(out.verification.max_relative_residual <= kMaxVerifiedResidual))

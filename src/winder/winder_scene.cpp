@@ -4,7 +4,9 @@
 #include "common/format.hpp"
 #include "common/join.hpp"
 #include "scene/case_json_schema.hpp"  // quantity_pattern, the draft
+#include "scene/case_key_ranges.hpp"
 #include "scene/case_name.hpp"
+#include "scene/case_reader.hpp"       // case_reading::show
 #include "scene/case_schema.hpp"       // nearest: the "did you mean" of every case file
 #include "scene/materials_library.hpp"
 #include "scene/toml_text.hpp"
@@ -30,11 +32,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Hard limits catch unit slips (a plain 850 is 850 m, not 850 mm), not
 // physics: the typical ranges are beside the defaults in winder_scene.hpp.
-constexpr double kMaxDiameter = 5.0;   // m
-constexpr double kMaxLength = 50.0;    // m
 constexpr double kMaxStiffness = 1e13;  // N/m, a bearing stiffer than any steel housing
 constexpr double kMaxLineLoad = 1e6;   // N/m, 1000 kN/m: far above any winder nip
-constexpr double kMaxSpeed = 100.0;    // m/s (6000 m/min)
 constexpr double kMaxDamping = 0.9;    // a ratio near 1 is no longer a lightly damped mode
 
 enum class Kind { quantity, integer, text, table };
@@ -54,7 +53,8 @@ struct Spec {
 constexpr std::string_view kPaper = "paper", kAssumed = "assumed";
 
 Spec length(std::string_view t, std::string_view k, std::string_view origin, bool open = true) {
-    return {t, k, Kind::quantity, Dimension::length, 0.0, k == "length" || k == "width" ? kMaxLength : kMaxDiameter,
+    return {t, k, Kind::quantity, Dimension::length, 0.0, k == "length" || k == "width" ? key_ranges::kMaxLength
+                                                                              : key_ranges::kMaxDiameter,
             open, "", origin};
 }
 Spec positive(std::string_view t, std::string_view k, Dimension d, double max, std::string_view origin) {
@@ -76,7 +76,7 @@ Spec plain(std::string_view t, std::string_view k, Kind kind, std::string_view o
 const std::vector<Spec>& schema() {
     static const std::vector<Spec> s = {
         plain("", "name", Kind::text), plain("", "description", Kind::text), plain("", "winder", Kind::table),
-        positive("winder", "web_speed", Dimension::speed, kMaxSpeed, kAssumed),
+        positive("winder", "web_speed", Dimension::speed, key_ranges::kMaxWebSpeed, kAssumed),
         plain("winder", "drums", Kind::table), plain("winder", "rolls", Kind::table),
         plain("winder", "rider", Kind::table), plain("winder", "damping", Kind::table),
         plain("winder", "sweep", Kind::table),
@@ -122,19 +122,6 @@ std::vector<std::string_view> keys_in(std::string_view table) {
     return keys;
 }
 
-
-// The value roughly as written, for messages.
-std::string shown(const toml::node& node) {
-    if (node.is_table()) return "{...}";
-    std::ostringstream out;
-    if (node.is_string()) {
-        out << '"' << *node.value<std::string_view>() << '"';
-        return out.str();
-    }
-    node.visit([&](const auto& v) { out << v; });
-    return out.str();
-}
-
 class WinderReader {
 public:
     explicit WinderReader(std::string path) : path_(std::move(path)) {}
@@ -146,7 +133,8 @@ public:
         scene.name = text(root, "", "name").value_or(std::filesystem::path(path_).stem().string());
         if (const std::string problem = case_name_problem(scene.name); !problem.empty()) {
             if (const toml::node* given = root.get("name"))
-                fail(given->source(), "name = " + shown(*given) + " " + problem + "; " + kCaseNameExpected);
+                fail(given->source(),
+                     "name = " + case_reading::show(*given) + " " + problem + "; " + kCaseNameExpected);
             throw InputError(path_ + ": the case's name is its file name, '" + scene.name + "', which " + problem +
                              "; give the case a name = \"...\" (" + kCaseNameExpected + ")");
         }
@@ -199,7 +187,7 @@ private:
     }
 
     void check_kind(const Spec& spec, const toml::node& value) const {
-        const std::string what = display(spec.table, spec.key) + " = " + shown(value) + ": ";
+        const std::string what = display(spec.table, spec.key) + " = " + case_reading::show(value) + ": ";
         if (spec.kind == Kind::table && !value.is_table())
             fail(value.source(), what + "expected a table, written [" +
                                      (spec.table.empty() ? "" : std::string(spec.table) + ".") +
@@ -233,7 +221,7 @@ private:
         const toml::node* n = t.get(key);
         if (!n) return std::nullopt;
         const Spec& spec = *find_spec(table, key);
-        const std::string what = display(table, key) + " = " + shown(*n) + ": ";
+        const std::string what = display(table, key) + " = " + case_reading::show(*n) + ": ";
         double v = 0;
         if (n->is_number()) {
             v = *n->value<double>();
@@ -263,7 +251,8 @@ private:
         const Spec& spec = *find_spec(table, key);
         const auto v = *n->value<int64_t>();
         if (v < spec.min || v > spec.max)
-            fail(n->source(), display(table, key) + " = " + shown(*n) + ": out of range; expected a whole number from " +
+            fail(n->source(), display(table, key) + " = " + case_reading::show(*n) +
+                                  ": out of range; expected a whole number from " +
                                   significant(spec.min, 6) + " to " + significant(spec.max, 6));
         return static_cast<int>(v);
     }

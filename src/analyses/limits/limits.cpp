@@ -160,12 +160,13 @@ LimitsPoint solve_point(const Scene& scene, const ResponseSetup& base, double d,
     return p;
 }
 
-std::string mm(double d_m) { return formatted("%.1f", d_m * 1e3); }
+std::string diameter_mm(double d_m) { return formatted("%.1f", d_m * kMmPerM); }
 
 // The progress line of one diameter solved (k of n; beyond n: a midpoint).
 std::string point_line(const LimitsPoint& p, size_t k, size_t n, double seconds) {
     const std::string which = k <= n ? std::to_string(k) + "/" + std::to_string(n) : "midpoint";
-    std::string line = "  D = " + mm(p.diameter_m) + " mm (" + which + "): f1 " + significant(p.f1_hz, 5) + " Hz";
+    std::string line =
+        "  D = " + diameter_mm(p.diameter_m) + " mm (" + which + "): f1 " + significant(p.f1_hz, 5) + " Hz";
     if (p.governing >= 0)
         line += ", safe " + formatted("%.2f", p.safe_m_s) + " m/s (" +
                 criterion_name(p.criteria[p.governing].criterion) + ")";
@@ -408,9 +409,9 @@ LimitsResult verdict(const Scene& case_scene, const std::optional<ResponseSetup>
     const double smallest = request.spec.smallest_diameter_m.value_or(scene.core.outer_diameter);
     const int n = largest > smallest ? request.spec.points : 1;
     const std::vector<double> diameters = n > 1 ? spaced(largest, smallest, n) : std::vector<double>{largest};
-    request.say("limits: " + std::to_string(n) + " rest-roll diameters from " + mm(largest) + " to " + mm(smallest) +
-                     " mm at the " + to_string(scene.model) + " level" + (r.band ? ", the band at every " +
-                     std::to_string(kBandStride) + "th" : ""));
+    request.say("limits: " + std::to_string(n) + " rest-roll diameters from " + diameter_mm(largest) + " to " +
+                diameter_mm(smallest) + " mm at the " + to_string(scene.model) + " level" +
+                (r.band ? ", the band at every " + std::to_string(kBandStride) + "th" : ""));
     auto solve = [&](double d, bool added, bool sample_band) {
         Stopwatch lap;
         LimitsPoint p = solve_point(scene, base, d, r);

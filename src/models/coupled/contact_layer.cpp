@@ -15,7 +15,7 @@ Eigen::Vector3d edge_derivatives(double s) { return {s - 0.5, s + 0.5, -2 * s}; 
 // Below this share of the layer's total stiffness a coupling is round-off of
 // one that vanishes exactly (a block pair of opposite parity about the arc's
 // symmetry line: 1e-16 relative).
-constexpr double kVanishingShare = 1e-12;
+constexpr double kVanishingContactShare = 1e-12;
 
 }  // namespace
 
@@ -66,7 +66,7 @@ double contact_integral(const ContactLayer& layer, HarmonicFamily a, HarmonicFam
 bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b, int component) {
     double total = 0;
     for (const Eigen::Vector3d& k : layer.weight_around) total += k[component];
-    return std::abs(contact_integral(layer, a, b, component)) > kVanishingShare * total;
+    return std::abs(contact_integral(layer, a, b, component)) > kVanishingContactShare * total;
 }
 
 bool contact_couples(const ContactLayer& layer, HarmonicFamily a, HarmonicFamily b) {

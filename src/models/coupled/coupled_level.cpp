@@ -45,17 +45,15 @@ std::vector<double> wanted(const CoupledModes& m, const Scene& scene, const Solv
 // harmonics leave where they were (e.g. the axial mode) must stay inside.
 constexpr double kEdgeMargin = 1e-6;
 
-double frequency_hz(double lambda) { return std::sqrt(std::max(lambda, 0.0)) / (2 * M_PI); }
-
 // The largest relative change of a wanted frequency between two truncations
 // (infinite when their counts differ). Rigid modes (f ~ 0) are compared on
 // the scale of the first elastic one.
 double max_change(const std::vector<double>& a, const std::vector<double>& b, double lambda_scale) {
     if (a.size() != b.size()) return INFINITY;
     double change = 0;
-    const double floor_hz = frequency_hz(lambda_scale);
+    const double floor_hz = eigenvalue_hz(lambda_scale);
     for (size_t i = 0; i < a.size(); ++i) {
-        const double fa = frequency_hz(a[i]), fb = frequency_hz(b[i]);
+        const double fa = eigenvalue_hz(a[i]), fb = eigenvalue_hz(b[i]);
         change = std::max(change, std::abs(fa - fb) / std::max(fb, floor_hz));
     }
     return change;
@@ -171,7 +169,7 @@ CoupledModes grow_harmonics(const CoupledProblem& p, int first_n, std::optional<
         timing.factor_and_solve += lap.seconds();
         CoupledStep step{n_max, current->dofs.n_dofs, {}, 0, lap.seconds()};
         const std::vector<double> w = wanted(*current, p.scene, p.request);
-        for (double lambda : w) step.frequencies_hz.push_back(frequency_hz(lambda));
+        for (double lambda : w) step.frequencies_hz.push_back(eigenvalue_hz(lambda));
         const int n_top = top_harmonic(*current, w.size());
         step.max_change = previous ? max_change(wanted(*previous, p.scene, p.request), w, p.request.lambda_scale) : 0;
         if (local && mpi_rank() == 0) step.zone_edge = zone_edge_amplitude(*current, p.section, *local, w.size());

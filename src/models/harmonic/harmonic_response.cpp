@@ -81,8 +81,7 @@ std::vector<ResponseCrossing> crossings_of(const ModalResponse& response, const 
 // (its bending modes are wave number n = 1's).
 double first_bending_hz(const ModalBasis& basis, const std::vector<ModeLabel>& labels) {
     for (size_t j = 0; j < labels.size(); ++j)
-        if (labels[j].type == "bending")
-            return std::sqrt(std::max(basis.lambda(static_cast<Eigen::Index>(j)), 0.0)) / (2 * M_PI);
+        if (labels[j].type == "bending") return eigenvalue_hz(basis.lambda(static_cast<Eigen::Index>(j)));
     return 0;
 }
 
@@ -198,7 +197,6 @@ std::vector<ResponseResult> run_harmonic_responses(const Scene& scene_given, con
     for (ResponseResult& out : outs) out.solve_seconds = seconds / static_cast<double>(outs.size());
     return outs;
 }
-
 
 // The harmonic level's forced response (ModelLevel::response): several
 // setups from one n = 1 basis, its labels and K's factor (run_harmonic_responses);
