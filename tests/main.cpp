@@ -8,8 +8,9 @@
 #include "common/mpi_start.hpp"
 
 int main(int argc, char** argv) {
-    // The solver tests' heap on huge pages, as a run's (common/huge_pages.hpp): first.
-    coremodal::start_with_huge_pages(argv);
+    // The solver tests' heap on huge pages and OpenBLAS's kernels, as a run's
+    // (common/huge_pages.hpp): first.
+    coremodal::start_with_fast_memory_and_kernels(argv);
     // PETSc must not see Catch's options; give it none.
     int petsc_argc = 1;
     char** petsc_argv = argv;

@@ -285,7 +285,7 @@ int run_with_petsc(const coremodal::Command& chosen, std::vector<std::string>& p
 }  // namespace
 
 int main(int argc, char** argv) {
-    coremodal::start_with_huge_pages(argv);  // first: it may start the program again
+    coremodal::start_with_fast_memory_and_kernels(argv);  // first: it may start the program again
     // SIGINT and SIGTERM stop children and remove partial folders
     // (common/signals.hpp).
     coremodal::install_interrupt_handling();

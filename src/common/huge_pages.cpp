@@ -5,6 +5,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace coremodal {
 namespace {
@@ -35,6 +37,22 @@ bool mpi_launched() {
     return false;
 }
 
+// What OpenBLAS's SkylakeX kernels use.
+bool processor_has_avx512() {
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl");
+}
+
+// The variables set for the start again, each with its value before (none: unset).
+using Undo = std::vector<std::pair<const char*, std::optional<std::string>>>;
+
+// Sets name=value, remembering the value before in `undo`.
+bool set_remembering(const char* name, const std::string& value, Undo& undo) {
+    const char* before = std::getenv(name);
+    undo.emplace_back(name, before ? std::optional<std::string>(before) : std::nullopt);
+    return setenv(name, value.c_str(), 1) == 0;
+}
+
 }  // namespace
 
 std::optional<std::string> huge_page_tunables(const char* given, std::string_view policy, bool limited) {
@@ -45,17 +63,26 @@ std::optional<std::string> huge_page_tunables(const char* given, std::string_vie
     return (tunables.empty() ? "" : tunables + ":") + std::string(kTunable) + "=1";
 }
 
-void start_with_huge_pages(char** argv) {
-    const char* given = std::getenv("GLIBC_TUNABLES");
+std::optional<std::string> blas_coretype(const char* given, bool avx512) {
+    if (given || !avx512) return std::nullopt;
+    return "SkylakeX";
+}
+
+void start_with_fast_memory_and_kernels(char** argv) {
     if (mpi_launched()) return;
-    const std::optional<std::string> with = huge_page_tunables(given, huge_page_policy(), address_space_limited());
-    if (!with) return;
-    const std::string before = given ? given : "";
-    if (setenv("GLIBC_TUNABLES", with->c_str(), 1) != 0) return;
-    execv("/proc/self/exe", argv);
+    const std::optional<std::string> tunables =
+        huge_page_tunables(std::getenv("GLIBC_TUNABLES"), huge_page_policy(), address_space_limited());
+    const std::optional<std::string> coretype = blas_coretype(std::getenv("OPENBLAS_CORETYPE"), processor_has_avx512());
+    if (!tunables && !coretype) return;
+    Undo undo;
+    if ((!tunables || set_remembering("GLIBC_TUNABLES", *tunables, undo)) &&
+        (!coretype || set_remembering("OPENBLAS_CORETYPE", *coretype, undo)))
+        execv("/proc/self/exe", argv);
     // Not started again: go on as we are, the environment as it was.
-    if (given) setenv("GLIBC_TUNABLES", before.c_str(), 1);
-    else unsetenv("GLIBC_TUNABLES");
+    for (const auto& [name, before] : undo) {
+        if (before) setenv(name, before->c_str(), 1);
+        else unsetenv(name);
+    }
 }
 
 }  // namespace coremodal

@@ -17,6 +17,17 @@
 // starts again before MPI_Init hangs mpirun: give the tunable with
 // `mpirun -x GLIBC_TUNABLES=glibc.malloc.hugetlb=1`), or when the start
 // fails (the run goes on with 4 KiB pages).
+//
+// The same start sets OpenBLAS's kernels where the processor has AVX-512 and
+// the user chose none (OPENBLAS_CORETYPE, read by OpenBLAS only as it
+// loads): Debian 12's OpenBLAS 0.3.21 does not know AMD's Zen 4 and Zen 5
+// and gives them its AVX2 (Haswell) kernels. On the Zen 5 machine of session
+// 26 the SkylakeX kernels ran dgemm at 156-160 GFlop/s against 90-97 and
+// sgemm at 345-376 against 184-197 (bench/kernel_rates.c), case 03 in
+// 20.3-21.5 s against 25.0-28.2 and the 540 k-DOF model out of core in
+// 116 s against 150, the same modes to 5e-12 (bench/results/log.md,
+// "OpenBLAS's AVX-512 kernels"). Later OpenBLAS releases choose them there
+// themselves; on Intel's AVX-512 processors they are what it chooses anyway.
 #pragma once
 
 #include <optional>
@@ -30,7 +41,13 @@ namespace coremodal {
 // whether an address-space limit is set; none when nothing is to be done.
 std::optional<std::string> huge_page_tunables(const char* given, std::string_view policy, bool limited);
 
-// Returns only when the program goes on as it is; otherwise argv starts again.
-void start_with_huge_pages(char** argv);
+// The OPENBLAS_CORETYPE to start again with: "SkylakeX" (OpenBLAS's AVX-512
+// kernels) when the processor has AVX-512 F, DQ, BW and VL and the user gave
+// none (`given` null); none otherwise.
+std::optional<std::string> blas_coretype(const char* given, bool avx512);
+
+// Returns only when the program goes on as it is; otherwise argv starts again
+// with the huge-page tunable and OpenBLAS's kernels above, once.
+void start_with_fast_memory_and_kernels(char** argv);
 
 }  // namespace coremodal

@@ -55,3 +55,14 @@ TEST_CASE("A run starts itself again with huge pages where the kernel grants the
     CHECK(pclose(pipe) == 0);
     CHECK(out.find("GLIBC_TUNABLES=glibc.malloc.hugetlb=1") != std::string::npos);
 }
+
+TEST_CASE("OpenBLAS's AVX-512 kernels are chosen only where the processor has them and the user chose none",
+          "[common][huge_pages]") {
+    using coremodal::blas_coretype;
+    CHECK(blas_coretype(nullptr, true) == "SkylakeX");
+    // The user's choice stands, whatever it is (Haswell to compare, or a core OpenBLAS knows better).
+    CHECK_FALSE(blas_coretype("Haswell", true));
+    CHECK_FALSE(blas_coretype("", true));
+    // Without AVX-512 the kernels would stop on an illegal instruction: OpenBLAS chooses.
+    CHECK_FALSE(blas_coretype(nullptr, false));
+}
