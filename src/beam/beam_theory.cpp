@@ -2,6 +2,7 @@
 
 #include "beam/timoshenko_element.hpp"
 #include "common/error.hpp"
+#include "eigensolve/verification.hpp"  // eigenvalue_hz
 
 #include <Eigen/Dense>
 
